@@ -1,0 +1,48 @@
+"""The validated inventory, in SI units with canonical column names."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import pandas as pd
+
+
+@dataclass(frozen=True)
+class Inventory:
+    """A validated workbook.
+
+    Attributes
+    ----------
+    path : Path
+        The workbook file.
+    equipment : pandas.DataFrame
+        One row per item, columns (SI, see ``docs/nomenclature.md``):
+        ``id`` (str), ``name`` (str), ``room`` (str, "" when not given),
+        ``floor`` (int), ``height_m``, ``width_m``, ``depth_m``,
+        ``mass_kg``, ``mu``, ``mu_static`` (= ``mu`` when not given),
+        ``clearance_m``, ``cg_height_m`` (= ``height_m / 2`` when not given),
+        ``anchored`` (bool), ``quantity`` (int, 1 when not given),
+        ``row`` (int, the Excel row the item came from).
+    hazard : pandas.DataFrame
+        One row per motion and floor: ``level`` (canonical name, e.g.
+        ``2in50``), ``level_label`` (as written), ``motion`` (str),
+        ``all_floors`` (bool), ``floor`` (pandas ``Int64``, <NA> when
+        ``all_floors``), ``pta_g`` [g], ``tp_s`` [s], ``vp_m_s`` [m/s]
+        (NaN where not given), ``pulse`` ("A", "B", "C" or ""),
+        ``record_path`` (absolute path as str, "" when none), ``scale`` (float,
+        1.0 when not given), ``row`` (int).
+    settings : dict
+        The packaged defaults (``assess.data.default_settings()``) updated
+        with the user's ``settings`` sheet, values converted to float where
+        numeric.
+    """
+
+    path: Path
+    equipment: pd.DataFrame
+    hazard: pd.DataFrame
+    settings: dict = field(default_factory=dict)
+
+    @property
+    def levels(self) -> list[str]:
+        """The hazard levels the workbook defines, in order of appearance."""
+        return list(dict.fromkeys(self.hazard["level"]))

@@ -1,0 +1,85 @@
+"""The documented result of an assessment (what the report and the CSVs show)."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import pandas as pd
+
+from assess.hazard.levels import HazardLevel
+
+#: Columns of ``summary.csv`` in order (SPEC §3 first, then extras).
+SUMMARY_COLUMNS = [
+    "id", "name", "room", "floor", "quantity", "alpha_rad", "p_rad_s", "b_over_h",
+    "governing_direction", "mu", "mode", "governing_motion", "pta_g", "tp_s", "im",
+    "edp_median", "sliding_median_cm", "sliding_p84_cm", "clearance_cm", "pf_sliding",
+    "overturn_fraction", "theta_max_over_alpha", "risk", "action", "flags",
+]
+
+#: Columns of ``motions.csv`` in order (SPEC §3 first, then extras).
+MOTION_COLUMNS = [
+    "id", "motion", "direction", "pta_g", "tp_s", "im", "edp_median", "sliding_median_cm",
+    "pf_sliding", "sim_sliding_max_cm", "sim_theta_max_over_alpha", "sim_overturned",
+    "floor", "vp_cm_s", "b_over_h", "alpha_rad", "mode", "sliding_p84_cm", "capacity_edp",
+    "flags",
+]
+
+RISK_CLASSES = ("high", "moderate", "low", "anchored")
+
+
+@dataclass(frozen=True)
+class Flag:
+    """A caveat attached to one item's result (shown in the report and the CSVs)."""
+
+    item_id: str
+    code: str  # e.g. "im_extrapolated", "rocks", "not_simulated"
+    message: str
+
+
+@dataclass
+class AssessmentResult:
+    """Everything one ``assess WORKBOOK --hazard LEVEL`` run computed.
+
+    Attributes
+    ----------
+    workbook : Path
+    facility, site : str
+        From the workbook's settings ("" when not given).
+    level : HazardLevel
+        The level assessed; ``level_label`` is the spelling the workbook uses.
+    summary : DataFrame
+        One row per item, :data:`SUMMARY_COLUMNS`; lengths in cm, accelerations in g.
+        ``overturn_fraction`` and ``theta_max_over_alpha`` are NaN while the
+        engine does not simulate (``simulated`` is False).
+    motions : DataFrame
+        One row per freestanding item x motion x direction, :data:`MOTION_COLUMNS`.
+        ``direction`` is 1 (along width) or 2 (along depth); ``sim_*`` NaN when
+        not simulated.
+    flags : list[Flag]
+    regression : dict
+        ``zeta``, ``eta``, ``sigma``, ``im_min``, ``im_max`` as used, and
+        ``source`` ("Konstantinidis & Makris (2010), Table 3" or "settings").
+    settings : dict
+        The merged settings used (risk thresholds included).
+    simulated : bool
+        Whether the time-history engine ran (False until it exists).
+    seed : int
+    """
+
+    workbook: Path
+    facility: str
+    site: str
+    level: HazardLevel
+    level_label: str
+    summary: pd.DataFrame
+    motions: pd.DataFrame
+    flags: list[Flag] = field(default_factory=list)
+    regression: dict = field(default_factory=dict)
+    settings: dict = field(default_factory=dict)
+    simulated: bool = False
+    seed: int = 0
+
+    def risk_counts(self) -> dict[str, int]:
+        """Number of items (rows, not quantity) in each risk class."""
+        counts = self.summary["risk"].value_counts()
+        return {risk: int(counts.get(risk, 0)) for risk in RISK_CLASSES}
