@@ -1,0 +1,1 @@
+"""Mechanics of a freestanding rigid block: geometry and mode of response."""
