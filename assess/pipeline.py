@@ -1,0 +1,235 @@
+"""The assessment, step by step: inventory -> hazard -> mechanics -> fragility -> result.
+
+Each step is a call to a pure function of the sub-packages; this module only
+sequences them and gathers their outputs into an :class:`AssessmentResult`.
+"""
+from __future__ import annotations
+
+from typing import Callable
+
+import numpy as np
+import pandas as pd
+
+from assess.errors import Problem, raise_if_any
+from assess.fragility import (
+    RegressionConstants, capacity_edp, intensity_measure, median_edp,
+    probability_of_exceedance, sliding_quantile,
+)
+from assess.hazard.motions import motions_by_item, select_level
+from assess.inventory import Inventory
+from assess.mechanics.geometry import frequency_parameter, inertia_ratio, slenderness
+from assess.mechanics.modes import MODE_SEVERITY, ROCK, SLIDE, SLIDE_ROCK, initial_mode
+from assess.result import MOTION_COLUMNS, SUMMARY_COLUMNS, AssessmentResult, Flag
+
+Progress = Callable[[str], None]
+UPLIFT_MODES = (ROCK, SLIDE_ROCK)
+SLIDING_MODES = (SLIDE, SLIDE_ROCK)
+DIRECTIONS = {1: "width_m", 2: "depth_m"}
+
+
+def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
+                   progress: Progress = lambda message: None) -> AssessmentResult:
+    """Assess every item of ``inventory`` under the motions of hazard level ``level_text``.
+
+    Raises :class:`~assess.errors.InputError` when the level is missing, a
+    floor has no motion, or a motion cannot be described by PTA and Tp.
+    """
+    workbook_name = inventory.path.name
+    settings = inventory.settings
+    constants = RegressionConstants.from_settings(settings)
+    level, level_motions = select_level(inventory.hazard, level_text, workbook_name)
+    level_label = str(level_motions["level_label"].iloc[0])
+    _require_pulse_parameters(level_motions, workbook_name)
+
+    equipment = inventory.equipment
+    freestanding = equipment[~equipment["anchored"]]
+    pairs = motions_by_item(freestanding, level_motions, level_label, workbook_name)
+    progress(f"{len(freestanding)} freestanding items, {len(level_motions)} motions at level "
+             f"{level_label}: {len(pairs) * len(DIRECTIONS)} item x motion x direction cases")
+
+    cases = _item_motion_direction_cases(freestanding, pairs)
+    cases = _add_demand(cases, constants)
+    summary, flags = _summarise(equipment, cases, constants, settings)
+    regression = {"zeta": constants.zeta, "eta": constants.eta, "sigma": constants.sigma,
+                  "im_min": constants.im_min, "im_max": constants.im_max,
+                  "source": _regression_source(settings)}
+    return AssessmentResult(
+        workbook=inventory.path, facility=str(settings.get("facility", "")),
+        site=str(settings.get("site", "")), level=level, level_label=level_label,
+        summary=summary[SUMMARY_COLUMNS], motions=_motion_table(cases), flags=flags,
+        regression=regression, settings=dict(settings), simulated=False, seed=seed,
+    )
+
+
+def _require_pulse_parameters(level_motions: pd.DataFrame, workbook_name: str) -> None:
+    missing = level_motions[level_motions["pta_g"].isna() | level_motions["tp_s"].isna()]
+    raise_if_any([Problem(
+        file=workbook_name, sheet="hazard", row=int(row.row), column="pta_g / tp_s",
+        message=f"motion '{row.motion}' gives a record but no pta_g and tp_s; this version "
+                "describes every motion by its pulse and does not read records yet.",
+        fix="fill in pta_g and tp_s (and vp_cm_s) of the motion's predominant pulse.")
+        for row in missing.itertuples(index=False)])
+
+
+def _item_motion_direction_cases(items: pd.DataFrame, pairs: pd.DataFrame) -> pd.DataFrame:
+    """One row per item x motion x direction with the block's geometry in that direction."""
+    item_columns = ["id", "floor", "height_m", "width_m", "depth_m", "cg_height_m", "mu",
+                    "mu_static", "clearance_m"]
+    motion_columns = ["id", "motion", "pta_g", "tp_s", "vp_m_s"]
+    base = pairs[motion_columns].assign(pair_index=range(len(pairs))) \
+        .merge(items[item_columns], on="id", validate="many_to_one")
+    frames = []
+    for direction, dimension in DIRECTIONS.items():
+        frame = base.assign(direction=direction, half_width_m=base[dimension] / 2.0)
+        frames.append(frame)
+    cases = pd.concat(frames, ignore_index=True)
+    cases["b_over_h"] = cases["half_width_m"] / cases["cg_height_m"]
+    cases["alpha_rad"] = slenderness(cases["half_width_m"], cases["cg_height_m"])
+    cases["p_rad_s"] = frequency_parameter(cases["half_width_m"], cases["cg_height_m"], cases["height_m"])
+    cases["inertia_ratio"] = inertia_ratio(cases["half_width_m"], cases["cg_height_m"], cases["height_m"])
+    return cases
+
+
+def _add_demand(cases: pd.DataFrame, constants: RegressionConstants) -> pd.DataFrame:
+    """Mode from rest, IM, and the regression's sliding demand and Pf for each case."""
+    cases = cases.copy()
+    cases["mode"] = initial_mode(cases["pta_g"], cases["mu_static"], cases["b_over_h"], cases["inertia_ratio"])
+    cases["im"] = intensity_measure(cases["pta_g"], cases["mu"])
+    slides = cases["mode"].isin(SLIDING_MODES).to_numpy()
+    im_sliding = np.where(slides, cases["im"], 0.0)  # no sliding from rest: zero demand
+    median_m = sliding_quantile(im_sliding, cases["pta_g"], cases["tp_s"], constants, 0.5)
+    p84_m = sliding_quantile(im_sliding, cases["pta_g"], cases["tp_s"], constants, 0.84)
+    capacity = capacity_edp(cases["clearance_m"], cases["pta_g"], cases["tp_s"])
+    pf = probability_of_exceedance(im_sliding, capacity, constants.zeta, constants.eta, constants.sigma)
+    rocks_only = (cases["mode"] == ROCK).to_numpy()
+    # A block that rocks without sliding has no sliding demand from this regression.
+    cases["edp_median"] = np.where(rocks_only, np.nan, median_edp(im_sliding, constants.zeta, constants.eta))
+    cases["sliding_median_cm"] = np.where(rocks_only, np.nan, median_m * 100.0)
+    cases["sliding_p84_cm"] = np.where(rocks_only, np.nan, p84_m * 100.0)
+    cases["capacity_edp"] = capacity
+    cases["pf_sliding"] = np.where(rocks_only, np.nan, pf)
+    cases["im_outside_fit"] = slides & ((cases["im"] < constants.im_min) | (cases["im"] > constants.im_max))
+    return cases
+
+
+def _governing(cases: pd.DataFrame) -> pd.DataFrame:
+    """Per item: the case that governs its summary row.
+
+    Direction: the more slender one (smaller b/h). Motion: the one with the
+    largest median sliding; where nothing slides, the strongest mode, then the
+    largest PTA.
+    """
+    slender = cases.loc[cases.groupby("id")["b_over_h"].idxmin(), ["id", "direction"]]
+    in_direction = cases.merge(slender, on=["id", "direction"])
+    ranked = in_direction.assign(
+        _severity=in_direction["mode"].map(MODE_SEVERITY),
+        _sliding=in_direction["sliding_median_cm"].fillna(-1.0),
+    ).sort_values(["id", "_sliding", "_severity", "pta_g"], ascending=[True, False, False, False],
+                  kind="stable")
+    worst_mode = in_direction.assign(_severity=in_direction["mode"].map(MODE_SEVERITY)) \
+        .sort_values(["id", "_severity"], ascending=[True, False], kind="stable") \
+        .drop_duplicates("id")[["id", "mode"]]
+    governing = ranked.drop_duplicates("id").drop(columns=["_severity", "_sliding", "mode"])
+    return governing.merge(worst_mode, on="id")
+
+
+def _summarise(equipment: pd.DataFrame, cases: pd.DataFrame, constants: RegressionConstants,
+               settings: dict) -> tuple[pd.DataFrame, list[Flag]]:
+    governing = _governing(cases).set_index("id") if len(cases) else pd.DataFrame()
+    rows, flags = [], []
+    for item in equipment.itertuples(index=False):
+        row = {"id": item.id, "name": item.name, "room": item.room, "floor": item.floor,
+               "quantity": item.quantity, "mu": item.mu, "clearance_cm": item.clearance_m * 100.0,
+               "overturn_fraction": np.nan, "theta_max_over_alpha": np.nan}
+        if item.anchored:
+            half_width_m = min(item.width_m, item.depth_m) / 2.0
+            row.update({"alpha_rad": float(slenderness(half_width_m, item.cg_height_m)),
+                        "p_rad_s": float(frequency_parameter(half_width_m, item.cg_height_m, item.height_m)),
+                        "b_over_h": half_width_m / item.cg_height_m,
+                        "governing_direction": 1 if item.width_m <= item.depth_m else 2,
+                        "mode": "", "risk": "anchored", "action": "None: anchored (not analysed as freestanding)",
+                        "flags": ""})
+            rows.append(row)
+            continue
+        case = governing.loc[item.id]
+        row.update({column: case[column] for column in (
+            "alpha_rad", "p_rad_s", "b_over_h", "mode", "pta_g", "tp_s", "im", "edp_median",
+            "sliding_median_cm", "sliding_p84_cm", "pf_sliding")})
+        row["governing_direction"] = int(case["direction"])
+        row["governing_motion"] = case["motion"]
+        item_flags = _item_flags(item, cases[cases["id"] == item.id], constants)
+        flags.extend(item_flags)
+        row["flags"] = "; ".join(flag.code for flag in item_flags)
+        row["risk"] = classify_risk(row["mode"], row["pf_sliding"], settings)
+        row["action"] = recommended_action(row["risk"], row["mode"], row["sliding_p84_cm"], row["clearance_cm"])
+        rows.append(row)
+    return pd.DataFrame(rows), flags
+
+
+def classify_risk(mode: str, pf_sliding: float, settings: dict) -> str:
+    """``high`` when the item uplifts (rock or slide-rock) or P(sliding > clearance) ≥
+    ``risk_pf_high``; ``moderate`` when that probability ≥ ``risk_pf_moderate``; else ``low``."""
+    if mode in UPLIFT_MODES:
+        return "high"
+    if pf_sliding >= float(settings["risk_pf_high"]):
+        return "high"
+    if pf_sliding >= float(settings["risk_pf_moderate"]):
+        return "moderate"
+    return "low"
+
+
+def recommended_action(risk: str, mode: str, sliding_p84_cm: float, clearance_cm: float) -> str:
+    """A plain sentence a facility manager can act on."""
+    if mode in UPLIFT_MODES:
+        return "Anchor or restrain: it uplifts and rocks under the design motion (overturning possible)"
+    if risk == "high":
+        return (f"Restrain, or give it room: needs {sliding_p84_cm:.0f} cm (84th percentile), "
+                f"has {clearance_cm:.0f} cm")
+    if risk == "moderate":
+        return f"Give it room ({sliding_p84_cm:.0f} cm, 84th percentile; has {clearance_cm:.0f} cm) or restrain"
+    return "No action needed"
+
+
+def _item_flags(item, item_cases: pd.DataFrame, constants: RegressionConstants) -> list[Flag]:
+    flags = []
+    uplift = item_cases[item_cases["mode"].isin(UPLIFT_MODES)]
+    if len(uplift):
+        # the most slender direction, then the strongest motion
+        worst = uplift.sort_values(["b_over_h", "pta_g"], ascending=[True, False], kind="stable").iloc[0]
+        flags.append(Flag(item.id, "uplift", (
+            f"{worst['mode']} under {worst['motion']} in direction {int(worst['direction'])}: "
+            f"mu_static = {item.mu_static:.2f} >= b/h = {worst['b_over_h']:.2f} and PTA = {worst['pta_g']:.2f} g "
+            f"> g b/h. The sliding regression assumes no uplift; overturning was not assessed "
+            f"by simulation in this version.")))
+    outside = item_cases[item_cases["im_outside_fit"]]
+    if len(outside):
+        ims = ", ".join(f"{im:.2f}" for im in sorted(set(outside["im"].round(2))))
+        flags.append(Flag(item.id, "im_outside_fit", (
+            f"IM = {ims} lies outside the range {constants.im_min:.2f}-{constants.im_max:.2f} the "
+            f"regression was fitted on: the sliding demand is an extrapolation.")))
+    if not np.isclose(item.cg_height_m, item.height_m / 2.0):
+        flags.append(Flag(item.id, "cg_not_mid_height", (
+            f"centre of mass at {item.cg_height_m * 100:.0f} cm, not mid-height: alpha and b/h use it; "
+            "p assumes the mass spread over the whole box.")))
+    return flags
+
+
+def _motion_table(cases: pd.DataFrame) -> pd.DataFrame:
+    table = cases.assign(
+        vp_cm_s=cases["vp_m_s"] * 100.0,
+        sim_sliding_max_cm=np.nan, sim_theta_max_over_alpha=np.nan, sim_overturned=pd.NA,
+        flags=np.where(cases["im_outside_fit"], "im_outside_fit", ""),
+    )
+    table["flags"] = np.where(table["mode"].isin(UPLIFT_MODES),
+                              np.where(table["flags"] == "", "uplift", table["flags"] + ";uplift"), table["flags"])
+    table = table.sort_values(["pair_index", "direction"], kind="stable")  # workbook order
+    return table[MOTION_COLUMNS].reset_index(drop=True)
+
+
+def _regression_source(settings: dict) -> str:
+    from assess.data import default_settings
+
+    defaults = default_settings()
+    if all(float(settings[key]) == float(defaults[key]) for key in ("zeta", "eta", "sigma")):
+        return "Konstantinidis & Makris (2010), eq. 21 (Table 3 simulations)"
+    return "the workbook's settings sheet"

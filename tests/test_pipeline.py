@@ -1,0 +1,146 @@
+"""The assessment pipeline on hand-built inventories (no workbook reader involved)."""
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from assess.data import default_settings, km2010_table3
+from assess.errors import InputError
+from assess.inventory import Inventory
+from assess.output import csv_text
+from assess.pipeline import run_assessment
+from assess.result import MOTION_COLUMNS, SUMMARY_COLUMNS
+
+
+def item(item_id, floor=0, height_cm=228.6, width_cm=62.2, depth_cm=80.0, mu=0.13, mu_static=None,
+         clearance_cm=30.0, cg_height_cm=None, anchored=False, row=2):
+    return {"id": item_id, "name": f"item {item_id}", "room": "R1", "floor": floor,
+            "height_m": height_cm / 100, "width_m": width_cm / 100, "depth_m": depth_cm / 100,
+            "mass_kg": 200.0, "mu": mu, "mu_static": mu if mu_static is None else mu_static,
+            "clearance_m": clearance_cm / 100,
+            "cg_height_m": (height_cm / 2 if cg_height_cm is None else cg_height_cm) / 100,
+            "anchored": anchored, "quantity": 1, "row": row}
+
+
+def motion(name, pta_g, tp_s, floor=0, vp_cm_s=-75.0, level="2in50", row=2):
+    return {"level": level, "level_label": level, "motion": name, "all_floors": floor is None,
+            "floor": floor, "pta_g": pta_g, "tp_s": tp_s, "vp_m_s": vp_cm_s / 100, "pulse": "B",
+            "record_path": "", "scale": 1.0, "row": row}
+
+
+def inventory(items, motions, **settings):
+    hazard = pd.DataFrame(motions)
+    hazard["floor"] = hazard["floor"].astype("Int64")
+    return Inventory(path=Path("test.xlsx"), equipment=pd.DataFrame(items), hazard=hazard,
+                     settings={**default_settings(), **settings})
+
+
+TABLE3_GROUND = [motion("Los Gatos 0.54", 0.54, 2.10), motion("Corralitos 0.84", 0.84, 0.60, vp_cm_s=-61),
+                 motion("Gilroy 0.59", 0.59, 1.50, vp_cm_s=-84)]
+
+
+def test_paper_prototypes_reproduce_table3_im_and_slide():
+    items = [item("FORMA", mu=0.13), item("KELVINATOR", height_cm=213.4, width_cm=66.0, mu=0.17),
+             item("ASP", height_cm=180.3, width_cm=58.4, mu=0.20)]
+    result = run_assessment(inventory(items, TABLE3_GROUND), "2in50")
+    motions = result.motions.set_index(["id", "motion", "direction"])
+    table3 = km2010_table3()
+    for equipment, pta, tp in [("FORMA", 0.54, 2.10), ("KELVINATOR", 0.84, 0.60), ("ASP", 0.59, 1.50)]:
+        printed = table3[(table3.equipment == equipment) & (table3.pta_g == pta)].iloc[0]
+        name = {0.54: "Los Gatos 0.54", 0.84: "Corralitos 0.84", 0.59: "Gilroy 0.59"}[pta]
+        row = motions.loc[(equipment, name, 1)]
+        assert abs(row["im"] - printed.im) <= 0.005 / printed.mu_best_fit + 0.005
+        assert row["mode"] == "slide"
+        # median of the regression at that IM, converted with the motion's PTA and Tp
+        expected_cm = 0.370 * row["im"] ** 0.953 * pta * 9.80665 / (2 * np.pi / tp) ** 2 * 100
+        assert row["sliding_median_cm"] == pytest.approx(expected_cm, rel=1e-9)
+    assert set(result.summary["mode"]) == {"slide"}
+    assert not result.simulated and result.summary["overturn_fraction"].isna().all()
+
+
+def test_columns_and_row_counts():
+    items = [item("A"), item("B", anchored=True)]
+    result = run_assessment(inventory(items, TABLE3_GROUND), "2in50")
+    assert list(result.summary.columns) == SUMMARY_COLUMNS
+    assert list(result.motions.columns) == MOTION_COLUMNS
+    assert len(result.summary) == 2
+    assert len(result.motions) == 1 * 3 * 2  # freestanding items x motions x directions
+    anchored = result.summary.set_index("id").loc["B"]
+    assert anchored["risk"] == "anchored" and np.isnan(anchored["pf_sliding"])
+
+
+def test_rocking_item_is_high_risk_with_uplift_flag_and_no_regression_demand():
+    # tall narrow rack, rubber feet: mu = 0.6 > b/h = 0.2, PTA 0.84 g > 0.2 g
+    rack = item("RACK", height_cm=200, width_cm=40, depth_cm=60, mu=0.6)
+    result = run_assessment(inventory([rack], TABLE3_GROUND), "2in50")
+    row = result.summary.iloc[0]
+    assert row["mode"] in ("rock", "slide-rock") and row["risk"] == "high"
+    assert "uplift" in row["flags"]
+    assert any(flag.code == "uplift" and flag.item_id == "RACK" for flag in result.flags)
+    assert row["action"].startswith("Anchor")
+
+
+def test_stocky_high_friction_item_stays_at_rest():
+    safe = item("BOX", height_cm=60, width_cm=80, depth_cm=80, mu=0.9)  # b/h = 1.33, A < mu
+    row = run_assessment(inventory([safe], TABLE3_GROUND), "2in50").summary.iloc[0]
+    assert row["mode"] == "rest" and row["pf_sliding"] == 0 and row["sliding_median_cm"] == 0
+    assert row["risk"] == "low"
+
+
+def test_risk_classes_follow_pf_thresholds():
+    items = [item("TIGHT", clearance_cm=1.0), item("ROOMY", clearance_cm=2000.0)]
+    summary = run_assessment(inventory(items, TABLE3_GROUND), "2in50").summary.set_index("id")
+    assert summary.loc["TIGHT", "pf_sliding"] > 0.99 and summary.loc["TIGHT", "risk"] == "high"
+    assert summary.loc["ROOMY", "pf_sliding"] < 0.01 and summary.loc["ROOMY", "risk"] == "low"
+    # the governing motion is the one with the largest median sliding
+    motions = run_assessment(inventory(items, TABLE3_GROUND), "2in50").motions
+    tight = motions[(motions.id == "TIGHT") & (motions.direction == 1)]
+    assert summary.loc["TIGHT", "governing_motion"] == tight.loc[tight.sliding_median_cm.idxmax(), "motion"]
+
+
+def test_im_outside_fitted_range_is_flagged():
+    items = [item("LOWIM", mu=0.45, width_cm=150, depth_cm=150, height_cm=100)]  # IM = 0.54/0.45-1 = 0.2
+    result = run_assessment(inventory(items, [motion("LG", 0.54, 2.1)]), "2in50")
+    assert "im_outside_fit" in result.summary.iloc[0]["flags"]
+    assert "outside the range 1.71-6.40" in result.flags[0].message
+
+
+def test_level_spellings_and_missing_level_lists_the_levels():
+    inv = inventory([item("A")], TABLE3_GROUND + [motion("x", 0.3, 1.0, level="10in50")])
+    assert run_assessment(inv, "2475yr").level_label == "2in50"
+    assert run_assessment(inv, "2%/50yr").level.name == "2in50"
+    with pytest.raises(InputError) as caught:
+        run_assessment(inv, "50in50")
+    message = str(caught.value)
+    assert "'2in50'" in message and "'10in50'" in message and "sheet 'hazard'" in message
+
+
+def test_floor_without_motion_names_the_item_row():
+    inv = inventory([item("A", floor=3, row=7)], TABLE3_GROUND)
+    with pytest.raises(InputError) as caught:
+        run_assessment(inv, "2in50")
+    problem = caught.value.problems[0]
+    assert (problem.sheet, problem.row, problem.column) == ("equipment", 7, "floor")
+    assert "floor 3" in problem.message and "has floors [0]" in problem.message
+
+
+def test_all_floors_motion_reaches_every_floor():
+    inv = inventory([item("A", floor=3), item("B", floor=0)], [motion("everywhere", 0.5, 1.0, floor=None)])
+    result = run_assessment(inv, "2in50")
+    assert len(result.motions) == 4
+
+
+def test_custom_regression_constants_are_used_and_reported():
+    inv = inventory([item("A")], TABLE3_GROUND, zeta=0.5, eta=1.0, sigma=0.3)
+    result = run_assessment(inv, "2in50")
+    row = result.motions.iloc[0]
+    assert row["edp_median"] == pytest.approx(0.5 * row["im"])
+    assert result.regression["source"] == "the workbook's settings sheet"
+
+
+def test_same_input_gives_identical_csv():
+    inv = inventory([item("A"), item("RACK", height_cm=200, width_cm=40, mu=0.6)], TABLE3_GROUND)
+    first, second = run_assessment(inv, "2in50", seed=1), run_assessment(inv, "2in50", seed=1)
+    assert csv_text(first.summary) == csv_text(second.summary)
+    assert csv_text(first.motions) == csv_text(second.motions)
