@@ -1,0 +1,55 @@
+"""Time the main job on inventories/lab.xlsx, phase by phase and end to end.
+
+Run: python benchmarks/bench_main_job.py [--repeat N]
+Prints seconds per phase (best of N) and the end-to-end CLI time. Not a test.
+"""
+from __future__ import annotations
+
+import argparse
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+WORKBOOK = ROOT / "inventories" / "lab.xlsx"
+
+
+def best_of(repeat: int, function):
+    times, value = [], None
+    for _ in range(repeat):
+        start = time.perf_counter()
+        value = function()
+        times.append(time.perf_counter() - start)
+    return min(times), value
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--repeat", type=int, default=3)
+    repeat = parser.parse_args().repeat
+
+    from assess.inventory import read_workbook
+    from assess.pipeline import run_assessment
+    from assess.report import render_html, render_pdf
+
+    t_read, inventory = best_of(repeat, lambda: read_workbook(WORKBOOK))
+    t_assess, result = best_of(repeat, lambda: run_assessment(inventory, "2in50"))
+    t_html, html = best_of(repeat, lambda: render_html(result))
+    t_pdf, pdf = best_of(repeat, lambda: render_pdf(html))
+    cases = len(result.motions)
+    print(f"workbook: {len(inventory.equipment)} items, {len(inventory.hazard)} hazard rows")
+    print(f"read workbook      {t_read:8.3f} s")
+    print(f"assess             {t_assess:8.3f} s  ({cases} item x motion x direction cases)")
+    print(f"render html        {t_html:8.3f} s")
+    print(f"render pdf         {t_pdf:8.3f} s  ({len(pdf) / 1024:.0f} KiB)")
+    with tempfile.TemporaryDirectory() as out:
+        start = time.perf_counter()
+        subprocess.run([sys.executable, "-m", "assess", str(WORKBOOK), "--hazard", "2in50", "--out", out,
+                        "--quiet"], check=True, stdout=subprocess.DEVNULL)
+        print(f"end to end (CLI)   {time.perf_counter() - start:8.3f} s  (one run, interpreter start included)")
+
+
+if __name__ == "__main__":
+    main()
