@@ -1,0 +1,475 @@
+"""The workbook's columns as a table, and the parsing of headers and cells.
+
+Each sheet is described by a :class:`SheetSpec`, a tuple of :class:`Column`
+entries (SPEC §1). Validation is driven by that table: a column's ``kind``
+picks its cell parser, its ``dimension`` the unit suffixes it accepts (see
+:mod:`assess.inventory.units`), its range the plausibility check. Nothing here
+raises to the user: a bad cell raises :class:`CellError`, which the reader
+turns into a located :class:`~assess.errors.Problem`.
+"""
+from __future__ import annotations
+
+import difflib
+import math
+import numbers
+from dataclasses import dataclass
+from typing import Callable
+
+from assess.hazard.levels import HazardLevel, parse_level as parse_hazard_level
+from assess.inventory import units
+from assess.inventory.units import ACCELERATION, LENGTH, MASS, PERIOD, VELOCITY, Dimension
+
+#: Columns of free text, allowed in every sheet and ignored.
+FREE_TEXT_COLUMNS = ("notes", "note", "source", "comment")
+
+_TRUE = {"yes", "y", "true", "1"}
+_FALSE = {"no", "n", "false", "0"}
+_FLOOR_HINT = "floors are numbered 0 (ground), 1, 2, ... and -1, -2, ... below ground"
+_MU_HINT = ("a friction coefficient is a plain number, typically 0.2 to 0.7 "
+            "(write 0.3, not 30 %); measure it with a slow pull test if unsure")
+
+
+class _Unusable:
+    """A cell already reported (a formula without a computed value)."""
+
+    def __repr__(self) -> str:
+        return "<unusable cell>"
+
+
+#: Stands for a cell whose problem is already reported; skipped by every check.
+UNUSABLE = _Unusable()
+
+
+class CellError(Exception):
+    """A cell that cannot be used: what is wrong and how to fix it."""
+
+    def __init__(self, message: str, fix: str = "") -> None:
+        super().__init__(message)
+        self.message = message
+        self.fix = fix
+
+
+@dataclass(frozen=True)
+class Column:
+    """One column of a sheet.
+
+    ``name`` is the header without its unit suffix; ``kind`` selects the cell
+    parser (see :data:`PARSERS`); ``dimension`` is set for quantities whose
+    header must carry a unit suffix; ``spec_suffix`` is the suffix SPEC §1
+    documents. ``low``/``high`` bound the plausible value in canonical units
+    (``positive``: must be > 0; ``signed``: the bound applies to the magnitude).
+    ``unless_record``: required on a row that gives no ``record``.
+    """
+
+    name: str
+    kind: str
+    required: bool = False
+    dimension: Dimension | None = None
+    spec_suffix: str = ""
+    default: object = None
+    low: float | None = None
+    high: float | None = None
+    positive: bool = False
+    signed: bool = False
+    unless_record: bool = False
+    hint: str = ""
+
+    def header(self, suffix: str | None = None) -> str:
+        """The header for this column with ``suffix`` (default: the documented one)."""
+        if self.dimension is None:
+            return self.name
+        return f"{self.name}_{suffix or self.spec_suffix}"
+
+    def accepted_headers(self) -> list[str]:
+        if self.dimension is None:
+            return [self.name]
+        suffixes = [self.spec_suffix] + [s for s in self.dimension.units if s != self.spec_suffix]
+        return [self.header(s) for s in suffixes]
+
+    @property
+    def output(self) -> str:
+        """Name of the canonical (SI) output column, e.g. ``height_m``."""
+        if self.dimension is None:
+            return self.name
+        return f"{self.name}_{self.dimension.canonical}"
+
+
+@dataclass(frozen=True)
+class SheetSpec:
+    """A sheet: its name, columns, and what one of its rows describes."""
+
+    name: str
+    columns: tuple[Column, ...]
+    subject: str
+    extra_required_headers: tuple[str, ...] = ()
+
+    def column(self, name: str) -> Column:
+        return next(c for c in self.columns if c.name == name)
+
+    def accepted_headers(self) -> list[str]:
+        return [h for c in self.columns for h in c.accepted_headers()]
+
+
+EQUIPMENT = SheetSpec("equipment", (
+    Column("id", "text", required=True),
+    Column("name", "text", required=True),
+    Column("room", "text", default=""),
+    Column("floor", "integer", required=True, low=-5, high=200, hint=_FLOOR_HINT),
+    Column("height", "number", required=True, dimension=LENGTH, spec_suffix="cm",
+           low=0.05, high=6.0, positive=True),
+    Column("width", "number", required=True, dimension=LENGTH, spec_suffix="cm",
+           low=0.02, high=6.0, positive=True),
+    Column("depth", "number", required=True, dimension=LENGTH, spec_suffix="cm",
+           low=0.02, high=6.0, positive=True),
+    Column("mass", "number", required=True, dimension=MASS, spec_suffix="kg",
+           low=0.1, high=50000.0, positive=True),
+    Column("mu", "number", required=True, low=0.01, high=1.5, positive=True, hint=_MU_HINT),
+    Column("mu_static", "number", low=0.01, high=1.5, positive=True, hint=_MU_HINT),
+    Column("clearance", "number", required=True, dimension=LENGTH, spec_suffix="cm",
+           low=0.0, high=100.0),
+    Column("cg_height", "number", dimension=LENGTH, spec_suffix="cm", positive=True),
+    Column("anchored", "boolean", default=False),
+    Column("quantity", "integer", default=1, low=1),
+), subject="a piece of equipment")
+
+HAZARD = SheetSpec("hazard", (
+    Column("level", "level", required=True),
+    Column("motion", "text", required=True),
+    Column("floor", "floor_or_all", required=True, low=-5, high=200, hint=_FLOOR_HINT),
+    Column("pta", "number", dimension=ACCELERATION, spec_suffix="g", unless_record=True,
+           default=math.nan, high=5.0, positive=True),
+    Column("tp", "number", dimension=PERIOD, spec_suffix="s", unless_record=True,
+           default=math.nan, low=0.05, high=20.0, positive=True),
+    Column("vp", "number", dimension=VELOCITY, spec_suffix="cm_s", default=math.nan,
+           high=5.0, signed=True),
+    Column("pulse", "pulse", default=""),
+    Column("record", "text", default=""),
+    Column("scale", "number", default=1.0, positive=True),
+), subject="a floor motion")
+
+SETTINGS = SheetSpec("settings", (
+    Column("key", "text", required=True),
+    Column("value", "raw"),
+), subject="a setting", extra_required_headers=("value",))
+
+
+# ---------------------------------------------------------------- formatting
+
+def number_text(value: float) -> str:
+    """A number as a person would type it (``2286``, ``0.3``)."""
+    return f"{value:.10g}"
+
+
+def quote(value: object) -> str:
+    """The offending cell value, quoted, as the user sees it."""
+    if isinstance(value, float):
+        return f"'{number_text(value)}'"
+    return f"'{value}'"
+
+
+def suggest(name: str, choices: list[str]) -> str | None:
+    """The closest of ``choices`` to ``name`` (difflib), or None."""
+    close = difflib.get_close_matches(name, choices, n=1, cutoff=0.6)
+    return close[0] if close else None
+
+
+# ---------------------------------------------------------------- headers
+
+@dataclass(frozen=True)
+class Header:
+    """A recognised header: the column it fills and where it is."""
+
+    column: Column
+    index: int  # 0-based position in the row
+    text: str  # as the user wrote it (stripped)
+    letter: str  # Excel column letter
+    suffix: str | None  # unit suffix for quantities
+
+
+Report = Callable[..., None]  # report(message, fix, *, row, column, cell)
+
+
+def map_headers(spec: SheetSpec, grid: list[list], letters: list[str],
+                report: Report) -> dict[str, Header]:
+    """Recognise the header row (``grid[0]``) of a sheet; report every header problem.
+
+    Returns the recognised headers by column name. Unknown, unit-less,
+    badly-suffixed and duplicated headers, values under no header and missing
+    required columns are reported through ``report``.
+    """
+    found: dict[str, Header] = {}
+    flawed: set[str] = set()  # columns whose header was reported as wrong
+    for index, raw in enumerate(grid[0]):
+        if is_empty(raw):
+            _check_headerless_data(grid, index, letters[index], report)
+            continue
+        if raw is UNUSABLE:
+            continue
+        text = str(raw).strip()
+        cell = f"{letters[index]}1"
+        key = text.lower()
+        if key in FREE_TEXT_COLUMNS:
+            continue
+        column, suffix, problem = _classify(spec, key, text)
+        if problem is not None:
+            report(problem[0], problem[1], row=1, column=text, cell=cell)
+            if column is not None:
+                flawed.add(column.name)
+            continue
+        if column.name in found:
+            first = found[column.name]
+            report(f"columns '{first.text}' ({first.letter}1) and '{text}' ({cell}) both give "
+                   f"{column.name}.", "keep one of the two columns and delete the other.",
+                   row=1, column=text, cell=cell)
+            continue
+        found[column.name] = Header(column, index, text, letters[index], suffix)
+    _report_missing(spec, found, flawed, report)
+    return found
+
+
+def _check_headerless_data(grid: list[list], index: int, letter: str, report: Report) -> None:
+    filled = [n for n, row in enumerate(grid[1:], start=2)
+              if index < len(row) and not is_empty(row[index])]
+    if filled:
+        report(f"column {letter} holds values (e.g. {letter}{filled[0]}) but has no header.",
+               f"write the column's name in {letter}1, "
+               "or delete the values if they are not needed.",
+               row=1, cell=f"{letter}1")
+
+
+def _classify(spec: SheetSpec, key: str, text: str):
+    """``(column, suffix, None)`` for a known header.
+
+    Otherwise ``(column meant or None, None, (message, fix))``.
+    """
+    for column in spec.columns:
+        if column.dimension is None and key == column.name:
+            return column, None, None
+    quantities = sorted((c for c in spec.columns if c.dimension is not None),
+                        key=lambda c: len(c.name), reverse=True)
+    for column in quantities:
+        if key == column.name:
+            return column, None, (
+                f"the column '{text}' does not say its unit.",
+                f"name it with its unit suffix: {or_list(column.accepted_headers())}.")
+        if key.startswith(column.name + "_"):
+            suffix = key[len(column.name) + 1:]
+            if suffix in column.dimension.units:
+                return column, suffix, None
+            return column, None, (
+                f"'{suffix}' is not an accepted unit for {column.name}.",
+                f"convert the values to one of the accepted units and name the column "
+                f"{or_list(column.accepted_headers())}.")
+    close = suggest(key, spec.accepted_headers())
+    message = f"unknown column '{text}'" + (f"; did you mean '{close}'?" if close else ".")
+    elsewhere = [other.name for other in (EQUIPMENT, HAZARD, SETTINGS)
+                 if other is not spec and key in other.accepted_headers()]
+    if elsewhere:
+        message = f"unknown column '{text}' (a column of sheet '{elsewhere[0]}', not of this one)."
+    fix = (f"rename it to '{close}' if that is what it holds" if close else
+           f"use the columns of sheet '{spec.name}': {_column_list(spec)}")
+    fix += f"; a column of remarks may be named {or_list(list(FREE_TEXT_COLUMNS))}."
+    # the suggested column counts as flawed, not missing: one problem, one fix
+    meant = next((c for c in spec.columns if close in c.accepted_headers()), None)
+    return meant, None, (message, fix)
+
+
+def _report_missing(spec: SheetSpec, found: dict, flawed: set, report: Report) -> None:
+    for column in spec.columns:
+        if column.name in found or column.name in flawed:
+            continue
+        if column.required or column.name in spec.extra_required_headers:
+            report(f"the required column '{column.header()}' is missing.",
+                   f"add a column headed {or_list(column.accepted_headers())} in row 1.",
+                   row=1, column=column.header())
+        elif column.unless_record and "record" not in found:
+            report(f"the column '{column.header()}' is missing, and there is no 'record' column.",
+                   f"add a column headed {or_list(column.accepted_headers())} in row 1, "
+                   f"or a 'record' column naming each motion's acceleration record.",
+                   row=1, column=column.header())
+
+
+def _column_list(spec: SheetSpec) -> str:
+    """``id, name, ..., height_cm (or _m, _mm, _in, _ft), ...``"""
+    names = []
+    for column in spec.columns:
+        others = [s for s in (column.dimension.units if column.dimension else ())
+                  if s != column.spec_suffix]
+        alternatives = f" (or {', '.join('_' + s for s in others)})" if others else ""
+        names.append(column.header() + alternatives)
+    return ", ".join(names)
+
+
+def or_list(items: list[str]) -> str:
+    if len(items) == 1:
+        return items[0]
+    return ", ".join(items[:-1]) + " or " + items[-1]
+
+
+# ---------------------------------------------------------------- cells
+
+def is_empty(value: object) -> bool:
+    return value is None or (isinstance(value, str) and value.strip() == "")
+
+
+def parse_text(value: object, column: Column) -> str:
+    if isinstance(value, float) and value.is_integer():
+        return str(int(value))
+    return str(value).strip()
+
+
+def parse_number(value: object, column: Column) -> float:
+    if isinstance(value, bool):
+        raise CellError(f"{quote(value)} is not a number.", "type a number.")
+    if isinstance(value, numbers.Real):
+        number = float(value)
+    elif isinstance(value, str) and value.strip().startswith("#") and value.strip().isupper():
+        raise CellError(f"the cell shows the Excel error {quote(value)}.",
+                        "correct the formula so that it gives a number, or type the value.")
+    elif isinstance(value, str):
+        try:
+            number = float(value.strip())
+        except ValueError:
+            raise CellError(f"{quote(value)} is not a number.", _number_fix(column)) from None
+    else:  # dates, times
+        kind = type(value).__name__
+        raise CellError(f"{quote(value)} is not a number (the cell holds a {kind}).",
+                        _number_fix(column))
+    if not math.isfinite(number):
+        raise CellError(f"{quote(value)} is not a finite number.", _number_fix(column))
+    return number
+
+
+def _number_fix(column: Column) -> str:
+    if column.dimension is not None:
+        return ("type the number alone; the unit is given by the column header "
+                f"(e.g. {column.header()}).")
+    return "type a plain number."
+
+
+def parse_integer(value: object, column: Column) -> int:
+    number = parse_number(value, column)
+    if not number.is_integer():
+        raise CellError(f"{quote(value)} is not a whole number.",
+                        "type a whole number" + (f"; {column.hint}." if column.hint else "."))
+    return int(number)
+
+
+def parse_boolean(value: object, column: Column) -> bool:
+    if isinstance(value, bool):
+        return value
+    text = parse_text(value, column).lower()
+    if text in _TRUE:
+        return True
+    if text in _FALSE:
+        return False
+    raise CellError(f"{quote(value)} is not yes or no.",
+                    "write yes or no (y/n, true/false and 1/0 are also accepted), "
+                    "or leave the cell empty for no.")
+
+
+def parse_floor_or_all(value: object, column: Column) -> int | str:
+    if isinstance(value, str) and value.strip().lower() == "all":
+        return "all"
+    try:
+        return parse_integer(value, column)
+    except CellError:
+        raise CellError(f"{quote(value)} is neither a floor number nor 'all'.",
+                        f"write the floor as a whole number ({_FLOOR_HINT}), "
+                        "or 'all' for a motion that acts on every floor.") from None
+
+
+def parse_pulse(value: object, column: Column) -> str:
+    text = parse_text(value, column).upper()
+    if text not in ("A", "B", "C"):
+        raise CellError(f"{quote(value)} is not a pulse type.",
+                        "write A, B or C (the Makris pulse types), or leave the cell empty.")
+    return text
+
+
+def parse_level_cell(value: object, column: Column) -> HazardLevel:
+    try:
+        return parse_hazard_level(parse_text(value, column))
+    except ValueError as error:
+        raise CellError(str(error).rstrip(".") + ".",
+                        "use one of those spellings (2in50 and 2%/50yr are the same "
+                        "level and may be mixed).") from None
+
+
+def parse_raw(value: object, column: Column) -> object:
+    return value
+
+
+PARSERS = {
+    "text": parse_text,
+    "number": parse_number,
+    "integer": parse_integer,
+    "boolean": parse_boolean,
+    "floor_or_all": parse_floor_or_all,
+    "pulse": parse_pulse,
+    "level": parse_level_cell,
+    "raw": parse_raw,
+}
+
+
+def parse_cell(value: object, column: Column, suffix: str | None, subject: str) -> object:
+    """Parse a non-empty cell of ``column``: typed, converted to canonical units, range-checked.
+
+    Raises :class:`CellError` when the cell cannot be used.
+    """
+    parsed = PARSERS[column.kind](value, column)
+    if column.kind in ("number", "integer") or (column.kind == "floor_or_all" and parsed != "all"):
+        check_range(parsed, column, suffix, subject)
+        if column.dimension is not None:
+            return units.to_canonical(parsed, column.dimension, suffix)
+    return parsed
+
+
+def check_range(value: float, column: Column, suffix: str | None, subject: str) -> None:
+    """Raise :class:`CellError` when ``value`` (in ``suffix`` units) is not plausible."""
+    dimension = column.dimension
+    canonical = units.to_canonical(value, dimension, suffix) if dimension else float(value)
+    given = f"{column.name} {number_text(value)}"
+    if dimension is not None:
+        given += f" {units.label(dimension, suffix)}"
+        if suffix != dimension.canonical:
+            given += f" = {canonical:.3g} {units.label(dimension, dimension.canonical)}"
+    if column.positive and canonical <= 0:
+        raise CellError(f"{given} must be greater than 0.", _range_fix(column, value, suffix))
+    magnitude = abs(canonical) if column.signed else canonical
+    too_low = column.low is not None and magnitude < column.low
+    too_high = column.high is not None and magnitude > column.high
+    if too_low or too_high:
+        raise CellError(f"{given} is not plausible for {subject} (expected {_expected(column)}).",
+                        _range_fix(column, value, suffix))
+
+
+def _expected(column: Column) -> str:
+    dimension = column.dimension
+    unit = f" {units.label(dimension, dimension.canonical)}" if dimension else ""
+    low, high = column.low, column.high
+    if column.signed:
+        return f"a magnitude of at most {number_text(high)}{unit}"
+    if low is None and column.positive:
+        return f"more than 0 and at most {number_text(high)}{unit}"
+    if high is None:
+        return f"at least {number_text(low)}{unit}"
+    return f"{number_text(low)} to {number_text(high)}{unit}"
+
+
+def _range_fix(column: Column, value: float, suffix: str | None) -> str:
+    if column.dimension is None:
+        return (column.hint + "." if column.hint else "correct the value.")
+    low = column.low if column.low is not None else 0.0
+    high = column.high if column.high is not None else math.inf
+    others = units.alternative_suffixes(value, column.dimension, suffix, low, high,
+                                        signed=column.signed)
+    if column.positive:
+        others = [s for s in others if units.to_canonical(value, column.dimension, s) > 0]
+    if not others:
+        return "correct the value."
+    label = units.label
+    parts = [f"if the values are in {label(column.dimension, others[0])}, "
+             f"name the column {column.header(others[0])}"]
+    parts += [f"if in {label(column.dimension, s)}, {column.header(s)}" for s in others[1:]]
+    return "; ".join(parts) + "; otherwise correct the value."

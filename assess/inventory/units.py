@@ -1,0 +1,109 @@
+"""Unit suffixes of workbook headers and their conversion to SI.
+
+A numeric workbook column names its unit in a suffix: ``height_cm``,
+``mass_lb``, ``pta_cm_s2``. Each physical dimension accepts a fixed set of
+suffixes; values are converted once, at load time, with `pint
+<https://pint.readthedocs.io>`_ to the canonical unit of that dimension
+(``docs/nomenclature.md``): metres, kilograms, seconds, metres per second and,
+for accelerations, multiples of standard gravity g = 9.80665 m/s² (pint's
+``standard_gravity``, the same constant as
+``assess.mechanics.geometry.STANDARD_GRAVITY_M_S2``).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import pint
+
+
+@dataclass(frozen=True)
+class Dimension:
+    """A physical dimension: accepted suffixes and the canonical (output) unit."""
+
+    name: str
+    units: dict[str, str]  # suffix -> pint unit expression
+    labels: dict[str, str]  # suffix -> unit as printed in messages
+    canonical: str  # suffix of the canonical unit, used in output column names
+
+
+LENGTH = Dimension(
+    "length",
+    {"m": "meter", "cm": "centimeter", "mm": "millimeter", "in": "inch", "ft": "foot"},
+    {"m": "m", "cm": "cm", "mm": "mm", "in": "in", "ft": "ft"},
+    "m",
+)
+MASS = Dimension(
+    "mass",
+    {"kg": "kilogram", "lb": "pound"},
+    {"kg": "kg", "lb": "lb"},
+    "kg",
+)
+ACCELERATION = Dimension(
+    "acceleration",
+    {"g": "standard_gravity", "m_s2": "meter / second ** 2", "cm_s2": "centimeter / second ** 2"},
+    {"g": "g", "m_s2": "m/s²", "cm_s2": "cm/s²"},
+    "g",
+)
+PERIOD = Dimension(
+    "time",
+    {"s": "second", "ms": "millisecond"},
+    {"s": "s", "ms": "ms"},
+    "s",
+)
+VELOCITY = Dimension(
+    "velocity",
+    {"cm_s": "centimeter / second", "m_s": "meter / second", "in_s": "inch / second"},
+    {"cm_s": "cm/s", "m_s": "m/s", "in_s": "in/s"},
+    "m_s",
+)
+
+
+@lru_cache(maxsize=1)
+def _registry() -> pint.UnitRegistry:
+    return pint.UnitRegistry()
+
+
+@lru_cache(maxsize=None)
+def _factor(source_unit: str, target_unit: str) -> float:
+    """Multiplier taking a value in ``source_unit`` to ``target_unit`` (pint expressions)."""
+    return float(_registry().Quantity(1.0, source_unit).to(target_unit).magnitude)
+
+
+def to_canonical(value: float, dimension: Dimension, suffix: str) -> float:
+    """Convert ``value`` given in ``suffix`` units to the dimension's canonical unit.
+
+    Examples
+    --------
+    >>> to_canonical(90.0, LENGTH, "in")
+    2.286
+    >>> to_canonical(-75.0, VELOCITY, "cm_s")
+    -0.75
+    """
+    if suffix == dimension.canonical:
+        return float(value)
+    return float(value) * _factor(dimension.units[suffix], dimension.units[dimension.canonical])
+
+
+def label(dimension: Dimension, suffix: str) -> str:
+    """The unit as a person writes it, e.g. ``cm/s²`` for ``cm_s2``."""
+    return dimension.labels[suffix]
+
+
+def alternative_suffixes(value: float, dimension: Dimension, suffix: str,
+                         low: float, high: float, signed: bool = False) -> list[str]:
+    """Suffixes other than ``suffix`` under which ``value`` lands in ``[low, high]``.
+
+    Used to suggest the likely unit mistake behind an implausible value
+    (a height of 2286 "cm" is plausible in mm).
+    """
+    found = []
+    for other in dimension.units:
+        if other == suffix:
+            continue
+        converted = to_canonical(value, dimension, other)
+        if signed:
+            converted = abs(converted)
+        if low <= converted <= high:
+            found.append(other)
+    return found
