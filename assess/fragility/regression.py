@@ -30,6 +30,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import pandas as pd
 from scipy import stats
 
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
@@ -148,22 +149,40 @@ def probability_of_exceedance(im, capacity, zeta, eta, sigma):
     """P(Π > c | IM) = 1 − Φ(ln(c/(ζ IM^η))/σ_X), eq. (20) of [1].
 
     IM ≤ 0 means the block does not slide: P = 0. A capacity of zero
-    (no room at all) with IM > 0 gives P = 1.
+    (no room at all) with IM > 0 gives P = 1. NaN in gives NaN out.
+
+    Parameters
+    ----------
+    im : float, array-like or Series
+        Intensity measure PTA/(μg) − 1 [-].
+    capacity : float, array-like or Series
+        Capacity c = clearance·ωp²/PTA [-], broadcast against ``im``.
+    zeta, eta, sigma : float
+        Regression constants ζ, η, σ_X [-].
+
+    Returns
+    -------
+    float, ndarray or Series (the kind of ``im``; a float when both inputs are scalars)
 
     Examples
     --------
-    At the median demand the probability is one half:
+    ζ IM^η = 0.370 · 3^0.953 = 1.0541; ln(0.4/1.0541)/0.445 = −2.1776;
+    1 − Φ(−2.1776) = 0.9853:
 
-    >>> round(float(probability_of_exceedance(3.0, 0.370 * 3.0**0.953, 0.370, 0.953, 0.445)), 6)
-    0.5
+    >>> round(probability_of_exceedance(3.0, 0.4, 0.370, 0.953, 0.445), 4)
+    0.9853
     """
-    im = np.asarray(im, dtype=float)
-    capacity = np.asarray(capacity, dtype=float)
-    median = median_edp(im, zeta, eta)
+    im_b, capacity_b = np.broadcast_arrays(np.asarray(im, dtype=float), np.asarray(capacity, dtype=float))
+    median = median_edp(im_b, zeta, eta)
     with np.errstate(divide="ignore", invalid="ignore"):
-        z = np.log(capacity / np.where(median > 0, median, 1.0)) / sigma
-    probability = stats.norm.sf(z)
-    return np.where(im > 0, probability, 0.0)
+        z = np.log(capacity_b / np.where(median > 0, median, 1.0)) / sigma
+    probability = np.where(im_b > 0, stats.norm.sf(z), 0.0)  # sf: accurate in the upper tail
+    probability = np.where(np.isnan(im_b) | np.isnan(capacity_b), np.nan, probability)
+    if isinstance(im, pd.Series):
+        return pd.Series(probability, index=im.index, name="pf_sliding")
+    if probability.ndim == 0:
+        return float(probability)
+    return probability
 
 
 def ks_distance(standardised_residuals):

@@ -1,0 +1,327 @@
+"""Figures of the risk report, drawn with matplotlib and returned as SVG text.
+
+Every figure is a pure function of an :class:`~assess.result.AssessmentResult`
+(and, for the regression figure, the paper's Table 3) returning an SVG
+document as ``str``. The same result gives byte-identical SVG: the SVG hash
+salt is fixed, the date and creator are left out of the metadata, glyphs are
+written as paths (no font is needed to display them) and nothing depends on
+the clock or on global matplotlib state (each figure is drawn inside its own
+``rc_context`` on a :class:`~matplotlib.figure.Figure`, never through pyplot).
+
+The fragility curve itself is :func:`fragility_curve`, the paper's eq. 20.
+"""
+from __future__ import annotations
+
+import io
+import math
+import sys
+
+import matplotlib
+import matplotlib.ticker
+
+if "matplotlib.pyplot" not in sys.modules:  # headless; never switch an interactive session
+    matplotlib.use("Agg")
+
+import numpy as np  # noqa: E402
+import pandas as pd  # noqa: E402
+from matplotlib.backends.backend_agg import FigureCanvasAgg  # noqa: E402
+from matplotlib.figure import Figure  # noqa: E402
+from matplotlib.lines import Line2D  # noqa: E402
+from matplotlib.patches import Patch  # noqa: E402
+
+from assess.data import km2010_table3  # noqa: E402
+from assess.fragility import median_edp, probability_of_exceedance  # noqa: E402
+
+#: Capacities c of the paper's Fig. 12.
+PAPER_CAPACITIES = (0.2, 0.4, 0.6, 0.8)
+
+#: Colours of the risk classes (the same as the report's CSS).
+RISK_COLOURS = {
+    "high": "#c0392b",
+    "moderate": "#d68910",
+    "low": "#1e8449",
+    "anchored": "#7f8c8d",
+}
+
+#: Width of a figure [in]: the text width of a portrait A4 page with the report's margins.
+FIGURE_WIDTH_IN = 6.6
+
+#: Items per sliding-demand figure; a longer inventory is split over several figures.
+ITEMS_PER_DEMAND_FIGURE = 30
+
+_RC = {
+    "svg.hashsalt": "assess-report",
+    "svg.fonttype": "path",
+    "font.family": "DejaVu Sans",
+    "font.size": 8.0,
+    "axes.titlesize": 8.5,
+    "axes.labelsize": 8.0,
+    "legend.fontsize": 7.0,
+    "xtick.labelsize": 7.5,
+    "ytick.labelsize": 7.5,
+    "axes.spines.top": False,
+    "axes.spines.right": False,
+    "axes.grid": True,
+    "grid.color": "#dddddd",
+    "grid.linewidth": 0.5,
+    "path.simplify": False,
+}
+
+
+# --------------------------------------------------------------------------- physics
+#: Eq. 20 of the paper, from the one place it is computed (assess.fragility).
+fragility_curve = probability_of_exceedance
+
+
+def edp_median(im, zeta, eta):
+    """Median EDP ζ·IM^η (eq. 11) [–] for plotting: NaN where IM ≤ 0 (no sliding, no log)."""
+    im_array = np.asarray(im, dtype=float)
+    out = np.where(im_array > 0, median_edp(im_array, zeta, eta), np.nan)
+    return float(out) if np.ndim(im) == 0 else out
+
+
+# --------------------------------------------------------------------------- helpers
+def _new_figure(height_in: float, width_in: float = FIGURE_WIDTH_IN) -> Figure:
+    figure = Figure(figsize=(width_in, height_in), layout="constrained")
+    FigureCanvasAgg(figure)  # a renderer for measuring labels
+    return figure
+
+
+def _to_svg(figure: Figure) -> str:
+    buffer = io.StringIO()
+    figure.savefig(buffer, format="svg", metadata={"Date": None, "Creator": None})
+    return buffer.getvalue()
+
+
+def regression_constants(result) -> tuple[float, float, float, float, float]:
+    """``(zeta, eta, sigma, im_min, im_max)`` of ``result.regression``, the paper's by default."""
+    regression = result.regression or {}
+    return (float(regression.get("zeta", 0.370)), float(regression.get("eta", 0.953)),
+            float(regression.get("sigma", 0.445)), float(regression.get("im_min", 1.71)),
+            float(regression.get("im_max", 6.40)))
+
+
+def _freestanding(result) -> pd.DataFrame:
+    summary = result.summary
+    return summary[summary["risk"].astype(str) != "anchored"]
+
+
+def _place_labels(axes, points, labels, colours, fontsize=6.5) -> None:
+    """Label points by id, trying a few offsets so that labels do not overlap."""
+    renderer = axes.figure.canvas.get_renderer()
+    offsets = [(5, 4), (5, -9), (-5, 4), (-5, -9), (6, 12), (6, -17), (-6, 12), (-6, -17),
+               (14, 0), (-14, 0), (10, 20), (10, -25)]
+    placed = []
+    for (x, y), label, colour in zip(points, labels, colours):
+        chosen = None
+        for dx, dy in offsets:
+            text = axes.annotate(label, (x, y), xytext=(dx, dy), textcoords="offset points",
+                                 fontsize=fontsize, color=colour,
+                                 ha="left" if dx >= 0 else "right", va="bottom")
+            box = text.get_window_extent(renderer).expanded(1.05, 1.1)
+            if not any(box.overlaps(other) for other in placed):
+                chosen = (text, box)
+                break
+            text.remove()
+        if chosen is None:  # crowded: keep the first offset, with a thin leader line
+            text = axes.annotate(label, (x, y), xytext=offsets[0], textcoords="offset points",
+                                 fontsize=fontsize, color=colour,
+                                 arrowprops={"arrowstyle": "-", "color": colour, "lw": 0.4})
+            chosen = (text, text.get_window_extent(renderer))
+        placed.append(chosen[1])
+
+
+def _shade_fitted_range(axes, im_min: float, im_max: float, label: str | None) -> None:
+    axes.axvspan(im_min, im_max, color="#eaf2f8", zorder=0, lw=0, label=label)
+
+
+# --------------------------------------------------------------------------- figures
+def fragility_figure(result) -> str:
+    """Fragility curves as the paper's Fig. 12, with each freestanding item marked.
+
+    Curves: :func:`fragility_curve` for c = 0.2, 0.4, 0.6, 0.8 against IM.
+    Points: each freestanding item's governing ``(im, pf_sliding)`` from the
+    summary, coloured by risk and labelled by id; an item's point uses its own
+    capacity c = clearance·ωp²/PTA, so it sits between the curves.
+    """
+    zeta, eta, sigma, im_min, im_max = regression_constants(result)
+    items = _freestanding(result)
+    items = items[np.isfinite(items["im"].astype(float))
+                  & np.isfinite(items["pf_sliding"].astype(float))]
+    im_top = max(7.0, float(items["im"].max()) * 1.05 if len(items) else 0.0)
+    im_bottom = min(0.0, float(items["im"].min()) - 0.2 if len(items) else 0.0)
+    grid = np.linspace(im_bottom, im_top, 701)
+    with matplotlib.rc_context(_RC):
+        figure = _new_figure(3.5)
+        axes = figure.add_subplot()
+        _shade_fitted_range(axes, im_min, im_max,
+                            f"IM range of the paper's 27 simulations ({im_min:g}–{im_max:g})")
+        styles = ["-", "--", "-.", ":"]
+        for capacity, style in zip(PAPER_CAPACITIES, styles):
+            axes.plot(grid, fragility_curve(grid, capacity, zeta, eta, sigma), style,
+                      color="#2c3e50", lw=1.1, label=f"c = {capacity:g}")
+        for risk, group in items.groupby(items["risk"].astype(str), sort=False):
+            axes.scatter(group["im"].astype(float), group["pf_sliding"].astype(float), s=18,
+                         color=RISK_COLOURS.get(risk, "#000000"), edgecolor="white",
+                         linewidth=0.5, zorder=5)
+        _place_labels(axes, list(zip(items["im"].astype(float), items["pf_sliding"].astype(float))),
+                      list(items["id"].astype(str)),
+                      [RISK_COLOURS.get(str(r), "#000000") for r in items["risk"]])
+        axes.set_xlim(im_bottom, im_top)
+        axes.set_ylim(-0.02, 1.05)
+        axes.set_xlabel("Intensity measure IM = PTA/(μg) − 1")
+        axes.set_ylabel("Pf = P(sliding demand > capacity c)")
+        handles, labels = axes.get_legend_handles_labels()  # the range, then the 4 curves
+        second_row = [(handles[0], labels[0])] + [
+            (Line2D([], [], ls="", marker="o", ms=4.5, color=RISK_COLOURS[r]), f"item, {r} risk")
+            for r in ("high", "moderate", "low")]
+        ordered = []  # the legend fills column by column: curves on the first row
+        for curve, other in zip(zip(handles[1:], labels[1:]), second_row):
+            ordered += [curve, other]
+        figure.legend([h for h, _ in ordered], [label for _, label in ordered],
+                      loc="outside lower center", ncol=4, frameon=False)
+        return _to_svg(figure)
+
+
+def regression_figure(result, table3: pd.DataFrame | None = None) -> str:
+    """IM–EDP data and regression as the paper's Fig. 10.
+
+    Left, log–log: the 27 (IM, Π) points of Table 3, the median ζ·IM^η and the
+    16th–84th percentile band (median × e^{∓σ}), the fitted IM range shaded.
+    Right: the same on linear axes (the funnel of Fig. 10, bottom). The items'
+    governing IM is marked on the median line (items with a sliding estimate).
+    """
+    zeta, eta, sigma, im_min, im_max = regression_constants(result)
+    table = km2010_table3() if table3 is None else table3
+    items = _freestanding(result)
+    items = items[np.isfinite(items["im"].astype(float)) & (items["im"].astype(float) > 0)
+                  & np.isfinite(items["sliding_median_cm"].astype(float))]
+    im_top = max(7.0, float(items["im"].max()) * 1.05 if len(items) else 0.0)
+    markers = {"FORMA": "o", "KELVINATOR": "s", "ASP": "^"}
+    with matplotlib.rc_context(_RC):
+        figure = _new_figure(3.3)
+        log_axes, linear_axes = figure.subplots(1, 2)
+        for axes, logscale in ((log_axes, True), (linear_axes, False)):
+            lower = 0.3 if logscale else 0.0
+            grid = (np.geomspace(lower, im_top, 400) if logscale
+                    else np.linspace(1e-3, im_top, 400))
+            median = zeta * grid ** eta
+            _shade_fitted_range(axes, im_min, im_max, "fitted IM range")
+            axes.fill_between(grid, median * math.exp(-sigma), median * math.exp(sigma),
+                              color="#aab7b8", alpha=0.45, lw=0,
+                              label="16th–84th percentile (median × e$^{\\mp\\sigma}$)")
+            axes.plot(grid, median, color="#2c3e50", lw=1.2,
+                      label=f"median Π = {zeta:.3g}·IM$^{{{eta:.3g}}}$")
+            for equipment, group in table.groupby("equipment", sort=False):
+                axes.scatter(group["im"], group["edp"], s=14, marker=markers.get(equipment, "o"),
+                             facecolor="white", edgecolor="#34495e", linewidth=0.8,
+                             zorder=4, label=f"Table 3, {equipment}")
+            if len(items):
+                item_im = items["im"].astype(float).to_numpy()
+                axes.scatter(item_im, zeta * item_im ** eta, s=26, marker="D",
+                             color=[RISK_COLOURS.get(str(r), "#000") for r in items["risk"]],
+                             edgecolor="white", linewidth=0.5, zorder=6)
+            if logscale:
+                axes.set_xscale("log")
+                axes.set_yscale("log")
+                axes.set_xlim(lower, im_top * 1.1)
+                axes.set_ylim(0.05, 10)
+                axes.set_title("log–log: ln Π is linear in ln IM", loc="left")
+                axes.set_xticks([0.5, 1, 2, 3, 5, 7])
+                axes.set_yticks([0.1, 0.2, 0.5, 1, 2, 5])
+                for axis in (axes.xaxis, axes.yaxis):
+                    axis.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda v, _: f"{v:g}"))
+                    axis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+            else:
+                axes.set_xlim(0, im_top)
+                axes.set_ylim(0, max(4.0, float(table["edp"].max()) * 1.2))
+                axes.set_title("linear: the scatter grows with IM", loc="left")
+            axes.set_xlabel("IM = PTA/(μg) − 1")
+            axes.set_ylabel("EDP Π = Umax·ωp²/PTA")
+        if len(items):
+            item_im = items["im"].astype(float).to_numpy()
+            _place_labels(linear_axes, list(zip(item_im, zeta * item_im ** eta)),
+                          list(items["id"].astype(str)),
+                          [RISK_COLOURS.get(str(r), "#000") for r in items["risk"]])
+        handles, labels = log_axes.get_legend_handles_labels()
+        if len(items):
+            handles.append(Line2D([], [], ls="", marker="D", ms=4.5, color="#7f8c8d"))
+            labels.append("items (colour = risk)")
+        figure.legend(handles, labels, loc="outside lower center", ncol=3, frameon=False)
+        return _to_svg(figure)
+
+
+def sliding_demand_figures(result, per_figure: int = ITEMS_PER_DEMAND_FIGURE) -> list[str]:
+    """Per item: median sliding (bar) and 84th percentile (whisker) against clearance.
+
+    One horizontal row per freestanding item, in the order of ``result.summary``
+    (the caller sorts it); an item with no sliding estimate (it rocks, or stays
+    put) says so in its row. Inventories longer than ``per_figure`` items are
+    split over several figures. Returns a list of SVG documents (empty when no
+    item is freestanding).
+    """
+    items = _freestanding(result)
+    return [_sliding_demand_figure(items.iloc[start:start + per_figure])
+            for start in range(0, len(items), per_figure)]
+
+
+def _short(text: str, limit: int = 26) -> str:
+    return text if len(text) <= limit else text[: limit - 1] + "…"
+
+
+def _left_align_tick_labels(axes) -> None:
+    """Left-align the y tick labels (ids in one column) by padding them by the widest one."""
+    renderer = axes.figure.canvas.get_renderer()
+    labels = axes.get_yticklabels()
+    if not labels:
+        return
+    widest_px = max(label.get_window_extent(renderer).width for label in labels)
+    for label in labels:
+        label.set_horizontalalignment("left")
+    axes.tick_params(axis="y", pad=widest_px * 72.0 / axes.figure.dpi + 3.0)
+
+
+def _sliding_demand_figure(items: pd.DataFrame) -> str:
+    count = len(items)
+    median = items["sliding_median_cm"].astype(float).to_numpy()
+    p84 = items["sliding_p84_cm"].astype(float).to_numpy()
+    clearance = items["clearance_cm"].astype(float).to_numpy()
+    finite = np.concatenate([v[np.isfinite(v)] for v in (median, p84, clearance)] + [[10.0]])
+    x_top = float(np.max(finite)) * 1.12
+    rows = np.arange(count)
+    colours = [RISK_COLOURS.get(str(r), "#000000") for r in items["risk"]]
+    with matplotlib.rc_context(_RC):
+        figure = _new_figure(0.9 + 0.27 * count)
+        axes = figure.add_subplot()
+        axes.grid(axis="y", visible=False)
+        for row, m, p, c, colour, mode in zip(rows, median, p84, clearance, colours,
+                                              items["mode"].astype(str)):
+            if np.isfinite(m):
+                axes.barh(row, m, height=0.55, color=colour, alpha=0.85, zorder=3)
+            if np.isfinite(m) and np.isfinite(p):
+                axes.plot([m, p], [row, row], color="#2c3e50", lw=1.0, zorder=4)
+                axes.plot([p, p], [row - 0.17, row + 0.17], color="#2c3e50", lw=1.0, zorder=4)
+            if not np.isfinite(m):
+                note = {"rock": "rocks: sliding not estimated, see action",
+                        "rest": "does not move"}.get(mode, "no sliding estimate")
+                x_note = (c if np.isfinite(c) else 0.0) + x_top * 0.015
+                axes.text(x_note, row, note, va="center", fontsize=6.8,
+                          color=colour, style="italic")
+            if np.isfinite(c):
+                axes.plot([c, c], [row - 0.36, row + 0.36], color="black", lw=2.0, zorder=5,
+                          solid_capstyle="butt")
+        labels = [f"{_short(str(i), 12)}  {_short(str(n))}" for i, n in
+                  zip(items["id"], items["name"])]
+        axes.set_yticks(rows, labels)
+        _left_align_tick_labels(axes)
+        axes.set_ylim(count - 0.5, -0.5)
+        axes.set_xlim(0, x_top)
+        axes.set_xlabel("sliding [cm]")
+        axes.tick_params(axis="y", length=0)
+        handles = [Patch(color="#7f8c8d", alpha=0.85, label="median sliding (bar colour = risk)"),
+                   Line2D([], [], color="#2c3e50", lw=1.0, marker="|", ms=6,
+                          label="84th percentile (1 in 6 chance of more)"),
+                   Line2D([], [], color="black", lw=0, marker="|", ms=9, mew=2.0,
+                          label="clearance (room to slide)")]
+        figure.legend(handles=handles, loc="outside upper center", ncol=3, frameon=False)
+        return _to_svg(figure)

@@ -1,0 +1,338 @@
+"""The risk report: HTML from a jinja2 template, PDF from that HTML with WeasyPrint.
+
+Nothing the report shows is fetched: the stylesheet is inlined, the figures
+are SVG embedded as ``data:`` URIs, and :func:`render_pdf` renders with a URL
+fetcher that refuses every URL that is not a ``data:`` URI. Text from the
+workbook (names, rooms, ids, motions, actions) is escaped by jinja2's
+autoescape. The report carries no timestamp, so the same result gives the
+same HTML byte for byte.
+"""
+from __future__ import annotations
+
+import base64
+import dataclasses
+import functools
+import math
+import urllib.parse
+from importlib import resources
+from pathlib import Path
+
+import jinja2
+import pandas as pd
+from markupsafe import Markup
+
+import assess
+from assess.report import figures
+
+TEMPLATE_NAME = "report.html.j2"
+STYLESHEET_NAME = "report.css"
+
+RISK_ORDER = {"high": 0, "moderate": 1, "low": 2, "anchored": 3}
+
+#: What each mode of response means, in plain words.
+MODE_TEXT = {
+    "rest": "stays put",
+    "slide": "slides",
+    "rock": "rocks",
+    "slide-rock": "slides and rocks",
+}
+
+#: Headings for the flag codes the pipeline is known to emit; others get their code.
+FLAG_TITLES = {
+    "im_extrapolated": "Outside the range the regression was fitted on",
+    "rocks": "Rocking",
+    "not_simulated": "Not simulated",
+}
+
+DASH = "–"
+
+
+# --------------------------------------------------------------------------- templates
+def template_text(name: str) -> str:
+    """The text of a packaged template or stylesheet.
+
+    Reads it from the package ``assess.templates`` (how an installed wheel
+    ships ``templates/``); in a source checkout, where that package does not
+    exist, from the repository's ``templates/`` folder.
+    """
+    try:
+        return resources.files("assess.templates").joinpath(name).read_text(encoding="utf-8")
+    except (ModuleNotFoundError, FileNotFoundError, NotADirectoryError):
+        return (Path(__file__).parents[2] / "templates" / name).read_text(encoding="utf-8")
+
+
+def make_environment() -> jinja2.Environment:
+    """A jinja2 environment that autoescapes everything and fails on undefined names."""
+    environment = jinja2.Environment(
+        loader=jinja2.FunctionLoader(template_text),
+        autoescape=True,
+        undefined=jinja2.StrictUndefined,
+        trim_blocks=True,
+        lstrip_blocks=True,
+        keep_trailing_newline=True,
+    )
+    environment.filters["sig"] = format_significant
+    environment.filters["cm"] = format_cm
+    environment.filters["percent"] = format_percent
+    return environment
+
+
+# --------------------------------------------------------------------------- formatting
+def _finite(value) -> float | None:
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        return None
+    return number if math.isfinite(number) else None
+
+
+def format_significant(value, digits: int = 2) -> str:
+    """``value`` to ``digits`` significant digits (0.30, 3.38, 12000), never in exponent form; NaN as "–"."""
+    number = _finite(value)
+    if number is None:
+        return DASH
+    if number == 0:
+        return "0"
+    decimals = digits - 1 - math.floor(math.log10(abs(number)))
+    rounded = round(number, decimals)
+    if rounded != 0:  # rounding may carry into the next decade (0.996 -> 1.0)
+        decimals = digits - 1 - math.floor(math.log10(abs(rounded)))
+        rounded = round(number, decimals)
+    return f"{rounded:.{max(decimals, 0)}f}".replace("-", "−")
+
+
+def format_cm(value) -> str:
+    """A length in cm as an integer; NaN as "–"."""
+    number = _finite(value)
+    if number is None:
+        return DASH
+    return f"{round(number):d}".replace("-", "−")
+
+
+def format_percent(value) -> str:
+    """A probability as a whole percentage ("<1%" and ">99%" at the ends); NaN as "–"."""
+    number = _finite(value)
+    if number is None:
+        return DASH
+    if number <= 0:
+        return "0%"
+    if number < 0.005:
+        return "<1%"
+    if number >= 1:
+        return "100%"
+    if number > 0.995:
+        return ">99%"
+    return f"{100 * number:.0f}%"
+
+
+def _text(value) -> str:
+    """Workbook text as a plain string ("" for missing)."""
+    if value is None:
+        return ""
+    if isinstance(value, float) and math.isnan(value):
+        return ""
+    if value is pd.NA or value is pd.NaT:
+        return ""
+    return str(value)
+
+
+def _integer_text(value) -> str:
+    number = _finite(value)
+    if number is None:
+        return _text(value) or DASH
+    return f"{number:.0f}" if number == int(number) else f"{number:g}"
+
+
+# --------------------------------------------------------------------------- context
+def _sorted_summary(summary: pd.DataFrame) -> pd.DataFrame:
+    """Items by urgency: risk class, then rocking before sliding, then Pf high to low, then id."""
+    keys = pd.DataFrame({
+        "risk": summary["risk"].astype(str).map(RISK_ORDER).fillna(len(RISK_ORDER)),
+        "rocks": ~summary["mode"].astype(str).isin(["rock", "slide-rock"]),
+        "pf": -pd.to_numeric(summary["pf_sliding"], errors="coerce").fillna(-1.0),
+        "id": summary["id"].astype(str),
+    }, index=summary.index)
+    order = keys.sort_values(["risk", "rocks", "pf", "id"], kind="mergesort").index
+    return summary.loc[order]
+
+
+def _what_happens(row: pd.Series) -> str:
+    mode = _text(row.get("mode"))
+    return {
+        "rock": "Rocks; may overturn",
+        "slide-rock": "Slides and rocks; may overturn",
+        "slide": "Slides",
+        "rest": "Stays put",
+    }.get(mode, mode.capitalize() or DASH)
+
+
+def _item_row(row: pd.Series) -> dict:
+    direction = _finite(row.get("governing_direction"))
+    motion = _text(row.get("governing_motion"))
+    quantity = _finite(row.get("quantity"))
+    return {
+        "id": _text(row.get("id")),
+        "name": _text(row.get("name")),
+        "quantity": int(quantity) if quantity is not None and quantity > 1 else None,
+        "room": _text(row.get("room")),
+        "floor": _integer_text(row.get("floor")),
+        "mode": _text(row.get("mode")) or DASH,
+        "what_happens": _what_happens(row),
+        "b_over_h": format_significant(row.get("b_over_h"), 2),
+        "mu": format_significant(row.get("mu"), 2),
+        "motion": motion or DASH,
+        "direction": f"{direction:.0f}" if direction is not None else "",
+        "pta": format_significant(row.get("pta_g"), 2),
+        "tp": format_significant(row.get("tp_s"), 2),
+        "im": format_significant(row.get("im"), 3),
+        "median": format_cm(row.get("sliding_median_cm")),
+        "p84": format_cm(row.get("sliding_p84_cm")),
+        "clearance": format_cm(row.get("clearance_cm")),
+        "pf": format_percent(row.get("pf_sliding")),
+        "overturn": format_percent(row.get("overturn_fraction")),
+        "risk": _text(row.get("risk")),
+        "action": _text(row.get("action")) or DASH,
+    }
+
+
+def _flag_groups(flags) -> list[dict]:
+    groups: dict[str, list[dict]] = {}
+    for flag in flags:
+        groups.setdefault(flag.code, []).append({"item_id": flag.item_id,
+                                                 "message": flag.message})
+    return [{"code": code,
+             "title": FLAG_TITLES.get(code, code.replace("_", " ").capitalize()),
+             "entries": entries}
+            for code, entries in groups.items()]
+
+
+def _data_uri(svg: str) -> str:
+    return "data:image/svg+xml;base64," + base64.b64encode(svg.encode("utf-8")).decode("ascii")
+
+
+def report_context(result) -> dict:
+    """Everything the template shows, formatted (pure: no clock, no I/O)."""
+    summary = _sorted_summary(result.summary)
+    rows = [_item_row(row) for _, row in summary.iterrows()]
+    counts = result.risk_counts()
+    quantity = pd.to_numeric(summary.get("quantity", pd.Series(1, index=summary.index)),
+                             errors="coerce").fillna(1)
+    units = {risk: int(quantity[summary["risk"].astype(str) == risk].sum()) for risk in counts}
+    zeta, eta, sigma, im_min, im_max = figures.regression_constants(result)
+    settings = result.settings or {}
+    sorted_result = _with_summary(result, summary)
+    demand_svgs = figures.sliding_demand_figures(sorted_result)
+    return {
+        "version": assess.__version__,
+        "facility": _text(result.facility),
+        "site": _text(result.site),
+        "level_description": result.level.description,
+        "level_label": _text(result.level_label),
+        "workbook": Path(result.workbook).name if result.workbook else "",
+        "simulated": bool(result.simulated),
+        "seed": result.seed,
+        "counts": counts,
+        "units": units,
+        "total_items": len(rows),
+        "total_units": int(quantity.sum()),
+        "high": [r for r in rows if r["risk"] == "high"],
+        "moderate": [r for r in rows if r["risk"] == "moderate"],
+        "rows": rows,
+        "flag_groups": _flag_groups(result.flags),
+        "flag_count": len(result.flags),
+        "regression": {"zeta": zeta, "eta": eta, "sigma": sigma, "im_min": im_min,
+                       "im_max": im_max,
+                       "source": _text((result.regression or {}).get("source"))
+                       or "Konstantinidis & Makris (2010)"},
+        "thresholds": {"high": _finite(settings.get("risk_pf_high")),
+                       "moderate": _finite(settings.get("risk_pf_moderate"))},
+        "figures": {
+            "demand": [_data_uri(svg) for svg in demand_svgs],
+            "fragility": _data_uri(figures.fragility_figure(sorted_result)),
+            "regression": _data_uri(figures.regression_figure(sorted_result)),
+        },
+        "stylesheet": Markup(template_text(STYLESHEET_NAME)),  # our own file, not user text
+    }
+
+
+def _with_summary(result, summary: pd.DataFrame):
+    """A copy of ``result`` whose summary is ``summary`` (the input is not mutated)."""
+    return dataclasses.replace(result, summary=summary)
+
+
+def render_html(result) -> str:
+    """The risk report of ``result`` as one self-contained HTML document."""
+    return make_environment().get_template(TEMPLATE_NAME).render(report_context(result))
+
+
+# --------------------------------------------------------------------------- PDF
+def _weasyprint():
+    import weasyprint
+    from weasyprint.urls import URLFetcher, URLFetcherResponse
+
+    return weasyprint, URLFetcher, URLFetcherResponse
+
+
+class RefusedURLError(ValueError):
+    """The report tried to load something that is not embedded as a ``data:`` URI."""
+
+
+@functools.cache
+def _data_only_fetcher_class():
+    _, URLFetcher, URLFetcherResponse = _weasyprint()
+
+    class DataOnlyURLFetcher(URLFetcher):
+        """A WeasyPrint URL fetcher that decodes ``data:`` URIs and refuses everything else.
+
+        It never opens a connection or a file: ``data:`` URIs are decoded here,
+        not by urllib. Every refused URL is kept in :attr:`refused` (WeasyPrint
+        catches the error, logs it and renders without the resource).
+        """
+
+        def __init__(self):
+            super().__init__(allowed_protocols=("data",), fail_on_errors=False)
+            self.refused: list[str] = []
+
+        def fetch(self, url, headers=None):
+            if not str(url).lower().startswith("data:"):
+                self.refused.append(str(url))
+                raise RefusedURLError(f"refused to fetch {url!r}: the report may only use "
+                                      "resources embedded as data: URIs")
+            media_type, body = decode_data_uri(str(url))
+            return URLFetcherResponse(url, body=body, headers={"Content-Type": media_type})
+
+    return DataOnlyURLFetcher
+
+
+def decode_data_uri(url: str) -> tuple[str, bytes]:
+    """``(media type, bytes)`` of a ``data:`` URI (RFC 2397)."""
+    header, comma, payload = url[len("data:"):].partition(",")
+    if not comma:
+        raise RefusedURLError(f"malformed data: URI {url[:60]!r}")
+    parameters = header.split(";")
+    is_base64 = bool(parameters) and parameters[-1].strip().lower() == "base64"
+    if is_base64:
+        parameters = parameters[:-1]
+    media_type = ";".join(parameters) or "text/plain;charset=US-ASCII"
+    if is_base64:
+        body = base64.b64decode(urllib.parse.unquote_to_bytes(payload), validate=False)
+    else:
+        body = urllib.parse.unquote_to_bytes(payload)
+    return media_type, body
+
+
+def data_only_url_fetcher():
+    """A new fetcher that serves ``data:`` URIs and refuses every other URL."""
+    return _data_only_fetcher_class()()
+
+
+def render_pdf(html: str, *, url_fetcher=None) -> bytes:
+    """The PDF of a report's HTML, fetching nothing from the network or the disk.
+
+    ``url_fetcher`` defaults to :func:`data_only_url_fetcher`; pass one to
+    inspect its ``refused`` list afterwards.
+    """
+    weasyprint, _, _ = _weasyprint()
+    fetcher = data_only_url_fetcher() if url_fetcher is None else url_fetcher
+    document = weasyprint.HTML(string=html, base_url=None, url_fetcher=fetcher)
+    return document.write_pdf()

@@ -1,0 +1,144 @@
+"""The command as a user runs it, in a scratch folder."""
+import os
+import subprocess
+import sys
+import zipfile
+from pathlib import Path
+
+import pandas as pd
+import pytest
+
+from assess import cli
+
+ROOT = Path(__file__).resolve().parents[1]
+LAB = ROOT / "inventories" / "lab.xlsx"
+SPEC_SUMMARY = ["id", "name", "floor", "alpha_rad", "p_rad_s", "b_over_h", "mu", "mode", "pta_g", "im",
+                "sliding_median_cm", "sliding_p84_cm", "clearance_cm", "pf_sliding", "overturn_fraction",
+                "theta_max_over_alpha", "risk"]
+SPEC_MOTIONS = ["id", "motion", "direction", "pta_g", "tp_s", "im", "edp_median", "sliding_median_cm",
+                "pf_sliding", "sim_sliding_max_cm", "sim_theta_max_over_alpha", "sim_overturned"]
+
+
+def run(*args, cwd):
+    return subprocess.run([sys.executable, "-m", "assess", *map(str, args)], cwd=cwd,
+                          capture_output=True, text=True)
+
+
+@pytest.fixture(scope="module")
+def lab_run(tmp_path_factory):
+    scratch = tmp_path_factory.mktemp("lab")
+    completed = run(LAB, "--hazard", "2in50", cwd=scratch)
+    return scratch, completed
+
+
+def test_main_job_writes_the_four_files(lab_run):
+    scratch, completed = lab_run
+    assert completed.returncode == 0, completed.stderr
+    out = scratch / "reports" / "lab-2in50"
+    assert sorted(p.name for p in out.iterdir()) == ["motions.csv", "report.html", "report.pdf", "summary.csv"]
+    summary = pd.read_csv(out / "summary.csv")
+    motions = pd.read_csv(out / "motions.csv")
+    assert set(SPEC_SUMMARY) <= set(summary.columns)
+    assert set(SPEC_MOTIONS) <= set(motions.columns)
+    assert summary["id"].is_unique and len(summary) >= 25
+    assert set(summary["mode"].dropna()) <= {"rest", "slide", "rock", "slide-rock"}
+    assert set(summary["risk"]) <= {"low", "moderate", "high", "anchored"}
+    assert (out / "report.pdf").read_bytes().startswith(b"%PDF")
+    assert "progress" not in completed.stdout and "items" in completed.stderr  # progress goes to stderr
+
+
+def test_lab_prototypes_on_the_ground_reproduce_table3_im(lab_run):
+    """The sample building holds the paper's FORMA on floor 0 under its Table 3 motions."""
+    scratch, _ = lab_run
+    out = scratch / "reports" / "lab-2in50"
+    motions = pd.read_csv(out / "motions.csv")
+    summary = pd.read_csv(out / "summary.csv")
+    forma_ids = summary.loc[summary["name"].str.contains("FORMA") & (summary["floor"] == 0), "id"]
+    assert len(forma_ids) == 1
+    forma = motions[motions["id"].isin(forma_ids)]
+    corralitos = forma[forma["motion"].str.contains("Corralitos") & (forma["pta_g"] == 0.84)]
+    assert len(corralitos) > 0
+    assert corralitos["im"].iloc[0] == pytest.approx(5.45, abs=0.005 / 0.13 + 0.005)
+
+
+def test_same_inputs_give_the_same_files(lab_run, tmp_path):
+    scratch, _ = lab_run
+    completed = run(LAB, "--hazard", "2475yr", "--out", tmp_path / "again", cwd=tmp_path)
+    assert completed.returncode == 0, completed.stderr
+    for name in ("summary.csv", "motions.csv", "report.html"):
+        assert (tmp_path / "again" / name).read_bytes() == (scratch / "reports" / "lab-2in50" / name).read_bytes()
+
+
+def test_bad_workbook_exit_2_no_traceback_nothing_written(tmp_path):
+    bad = tmp_path / "bad.xlsx"
+    bad.write_text("this is not a workbook")
+    completed = run(bad, "--hazard", "2in50", "--out", tmp_path / "out", cwd=tmp_path)
+    assert completed.returncode == 2
+    assert "bad.xlsx" in completed.stderr and "Traceback" not in completed.stderr
+    assert not (tmp_path / "out").exists()
+
+
+def test_unknown_level_lists_the_levels(tmp_path):
+    completed = run(LAB, "--hazard", "10in50", "--out", tmp_path / "out", cwd=tmp_path)
+    assert completed.returncode == 2
+    assert "'2in50'" in completed.stderr and "sheet 'hazard'" in completed.stderr
+    assert "Traceback" not in completed.stderr and not (tmp_path / "out").exists()
+
+
+def test_wrong_option_values_exit_2(tmp_path):
+    for args in (["--hazard", "sometimes"], ["--hazard", "2in50", "--format", "docx"],
+                 ["--hazard", "2in50", "--jobs", "0"]):
+        completed = run(LAB, *args, cwd=tmp_path)
+        assert completed.returncode == 2, args
+        assert "Traceback" not in completed.stderr
+
+
+def test_html_only_format(tmp_path):
+    completed = run(LAB, "--hazard", "2in50", "--format", "html", "--out", tmp_path / "o", "--quiet", cwd=tmp_path)
+    assert completed.returncode == 0, completed.stderr
+    assert sorted(p.name for p in (tmp_path / "o").iterdir()) == ["motions.csv", "report.html", "summary.csv"]
+    assert completed.stderr == ""
+
+
+def test_failure_while_rendering_leaves_old_outputs_untouched(tmp_path, monkeypatch, capsys):
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "summary.csv").write_text("previous run\n")
+
+    def broken(html):
+        raise RuntimeError("renderer crashed")
+
+    import assess.report
+
+    monkeypatch.setattr(assess.report, "render_pdf", broken)
+    code = cli.main([str(LAB), "--hazard", "2in50", "--out", str(out), "--quiet"])
+    assert code == 1
+    assert "internal error" in capsys.readouterr().err
+    assert (out / "summary.csv").read_text() == "previous run\n"
+    assert sorted(p.name for p in out.iterdir()) == ["summary.csv"]
+    assert [p.name for p in tmp_path.iterdir()] == ["out"]  # no staging folder left behind
+
+
+def test_help_describes_every_option():
+    completed = subprocess.run([sys.executable, "-m", "assess", "--help"], capture_output=True, text=True)
+    assert completed.returncode == 0
+    for option in ("--hazard", "--out", "--format", "--jobs", "--seed"):
+        assert option in completed.stdout
+
+
+def test_installed_wheel_finds_its_templates(tmp_path):
+    """Build the wheel, check it carries the templates, and render from it outside the checkout."""
+    built = subprocess.run([sys.executable, "-m", "pip", "wheel", "--no-deps", "-q", "-w", str(tmp_path), str(ROOT)],
+                           capture_output=True, text=True)
+    assert built.returncode == 0, built.stderr
+    wheel = next(tmp_path.glob("assess-*.whl"))
+    names = zipfile.ZipFile(wheel).namelist()
+    assert "assess/templates/report.html.j2" in names and "assess/templates/report.css" in names
+    unpacked = tmp_path / "site"
+    zipfile.ZipFile(wheel).extractall(unpacked)
+    probe = ("import assess.report.render as r; from pathlib import Path; "
+             "t = r.template_text('report.html.j2'); print(len(t) > 100)")
+    env = {**os.environ, "PYTHONPATH": str(unpacked)}
+    completed = subprocess.run([sys.executable, "-c", probe], cwd=tmp_path, env=env, capture_output=True, text=True)
+    assert completed.returncode == 0, completed.stderr
+    assert completed.stdout.strip() == "True"
