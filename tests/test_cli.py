@@ -65,7 +65,7 @@ def test_same_inputs_give_the_same_files(lab_run, tmp_path):
     scratch, _ = lab_run
     completed = run(LAB, "--hazard", "2475yr", "--out", tmp_path / "again", cwd=tmp_path)
     assert completed.returncode == 0, completed.stderr
-    for name in ("summary.csv", "motions.csv", "report.html"):
+    for name in ("summary.csv", "motions.csv", "report.html", "report.pdf"):
         assert (tmp_path / "again" / name).read_bytes() == (scratch / "reports" / "lab-2in50" / name).read_bytes()
 
 

@@ -10,9 +10,11 @@ same HTML byte for byte.
 from __future__ import annotations
 
 import base64
+import contextlib
 import dataclasses
 import functools
 import math
+import os
 import urllib.parse
 from importlib import resources
 from pathlib import Path
@@ -335,4 +337,20 @@ def render_pdf(html: str, *, url_fetcher=None) -> bytes:
     weasyprint, _, _ = _weasyprint()
     fetcher = data_only_url_fetcher() if url_fetcher is None else url_fetcher
     document = weasyprint.HTML(string=html, base_url=None, url_fetcher=fetcher)
-    return document.write_pdf()
+    with _fixed_build_date():
+        return document.write_pdf()
+
+
+@contextlib.contextmanager
+def _fixed_build_date():
+    """Pin the dates WeasyPrint and fontTools write into the PDF, so that the same
+    report gives the same bytes (SOURCE_DATE_EPOCH, reproducible-builds.org).
+    A value the user has set is kept; the environment is restored afterwards."""
+    previous = os.environ.get("SOURCE_DATE_EPOCH")
+    if previous is None:
+        os.environ["SOURCE_DATE_EPOCH"] = "0"
+    try:
+        yield
+    finally:
+        if previous is None:
+            os.environ.pop("SOURCE_DATE_EPOCH", None)
