@@ -8,7 +8,9 @@ With ωp = 2π/Tp and acceleration amplitude ap (SPEC §4):
 * ``C`` (Type-C1): ü = ap cos(ωp t + φ), 0 ≤ t ≤ (3/2 − φ/π) Tp, with φ chosen
   so that the pulse ends with zero ground velocity and displacement.
 
-and ü = 0 outside. The velocity amplitude is vp = ap/ωp for A, B and C.
+and ü = 0 outside. The velocity amplitude vp (peak floor velocity of the pulse)
+is ap/ωp for B, 2ap/ωp for A (u̇ = (ap/ωp)(1 − cos ωp t); the paper's
+u_A = vp[ωp t − sin ωp t]/(2ωp)) and ap/ωp·(1 + sin φ) for C1.
 
 References
 ----------
