@@ -35,24 +35,17 @@ def _formats(text: str) -> tuple[str, ...]:
     return chosen
 
 
-def _positive_int(text: str) -> int:
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"'{text}' is not a whole number") from None
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"'{text}' must be 1 or more")
-    return value
-
-
-def _non_negative_int(text: str) -> int:
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"'{text}' is not a whole number") from None
-    if value < 0:
-        raise argparse.ArgumentTypeError(f"'{text}' must be 0 or more")
-    return value
+def _whole_number(minimum: int):
+    """An argparse type: a whole number of at least ``minimum``."""
+    def parse(text: str) -> int:
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"'{text}' is not a whole number") from None
+        if value < minimum:
+            raise argparse.ArgumentTypeError(f"'{text}' must be {minimum} or more")
+        return value
+    return parse
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -67,9 +60,9 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--format", metavar="FORMATS", type=_formats, default=FORMATS,
                         help="report formats, comma-separated: html, pdf (default: html,pdf); "
                              "the CSV files are always written")
-    parser.add_argument("--jobs", metavar="N", type=_positive_int, default=1,
+    parser.add_argument("--jobs", metavar="N", type=_whole_number(1), default=1,
                         help="parallel worker processes for time-history simulation (default 1)")
-    parser.add_argument("--seed", metavar="N", type=_non_negative_int, default=0,
+    parser.add_argument("--seed", metavar="N", type=_whole_number(0), default=0,
                         help="seed of every random draw; the same inputs and seed give the same numbers (default 0)")
     parser.add_argument("--quiet", action="store_true", help="do not print progress")
     parser.add_argument("--version", action="version", version=f"assess {__version__}")
