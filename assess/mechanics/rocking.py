@@ -1,0 +1,515 @@
+"""Pure rocking of a rigid block on a moving floor: Housner impacts and overturning.
+
+A rigid block of slenderness α and frequency parameter p (see
+:mod:`assess.mechanics.geometry`) rocks about one base corner or the other
+without sliding. With θ > 0 rocking about one corner and θ < 0 about the
+other, its equation of motion is ([1], eq. 1; [2]):
+
+.. math::
+
+    \\ddot\\theta = -p^2 \\left[ \\sin(\\alpha\\,\\mathrm{sgn}\\,\\theta - \\theta)
+    + \\frac{\\ddot u_g}{g} \\cos(\\alpha\\,\\mathrm{sgn}\\,\\theta - \\theta) \\right]
+
+**Sign convention.** A positive floor acceleration :math:`\\ddot u_g` drives a
+*negative* rotation: its inertial force :math:`-m\\ddot u_g` pushes the centre
+of mass backwards, so a block at rest uplifts to θ < 0 when
+:math:`\\ddot u_g > g\\tan\\alpha` and to θ > 0 when
+:math:`\\ddot u_g < -g\\tan\\alpha` ([1], eq. 2, for a block whose centre of
+mass lies on the diagonal of its base corners, as a uniform block).
+
+**Impact.** When θ returns to zero the block hits the floor with its other
+corner; the angular velocity keeps its sign and is multiplied by the
+coefficient of restitution, by default Housner's value for a uniform block
+(:func:`assess.mechanics.geometry.housner_restitution`, [3] eq. 11):
+
+.. math:: \\dot\\theta^+ = e\\,\\dot\\theta^-, \\qquad e = 1 - \\tfrac{3}{2}\\sin^2\\alpha
+
+**Overturning** is :math:`|\\theta| \\ge \\pi/2` (the block lies on its side).
+Exceeding α alone is not overturning: the floor can still bring the block back
+(the FORMA incubator of [4], Fig. 7, passes α at t ≈ 7.5 s and survives).
+
+**Rest.** A block at rest stays at rest while :math:`|\\ddot u_g| \\le g\\tan\\alpha`.
+After an impact whose outgoing angular velocity is below
+``REST_ANGULAR_VELOCITY_RATIO`` · pα while the floor pushes the block back
+towards θ = 0, the block is put back at rest (the Zeno sequence of ever
+smaller rocks has converged); the impacts of that sequence are counted.
+
+**Numerics.** The floor acceleration is piecewise linear between samples. Each
+sample interval is integrated with the classical Runge-Kutta scheme in the
+dimensionless time τ = p t, with sub-steps of at most
+``MAX_STEP_DIMENSIONLESS`` (so p·h ≤ 0.01). Impacts (θ = 0), overturning
+(|θ| = π/2) and uplift (|ü_g| = g tan α, from the linear input) are located
+inside a step (the first two by safeguarded Newton iteration on the length of
+a single Runge-Kutta step), and the remainder of the step is integrated
+afresh from the event. Peaks of |θ| inside a step are found from the cubic
+Hermite interpolant of (θ, θ̇) at the ends of the step. Because the kernel
+runs in τ = p t with thresholds relative to α, it respects Froude similitude
+exactly: a block with all lengths scaled by λ under the same accelerations
+compressed in time by √λ gives the same θ/α history.
+
+References
+----------
+.. [1] Makris, N., Roussos, Y. S. (2000). Rocking response of rigid blocks
+   under near-source ground motions. Géotechnique 50(3):243-262,
+   eq. 1 and 2. doi:10.1680/geot.2000.50.3.243
+.. [2] Zhang, J., Makris, N. (2001). Rocking response of free-standing blocks
+   under cycloidal pulses. J. Eng. Mech. 127(5):473-483.
+   doi:10.1061/(ASCE)0733-9399(2001)127:5(473)
+.. [3] Housner, G. W. (1963). The behavior of inverted pendulum structures
+   during earthquakes. Bull. Seismol. Soc. Am. 53(2):403-417, eq. 11.
+.. [4] Konstantinidis, D., Makris, N. (2010). Bull. Earthquake Eng.
+   8:1457-1477, section 3.2, Figs. 5-7. doi:10.1007/s10518-010-9192-8
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numba import njit, prange
+
+from .geometry import housner_restitution
+
+#: Largest Runge-Kutta step in dimensionless time p·h [-].
+MAX_STEP_DIMENSIONLESS = 0.01
+#: An impact leaving |θ̇| below this multiple of p·α, with the floor pushing the
+#: block back, puts the block at rest [-].
+REST_ANGULAR_VELOCITY_RATIO = 1e-5
+#: Safety limit on the number of steps and events inside one sample interval.
+_MAX_EVENTS_PER_INTERVAL = 200_000
+_HALF_PI = 0.5 * np.pi
+
+
+# --------------------------------------------------------------------------- kernel
+@njit(cache=True)
+def _rhs(theta, side, accel_g, alpha):
+    """θ'' in τ = p t for a block pivoting on corner ``side`` (±1)."""
+    phi = alpha * side - theta
+    return -(np.sin(phi) + accel_g * np.cos(phi))
+
+
+@njit(cache=True)
+def _rk4(theta, w, side, alpha, accel_start, slope, h):
+    """One classical Runge-Kutta step of length h (τ units), floor accel linear in τ."""
+    accel_mid = accel_start + slope * 0.5 * h
+    k1t = w
+    k1w = _rhs(theta, side, accel_start, alpha)
+    k2t = w + 0.5 * h * k1w
+    k2w = _rhs(theta + 0.5 * h * k1t, side, accel_mid, alpha)
+    k3t = w + 0.5 * h * k2w
+    k3w = _rhs(theta + 0.5 * h * k2t, side, accel_mid, alpha)
+    k4t = w + h * k3w
+    k4w = _rhs(theta + h * k3t, side, accel_start + slope * h, alpha)
+    theta_new = theta + h / 6.0 * (k1t + 2.0 * k2t + 2.0 * k3t + k4t)
+    w_new = w + h / 6.0 * (k1w + 2.0 * k2w + 2.0 * k3w + k4w)
+    return theta_new, w_new
+
+
+@njit(cache=True)
+def _locate(theta, w, side, alpha, accel_start, slope, h, g_end, target):
+    """Step length in (0, h] at which side·θ = target, by safeguarded Newton.
+
+    ``g_end`` is side·θ − target at the end of the full step (opposite sign to
+    the start). Returns (tau, theta, w) at the event.
+    """
+    g_lo = side * theta - target
+    lo, hi = 0.0, h
+    tau = h * g_lo / (g_lo - g_end)
+    if not (lo < tau < hi):
+        tau = 0.5 * h
+    th, wt = theta, w
+    for _ in range(60):
+        th, wt = _rk4(theta, w, side, alpha, accel_start, slope, tau)
+        g = side * th - target
+        if g == 0.0:
+            break
+        if (g > 0.0) == (g_lo > 0.0):
+            lo = tau
+        else:
+            hi = tau
+        dg = side * wt
+        tau_new = tau - g / dg if dg != 0.0 else 0.5 * (lo + hi)
+        if not (lo < tau_new < hi):
+            tau_new = 0.5 * (lo + hi)
+        if abs(tau_new - tau) <= 1e-15 * h:
+            tau = tau_new
+            th, wt = _rk4(theta, w, side, alpha, accel_start, slope, tau)
+            break
+        tau = tau_new
+    return tau, th, wt
+
+
+@njit(cache=True)
+def _hermite_extremum(th0, w0, th1, w1, h):
+    """(offset, θ) of the interior extremum of the cubic Hermite interpolant, w0·w1 < 0."""
+    c1 = h * w0
+    c2 = 3.0 * (th1 - th0) - 2.0 * h * w0 - h * w1
+    c3 = 2.0 * (th0 - th1) + h * w0 + h * w1
+    qa, qb, qc = 3.0 * c3, 2.0 * c2, c1
+    x = 0.5
+    if abs(qa) <= 1e-14 * (abs(qb) + abs(qc)):
+        if qb != 0.0:
+            x = -qc / qb
+    else:
+        disc = max(qb * qb - 4.0 * qa * qc, 0.0)
+        q = -0.5 * (qb + np.copysign(np.sqrt(disc), qb))
+        x1 = q / qa
+        x2 = qc / q if q != 0.0 else -1.0
+        x = x1 if 0.0 <= x1 <= 1.0 else x2
+    x = min(max(x, 0.0), 1.0)
+    return x * h, th0 + x * (c1 + x * (c2 + x * c3))
+
+
+@njit(cache=True)
+def _simulate(accel_g, dt_s, alpha, p, e, theta_init, theta_dot_init,
+              hist_theta, hist_theta_dot, impact_t, impact_w, peak_t, peak_theta, counts):
+    """Integrate one block over one record; history arrays of size 0 are not written.
+
+    Returns (theta_max_rad, uplift, overturned, overturn_time_s, impacts).
+    """
+    n = accel_g.size
+    tan_alpha = np.tan(alpha)
+    dtau = p * dt_s
+    nsub = max(1, int(np.ceil(dtau / MAX_STEP_DIMENSIONLESS - 1e-9)))
+    h_nominal = dtau / nsub
+    w_rest = REST_ANGULAR_VELOCITY_RATIO * alpha
+    record = hist_theta.size > 0
+    theta = theta_init
+    w = theta_dot_init / p
+    resting = theta == 0.0 and w == 0.0
+    side = 1.0
+    if theta != 0.0:
+        side = np.sign(theta)
+    elif w != 0.0:
+        side = np.sign(w)
+    uplift = not resting
+    overturned = False
+    overturn_time = np.nan
+    theta_max = abs(theta)
+    impacts = 0
+    if record:
+        hist_theta[0] = theta
+        hist_theta_dot[0] = w * p
+    for k in range(n - 1):
+        a0 = accel_g[k]
+        a1 = accel_g[k + 1]
+        slope = (a1 - a0) / dtau
+        tau0 = k * dtau
+        s = 0.0
+        guard = 0
+        while dtau - s > 1e-12 * dtau:
+            guard += 1
+            if guard > _MAX_EVENTS_PER_INTERVAL:
+                resting, theta, w = True, 0.0, 0.0
+                break
+            accel_s = a0 + slope * s
+            if resting:
+                if abs(accel_s) <= tan_alpha:
+                    if a1 > tan_alpha:
+                        s_up = (tan_alpha - a0) / slope
+                    elif a1 < -tan_alpha:
+                        s_up = (-tan_alpha - a0) / slope
+                    else:
+                        break
+                    s = min(max(s, s_up), dtau)
+                    accel_s = a0 + slope * s
+                side = -1.0 if accel_s > 0.0 else 1.0
+                theta, w, resting, uplift = 0.0, 0.0, False, True
+                continue
+            # next sub-step boundary
+            s_end = (np.floor(s / h_nominal) + 1.0) * h_nominal
+            if s_end - s < 1e-9 * h_nominal:
+                s_end += h_nominal
+            s_end = min(s_end, dtau)
+            h = s_end - s
+            full = True
+            if theta == 0.0 and w != 0.0:
+                # leaving the floor: do not step over a whole micro-rock
+                thdd0 = _rhs(0.0, side, accel_s, alpha)
+                if side * thdd0 < 0.0 and 0.5 * abs(w / thdd0) < h:
+                    h = 0.5 * abs(w / thdd0)
+                    full = False
+            th1, w1 = _rk4(theta, w, side, alpha, accel_s, slope, h)
+            attempt = 0
+            while theta == 0.0 and w != 0.0 and side * th1 < 0.0 and attempt < 12:
+                h *= 0.25
+                full = False
+                attempt += 1
+                th1, w1 = _rk4(theta, w, side, alpha, accel_s, slope, h)
+            if side * th1 >= _HALF_PI:
+                tau = _locate(theta, w, side, alpha, accel_s, slope, h, side * th1 - _HALF_PI, _HALF_PI)[0]
+                overturned = True
+                overturn_time = (tau0 + s + tau) / p
+                theta_max = _HALF_PI
+                break
+            if side * th1 < 0.0:
+                if theta == 0.0:
+                    # failed uplift or unresolved micro-rock: the block is at rest
+                    resting, theta, w = True, 0.0, 0.0
+                    s += h
+                    continue
+                tau, _, w_e = _locate(theta, w, side, alpha, accel_s, slope, h, side * th1, 0.0)
+                if w * w_e < 0.0:
+                    tp, thp = _hermite_extremum(theta, w, 0.0, w_e, tau)
+                    theta_max = max(theta_max, abs(thp))
+                    if counts[1] < peak_t.size:
+                        peak_t[counts[1]] = (tau0 + s + tp) / p
+                        peak_theta[counts[1]] = thp
+                    counts[1] += 1
+                if counts[0] < impact_t.size:
+                    impact_t[counts[0]] = (tau0 + s + tau) / p
+                    impact_w[counts[0]] = w_e * p
+                counts[0] += 1
+                impacts += 1
+                s += tau
+                theta = 0.0
+                w = e * w_e
+                side = -side
+                if abs(w) < w_rest:
+                    thdd0 = _rhs(0.0, side, a0 + slope * s, alpha)
+                    if side * thdd0 <= 0.0:
+                        resting, w = True, 0.0
+                continue
+            if w * w1 < 0.0:
+                tp, thp = _hermite_extremum(theta, w, th1, w1, h)
+                theta_max = max(theta_max, abs(thp))
+                if counts[1] < peak_t.size:
+                    peak_t[counts[1]] = (tau0 + s + tp) / p
+                    peak_theta[counts[1]] = thp
+                counts[1] += 1
+            theta, w = th1, w1
+            theta_max = max(theta_max, abs(theta))
+            s = s_end if full else s + h
+        if overturned:
+            if record:
+                hist_theta[k + 1:] = np.nan
+                hist_theta_dot[k + 1:] = np.nan
+            break
+        if record:
+            hist_theta[k + 1] = theta
+            hist_theta_dot[k + 1] = w * p
+    return theta_max, uplift, overturned, overturn_time, impacts
+
+
+@njit(cache=True, parallel=True)
+def _batch(accel_flat, offsets, dts, alpha, p, e, theta_max, uplift, overturned, overturn_time, impacts):
+    n_blocks = alpha.size
+    n_records = dts.size
+    empty = np.empty(0)
+    for job in prange(n_blocks * n_records):
+        j = job // n_blocks
+        i = job % n_blocks
+        counts = np.zeros(2, dtype=np.int64)
+        out = _simulate(accel_flat[offsets[j]:offsets[j + 1]], dts[j], alpha[i], p[i], e[i], 0.0, 0.0,
+                        empty, empty, empty, empty, empty, empty, counts)
+        theta_max[i, j] = out[0] / alpha[i]
+        uplift[i, j] = out[1]
+        overturned[i, j] = out[2]
+        overturn_time[i, j] = out[3]
+        impacts[i, j] = out[4]
+
+
+# --------------------------------------------------------------------------- API
+@dataclass(frozen=True)
+class RockingResult:
+    """Response of one block to one floor motion (:func:`rocking_response`).
+
+    Attributes
+    ----------
+    theta_max_over_alpha : float
+        Peak |θ|/α over the motion [-]; (π/2)/α if the block overturned.
+    uplift : bool
+        Whether the block left rest at any time.
+    overturned : bool
+        Whether |θ| reached π/2.
+    overturn_time_s : float
+        Time [s] at which |θ| reached π/2; NaN if it did not.
+    impacts : int
+        Number of impacts (θ returning to zero), those of the final settling included.
+    time_s, theta_rad, theta_dot_rad_s : ndarray or None
+        With ``return_history``: sample times [s], rotation θ [rad] and angular
+        velocity θ̇ [rad/s] at those times (NaN after overturning).
+    impact_time_s, impact_theta_dot_rad_s : ndarray or None
+        With ``return_history``: time [s] of each impact and θ̇ [rad/s] just
+        before it (before the restitution). At most 4n + 4096 are kept
+        (n samples); ``impacts`` counts them all.
+    peak_time_s, peak_theta_rad : ndarray or None
+        With ``return_history``: time [s] and signed θ [rad] of each local
+        extremum of θ between impacts (θ̇ = 0), excluding the initial state.
+    """
+
+    theta_max_over_alpha: float
+    uplift: bool
+    overturned: bool
+    overturn_time_s: float
+    impacts: int
+    time_s: np.ndarray | None = None
+    theta_rad: np.ndarray | None = None
+    theta_dot_rad_s: np.ndarray | None = None
+    impact_time_s: np.ndarray | None = None
+    impact_theta_dot_rad_s: np.ndarray | None = None
+    peak_time_s: np.ndarray | None = None
+    peak_theta_rad: np.ndarray | None = None
+
+
+@dataclass(frozen=True)
+class RockingPeaks:
+    """Peak responses of many blocks to many records (:func:`rocking_peaks_batch`).
+
+    Every field has shape (n_blocks, n_records); meanings and units as in
+    :class:`RockingResult`.
+    """
+
+    theta_max_over_alpha: np.ndarray
+    uplift: np.ndarray
+    overturned: np.ndarray
+    overturn_time_s: np.ndarray
+    impacts: np.ndarray
+
+
+def _check_block(alpha_rad, p_rad_s, restitution):
+    alpha = np.atleast_1d(np.asarray(alpha_rad, dtype=float))
+    p = np.atleast_1d(np.asarray(p_rad_s, dtype=float))
+    e = housner_restitution(alpha) if restitution is None else restitution
+    alpha, p, e = np.broadcast_arrays(alpha, p, np.atleast_1d(np.asarray(e, dtype=float)))
+    if alpha.ndim != 1:
+        raise ValueError("alpha_rad, p_rad_s and restitution must be scalars or 1-D arrays")
+    if not np.all((alpha > 0.0) & (alpha < _HALF_PI)):
+        raise ValueError("alpha_rad must lie in (0, pi/2)")
+    if not np.all(np.isfinite(p) & (p > 0.0)):
+        raise ValueError("p_rad_s must be positive and finite")
+    if not np.all((e >= 0.0) & (e <= 1.0)):
+        raise ValueError("restitution must lie in [0, 1]")
+    return (np.ascontiguousarray(alpha), np.ascontiguousarray(p), np.ascontiguousarray(e))
+
+
+def _check_record(accel_g, dt_s):
+    accel = np.ascontiguousarray(np.asarray(accel_g, dtype=float))
+    if accel.ndim != 1 or accel.size < 2:
+        raise ValueError("a floor acceleration record must be a 1-D array of at least 2 samples")
+    if not np.all(np.isfinite(accel)):
+        raise ValueError("floor acceleration contains NaN or infinite values")
+    dt = float(dt_s)
+    if not (np.isfinite(dt) and dt > 0.0):
+        raise ValueError("dt_s must be positive and finite")
+    return accel, dt
+
+
+def rocking_response(floor_accel_g, dt_s, alpha_rad, p_rad_s, restitution=None, return_history=False,
+                     initial_theta_rad=0.0, initial_theta_dot_rad_s=0.0) -> RockingResult:
+    """Pure-rocking response of a rigid block to a floor acceleration record.
+
+    Integrates the equation of motion of the module docstring ([1], eq. 1)
+    with Housner impacts; see there for the sign convention (positive floor
+    acceleration drives negative θ), rest and overturning.
+
+    Parameters
+    ----------
+    floor_accel_g : array-like
+        Floor acceleration ü_g/g [g] at times 0, dt, 2dt, ...; linear between
+        samples. The response is computed over the record only: append zeros
+        to follow the free rocking after the shaking ends.
+    dt_s : float
+        Sample interval [s].
+    alpha_rad : float
+        Slenderness α [rad], 0 < α < π/2.
+    p_rad_s : float
+        Frequency parameter p [rad/s].
+    restitution : float, optional
+        Coefficient of restitution of angular velocity e [-]; default Housner's
+        value for a uniform block, 1 − 1.5 sin²α. For another inertia ratio κ
+        pass ``geometry.housner_restitution(alpha_rad, kappa)``.
+    return_history : bool
+        Also return θ and θ̇ at the samples and the impacts and peaks.
+    initial_theta_rad, initial_theta_dot_rad_s : float
+        Initial rotation [rad] and angular velocity [rad/s]; default at rest.
+
+    Returns
+    -------
+    RockingResult
+
+    Examples
+    --------
+    A block with α = 0.16 rad needs ü_g > g tan α = 0.161 g to uplift; a
+    floor at 0.15 g leaves it at rest, one at 0.3 g for 0.5 s makes it rock:
+
+    >>> r = rocking_response([0.15] * 101, 0.01, 0.16, 1.25)
+    >>> r.uplift, r.theta_max_over_alpha
+    (False, 0.0)
+    >>> r = rocking_response([0.3] * 51 + [0.0] * 500, 0.01, 0.16, 1.25)
+    >>> r.uplift, r.overturned, r.theta_max_over_alpha < 1.0
+    (True, False, True)
+    """
+    accel, dt = _check_record(floor_accel_g, dt_s)
+    alpha, p, e = _check_block(alpha_rad, p_rad_s, restitution)
+    if alpha.size != 1:
+        raise ValueError("rocking_response takes one block; use rocking_peaks_batch for many")
+    n = accel.size
+    counts = np.zeros(2, dtype=np.int64)
+    if return_history:
+        capacity = 4 * n + 4096
+        hist_theta, hist_theta_dot = np.empty(n), np.empty(n)
+        impact_t, impact_w = np.empty(capacity), np.empty(capacity)
+        peak_t, peak_theta = np.empty(capacity), np.empty(capacity)
+    else:
+        hist_theta = hist_theta_dot = impact_t = impact_w = peak_t = peak_theta = np.empty(0)
+    theta_max, uplift, overturned, overturn_time, impacts = _simulate(
+        accel, dt, alpha[0], p[0], e[0], float(initial_theta_rad), float(initial_theta_dot_rad_s),
+        hist_theta, hist_theta_dot, impact_t, impact_w, peak_t, peak_theta, counts)
+    extra = {}
+    if return_history:
+        n_imp, n_peak = min(counts[0], impact_t.size), min(counts[1], peak_t.size)
+        extra = dict(time_s=np.arange(n) * dt, theta_rad=hist_theta, theta_dot_rad_s=hist_theta_dot,
+                     impact_time_s=impact_t[:n_imp].copy(), impact_theta_dot_rad_s=impact_w[:n_imp].copy(),
+                     peak_time_s=peak_t[:n_peak].copy(), peak_theta_rad=peak_theta[:n_peak].copy())
+    return RockingResult(theta_max_over_alpha=float(theta_max / alpha[0]), uplift=bool(uplift),
+                         overturned=bool(overturned), overturn_time_s=float(overturn_time),
+                         impacts=int(impacts), **extra)
+
+
+def rocking_peaks_batch(records_g, dt_s, alpha_rad, p_rad_s, restitution=None) -> RockingPeaks:
+    """Peak rocking responses of many blocks to one or more records, in parallel.
+
+    Same model as :func:`rocking_response`, started from rest; only the peaks
+    are kept, so memory grows with n_blocks × n_records, not with the record
+    length. Runs on all numba threads (``numba.set_num_threads`` to limit).
+
+    Parameters
+    ----------
+    records_g : array-like or sequence of array-like
+        One floor acceleration record [g] (1-D) or a sequence of records of
+        any lengths.
+    dt_s : float or sequence of float
+        Sample interval [s], one for all records or one per record.
+    alpha_rad, p_rad_s, restitution : float or 1-D array-like
+        Slenderness α [rad], frequency parameter p [rad/s] and coefficient of
+        restitution e [-] (default 1 − 1.5 sin²α) of each block, broadcast.
+
+    Returns
+    -------
+    RockingPeaks
+        Fields of shape (n_blocks, n_records).
+
+    Examples
+    --------
+    >>> peaks = rocking_peaks_batch([0.3] * 51 + [0.0] * 500, 0.01, [0.16, 0.4], 1.25)
+    >>> peaks.uplift[:, 0].tolist()
+    [True, False]
+    """
+    first = np.asarray(records_g[0]) if len(records_g) else np.asarray([])
+    records = [records_g] if first.ndim == 0 else list(records_g)
+    dts = np.broadcast_to(np.asarray(dt_s, dtype=float), (len(records),))
+    checked = [_check_record(r, d) for r, d in zip(records, dts)]
+    accel_flat = np.ascontiguousarray(np.concatenate([c[0] for c in checked]))
+    offsets = np.zeros(len(checked) + 1, dtype=np.int64)
+    offsets[1:] = np.cumsum([c[0].size for c in checked])
+    dts = np.array([c[1] for c in checked])
+    alpha, p, e = _check_block(alpha_rad, p_rad_s, restitution)
+    shape = (alpha.size, dts.size)
+    theta_max = np.empty(shape)
+    uplift = np.zeros(shape, dtype=np.bool_)
+    overturned = np.zeros(shape, dtype=np.bool_)
+    overturn_time = np.empty(shape)
+    impacts = np.zeros(shape, dtype=np.int64)
+    _batch(accel_flat, offsets, dts, alpha, p, e, theta_max, uplift, overturned, overturn_time, impacts)
+    return RockingPeaks(theta_max_over_alpha=theta_max, uplift=uplift, overturned=overturned,
+                        overturn_time_s=overturn_time, impacts=impacts)
