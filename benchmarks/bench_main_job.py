@@ -12,17 +12,10 @@ import tempfile
 import time
 from pathlib import Path
 
+from timing import best_of
+
 ROOT = Path(__file__).resolve().parents[1]
 WORKBOOK = ROOT / "inventories" / "lab.xlsx"
-
-
-def best_of(repeat: int, function):
-    times, value = [], None
-    for _ in range(repeat):
-        start = time.perf_counter()
-        value = function()
-        times.append(time.perf_counter() - start)
-    return min(times), value
 
 
 def main() -> None:

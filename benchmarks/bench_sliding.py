@@ -21,7 +21,6 @@ from __future__ import annotations
 import argparse
 import os
 import resource
-import time
 import tracemalloc
 
 import numpy as np
@@ -29,6 +28,7 @@ from numba import njit, prange, get_num_threads
 
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
 from assess.mechanics.sliding import sliding_peaks_batch
+from timing import best_of
 
 
 @njit(cache=True)
@@ -74,15 +74,6 @@ def plain_loop_batch(accel_2d, lengths, dt, mu, gravity):
     """Same dispatch as sliding_peaks_batch: serial below twice the thread count."""
     kernel = plain_loop_parallel if mu.shape[0] >= 2 * get_num_threads() else plain_loop_serial
     return kernel(accel_2d, lengths, dt, mu, gravity)
-
-
-def best_of(repeat, function):
-    times, value = [], None
-    for _ in range(repeat):
-        start = time.perf_counter()
-        value = function()
-        times.append(time.perf_counter() - start)
-    return min(times), value
 
 
 def main() -> None:
