@@ -281,3 +281,50 @@ def test_minimum_overturning_matches_reference(spectrum, omega_ratio):
         accel, dt = pulse_record("A", omega_ratio, factor * minimum[omega_ratio])
         assert rocking_response(accel, dt, ALPHA, P).overturned is overturns
         assert reference_rocking(accel, dt, ALPHA, P, E)["overturned"] is overturns
+
+
+# ------------------------------------------------------------------ pivot forces (validity of pure rocking)
+def test_pivot_forces_match_newton_on_the_computed_motion():
+    """|F|/N and N/(mg) reported by the kernel equal m·(CM acceleration) by finite differences.
+
+    The centre of mass of a block pivoting on corner s sits at
+    (−s b cos θ + h sin θ, s b sin θ + h cos θ) from the pivot; differentiating
+    the kernel's θ history twice (before the first impact, where θ is smooth)
+    gives F = m(ẍ + ü_g) and N = m(ÿ + g) without the kernel's force formula.
+    """
+    from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2 as g
+    alpha, p = 0.2, 2.0
+    radius = 3 * g / (4 * p**2)
+    b, h = radius * np.sin(alpha), radius * np.cos(alpha)
+    dt = 2e-4
+    time_s = np.arange(0.0, 1.2, dt)
+    accel = pulse_acceleration("A", 0.45, 1.0, time_s)
+    full = rocking_response(accel, dt, alpha, p, return_history=True)
+    assert full.impacts > 0
+    n_cut = int(full.impact_time_s[0] / dt) - 2
+    cut = rocking_response(accel[:n_cut], dt, alpha, p, return_history=True)
+    theta = cut.theta_rad
+    side = np.sign(theta[np.argmax(np.abs(theta))])
+    x_cm = -side * b * np.cos(theta) + h * np.sin(theta)
+    y_cm = side * b * np.sin(theta) + h * np.cos(theta)
+    xdd = np.gradient(np.gradient(x_cm, dt), dt)[3:-3]
+    ydd = np.gradient(np.gradient(y_cm, dt), dt)[3:-3]
+    lifted = np.abs(theta[3:-3]) > 1e-6
+    friction = xdd / g + accel[:n_cut][3:-3]
+    normal = 1.0 + ydd / g
+    demand = np.abs(friction[lifted]) / normal[lifted]
+    assert cut.uplift and not cut.overturned
+    assert cut.friction_demand_max == pytest.approx(demand.max(), rel=2e-3)
+    assert cut.normal_force_min_over_weight == pytest.approx(normal[lifted].min(), rel=2e-3)
+
+
+def test_friction_demand_at_onset_is_shenton_requirement():
+    """Just after uplift under a constant floor acceleration A the pivot needs μ_req(A) (Shenton 1996, eq. 14)."""
+    from assess.mechanics.modes import friction_required_to_rock
+    alpha, p, accel_g = 0.25, 2.0, 0.4
+    result = rocking_response([accel_g, accel_g], 1e-6, alpha, p)
+    shenton = (accel_g * (4 * np.tan(alpha)**2 + 1) + 3 * np.tan(alpha)) / (
+        np.tan(alpha)**2 + 4 + 3 * accel_g * np.tan(alpha))
+    assert result.uplift
+    assert result.friction_demand_max == pytest.approx(shenton, rel=1e-4)
+    assert result.friction_demand_max == pytest.approx(friction_required_to_rock(accel_g, np.tan(alpha)), rel=1e-4)

@@ -28,6 +28,25 @@ coefficient of restitution, by default Housner's value for a uniform block
 Exceeding α alone is not overturning: the floor can still bring the block back
 (the FORMA incubator of [4], Fig. 7, passes α at t ≈ 7.5 s and survives).
 
+**Contact forces.** Pure rocking holds only while the pivot neither slips
+nor lifts. With φ = θ − α sgn θ, w = θ̇/p and κ = I_O/(mR²) (so that
+:math:`p^2 = g/(\\kappa R)`), Newton's law for the centre of mass, which moves
+on a circle of radius R about the pivot, gives the pivot's friction and normal
+forces ([2]; [5], eq. 14 at θ = 0):
+
+.. math::
+
+    \\frac{F}{mg} = \\frac{\\theta''\\cos\\varphi - w^2\\sin\\varphi}{\\kappa} + \\frac{\\ddot u_g}{g},
+    \\qquad
+    \\frac{N}{mg} = 1 - \\frac{\\theta''\\sin\\varphi + w^2\\cos\\varphi}{\\kappa}
+
+with θ'' = d²θ/d(pt)². The kernel reports the largest |F|/N and the smallest
+N/(mg) over the rocking phases; a caller that must be sure the block rocked
+compares them with μ_s and 0 (:mod:`assess.mechanics.engine`). A Housner
+impact needs a friction impulse ratio of :math:`(1-e)/((1+e)\\tan\\alpha)`,
+which never exceeds tan α (for κ ≥ 1), so a block with μ_s ≥ tan α cannot slip
+at an impact.
+
 **Rest.** A block at rest stays at rest while :math:`|\\ddot u_g| \\le g\\tan\\alpha`.
 After an impact whose outgoing angular velocity is below
 ``REST_ANGULAR_VELOCITY_RATIO`` · pα while the floor pushes the block back
@@ -59,6 +78,9 @@ References
    during earthquakes. Bull. Seismol. Soc. Am. 53(2):403-417, eq. 11.
 .. [4] Konstantinidis, D., Makris, N. (2010). Bull. Earthquake Eng.
    8:1457-1477, section 3.2, Figs. 5-7. doi:10.1007/s10518-010-9192-8
+.. [5] Shenton, H. W. (1996). Criteria for initiation of slide, rock, and
+   slide-rock rigid-body modes. J. Eng. Mech. 122(7):690-693.
+   doi:10.1061/(ASCE)0733-9399(1996)122:7(690)
 """
 from __future__ import annotations
 
@@ -85,6 +107,19 @@ def _rhs(theta, side, accel_g, alpha):
     """θ'' in τ = p t for a block pivoting on corner ``side`` (±1)."""
     phi = alpha * side - theta
     return -(np.sin(phi) + accel_g * np.cos(phi))
+
+
+@njit(cache=True)
+def _pivot_forces(theta, w, side, accel_g, alpha, kappa):
+    """(F, N)/(m g) at the pivot of a block rocking on corner ``side`` without slipping.
+
+    See "Contact forces" in the module docstring; ``w`` = θ̇/p.
+    """
+    phi = theta - side * alpha
+    thdd = -(np.sin(-phi) + accel_g * np.cos(phi))
+    friction = (np.cos(phi) * thdd - np.sin(phi) * w * w) / kappa + accel_g
+    normal = 1.0 + (-np.sin(phi) * thdd - np.cos(phi) * w * w) / kappa
+    return friction, normal
 
 
 @njit(cache=True)
@@ -160,11 +195,12 @@ def _hermite_extremum(th0, w0, th1, w1, h):
 
 
 @njit(cache=True)
-def _simulate(accel_g, dt_s, alpha, p, e, theta_init, theta_dot_init,
-              hist_theta, hist_theta_dot, impact_t, impact_w, peak_t, peak_theta, counts):
+def _simulate(accel_g, dt_s, alpha, p, e, kappa, theta_init, theta_dot_init,
+              hist_theta, hist_theta_dot, impact_t, impact_w, peak_t, peak_theta, counts, forces):
     """Integrate one block over one record; history arrays of size 0 are not written.
 
-    Returns (theta_max_rad, uplift, overturned, overturn_time_s, impacts).
+    Returns (theta_max_rad, uplift, overturned, overturn_time_s, impacts);
+    ``forces`` receives (max |F|/N, min N/(mg)) over the rocking phases.
     """
     n = accel_g.size
     tan_alpha = np.tan(alpha)
@@ -186,6 +222,8 @@ def _simulate(accel_g, dt_s, alpha, p, e, theta_init, theta_dot_init,
     overturn_time = np.nan
     theta_max = abs(theta)
     impacts = 0
+    forces[0] = 0.0
+    forces[1] = 1.0
     if record:
         hist_theta[0] = theta
         hist_theta_dot[0] = w * p
@@ -214,6 +252,9 @@ def _simulate(accel_g, dt_s, alpha, p, e, theta_init, theta_dot_init,
                     accel_s = a0 + slope * s
                 side = -1.0 if accel_s > 0.0 else 1.0
                 theta, w, resting, uplift = 0.0, 0.0, False, True
+                friction, normal = _pivot_forces(0.0, 0.0, side, accel_s, alpha, kappa)
+                forces[1] = min(forces[1], normal)
+                forces[0] = max(forces[0], abs(friction) / normal if normal > 0.0 else np.inf)
                 continue
             # next sub-step boundary
             s_end = (np.floor(s / h_nominal) + 1.0) * h_nominal
@@ -279,6 +320,9 @@ def _simulate(accel_g, dt_s, alpha, p, e, theta_init, theta_dot_init,
             theta, w = th1, w1
             theta_max = max(theta_max, abs(theta))
             s = s_end if full else s + h
+            friction, normal = _pivot_forces(theta, w, side, a0 + slope * s, alpha, kappa)
+            forces[1] = min(forces[1], normal)
+            forces[0] = max(forces[0], abs(friction) / normal if normal > 0.0 else np.inf)
         if overturned:
             if record:
                 hist_theta[k + 1:] = np.nan
@@ -291,7 +335,8 @@ def _simulate(accel_g, dt_s, alpha, p, e, theta_init, theta_dot_init,
 
 
 @njit(cache=True, parallel=True)
-def _batch(accel_flat, offsets, dts, alpha, p, e, theta_max, uplift, overturned, overturn_time, impacts):
+def _batch(accel_flat, offsets, dts, alpha, p, e, kappa, theta_max, uplift, overturned, overturn_time,
+           impacts, friction_demand, normal_min):
     n_blocks = alpha.size
     n_records = dts.size
     empty = np.empty(0)
@@ -299,13 +344,16 @@ def _batch(accel_flat, offsets, dts, alpha, p, e, theta_max, uplift, overturned,
         j = job // n_blocks
         i = job % n_blocks
         counts = np.zeros(2, dtype=np.int64)
-        out = _simulate(accel_flat[offsets[j]:offsets[j + 1]], dts[j], alpha[i], p[i], e[i], 0.0, 0.0,
-                        empty, empty, empty, empty, empty, empty, counts)
+        forces = np.empty(2)
+        out = _simulate(accel_flat[offsets[j]:offsets[j + 1]], dts[j], alpha[i], p[i], e[i], kappa[i],
+                        0.0, 0.0, empty, empty, empty, empty, empty, empty, counts, forces)
         theta_max[i, j] = out[0] / alpha[i]
         uplift[i, j] = out[1]
         overturned[i, j] = out[2]
         overturn_time[i, j] = out[3]
         impacts[i, j] = out[4]
+        friction_demand[i, j] = forces[0]
+        normal_min[i, j] = forces[1]
 
 
 # --------------------------------------------------------------------------- API
@@ -335,6 +383,13 @@ class RockingResult:
     peak_time_s, peak_theta_rad : ndarray or None
         With ``return_history``: time [s] and signed θ [rad] of each local
         extremum of θ between impacts (θ̇ = 0), excluding the initial state.
+    friction_demand_max : float
+        Largest |F|/N the pivot needed while the block rocked [-] (0 if it
+        never uplifted; inf if N reached zero). Pure rocking is the block's
+        true motion only while this stays within μ_s.
+    normal_force_min_over_weight : float
+        Smallest N/(mg) at the pivot while the block rocked [-] (1 if it never
+        uplifted); at or below zero the block would have left the floor.
     """
 
     theta_max_over_alpha: float
@@ -342,6 +397,8 @@ class RockingResult:
     overturned: bool
     overturn_time_s: float
     impacts: int
+    friction_demand_max: float = 0.0
+    normal_force_min_over_weight: float = 1.0
     time_s: np.ndarray | None = None
     theta_rad: np.ndarray | None = None
     theta_dot_rad_s: np.ndarray | None = None
@@ -364,22 +421,29 @@ class RockingPeaks:
     overturned: np.ndarray
     overturn_time_s: np.ndarray
     impacts: np.ndarray
+    friction_demand_max: np.ndarray
+    normal_force_min_over_weight: np.ndarray
 
 
-def _check_block(alpha_rad, p_rad_s, restitution):
+def _check_block(alpha_rad, p_rad_s, restitution, inertia_ratio_value=4.0 / 3.0):
     alpha = np.atleast_1d(np.asarray(alpha_rad, dtype=float))
     p = np.atleast_1d(np.asarray(p_rad_s, dtype=float))
-    e = housner_restitution(alpha) if restitution is None else restitution
-    alpha, p, e = np.broadcast_arrays(alpha, p, np.atleast_1d(np.asarray(e, dtype=float)))
+    kappa = np.atleast_1d(np.asarray(inertia_ratio_value, dtype=float))
+    e = housner_restitution(alpha, kappa) if restitution is None else restitution
+    alpha, p, e, kappa = np.broadcast_arrays(alpha, p, np.atleast_1d(np.asarray(e, dtype=float)), kappa)
     if alpha.ndim != 1:
-        raise ValueError("alpha_rad, p_rad_s and restitution must be scalars or 1-D arrays")
+        raise ValueError("alpha_rad, p_rad_s, restitution and inertia_ratio_value must be scalars "
+                         "or 1-D arrays")
+    if not np.all(np.isfinite(kappa) & (kappa >= 1.0)):
+        raise ValueError("inertia_ratio_value (I_O/mR^2) must be >= 1")
     if not np.all((alpha > 0.0) & (alpha < _HALF_PI)):
         raise ValueError("alpha_rad must lie in (0, pi/2)")
     if not np.all(np.isfinite(p) & (p > 0.0)):
         raise ValueError("p_rad_s must be positive and finite")
     if not np.all((e >= 0.0) & (e <= 1.0)):
         raise ValueError("restitution must lie in [0, 1]")
-    return (np.ascontiguousarray(alpha), np.ascontiguousarray(p), np.ascontiguousarray(e))
+    return (np.ascontiguousarray(alpha), np.ascontiguousarray(p), np.ascontiguousarray(e),
+            np.ascontiguousarray(kappa))
 
 
 def _check_record(accel_g, dt_s):
@@ -395,7 +459,8 @@ def _check_record(accel_g, dt_s):
 
 
 def rocking_response(floor_accel_g, dt_s, alpha_rad, p_rad_s, restitution=None, return_history=False,
-                     initial_theta_rad=0.0, initial_theta_dot_rad_s=0.0) -> RockingResult:
+                     initial_theta_rad=0.0, initial_theta_dot_rad_s=0.0,
+                     inertia_ratio_value=4.0 / 3.0) -> RockingResult:
     """Pure-rocking response of a rigid block to a floor acceleration record.
 
     Integrates the equation of motion of the module docstring ([1], eq. 1)
@@ -416,12 +481,15 @@ def rocking_response(floor_accel_g, dt_s, alpha_rad, p_rad_s, restitution=None, 
         Frequency parameter p [rad/s].
     restitution : float, optional
         Coefficient of restitution of angular velocity e [-]; default Housner's
-        value for a uniform block, 1 − 1.5 sin²α. For another inertia ratio κ
-        pass ``geometry.housner_restitution(alpha_rad, kappa)``.
+        value for the block's inertia ratio, 1 − (2/κ) sin²α (1 − 1.5 sin²α
+        for a uniform block).
     return_history : bool
         Also return θ and θ̇ at the samples and the impacts and peaks.
     initial_theta_rad, initial_theta_dot_rad_s : float
         Initial rotation [rad] and angular velocity [rad/s]; default at rest.
+    inertia_ratio_value : float
+        κ = I_O/(mR²) [-], 4/3 for a uniform block; used for the pivot forces
+        and the default restitution (p already contains it).
 
     Returns
     -------
@@ -440,7 +508,7 @@ def rocking_response(floor_accel_g, dt_s, alpha_rad, p_rad_s, restitution=None, 
     (True, False, True)
     """
     accel, dt = _check_record(floor_accel_g, dt_s)
-    alpha, p, e = _check_block(alpha_rad, p_rad_s, restitution)
+    alpha, p, e, kappa = _check_block(alpha_rad, p_rad_s, restitution, inertia_ratio_value)
     if alpha.size != 1:
         raise ValueError("rocking_response takes one block; use rocking_peaks_batch for many")
     n = accel.size
@@ -452,9 +520,10 @@ def rocking_response(floor_accel_g, dt_s, alpha_rad, p_rad_s, restitution=None, 
         peak_t, peak_theta = np.empty(capacity), np.empty(capacity)
     else:
         hist_theta = hist_theta_dot = impact_t = impact_w = peak_t = peak_theta = np.empty(0)
+    forces = np.empty(2)
     theta_max, uplift, overturned, overturn_time, impacts = _simulate(
-        accel, dt, alpha[0], p[0], e[0], float(initial_theta_rad), float(initial_theta_dot_rad_s),
-        hist_theta, hist_theta_dot, impact_t, impact_w, peak_t, peak_theta, counts)
+        accel, dt, alpha[0], p[0], e[0], kappa[0], float(initial_theta_rad), float(initial_theta_dot_rad_s),
+        hist_theta, hist_theta_dot, impact_t, impact_w, peak_t, peak_theta, counts, forces)
     extra = {}
     if return_history:
         n_imp, n_peak = min(counts[0], impact_t.size), min(counts[1], peak_t.size)
@@ -463,10 +532,12 @@ def rocking_response(floor_accel_g, dt_s, alpha_rad, p_rad_s, restitution=None, 
                      peak_time_s=peak_t[:n_peak].copy(), peak_theta_rad=peak_theta[:n_peak].copy())
     return RockingResult(theta_max_over_alpha=float(theta_max / alpha[0]), uplift=bool(uplift),
                          overturned=bool(overturned), overturn_time_s=float(overturn_time),
-                         impacts=int(impacts), **extra)
+                         impacts=int(impacts), friction_demand_max=float(forces[0]),
+                         normal_force_min_over_weight=float(forces[1]), **extra)
 
 
-def rocking_peaks_batch(records_g, dt_s, alpha_rad, p_rad_s, restitution=None) -> RockingPeaks:
+def rocking_peaks_batch(records_g, dt_s, alpha_rad, p_rad_s, restitution=None,
+                        inertia_ratio_value=4.0 / 3.0) -> RockingPeaks:
     """Peak rocking responses of many blocks to one or more records, in parallel.
 
     Same model as :func:`rocking_response`, started from rest; only the peaks
@@ -480,9 +551,10 @@ def rocking_peaks_batch(records_g, dt_s, alpha_rad, p_rad_s, restitution=None) -
         any lengths.
     dt_s : float or sequence of float
         Sample interval [s], one for all records or one per record.
-    alpha_rad, p_rad_s, restitution : float or 1-D array-like
-        Slenderness α [rad], frequency parameter p [rad/s] and coefficient of
-        restitution e [-] (default 1 − 1.5 sin²α) of each block, broadcast.
+    alpha_rad, p_rad_s, restitution, inertia_ratio_value : float or 1-D array-like
+        Slenderness α [rad], frequency parameter p [rad/s], coefficient of
+        restitution e [-] (default 1 − (2/κ) sin²α) and inertia ratio κ [-]
+        (default 4/3) of each block, broadcast.
 
     Returns
     -------
@@ -503,13 +575,16 @@ def rocking_peaks_batch(records_g, dt_s, alpha_rad, p_rad_s, restitution=None) -
     offsets = np.zeros(len(checked) + 1, dtype=np.int64)
     offsets[1:] = np.cumsum([c[0].size for c in checked])
     dts = np.array([c[1] for c in checked])
-    alpha, p, e = _check_block(alpha_rad, p_rad_s, restitution)
+    alpha, p, e, kappa = _check_block(alpha_rad, p_rad_s, restitution, inertia_ratio_value)
     shape = (alpha.size, dts.size)
     theta_max = np.empty(shape)
     uplift = np.zeros(shape, dtype=np.bool_)
     overturned = np.zeros(shape, dtype=np.bool_)
     overturn_time = np.empty(shape)
     impacts = np.zeros(shape, dtype=np.int64)
-    _batch(accel_flat, offsets, dts, alpha, p, e, theta_max, uplift, overturned, overturn_time, impacts)
+    friction_demand, normal_min = np.empty(shape), np.empty(shape)
+    _batch(accel_flat, offsets, dts, alpha, p, e, kappa, theta_max, uplift, overturned, overturn_time,
+           impacts, friction_demand, normal_min)
     return RockingPeaks(theta_max_over_alpha=theta_max, uplift=uplift, overturned=overturned,
-                        overturn_time_s=overturn_time, impacts=impacts)
+                        overturn_time_s=overturn_time, impacts=impacts,
+                        friction_demand_max=friction_demand, normal_force_min_over_weight=normal_min)
