@@ -23,7 +23,21 @@ that sliding exceeds the room each item has (Konstantinidis & Makris 2010).
 
 Reads WORKBOOK (sheets equipment, hazard, settings: see README), assesses every
 item under the motions of hazard level LEVEL, and writes summary.csv,
-motions.csv, report.html and report.pdf into --out."""
+motions.csv, report.html and report.pdf into --out.
+
+Other commands:
+  assess simulate ...   one item under one record or pulse (assess simulate --help)"""
+
+SIMULATE_DESCRIPTION = """\
+Simulate one freestanding item, a rigid block, under one floor motion in one
+base direction: sliding, rocking, slide-rock and overturning, with Coulomb
+friction and Housner impacts. The motion is an acceleration record (CSV with
+time_s,accel_g; one column headed accel_g,dt_s=0.01; or PEER .AT2) or a pulse:
+  A: a = ap sin(wp t), B: a = ap cos(wp t), C: Makris Type-C1, rect: a = ap,
+  for 0 <= t <= Tp (C: its own length), zero after; wp = 2 pi / Tp.
+The floor is at rest after the motion and the item is followed --tail-s longer.
+For a pulse the regression's median sliding (Konstantinidis & Makris 2010,
+eq. 21) is printed beside the simulation."""
 
 
 def _formats(text: str) -> tuple[str, ...]:
@@ -33,6 +47,26 @@ def _formats(text: str) -> tuple[str, ...]:
         raise argparse.ArgumentTypeError(
             f"'{text}' is not a list of report formats; use html, pdf or html,pdf")
     return chosen
+
+
+def _positive_number(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a number") from None
+    if not (value > 0.0 and value < float("inf")):
+        raise argparse.ArgumentTypeError(f"'{text}' must be a positive number")
+    return value
+
+
+def _coefficient(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a number") from None
+    if not (0.0 <= value < float("inf")):
+        raise argparse.ArgumentTypeError(f"'{text}' must be a number of 0 or more")
+    return value
 
 
 def _whole_number(minimum: int):
@@ -69,11 +103,58 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def build_simulate_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="assess simulate", description=SIMULATE_DESCRIPTION,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        epilog="Exit codes: 0 done; 2 the input is wrong (each problem is named); 1 internal error.")
+    item = parser.add_argument_group("the item (one base direction)")
+    item.add_argument("--height-cm", metavar="H", type=_positive_number, required=True,
+                      help="overall height [cm]")
+    item.add_argument("--width-cm", metavar="W", type=_positive_number, required=True,
+                      help="base dimension in the direction of shaking [cm]")
+    item.add_argument("--cg-height-cm", metavar="C", type=_positive_number,
+                      help="height of the centre of mass [cm] (default H/2, a uniform block)")
+    item.add_argument("--mu", metavar="MU", type=_coefficient, required=True,
+                      help="kinetic friction coefficient, item on floor")
+    item.add_argument("--mu-static", metavar="MUS", type=_coefficient,
+                      help="static friction coefficient (default MU)")
+    item.add_argument("--restitution", metavar="E", type=_coefficient,
+                      help="coefficient of restitution of rocking impacts "
+                           "(default Housner's 1 - (2/kappa) sin^2 alpha)")
+    motion = parser.add_argument_group("the motion: --record FILE, or --pulse with --ap-g and --tp-s")
+    motion.add_argument("--record", metavar="FILE", type=Path, help="floor acceleration record")
+    motion.add_argument("--scale", metavar="S", type=float, default=1.0,
+                        help="factor applied to the record (default 1)")
+    motion.add_argument("--pulse", choices=("A", "B", "C", "rect"), help="pulse type")
+    motion.add_argument("--ap-g", metavar="A", type=_positive_number, help="pulse amplitude [g]")
+    motion.add_argument("--tp-s", metavar="T", type=_positive_number, help="pulse period Tp [s]")
+    motion.add_argument("--dt-s", metavar="DT", type=_positive_number,
+                        help="sampling step of the pulse [s] (default min(Tp/400, 0.005))")
+    run = parser.add_argument_group("the run")
+    run.add_argument("--tail-s", metavar="S", type=_coefficient, default=10.0,
+                     help="seconds followed after the motion, floor at rest (default 10)")
+    run.add_argument("--solver", choices=("auto", "general", "event-driven"), default="auto",
+                     help="auto: the fastest solver proved right for the item (default); "
+                          "general: Moreau-Jean time stepping; event-driven: the reference solver")
+    run.add_argument("--history", metavar="CSV", type=Path,
+                     help="also write time_s, floor_accel_g, sliding_cm, theta_over_alpha to CSV")
+    run.add_argument("--json", action="store_true", help="print one JSON object (SPEC section 4)")
+    return parser
+
+
 def main(argv: list[str] | None = None) -> int:
-    args = build_parser().parse_args(argv)  # argparse exits with 2 on a wrong option
-    say = (lambda message: None) if args.quiet else (lambda message: print(f"assess: {message}", file=sys.stderr))
+    argv = sys.argv[1:] if argv is None else list(argv)
+    if argv and argv[0] == "simulate":
+        args = build_simulate_parser().parse_args(argv[1:])
+        command, say = _simulate, (lambda message: None)
+    else:
+        args = build_parser().parse_args(argv)  # argparse exits with 2 on a wrong option
+        command = _assess
+        say = (lambda message: None) if args.quiet else (
+            lambda message: print(f"assess: {message}", file=sys.stderr))
     try:
-        return _assess(args, say)
+        return command(args, say)
     except InputError as error:
         print(str(error), file=sys.stderr)
         print("Nothing was written.", file=sys.stderr)
@@ -111,6 +192,91 @@ def _assess(args: argparse.Namespace, say) -> int:
     for path in written:
         print(path)
     return EXIT_OK
+
+
+def _simulate(args: argparse.Namespace, say) -> int:
+    import json
+
+    from assess.hazard.records import pulse_record, read_record
+    from assess.mechanics.block import Block
+    from assess.simulation import simulate_item
+
+    problems = []
+    if (args.record is None) == (args.pulse is None):
+        problems.append(Problem(file="command line", message="give the motion either as --record FILE "
+                                "or as --pulse with --ap-g and --tp-s (exactly one of them).",
+                                fix="e.g. --pulse B --ap-g 0.54 --tp-s 2.1"))
+    elif args.pulse is not None and (args.ap_g is None or args.tp_s is None):
+        problems.append(Problem(file="command line", message=f"--pulse {args.pulse} needs --ap-g and --tp-s.",
+                                fix="add --ap-g (amplitude in g) and --tp-s (period in s)."))
+    cg_cm = args.height_cm / 2.0 if args.cg_height_cm is None else args.cg_height_cm
+    if cg_cm > args.height_cm:
+        problems.append(Problem(file="command line", message=f"--cg-height-cm {cg_cm:g} is above the top "
+                                f"of the item (--height-cm {args.height_cm:g}).",
+                                fix="give the height of the centre of mass above the floor."))
+    mu_static = args.mu if args.mu_static is None else args.mu_static
+    if mu_static < args.mu:
+        problems.append(Problem(file="command line", message=f"--mu-static {mu_static:g} is below --mu "
+                                f"{args.mu:g}; static friction is never below kinetic friction.",
+                                fix="give --mu-static of at least --mu, or leave it out."))
+    if args.restitution is not None and args.restitution > 1.0:
+        problems.append(Problem(file="command line", message=f"--restitution {args.restitution:g} is above 1.",
+                                fix="give a coefficient between 0 and 1, or leave it out for Housner's."))
+    if problems:
+        raise InputError(problems)
+    block = Block(half_width_m=args.width_cm / 200.0, cg_height_m=cg_cm / 100.0,
+                  height_m=args.height_cm / 100.0, mu=args.mu, mu_static=mu_static,
+                  restitution=args.restitution)
+    if args.record is not None:
+        motion, period = read_record(args.record).scaled(args.scale), None
+    else:
+        motion, period = pulse_record(args.pulse, args.ap_g, args.tp_s, args.dt_s), args.tp_s
+    run = simulate_item(block, motion, pulse_period_s=period, tail_s=args.tail_s, solver=args.solver,
+                        return_history=args.history is not None)
+    if args.history is not None:
+        from assess.output import write_atomically
+        write_atomically({args.history.name: _history_csv(run)}, args.history.parent)
+    result = run.as_dict()
+    if args.json:
+        print(json.dumps(result, indent=2))
+    else:
+        print(_simulation_text(result))
+    return EXIT_OK
+
+
+def _history_csv(run) -> bytes:
+    import io
+
+    import numpy as np
+    r = run.response
+    floor = np.zeros(r.time_s.size)
+    floor[:min(run.motion.accel_g.size, floor.size)] = run.motion.accel_g[:floor.size]
+    table = np.column_stack([r.time_s, floor, r.sliding_m * 100.0, r.theta_rad / run.block.alpha_rad])
+    buffer = io.StringIO()
+    np.savetxt(buffer, table, delimiter=",", fmt="%.9g",
+               header="time_s,floor_accel_g,sliding_cm,theta_over_alpha", comments="")
+    return buffer.getvalue().encode()
+
+
+def _simulation_text(result: dict) -> str:
+    lines = [
+        f"item: alpha {result['alpha_rad']:.4f} rad, p {result['p_rad_s']:.3f} rad/s, b/h "
+        f"{result['b_over_h']:.3f}, mu {result['mu']:g} (static {result['mu_static']:g}), "
+        f"restitution {result['restitution']:.4f}",
+        f"motion: {result['motion']['name']}, PTA {result['motion']['pta_g']:.3f} g, "
+        f"{result['motion']['duration_s']:.2f} s at dt {result['motion']['dt_s']:g} s",
+        f"mode: {result['mode']} ({' -> '.join(m for _, m in result['mode_sequence'])}; "
+        f"solved by the {result['solver']})",
+        f"sliding: peak {result['sliding_max_cm']:.2f} cm, residual {result['sliding_residual_cm']:.2f} cm",
+        f"rocking: theta_max/alpha {result['theta_max_over_alpha']:.3f}, uplift "
+        f"{'yes' if result['uplift'] else 'no'}, overturned {'yes' if result['overturned'] else 'no'}"
+        + (f" at {result['overturn_time_s']:.2f} s" if result["overturned"] else ""),
+    ]
+    if "regression" in result:
+        reg = result["regression"]
+        lines.append(f"regression (eq. 21): IM {reg['im']:.3f}, median sliding "
+                     f"{reg['sliding_median_cm']:.2f} cm")
+    return "\n".join(lines)
 
 
 if __name__ == "__main__":

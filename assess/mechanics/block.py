@@ -272,6 +272,8 @@ class BlockResponse:
         starting with ``(0.0, "rest")`` for a block starting at rest.
     time_s, sliding_m, theta_rad : ndarray or None
         Histories at the samples of the record (and of the run-out), on request.
+    solver : str
+        Which solver produced the response (set by :mod:`assess.mechanics.engine`).
     """
 
     sliding_max_m: float
@@ -284,6 +286,7 @@ class BlockResponse:
     time_s: Optional[np.ndarray] = None
     sliding_m: Optional[np.ndarray] = None
     theta_rad: Optional[np.ndarray] = None
+    solver: str = ""
 
     @property
     def mode(self) -> str:

@@ -1,0 +1,275 @@
+"""The engine: which solver answers for a block, and many blocks under many motions.
+
+A block's motion is computed by the fastest solver that is *proved* right for
+it, and by the general solver otherwise:
+
+1. **Pure sliding kernel** (:mod:`assess.mechanics.sliding`, exact) when
+   :math:`\\mu_s < b/h`. Uplift is then impossible while both corners are on
+   the floor: the friction force, at most :math:`\\mu_s N` at the base, has a
+   moment about the centre of mass of at most :math:`\\mu_s N h < N b`, which
+   the normal forces balance without either corner's share becoming negative
+   (moment balance about the centre of mass, [1] §3; [2]).
+2. **Pure rocking kernel** (:mod:`assess.mechanics.rocking`) when
+   :math:`\\mu_s \\ge b/h`, *checked* after the run: it is kept only if the
+   pivot's friction demand |F|/N never exceeded μ_s and its normal force
+   stayed positive. With :math:`\\mu_s \\ge \\tan\\alpha` the block cannot
+   slide from rest before it uplifts, nor slip at a Housner impact (see the
+   rocking module), so these two checks are the whole proof.
+3. **General solver** otherwise (slide-rock, flight): the Moreau–Jean
+   time-stepping scheme of :mod:`assess.mechanics.timestepping`, whose
+   results the event-driven solver of :mod:`assess.mechanics.event_driven`
+   confirms in the tests.
+
+After the record the floor is at rest and the block is followed for
+``tail_s`` more seconds (run-out of sliding, free rocking, or a late
+overturning).
+
+References
+----------
+.. [1] Konstantinidis, D., Makris, N. (2010). Bull. Earthquake Eng.
+   8:1457-1477, §3. doi:10.1007/s10518-010-9192-8
+.. [2] Shenton, H. W. (1996). Criteria for initiation of slide, rock, and
+   slide-rock rigid-body modes. J. Eng. Mech. 122(7):690-693.
+   doi:10.1061/(ASCE)0733-9399(1996)122:7(690)
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable, Optional, Sequence
+
+import numpy as np
+
+from .block import Block, BlockResponse
+from .modes import REST, ROCK, SLIDE
+from .rocking import rocking_peaks_batch, rocking_response
+from .sliding import sliding_peaks_batch, sliding_response
+
+SLIDING_KERNEL = "sliding kernel"
+ROCKING_KERNEL = "rocking kernel"
+GENERAL = "general (time-stepping)"
+EVENT_DRIVEN = "general (event-driven)"
+#: Seconds followed after the record, floor at rest, by default.
+DEFAULT_TAIL_S = 10.0
+
+
+def pure_sliding_proved(mu_static, b_over_h):
+    """Whether uplift is impossible, so the pure sliding kernel is exact: μ_s < b/h.
+
+    >>> bool(pure_sliding_proved(0.13, 0.272)), bool(pure_sliding_proved(0.68, 0.272))
+    (True, False)
+    """
+    return np.asarray(mu_static) < np.asarray(b_over_h)
+
+
+def pure_rocking_held(friction_demand_max, normal_force_min_over_weight, mu_static):
+    """Whether a pure-rocking run is the block's true motion: |F|/N ≤ μ_s and N > 0 throughout.
+
+    >>> bool(pure_rocking_held(0.34, 0.8, 0.68)), bool(pure_rocking_held(0.34, 0.8, 0.30))
+    (True, False)
+    """
+    return (np.asarray(friction_demand_max) <= np.asarray(mu_static)) & (
+        np.asarray(normal_force_min_over_weight) > 0.0)
+
+
+def with_tail(floor_accel_g, dt_s, tail_s=DEFAULT_TAIL_S):
+    """The record followed by ``tail_s`` seconds of floor at rest (zeros) [g]."""
+    accel = np.asarray(floor_accel_g, dtype=float)
+    return np.concatenate([accel, np.zeros(int(np.ceil(tail_s / dt_s)))])
+
+
+def _onset_time_s(floor_accel_g, dt_s, threshold_g):
+    """First time [s] at which the piecewise-linear |a_g| exceeds ``threshold_g``; NaN if never."""
+    above = np.flatnonzero(np.abs(floor_accel_g) > threshold_g)
+    if above.size == 0:
+        return np.nan
+    k = int(above[0])
+    if k == 0:
+        return 0.0
+    a0, a1 = floor_accel_g[k - 1], floor_accel_g[k]
+    target = np.copysign(threshold_g, a1)
+    return (k - 1 + (target - a0) / (a1 - a0)) * dt_s
+
+
+def simulate(block: Block, floor_accel_g, dt_s, *, tail_s=DEFAULT_TAIL_S, return_history=False,
+             solver="auto") -> BlockResponse:
+    """Response of one block to one floor motion, by the solver proved right for it.
+
+    Parameters
+    ----------
+    block : Block
+    floor_accel_g : array-like
+        Floor acceleration [g] at 0, dt, 2dt, ..., linear between samples.
+    dt_s : float
+        Sample interval [s].
+    tail_s : float
+        Seconds followed after the record with the floor at rest.
+    return_history : bool
+        Also return u and θ at the samples (record and tail).
+    solver : {"auto", "general", "event-driven"}
+        ``auto`` dispatches as the module docstring says; the others force a
+        general solver.
+
+    Returns
+    -------
+    BlockResponse
+        ``solver`` names the solver that answered.
+
+    Examples
+    --------
+    The FORMA incubator with its best-fit μ = 0.13 under a 0.54 g, 2.1 s
+    Type-B pulse (the Los Gatos approximation of [1], p. 1470) slides; with
+    μ = 0.68 under a 0.30 g pulse it rocks on its corners without slipping:
+
+    >>> from assess.hazard.pulses import pulse_acceleration
+    >>> forma = dict(half_width_m=0.311, cg_height_m=1.143, height_m=2.286)
+    >>> time_s = np.arange(0, 2.1, 0.005)
+    >>> r = simulate(Block(mu=0.13, **forma), pulse_acceleration("B", 0.54, 2.1, time_s), 0.005)
+    >>> r.mode, r.uplift, r.solver
+    ('slide', False, 'sliding kernel')
+    >>> r = simulate(Block(mu=0.68, **forma), pulse_acceleration("B", 0.30, 2.1, time_s), 0.005)
+    >>> r.mode, r.solver
+    ('rock', 'rocking kernel')
+    """
+    accel = np.asarray(floor_accel_g, dtype=float)
+    if solver == "event-driven":
+        from .event_driven import simulate_event_driven
+        response = simulate_event_driven(block, accel, dt_s, tail_s=tail_s, return_history=return_history)
+        return _named(response, EVENT_DRIVEN)
+    if solver == "general":
+        return _general(block, accel, dt_s, tail_s, return_history)
+    if solver != "auto":
+        raise ValueError(f"solver must be 'auto', 'general' or 'event-driven', not {solver!r}")
+    if pure_sliding_proved(block.mu_static, block.b_over_h):
+        return _sliding(block, accel, dt_s, tail_s, return_history)
+    rocking = rocking_response(with_tail(accel, dt_s, tail_s), dt_s, block.alpha_rad, block.p_rad_s,
+                               restitution=block.restitution_effective, return_history=return_history,
+                               inertia_ratio_value=block.inertia_ratio)
+    if not pure_rocking_held(rocking.friction_demand_max, rocking.normal_force_min_over_weight,
+                             block.mu_static):
+        return _general(block, accel, dt_s, tail_s, return_history)
+    onset = _onset_time_s(accel, dt_s, block.b_over_h)
+    sequence = ((0.0, REST),) + (((float(onset), ROCK),) if rocking.uplift else ())
+    history = {}
+    if return_history:
+        history = dict(time_s=rocking.time_s, sliding_m=np.zeros_like(rocking.theta_rad),
+                       theta_rad=rocking.theta_rad)
+    return BlockResponse(sliding_max_m=0.0, sliding_residual_m=0.0,
+                         theta_max_over_alpha=rocking.theta_max_over_alpha, uplift=rocking.uplift,
+                         overturned=rocking.overturned, overturn_time_s=rocking.overturn_time_s,
+                         mode_sequence=sequence, solver=ROCKING_KERNEL, **history)
+
+
+def _sliding(block, accel, dt_s, tail_s, return_history):
+    result = sliding_response(accel, dt_s, block.mu, block.mu_static, return_history=return_history)
+    onset = _onset_time_s(accel, dt_s, block.mu_static)
+    sequence = ((0.0, REST),) + (((float(onset), SLIDE),) if result.slide_time_s > 0.0 else ())
+    history = {}
+    if return_history:
+        n_tail = int(np.ceil(tail_s / dt_s))
+        time_s = np.arange(accel.size + n_tail) * dt_s
+        # the run-out after the record is solved exactly but not sampled: the tail shows
+        # the residual (reached within the run-out time |u̇|/(μg) of the last sample)
+        sliding_m = np.concatenate([result.sliding_m, np.full(n_tail, result.sliding_residual_m)])
+        history = dict(time_s=time_s, sliding_m=sliding_m, theta_rad=np.zeros(time_s.size))
+    return BlockResponse(sliding_max_m=result.sliding_max_m, sliding_residual_m=result.sliding_residual_m,
+                         theta_max_over_alpha=0.0, uplift=False, overturned=False, overturn_time_s=np.nan,
+                         mode_sequence=sequence, solver=SLIDING_KERNEL, **history)
+
+
+def _general(block, accel, dt_s, tail_s, return_history):
+    from .timestepping import simulate_time_stepping
+    response = simulate_time_stepping(block, accel, dt_s, tail_s=tail_s, return_history=return_history)
+    return _named(response, GENERAL)
+
+
+def _named(response: BlockResponse, solver: str) -> BlockResponse:
+    from dataclasses import replace
+    return replace(response, solver=solver)
+
+
+@dataclass(frozen=True)
+class CasePeaks:
+    """Peaks of many (block, motion) cases (:func:`simulate_cases`); arrays of shape (n_cases,).
+
+    Fields as in :class:`~assess.mechanics.block.BlockResponse`, plus ``mode``
+    (the run's mode, :func:`~assess.mechanics.block.summary_mode`) and
+    ``solver`` (which solver answered).
+    """
+
+    sliding_max_m: np.ndarray
+    sliding_residual_m: np.ndarray
+    theta_max_over_alpha: np.ndarray
+    uplift: np.ndarray
+    overturned: np.ndarray
+    mode: np.ndarray
+    solver: np.ndarray
+
+
+def simulate_cases(blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_s: Sequence[float],
+                   record_index, *, tail_s=DEFAULT_TAIL_S,
+                   progress: Optional[Callable[[int, int], None]] = None) -> CasePeaks:
+    """Simulate case k = block ``blocks[k]`` under record ``records_g[record_index[k]]``.
+
+    Cases are grouped by record and by the solver proved for them, and each
+    group runs in the parallel batch kernels; rocking runs whose pivot would
+    have slipped or lifted are re-run one by one with the general solver.
+    Same results as :func:`simulate` case by case, peaks only.
+
+    ``progress(done, total)`` is called after each record's group and after
+    each general-solver run.
+    """
+    n = len(blocks)
+    record_index = np.asarray(record_index, dtype=np.int64)
+    if record_index.shape != (n,):
+        raise ValueError("record_index must give one record per block")
+    sliding_max, residual = np.zeros(n), np.zeros(n)
+    theta_max = np.zeros(n)
+    uplift, overturned = np.zeros(n, dtype=bool), np.zeros(n, dtype=bool)
+    mode = np.full(n, REST, dtype=object)
+    solver = np.full(n, "", dtype=object)
+    mu = np.array([b.mu for b in blocks])
+    mu_static = np.array([b.mu_static for b in blocks])
+    sliding_set = pure_sliding_proved(mu_static, np.array([b.b_over_h for b in blocks]))
+    to_general = []
+    done = 0
+    for j, record in enumerate(records_g):
+        in_record = record_index == j
+        accel = np.asarray(record, dtype=float)
+        idx = np.flatnonzero(in_record & sliding_set)
+        if idx.size:
+            peak, res = sliding_peaks_batch([accel], dt_s[j], mu[idx], mu_static[idx])
+            sliding_max[idx], residual[idx] = peak[:, 0], res[:, 0]
+            mode[idx] = np.where(peak[:, 0] > 0.0, SLIDE, REST)
+            solver[idx] = SLIDING_KERNEL
+        idx = np.flatnonzero(in_record & ~sliding_set)
+        if idx.size:
+            rock = rocking_peaks_batch(
+                with_tail(accel, dt_s[j], tail_s), dt_s[j], [blocks[i].alpha_rad for i in idx],
+                [blocks[i].p_rad_s for i in idx], [blocks[i].restitution_effective for i in idx],
+                [blocks[i].inertia_ratio for i in idx])
+            held = pure_rocking_held(rock.friction_demand_max[:, 0],
+                                     rock.normal_force_min_over_weight[:, 0], mu_static[idx])
+            kept = idx[held]
+            theta_max[kept] = rock.theta_max_over_alpha[held, 0]
+            uplift[kept] = rock.uplift[held, 0]
+            overturned[kept] = rock.overturned[held, 0]
+            mode[kept] = np.where(rock.uplift[held, 0], ROCK, REST)
+            solver[kept] = ROCKING_KERNEL
+            to_general.extend(idx[~held].tolist())
+            done -= int(np.count_nonzero(~held))
+        done += int(np.count_nonzero(in_record))
+        if progress is not None:
+            progress(done, n)
+    for i in to_general:
+        j = record_index[i]
+        response = _general(blocks[i], np.asarray(records_g[j], dtype=float), dt_s[j], tail_s, False)
+        sliding_max[i], residual[i] = response.sliding_max_m, response.sliding_residual_m
+        theta_max[i], uplift[i], overturned[i] = (response.theta_max_over_alpha, response.uplift,
+                                                  response.overturned)
+        mode[i], solver[i] = response.mode, GENERAL
+        done += 1
+        if progress is not None:
+            progress(done, n)
+    return CasePeaks(sliding_max_m=sliding_max, sliding_residual_m=residual,
+                     theta_max_over_alpha=theta_max, uplift=uplift, overturned=overturned,
+                     mode=mode.astype(str), solver=solver.astype(str))
