@@ -1,0 +1,115 @@
+"""The engine's dispatch (assess.mechanics.engine): each case answered by a solver proved right for it.
+
+Checked against the specialised kernels run directly, against the general
+solver forced on the same case, and against the paper's statements about its
+three prototypes (Konstantinidis & Makris 2010, Table 1, Table 3, section 4).
+"""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from assess.data import km2010_table3
+from assess.hazard.records import pulse_record
+from assess.mechanics.block import Block
+from assess.mechanics.engine import (GENERAL, ROCKING_KERNEL, SLIDING_KERNEL, simulate, simulate_cases,
+                                     with_tail)
+from assess.mechanics.rocking import rocking_response
+from assess.mechanics.sliding import sliding_response
+
+#: Table 1 prototypes: height 2h and width 2b [m].
+PROTOTYPES = {"FORMA": (2.286, 0.622), "KELVINATOR": (2.134, 0.660), "ASP": (1.803, 0.584)}
+BEST_FIT_MU = {"FORMA": 0.13, "KELVINATOR": 0.17, "ASP": 0.20}  # Table 3
+MODEL_MU = 0.68  # the wooden models on the shake table, section 4
+
+
+def prototype(name, mu):
+    height, width = PROTOTYPES[name]
+    return Block(half_width_m=width / 2, cg_height_m=height / 2, height_m=height, mu=mu)
+
+
+def table3_motions():
+    """The paper's Table 3 motions as Type-B pulses of the printed PTA and Tp (p. 1470)."""
+    table = km2010_table3()
+    return table.drop_duplicates(["motion", "pta_g"])[["motion", "pta_g", "tp_s"]].itertuples(index=False)
+
+
+def test_uplift_impossible_goes_to_the_exact_sliding_kernel():
+    block = prototype("FORMA", 0.13)
+    motion = pulse_record("B", 0.54, 2.1)
+    response = simulate(block, motion.accel_g, motion.dt_s)
+    direct = sliding_response(motion.accel_g, motion.dt_s, 0.13)
+    assert response.solver == SLIDING_KERNEL
+    assert response.sliding_max_m == direct.sliding_max_m
+    assert response.sliding_residual_m == direct.sliding_residual_m
+    assert not response.uplift and response.theta_max_over_alpha == 0.0
+
+
+def test_rocking_kept_where_the_pivot_holds():
+    block = prototype("FORMA", MODEL_MU)
+    motion = pulse_record("B", 0.30, 2.1)
+    response = simulate(block, motion.accel_g, motion.dt_s)
+    direct = rocking_response(with_tail(motion.accel_g, motion.dt_s), motion.dt_s, block.alpha_rad,
+                              block.p_rad_s)
+    assert response.solver == ROCKING_KERNEL
+    assert direct.friction_demand_max <= MODEL_MU and direct.normal_force_min_over_weight > 0
+    assert response.theta_max_over_alpha == direct.theta_max_over_alpha
+    assert response.uplift and response.sliding_max_m == 0.0 and response.mode == "rock"
+
+
+def test_rocking_handed_to_the_general_solver_where_the_pivot_would_slip():
+    """μs just above b/h: the block uplifts from rest, then the pivot needs more friction than it has."""
+    block = Block(half_width_m=0.3, cg_height_m=1.0, height_m=2.0, mu=0.31)
+    motion = pulse_record("A", 0.6, 1.0)
+    direct = rocking_response(with_tail(motion.accel_g, motion.dt_s), motion.dt_s, block.alpha_rad,
+                              block.p_rad_s)
+    assert direct.friction_demand_max > block.mu_static  # the premise of this test
+    response = simulate(block, motion.accel_g, motion.dt_s)
+    assert response.solver == GENERAL
+    assert response.mode == "slide-rock" and response.sliding_max_m > 0.0
+
+
+@pytest.mark.parametrize("name", sorted(PROTOTYPES))
+def test_prototypes_with_best_fit_mu_slide_without_uplift(name):
+    """Section 4: with their best-fit μ the full-scale items slide and do not rock, under every Table 3 motion."""
+    block = prototype(name, BEST_FIT_MU[name])
+    for motion in table3_motions():
+        record = pulse_record("B", motion.pta_g, motion.tp_s)
+        response = simulate(block, record.accel_g, record.dt_s)
+        assert response.mode == "slide", motion
+        assert not response.uplift and response.sliding_max_m > 0.0
+
+
+@pytest.mark.parametrize("name", sorted(PROTOTYPES))
+def test_prototypes_with_model_mu_rock(name):
+    """Section 4: with μ = 0.68 (wood on steel) the same geometry uplifts instead of sliding off from rest."""
+    block = prototype(name, MODEL_MU)
+    for motion in table3_motions():
+        record = pulse_record("B", motion.pta_g, motion.tp_s)
+        response = simulate(block, record.accel_g, record.dt_s)
+        assert response.uplift, motion
+        assert response.mode_sequence[1][1] == "rock", motion  # the first motion from rest is rocking
+
+
+def test_cases_equal_single_runs():
+    blocks = [prototype("FORMA", 0.13), prototype("ASP", MODEL_MU), prototype("KELVINATOR", 0.17),
+              Block(half_width_m=0.3, cg_height_m=1.0, height_m=2.0, mu=0.31),
+              prototype("FORMA", MODEL_MU)]
+    motions = [pulse_record("B", 0.30, 2.1), pulse_record("A", 0.6, 1.0)]
+    index = [0, 0, 1, 1, 1]
+    calls = []
+    peaks = simulate_cases(blocks, [m.accel_g for m in motions], [m.dt_s for m in motions], index,
+                           progress=lambda done, total: calls.append((done, total)))
+    for k, (block, j) in enumerate(zip(blocks, index)):
+        single = simulate(block, motions[j].accel_g, motions[j].dt_s)
+        assert peaks.solver[k] == single.solver
+        assert peaks.mode[k] == single.mode
+        assert peaks.sliding_max_m[k] == pytest.approx(single.sliding_max_m, rel=1e-12, abs=1e-15)
+        assert peaks.theta_max_over_alpha[k] == pytest.approx(single.theta_max_over_alpha, rel=1e-12)
+        assert peaks.overturned[k] == single.overturned
+    assert calls[-1] == (5, 5) and all(a <= b for (a, _), (b, _) in zip(calls, calls[1:]))
+
+
+def test_unknown_solver_is_refused():
+    with pytest.raises(ValueError, match="solver"):
+        simulate(prototype("ASP", 0.2), [0.1, 0.1], 0.01, solver="fast")
