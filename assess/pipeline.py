@@ -10,13 +10,18 @@ from typing import Callable
 import numpy as np
 import pandas as pd
 
-from assess.errors import Problem, raise_if_any
+from dataclasses import replace
+
+from assess.errors import InputError, Problem, raise_if_any
 from assess.fragility import (
     RegressionConstants, capacity_edp, intensity_measure, median_edp,
     probability_of_exceedance, sliding_quantile,
 )
 from assess.hazard.motions import motions_by_item, select_level
+from assess.hazard.records import Record, pulse_record, read_record
 from assess.inventory import Inventory
+from assess.mechanics.block import Block
+from assess.mechanics.engine import DEFAULT_TAIL_S, simulate, simulate_cases
 from assess.mechanics.geometry import frequency_parameter, inertia_ratio, slenderness
 from assess.mechanics.modes import MODE_SEVERITY, ROCK, SLIDE, SLIDE_ROCK, initial_mode
 from assess.result import MOTION_COLUMNS, SUMMARY_COLUMNS, AssessmentResult, Flag
@@ -25,6 +30,10 @@ Progress = Callable[[str], None]
 UPLIFT_MODES = (ROCK, SLIDE_ROCK)
 SLIDING_MODES = (SLIDE, SLIDE_ROCK)
 DIRECTIONS = {1: "width_m", 2: "depth_m"}
+#: Pulse simulated for a motion given by PTA and Tp without a pulse type.
+DEFAULT_PULSE = "B"
+#: How many items the report shows the time histories of (Fig. 7 of the paper).
+HISTORY_ITEMS = 3
 
 
 def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
@@ -48,8 +57,11 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
              f"{level_label}: {len(pairs) * len(DIRECTIONS)} item x motion x direction cases")
 
     cases = _item_motion_direction_cases(freestanding, pairs)
+    simulated_motions = _simulated_motions(level_motions, workbook_name)
+    cases = _add_simulation(cases, simulated_motions, progress)
     cases = _add_demand(cases, constants)
     summary, flags = _summarise(equipment, cases, constants, settings)
+    histories = _worst_histories(cases, summary, simulated_motions)
     regression = {"zeta": constants.zeta, "eta": constants.eta, "sigma": constants.sigma,
                   "im_min": constants.im_min, "im_max": constants.im_max,
                   "source": _regression_source(settings)}
@@ -57,7 +69,8 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
         workbook=inventory.path, facility=str(settings.get("facility", "")),
         site=str(settings.get("site", "")), level=level, level_label=level_label,
         summary=summary[SUMMARY_COLUMNS], motions=_motion_table(cases), flags=flags,
-        regression=regression, settings=dict(settings), simulated=False, seed=seed,
+        regression=regression, settings=dict(settings), simulated=True, seed=seed,
+        histories=histories,
     )
 
 
@@ -69,6 +82,89 @@ def _require_pulse_parameters(level_motions: pd.DataFrame, workbook_name: str) -
                 "describes every motion by its pulse and does not read records yet.",
         fix="fill in pta_g and tp_s (and vp_cm_s) of the motion's predominant pulse.")
         for row in missing.itertuples(index=False)])
+
+
+def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str) -> dict[str, tuple[Record, str]]:
+    """Per motion: the floor acceleration the engine simulates, and how it was obtained.
+
+    A motion with a record is simulated under the record (times ``scale``);
+    one given by PTA and Tp under its pulse (:data:`DEFAULT_PULSE` where the
+    workbook names none, said so in ``sim_motion``).
+    """
+    motions = {}
+    for row in level_motions.itertuples(index=False):
+        if row.record_path:
+            try:
+                record = read_record(row.record_path).scaled(float(row.scale))
+            except InputError as error:
+                raise InputError([replace(problem, message=f"the record of motion '{row.motion}' "
+                                          f"({workbook_name}, sheet 'hazard', row {int(row.row)}): "
+                                          f"{problem.message}") for problem in error.problems]) from None
+            motions[row.motion] = (record, f"record {record.name} x {float(row.scale):g}")
+            continue
+        pulse = row.pulse or DEFAULT_PULSE
+        record = pulse_record(pulse, float(row.pta_g), float(row.tp_s))
+        note = f"Type-{pulse} pulse" if row.pulse else f"Type-{pulse} pulse (assumed: no pulse type given)"
+        motions[row.motion] = (record, f"{note}, {float(row.pta_g):g} g, Tp {float(row.tp_s):g} s")
+    return motions
+
+
+def _case_block(case) -> Block:
+    return Block(half_width_m=float(case.half_width_m), cg_height_m=float(case.cg_height_m),
+                 height_m=float(case.height_m), mu=float(case.mu), mu_static=float(case.mu_static))
+
+
+def _add_simulation(cases: pd.DataFrame, motions: dict[str, tuple[Record, str]],
+                    progress: Progress) -> pd.DataFrame:
+    """Simulate every case (:func:`assess.mechanics.engine.simulate_cases`): ``sim_*`` columns."""
+    names = list(motions)
+    blocks = [_case_block(case) for case in cases.itertuples(index=False)]
+    record_index = cases["motion"].map({name: k for k, name in enumerate(names)}).to_numpy()
+    last = [-1.0]
+
+    def report(done, total):
+        if done == total or done - last[0] >= max(1, total // 10):
+            last[0] = done
+            progress(f"simulated {done} of {total} cases")
+
+    peaks = simulate_cases(blocks, [motions[n][0].accel_g for n in names],
+                           [motions[n][0].dt_s for n in names], record_index, progress=report)
+    return cases.assign(
+        sim_motion=cases["motion"].map({n: motions[n][1] for n in names}),
+        sim_mode=peaks.mode, sim_sliding_max_cm=peaks.sliding_max_m * 100.0,
+        sim_sliding_residual_cm=peaks.sliding_residual_m * 100.0,
+        sim_theta_max_over_alpha=peaks.theta_max_over_alpha, sim_uplift=peaks.uplift,
+        sim_overturned=peaks.overturned, sim_solver=peaks.solver)
+
+
+def _worst_histories(cases: pd.DataFrame, summary: pd.DataFrame,
+                     motions: dict[str, tuple[Record, str]]) -> list[dict]:
+    """Time histories (Fig. 7 of the paper) of the worst cases of the :data:`HISTORY_ITEMS` worst items.
+
+    Worst: overturned first, then the largest θmax/α, then the largest
+    simulated sliding over clearance; for each item, its worst case.
+    """
+    ranked = cases.assign(
+        _over=cases["sim_overturned"].astype(int),
+        _ratio=cases["sim_sliding_max_cm"] / (cases["clearance_m"] * 100.0),
+    ).sort_values(["_over", "sim_theta_max_over_alpha", "_ratio"], ascending=False, kind="stable")
+    worst = ranked.drop_duplicates("id").head(HISTORY_ITEMS)
+    names = summary.set_index("id")["name"]
+    histories = []
+    for case in worst.itertuples(index=False):
+        record, description = motions[case.motion]
+        response = simulate(_case_block(case), record.accel_g, record.dt_s, return_history=True)
+        floor = np.zeros(response.time_s.size)
+        floor[:min(record.accel_g.size, floor.size)] = record.accel_g[:floor.size]
+        histories.append({
+            "id": case.id, "name": names[case.id], "motion": case.motion, "direction": int(case.direction),
+            "sim_motion": description, "mode": response.mode, "solver": response.solver,
+            "alpha_rad": float(case.alpha_rad), "time_s": response.time_s,
+            "sliding_cm": response.sliding_m * 100.0, "theta_over_alpha": response.theta_rad / case.alpha_rad,
+            "floor_accel_g": floor, "overturned": bool(response.overturned),
+            "clearance_cm": float(case.clearance_m) * 100.0,
+        })
+    return histories
 
 
 def _item_motion_direction_cases(items: pd.DataFrame, pairs: pd.DataFrame) -> pd.DataFrame:
@@ -91,9 +187,16 @@ def _item_motion_direction_cases(items: pd.DataFrame, pairs: pd.DataFrame) -> pd
 
 
 def _add_demand(cases: pd.DataFrame, constants: RegressionConstants) -> pd.DataFrame:
-    """Mode from rest, IM, and the regression's sliding demand and Pf for each case."""
+    """Mode, IM, and the regression's sliding demand and Pf for each case.
+
+    ``mode`` is the simulated one (``sim_mode``); ``mode_from_rest`` the mode
+    the block enters first, by Shenton's criteria (:func:`initial_mode`). The
+    regression's sliding demand applies where the simulation slides.
+    """
     cases = cases.copy()
-    cases["mode"] = initial_mode(cases["pta_g"], cases["mu_static"], cases["b_over_h"], cases["inertia_ratio"])
+    cases["mode_from_rest"] = initial_mode(cases["pta_g"], cases["mu_static"], cases["b_over_h"],
+                                           cases["inertia_ratio"])
+    cases["mode"] = cases["sim_mode"]
     cases["im"] = intensity_measure(cases["pta_g"], cases["mu"])
     slides = cases["mode"].isin(SLIDING_MODES).to_numpy()
     im_sliding = np.where(slides, cases["im"], 0.0)  # no sliding from rest: zero demand
@@ -152,24 +255,41 @@ def _summarise(equipment: pd.DataFrame, cases: pd.DataFrame, constants: Regressi
             rows.append(row)
             continue
         case = governing.loc[item.id]
+        item_cases = cases[cases["id"] == item.id]
         row.update({column: case[column] for column in (
             "alpha_rad", "p_rad_s", "b_over_h", "mode", "pta_g", "tp_s", "im", "edp_median",
-            "sliding_median_cm", "sliding_p84_cm", "pf_sliding")})
+            "sliding_median_cm", "sliding_p84_cm", "pf_sliding", "sim_sliding_max_cm")})
         row["governing_direction"] = int(case["direction"])
         row["governing_motion"] = case["motion"]
-        item_flags = _item_flags(item, cases[cases["id"] == item.id], constants)
+        row.update(overturning_summary(item_cases))
+        item_flags = _item_flags(item, item_cases, constants)
         flags.extend(item_flags)
         row["flags"] = "; ".join(flag.code for flag in item_flags)
-        row["risk"] = classify_risk(row["mode"], row["pf_sliding"], settings)
-        row["action"] = recommended_action(row["risk"], row["mode"], row["sliding_p84_cm"], row["clearance_cm"])
+        row["risk"] = classify_risk(row["mode"], row["pf_sliding"], settings, row["overturn_fraction"])
+        row["action"] = recommended_action(row["risk"], row["mode"], row["sliding_p84_cm"], row["clearance_cm"],
+                                           row["overturn_fraction"], row["theta_max_over_alpha"])
         rows.append(row)
     return pd.DataFrame(rows), flags
 
 
-def classify_risk(mode: str, pf_sliding: float, settings: dict) -> str:
-    """``high`` when the item uplifts (rock or slide-rock) or P(sliding > clearance) ≥
-    ``risk_pf_high``; ``moderate`` when that probability ≥ ``risk_pf_moderate``; else ``low``."""
-    if mode in UPLIFT_MODES:
+def overturning_summary(item_cases: pd.DataFrame) -> dict:
+    """``overturn_fraction`` and ``theta_max_over_alpha`` of one item from its simulated cases.
+
+    ``overturn_fraction``: share of the level's motions under which the item
+    overturns in at least one of its two base directions (a motion may arrive
+    along either). ``theta_max_over_alpha``: the largest peak |θ|/α over all
+    its cases, each relative to α of its own direction.
+    """
+    per_motion = item_cases.groupby("motion", sort=False)["sim_overturned"].any()
+    return {"overturn_fraction": float(per_motion.mean()),
+            "theta_max_over_alpha": float(item_cases["sim_theta_max_over_alpha"].max())}
+
+
+def classify_risk(mode: str, pf_sliding: float, settings: dict, overturn_fraction: float = 0.0) -> str:
+    """``high`` when the simulation overturns or uplifts the item (rock or slide-rock) or
+    P(sliding > clearance) ≥ ``risk_pf_high``; ``moderate`` when that probability ≥
+    ``risk_pf_moderate``; else ``low``."""
+    if overturn_fraction > 0.0 or mode in UPLIFT_MODES:
         return "high"
     if pf_sliding >= float(settings["risk_pf_high"]):
         return "high"
@@ -178,10 +298,16 @@ def classify_risk(mode: str, pf_sliding: float, settings: dict) -> str:
     return "low"
 
 
-def recommended_action(risk: str, mode: str, sliding_p84_cm: float, clearance_cm: float) -> str:
+def recommended_action(risk: str, mode: str, sliding_p84_cm: float, clearance_cm: float,
+                       overturn_fraction: float = 0.0, theta_max_over_alpha: float = 0.0) -> str:
     """A plain sentence a facility manager can act on."""
+    if overturn_fraction > 0.0:
+        return (f"Anchor: it overturns under {overturn_fraction:.0%} of the design motions "
+                f"in the simulation")
     if mode in UPLIFT_MODES:
-        return "Anchor or restrain: it uplifts and rocks under the design motion (overturning possible)"
+        return (f"Anchor or restrain: it uplifts and rocks under the design motion "
+                f"(peak rotation {theta_max_over_alpha:.2f} of its overturning angle alpha; "
+                f"it did not overturn in the simulation)")
     if risk == "high":
         return (f"Restrain, or give it room: needs {sliding_p84_cm:.0f} cm (84th percentile), "
                 f"has {clearance_cm:.0f} cm")
@@ -197,10 +323,19 @@ def _item_flags(item, item_cases: pd.DataFrame, constants: RegressionConstants) 
         # the most slender direction, then the strongest motion
         worst = uplift.sort_values(["b_over_h", "pta_g"], ascending=[True, False], kind="stable").iloc[0]
         flags.append(Flag(item.id, "uplift", (
-            f"{worst['mode']} under {worst['motion']} in direction {int(worst['direction'])}: "
+            f"{worst['mode']} under {worst['motion']} in direction {int(worst['direction'])} "
+            f"(simulated; peak theta/alpha {worst['sim_theta_max_over_alpha']:.2f}"
+            f"{', overturned' if worst['sim_overturned'] else ''}): "
             f"mu_static = {item.mu_static:.2f} >= b/h = {worst['b_over_h']:.2f} and PTA = {worst['pta_g']:.2f} g "
-            f"> g b/h. The sliding regression assumes no uplift; overturning was not assessed "
-            f"by simulation in this version.")))
+            f"> g b/h. The sliding regression assumes no uplift; the simulation answers for this item.")))
+    beyond = item_cases[item_cases["sim_sliding_max_cm"] > item_cases["clearance_m"] * 100.0]
+    if len(beyond):
+        worst = beyond.sort_values("sim_sliding_max_cm", ascending=False, kind="stable").iloc[0]
+        flags.append(Flag(item.id, "sim_beyond_clearance", (
+            f"the simulation slides it {worst['sim_sliding_max_cm']:.0f} cm under {worst['motion']} "
+            f"(direction {int(worst['direction'])}, {worst['sim_motion']}), more than its "
+            f"{item.clearance_m * 100:.0f} cm clearance; {len(beyond)} of {len(item_cases)} cases do. "
+            f"The risk class follows the regression's probability; this is one deterministic history.")))
     outside = item_cases[item_cases["im_outside_fit"]]
     if len(outside):
         ims = ", ".join(f"{im:.2f}" for im in sorted(set(outside["im"].round(2))))
@@ -217,7 +352,6 @@ def _item_flags(item, item_cases: pd.DataFrame, constants: RegressionConstants) 
 def _motion_table(cases: pd.DataFrame) -> pd.DataFrame:
     table = cases.assign(
         vp_cm_s=cases["vp_m_s"] * 100.0,
-        sim_sliding_max_cm=np.nan, sim_theta_max_over_alpha=np.nan, sim_overturned=pd.NA,
         flags=np.where(cases["im_outside_fit"], "im_outside_fit", ""),
     )
     table["flags"] = np.where(table["mode"].isin(UPLIFT_MODES),

@@ -13,7 +13,7 @@ SUMMARY_COLUMNS = [
     "id", "name", "room", "floor", "quantity", "alpha_rad", "p_rad_s", "b_over_h",
     "governing_direction", "mu", "mode", "governing_motion", "pta_g", "tp_s", "im",
     "edp_median", "sliding_median_cm", "sliding_p84_cm", "clearance_cm", "pf_sliding",
-    "overturn_fraction", "theta_max_over_alpha", "risk", "action", "flags",
+    "overturn_fraction", "theta_max_over_alpha", "risk", "action", "flags", "sim_sliding_max_cm",
 ]
 
 #: Columns of ``motions.csv`` in order (SPEC §3 first, then extras).
@@ -21,7 +21,7 @@ MOTION_COLUMNS = [
     "id", "motion", "direction", "pta_g", "tp_s", "im", "edp_median", "sliding_median_cm",
     "pf_sliding", "sim_sliding_max_cm", "sim_theta_max_over_alpha", "sim_overturned",
     "floor", "vp_cm_s", "b_over_h", "alpha_rad", "mode", "sliding_p84_cm", "capacity_edp",
-    "flags",
+    "flags", "mode_from_rest", "sim_sliding_residual_cm", "sim_uplift", "sim_motion", "sim_solver",
 ]
 
 RISK_CLASSES = ("high", "moderate", "low", "anchored")
@@ -32,7 +32,7 @@ class Flag:
     """A caveat attached to one item's result (shown in the report and the CSVs)."""
 
     item_id: str
-    code: str  # e.g. "im_extrapolated", "rocks", "not_simulated"
+    code: str  # e.g. "uplift", "im_outside_fit", "sim_beyond_clearance"
     message: str
 
 
@@ -49,12 +49,14 @@ class AssessmentResult:
         The level assessed; ``level_label`` is the spelling the workbook uses.
     summary : DataFrame
         One row per item, :data:`SUMMARY_COLUMNS`; lengths in cm, accelerations in g.
-        ``overturn_fraction`` and ``theta_max_over_alpha`` are NaN while the
-        engine does not simulate (``simulated`` is False).
+        ``mode``, ``overturn_fraction``, ``theta_max_over_alpha`` and
+        ``sim_sliding_max_cm`` come from the time-history simulation.
     motions : DataFrame
         One row per freestanding item x motion x direction, :data:`MOTION_COLUMNS`.
-        ``direction`` is 1 (along width) or 2 (along depth); ``sim_*`` NaN when
-        not simulated.
+        ``direction`` is 1 (along width) or 2 (along depth); ``sim_*`` from the
+        engine (``sim_motion`` says what was simulated, ``sim_solver`` which
+        solver answered); ``mode`` is the simulated mode, ``mode_from_rest``
+        the mode entered first by Shenton's criteria.
     flags : list[Flag]
     regression : dict
         ``zeta``, ``eta``, ``sigma``, ``im_min``, ``im_max`` as used, and
@@ -62,8 +64,12 @@ class AssessmentResult:
     settings : dict
         The merged settings used (risk thresholds included).
     simulated : bool
-        Whether the time-history engine ran (False until it exists).
+        Whether the time-history engine ran.
     seed : int
+    histories : list of dict
+        Time histories of the worst items (Fig. 7 of the paper): ``id``,
+        ``name``, ``motion``, ``direction``, ``time_s``, ``sliding_cm``,
+        ``theta_over_alpha``, ``floor_accel_g`` and what was simulated.
     """
 
     workbook: Path
@@ -78,6 +84,7 @@ class AssessmentResult:
     settings: dict = field(default_factory=dict)
     simulated: bool = False
     seed: int = 0
+    histories: list = field(default_factory=list)
 
     def risk_counts(self) -> dict[str, int]:
         """Number of items (rows, not quantity) in each risk class."""

@@ -56,7 +56,16 @@ def test_paper_prototypes_reproduce_table3_im_and_slide():
         expected_cm = 0.370 * row["im"] ** 0.953 * pta * 9.80665 / (2 * np.pi / tp) ** 2 * 100
         assert row["sliding_median_cm"] == pytest.approx(expected_cm, rel=1e-9)
     assert set(result.summary["mode"]) == {"slide"}
-    assert not result.simulated and result.summary["overturn_fraction"].isna().all()
+    assert result.simulated and (result.summary["overturn_fraction"] == 0.0).all()
+    assert (result.summary["theta_max_over_alpha"] == 0.0).all()
+    # the simulation of each case is the exact sliding kernel under the motion's Type-B pulse
+    from assess.hazard.records import pulse_record
+    from assess.mechanics.sliding import sliding_response
+    los_gatos = pulse_record("B", 0.54, 2.10)
+    direct = sliding_response(los_gatos.accel_g, los_gatos.dt_s, 0.13)
+    row = motions.loc[("FORMA", "Los Gatos 0.54", 1)]
+    assert row["sim_sliding_max_cm"] == pytest.approx(direct.sliding_max_m * 100, rel=1e-12)
+    assert row["sim_solver"] == "sliding kernel" and not row["sim_overturned"]
 
 
 def test_columns_and_row_counts():
@@ -144,3 +153,25 @@ def test_same_input_gives_identical_csv():
     first, second = run_assessment(inv, "2in50", seed=1), run_assessment(inv, "2in50", seed=1)
     assert csv_text(first.summary) == csv_text(second.summary)
     assert csv_text(first.motions) == csv_text(second.motions)
+
+
+def test_simulation_fills_overturning_and_the_report_shows_histories():
+    """A slender rack on rubber feet overturns under the 0.84 g Corralitos pulse; the report says so."""
+    from assess.report import render_html
+
+    rack = item("RACK", height_cm=200, width_cm=40, depth_cm=60, mu=0.6)
+    fridge = item("FRIDGE", row=3)
+    result = run_assessment(inventory([rack, fridge], TABLE3_GROUND), "2in50")
+    summary = result.summary.set_index("id")
+    motions = result.motions.set_index(["id", "motion", "direction"]).sort_index()
+    per_motion = motions.loc["RACK"].groupby(level="motion")["sim_overturned"].any()
+    assert summary.loc["RACK", "overturn_fraction"] == pytest.approx(per_motion.mean())
+    assert summary.loc["RACK", "overturn_fraction"] > 0 and summary.loc["RACK", "action"].startswith("Anchor")
+    assert summary.loc["RACK", "theta_max_over_alpha"] == motions.loc["RACK", "sim_theta_max_over_alpha"].max()
+    assert summary.loc["FRIDGE", "overturn_fraction"] == 0.0
+    assert [h["id"] for h in result.histories] == ["RACK", "FRIDGE"]  # overturned first
+    rack_history = result.histories[0]
+    assert np.nanmax(np.abs(rack_history["theta_over_alpha"])) >= 1.0
+    html = render_html(result)
+    assert 'id="simulation"' in html and html.count("as Fig. 7 of the paper") == 2
+    assert "Regression and simulation side by side" in html

@@ -325,3 +325,68 @@ def _sliding_demand_figure(items: pd.DataFrame) -> str:
                           label="clearance (room to slide)")]
         figure.legend(handles=handles, loc="outside upper center", ncol=3, frameon=False)
         return _to_svg(figure)
+
+
+# --------------------------------------------------------------------------- simulation
+def history_figure(history: dict) -> str:
+    """Time histories of one simulated case, as Fig. 7 of the paper.
+
+    Three panels on one time axis: sliding relative to the floor [cm] with the
+    clearance marked, rotation θ/α (±1 dotted: the block's centre of mass is
+    over its pivot) and the floor acceleration [g].
+    """
+    with matplotlib.rc_context(_RC):
+        figure = _new_figure(3.6)
+        axes = figure.subplots(3, 1, sharex=True)
+        time_s = np.asarray(history["time_s"])
+        axes[0].plot(time_s, history["sliding_cm"], color="#1f4e79", linewidth=0.9)
+        for sign in (1, -1):
+            axes[0].axhline(sign * history["clearance_cm"], color="black", linewidth=0.7, linestyle="--")
+        axes[0].set_ylabel("sliding [cm]")
+        axes[1].plot(time_s, history["theta_over_alpha"], color="#922b21", linewidth=0.9)
+        for sign in (1, -1):
+            axes[1].axhline(sign, color="#922b21", linewidth=0.6, linestyle=":")
+        axes[1].set_ylabel("θ/α")
+        axes[2].plot(time_s, history["floor_accel_g"], color="#555555", linewidth=0.7)
+        axes[2].set_ylabel("floor [g]")
+        axes[2].set_xlabel("time [s]")
+        title = (f"{history['id']}: {history['mode']}"
+                 f"{', overturns' if history['overturned'] else ''}")
+        axes[0].set_title(title, loc="left")
+        return _to_svg(figure)
+
+
+def simulation_vs_regression_figure(result) -> str:
+    """Simulated peak sliding against the regression's median for every sliding case.
+
+    Log–log axes; the diagonal is agreement, the dotted lines the regression's
+    16th and 84th percentiles (median × e^∓σ). Cases where either is zero are
+    left out (said in the caption).
+    """
+    zeta, eta, sigma, *_ = regression_constants(result)
+    motions = result.motions
+    sim = pd.to_numeric(motions["sim_sliding_max_cm"], errors="coerce")
+    reg = pd.to_numeric(motions["sliding_median_cm"], errors="coerce")
+    shown = (sim > 0) & (reg > 0)
+    with matplotlib.rc_context(_RC):
+        figure = _new_figure(3.4)
+        axes = figure.subplots()
+        axes.set_box_aspect(1.0)
+        if shown.any():
+            axes.scatter(reg[shown], sim[shown], s=10, color="#1f4e79", alpha=0.75, linewidths=0)
+            low = float(min(reg[shown].min(), sim[shown].min())) / 1.5
+            high = float(max(reg[shown].max(), sim[shown].max())) * 1.5
+            line = np.array([low, high])
+            axes.plot(line, line, color="black", linewidth=0.8, label="simulation = regression median")
+            for factor, label in ((np.exp(sigma), "regression 16th / 84th percentile"), (np.exp(-sigma), None)):
+                axes.plot(line, line * factor, color="black", linewidth=0.6, linestyle=":", label=label)
+            axes.set_xscale("log")
+            axes.set_yscale("log")
+            axes.set_xlim(low, high)
+            axes.set_ylim(low, high)
+            axes.legend(loc="upper left", frameon=False)
+        else:
+            axes.text(0.5, 0.5, "no case slides in both", ha="center", va="center", transform=axes.transAxes)
+        axes.set_xlabel("regression median sliding [cm]")
+        axes.set_ylabel("simulated peak sliding [cm]")
+        return _to_svg(figure)

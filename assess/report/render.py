@@ -41,9 +41,10 @@ MODE_TEXT = {
 
 #: Headings for the flag codes the pipeline is known to emit; others get their code.
 FLAG_TITLES = {
-    "im_extrapolated": "Outside the range the regression was fitted on",
-    "rocks": "Rocking",
-    "not_simulated": "Not simulated",
+    "im_outside_fit": "Outside the range the regression was fitted on",
+    "uplift": "Uplifts and rocks",
+    "sim_beyond_clearance": "Simulated sliding beyond the clearance",
+    "cg_not_mid_height": "Centre of mass not at mid-height",
 }
 
 DASH = "–"
@@ -192,6 +193,8 @@ def _item_row(row: pd.Series) -> dict:
         "clearance": format_cm(row.get("clearance_cm")),
         "pf": format_percent(row.get("pf_sliding")),
         "overturn": format_percent(row.get("overturn_fraction")),
+        "sim_sliding": format_cm(row.get("sim_sliding_max_cm")),
+        "theta": format_significant(row.get("theta_max_over_alpha"), 2),
         "risk": _text(row.get("risk")),
         "action": _text(row.get("action")) or DASH,
     }
@@ -252,9 +255,28 @@ def report_context(result) -> dict:
             "demand": [_data_uri(svg) for svg in demand_svgs],
             "fragility": _data_uri(figures.fragility_figure(sorted_result)),
             "regression": _data_uri(figures.regression_figure(sorted_result)),
+            "simulation": (_data_uri(figures.simulation_vs_regression_figure(result))
+                           if result.simulated else None),
+            "histories": [{"uri": _data_uri(figures.history_figure(h)), "id": h["id"], "name": h["name"],
+                           "motion": h["motion"], "sim_motion": h["sim_motion"], "solver": h["solver"],
+                           "direction": h["direction"]}
+                          for h in getattr(result, "histories", [])],
         },
+        "simulation": _simulation_counts(result),
         "stylesheet": Markup(template_text(STYLESHEET_NAME)),  # our own file, not user text
     }
+
+
+def _simulation_counts(result) -> dict:
+    """How many cases each solver answered, and how many slid, uplifted and overturned."""
+    motions = result.motions
+    if not result.simulated or "sim_solver" not in motions:
+        return {}
+    solvers = motions["sim_solver"].astype(str).value_counts()
+    return {"cases": len(motions), "solvers": [(name, int(n)) for name, n in solvers.items()],
+            "overturned": int(motions["sim_overturned"].astype(bool).sum()),
+            "uplift": int(motions["sim_uplift"].astype(bool).sum()),
+            "slid": int((pd.to_numeric(motions["sim_sliding_max_cm"], errors="coerce") > 0).sum())}
 
 
 def _with_summary(result, summary: pd.DataFrame):
