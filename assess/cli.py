@@ -49,24 +49,21 @@ def _formats(text: str) -> tuple[str, ...]:
     return chosen
 
 
-def _positive_number(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"'{text}' is not a number") from None
-    if not (value > 0.0 and value < float("inf")):
-        raise argparse.ArgumentTypeError(f"'{text}' must be a positive number")
-    return value
+def _number(accept, requirement: str):
+    """An argparse type: a finite number for which ``accept(value)`` holds."""
+    def parse(text: str) -> float:
+        try:
+            value = float(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"'{text}' is not a number") from None
+        if not (value < float("inf") and accept(value)):
+            raise argparse.ArgumentTypeError(f"'{text}' must be {requirement}")
+        return value
+    return parse
 
 
-def _coefficient(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"'{text}' is not a number") from None
-    if not (0.0 <= value < float("inf")):
-        raise argparse.ArgumentTypeError(f"'{text}' must be a number of 0 or more")
-    return value
+_positive_number = _number(lambda value: value > 0.0, "a positive number")
+_coefficient = _number(lambda value: value >= 0.0, "a number of 0 or more")
 
 
 def _whole_number(minimum: int):
@@ -94,8 +91,9 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--format", metavar="FORMATS", type=_formats, default=FORMATS,
                         help="report formats, comma-separated: html, pdf (default: html,pdf); "
                              "the CSV files are always written")
-    parser.add_argument("--jobs", metavar="N", type=_whole_number(1), default=1,
-                        help="parallel worker processes for time-history simulation (default 1)")
+    parser.add_argument("--jobs", metavar="N", type=_whole_number(1),
+                        help="threads for the time-history simulation (default: all cores); "
+                             "the results do not depend on it")
     parser.add_argument("--seed", metavar="N", type=_whole_number(0), default=0,
                         help="seed of every random draw; the same inputs and seed give the same numbers (default 0)")
     parser.add_argument("--quiet", action="store_true", help="do not print progress")
@@ -179,6 +177,9 @@ def _assess(args: argparse.Namespace, say) -> int:
         level_name = parse_level(args.hazard).name
     except ValueError as error:
         raise InputError([Problem(file="--hazard", message=str(error))]) from None
+    if args.jobs is not None:
+        import numba
+        numba.set_num_threads(min(args.jobs, numba.config.NUMBA_NUM_THREADS))
     say(f"reading {args.workbook}")
     inventory = read_workbook(args.workbook)
     result = run_assessment(inventory, args.hazard, seed=args.seed, progress=say)

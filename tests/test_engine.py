@@ -113,3 +113,22 @@ def test_cases_equal_single_runs():
 def test_unknown_solver_is_refused():
     with pytest.raises(ValueError, match="solver"):
         simulate(prototype("ASP", 0.2), [0.1, 0.1], 0.01, solver="fast")
+
+
+def test_results_do_not_depend_on_the_number_of_threads():
+    import numba
+
+    blocks = [Block(half_width_m=w, cg_height_m=1.0, height_m=2.0, mu=mu)
+              for w in (0.2, 0.3, 0.5) for mu in (0.1, 0.25, 0.6)]
+    motions = [pulse_record("A", 0.5, 0.8), pulse_record("B", 0.4, 1.2)]
+    index = [k % 2 for k in range(len(blocks))]
+    accel, dts = [m.accel_g for m in motions], [m.dt_s for m in motions]
+    default = numba.get_num_threads()
+    try:
+        numba.set_num_threads(1)
+        serial = simulate_cases(blocks, accel, dts, index)
+    finally:
+        numba.set_num_threads(default)
+    parallel = simulate_cases(blocks, accel, dts, index)
+    for field in ("sliding_max_m", "sliding_residual_m", "theta_max_over_alpha", "overturned", "mode", "solver"):
+        assert np.array_equal(getattr(serial, field), getattr(parallel, field)), field

@@ -212,12 +212,13 @@ def simulate_cases(blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_
 
     Cases are grouped by record and by the solver proved for them, and each
     group runs in the parallel batch kernels; rocking runs whose pivot would
-    have slipped or lifted are re-run one by one with the general solver.
-    Same results as :func:`simulate` case by case, peaks only.
+    have slipped or lifted are re-run, as a batch per record, by the general
+    solver. Same results as :func:`simulate` case by case, peaks only.
 
-    ``progress(done, total)`` is called after each record's group and after
-    each general-solver run.
+    ``progress(done, total)`` is called after each record's group.
     """
+    from .timestepping import time_stepping_peaks_batch
+
     n = len(blocks)
     record_index = np.asarray(record_index, dtype=np.int64)
     if record_index.shape != (n,):
@@ -230,7 +231,6 @@ def simulate_cases(blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_
     mu = np.array([b.mu for b in blocks])
     mu_static = np.array([b.mu_static for b in blocks])
     sliding_set = pure_sliding_proved(mu_static, np.array([b.b_over_h for b in blocks]))
-    to_general = []
     done = 0
     for j, record in enumerate(records_g):
         in_record = record_index == j
@@ -255,19 +255,18 @@ def simulate_cases(blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_
             overturned[kept] = rock.overturned[held, 0]
             mode[kept] = np.where(rock.uplift[held, 0], ROCK, REST)
             solver[kept] = ROCKING_KERNEL
-            to_general.extend(idx[~held].tolist())
-            done -= int(np.count_nonzero(~held))
+            general = idx[~held]
+            if general.size:
+                peaks = time_stepping_peaks_batch([blocks[i] for i in general], [accel], dt_s[j],
+                                                  tail_s=tail_s)
+                sliding_max[general] = peaks.sliding_max_m[:, 0]
+                residual[general] = peaks.sliding_residual_m[:, 0]
+                theta_max[general] = peaks.theta_max_over_alpha[:, 0]
+                uplift[general] = peaks.uplift[:, 0]
+                overturned[general] = peaks.overturned[:, 0]
+                mode[general] = peaks.mode[:, 0]
+                solver[general] = GENERAL
         done += int(np.count_nonzero(in_record))
-        if progress is not None:
-            progress(done, n)
-    for i in to_general:
-        j = record_index[i]
-        response = _general(blocks[i], np.asarray(records_g[j], dtype=float), dt_s[j], tail_s, False)
-        sliding_max[i], residual[i] = response.sliding_max_m, response.sliding_residual_m
-        theta_max[i], uplift[i], overturned[i] = (response.theta_max_over_alpha, response.uplift,
-                                                  response.overturned)
-        mode[i], solver[i] = response.mode, GENERAL
-        done += 1
         if progress is not None:
             progress(done, n)
     return CasePeaks(sliding_max_m=sliding_max, sliding_residual_m=residual,
