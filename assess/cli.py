@@ -96,6 +96,12 @@ def build_parser() -> argparse.ArgumentParser:
                              "the results do not depend on it")
     parser.add_argument("--seed", metavar="N", type=_whole_number(0), default=0,
                         help="seed of every random draw; the same inputs and seed give the same numbers (default 0)")
+    parser.add_argument("--oq-hazard", metavar="CSV", type=Path,
+                        help="OpenQuake hazard-curve or hazard-map CSV for the site: the level's motions "
+                             "are scaled so that their ground motions match its PGA at LEVEL")
+    parser.add_argument("--oq-site", metavar="SITE",
+                        help="which site of a multi-site OpenQuake file: a row number (0 = first), a "
+                             "custom_site_id, or lon,lat (write --oq-site=-122.5,38.1 when lon is negative)")
     parser.add_argument("--quiet", action="store_true", help="do not print progress")
     parser.add_argument("--version", action="version", version=f"assess {__version__}")
     return parser
@@ -182,7 +188,11 @@ def _assess(args: argparse.Namespace, say) -> int:
         numba.set_num_threads(min(args.jobs, numba.config.NUMBA_NUM_THREADS))
     say(f"reading {args.workbook}")
     inventory = read_workbook(args.workbook)
-    result = run_assessment(inventory, args.hazard, seed=args.seed, progress=say)
+    oq_hazard = None
+    if args.oq_hazard is not None:
+        from assess.hazard.openquake import read_openquake_hazard
+        oq_hazard = read_openquake_hazard(args.oq_hazard, site=_oq_site(args.oq_site))
+    result = run_assessment(inventory, args.hazard, seed=args.seed, progress=say, oq_hazard=oq_hazard)
     say("rendering " + ", ".join(["summary.csv", "motions.csv"] + [f"report.{f}" for f in args.format]))
     files = render_outputs(result, args.format)
     out_dir = args.out or Path("reports") / f"{args.workbook.stem}-{level_name}"
@@ -193,6 +203,21 @@ def _assess(args: argparse.Namespace, say) -> int:
     for path in written:
         print(path)
     return EXIT_OK
+
+
+def _oq_site(text):
+    """--oq-site as read_openquake_hazard takes it: None, a row index, (lon, lat) or an id."""
+    if text is None:
+        return None
+    if text.strip().isdigit():
+        return int(text)
+    parts = text.split(",")
+    if len(parts) == 2:
+        try:
+            return (float(parts[0]), float(parts[1]))
+        except ValueError:
+            pass
+    return text
 
 
 def _simulate(args: argparse.Namespace, say) -> int:

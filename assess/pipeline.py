@@ -5,6 +5,7 @@ sequences them and gathers their outputs into an :class:`AssessmentResult`.
 """
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Callable
 
 import numpy as np
@@ -37,8 +38,12 @@ HISTORY_ITEMS = 3
 
 
 def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
-                   progress: Progress = lambda message: None) -> AssessmentResult:
+                   progress: Progress = lambda message: None, oq_hazard=None) -> AssessmentResult:
     """Assess every item of ``inventory`` under the motions of hazard level ``level_text``.
+
+    ``oq_hazard`` (an :class:`~assess.hazard.openquake.OpenQuakeHazard`)
+    scales the level's motions to the site's PGA at that level
+    (:func:`~assess.hazard.motions.scale_to_pga`).
 
     Raises :class:`~assess.errors.InputError` when the level is missing, a
     floor has no motion, or a motion cannot be described by PTA and Tp.
@@ -49,6 +54,14 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
     level, level_motions = select_level(inventory.hazard, level_text, workbook_name)
     level_label = str(level_motions["level_label"].iloc[0])
     _require_pulse_parameters(level_motions, workbook_name)
+    hazard_notes = []
+    if oq_hazard is not None:
+        from assess.hazard.motions import scale_to_pga
+        from assess.hazard.openquake import pga_at_level
+        pga_g = pga_at_level(oq_hazard, level)
+        level_motions, _, note = scale_to_pga(level_motions, pga_g, workbook_name, Path(oq_hazard.path).name)
+        hazard_notes.append(note)
+        progress(note)
 
     equipment = inventory.equipment
     freestanding = equipment[~equipment["anchored"]]
@@ -70,7 +83,7 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
         site=str(settings.get("site", "")), level=level, level_label=level_label,
         summary=summary[SUMMARY_COLUMNS], motions=_motion_table(cases), flags=flags,
         regression=regression, settings=dict(settings), simulated=True, seed=seed,
-        histories=histories,
+        histories=histories, hazard_notes=hazard_notes,
     )
 
 

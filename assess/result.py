@@ -70,6 +70,9 @@ class AssessmentResult:
         Time histories of the worst items (Fig. 7 of the paper): ``id``,
         ``name``, ``motion``, ``direction``, ``time_s``, ``sliding_cm``,
         ``theta_over_alpha``, ``floor_accel_g`` and what was simulated.
+    hazard_notes : list of str
+        How the motions were changed from the workbook's (e.g. scaled to an
+        OpenQuake PGA), for the report.
     """
 
     workbook: Path
@@ -85,6 +88,7 @@ class AssessmentResult:
     simulated: bool = False
     seed: int = 0
     histories: list = field(default_factory=list)
+    hazard_notes: list = field(default_factory=list)
 
     def risk_counts(self) -> dict[str, int]:
         """Number of items (rows, not quantity) in each risk class."""

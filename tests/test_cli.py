@@ -5,6 +5,7 @@ import sys
 import zipfile
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 import pytest
 
@@ -142,3 +143,31 @@ def test_installed_wheel_finds_its_templates(tmp_path):
     completed = subprocess.run([sys.executable, "-c", probe], cwd=tmp_path, env=env, capture_output=True, text=True)
     assert completed.returncode == 0, completed.stderr
     assert completed.stdout.strip() == "True"
+
+
+def test_oq_hazard_scales_the_level_to_the_site_pga(tmp_path):
+    """An OpenQuake curve (gem/oq-engine qa case_14) gives PGA 0.11015 g at 2 % in 50 years.
+
+    The ground motions' geometric-mean PTA becomes that PGA (log-log interpolation
+    between the curve's points written out here); every motion is scaled alike.
+    """
+    curve = ROOT / "tests" / "data" / "openquake" / "case_14-hazard_curve-rlz-000_PGA.csv"
+    done = run(LAB, "--hazard", "2475yr", "--oq-hazard", curve, "--oq-site=-122.5,38.1", "--out", tmp_path / "oq", "--format", "html",
+               cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    # 2 % in 50 yr lies between (0.103 g, poe 2.703533e-2) and (0.145 g, 5.818043e-3) on the curve
+    import math
+    x0, y0, x1, y1 = math.log(2.703533e-2), math.log(0.103), math.log(5.818043e-3), math.log(0.145)
+    pga = math.exp(y0 + (math.log(0.02) - x0) * (y1 - y0) / (x1 - x0))
+    motions = pd.read_csv(tmp_path / "oq" / "motions.csv")
+    ground = motions[motions["floor"] == 0].drop_duplicates("motion")["pta_g"]
+    assert math.exp(np.log(ground).mean()) == pytest.approx(pga, rel=1e-5)  # 2475 yr is 2 % to 1e-5
+    html = (tmp_path / "oq" / "report.html").read_text()
+    assert "Motions scaled by" in html and curve.name in html
+
+
+def test_oq_hazard_without_the_level_is_refused(tmp_path):
+    hazard_map = ROOT / "tests" / "data" / "openquake" / "case_13-hazard_map-mean.csv"  # 10 % in 50 yr only
+    done = run(LAB, "--hazard", "2in50", "--oq-hazard", hazard_map, "--out", tmp_path / "x", cwd=tmp_path)
+    assert done.returncode == 2 and "Traceback" not in done.stderr
+    assert hazard_map.name in done.stderr and not (tmp_path / "x").exists()

@@ -241,7 +241,7 @@ def test_several_sites_and_none_chosen_lists_them():
     assert "10 sites" in problem.message
     assert "lon -122.50000, lat 38.10000" in problem.message
     assert "lon -121.47000, lat 38.10000" in problem.message
-    assert "(lon, lat)" in problem.fix
+    assert "lon,lat" in problem.fix and "--oq-site" in problem.fix
 
 
 def test_site_by_coordinates_index_and_missing_site():

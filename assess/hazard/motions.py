@@ -1,6 +1,7 @@
 """The motions of a hazard level that act on each floor."""
 from __future__ import annotations
 
+import numpy as np
 import pandas as pd
 
 from assess.errors import Problem, raise_if_any
@@ -58,3 +59,42 @@ def motions_by_item(equipment: pd.DataFrame, level_motions: pd.DataFrame, level_
         pairs.append(acting.assign(id=item.id))
     raise_if_any(problems)
     return pd.concat(pairs, ignore_index=True)
+
+
+def scale_to_pga(level_motions: pd.DataFrame, pga_g: float, workbook_name: str,
+                 source: str) -> tuple[pd.DataFrame, float, str]:
+    """Scale every motion of a level so that its ground motions match a hazard PGA.
+
+    The factor is PGA / (geometric mean of the PTA of the level's ground-floor
+    motions, floor 0 or ``all``); it multiplies every motion of the level —
+    PTA, vp and the record scale — so the suite keeps its spread and each
+    floor its amplification over the ground (a linear building). Tp is kept.
+
+    Returns ``(scaled motions, factor, a sentence for the report)``; raises
+    :class:`~assess.errors.InputError` when the level has no ground motion.
+
+    >>> motions = pd.DataFrame({"motion": ["a", "b", "roof"], "floor": [0, 0, 6], "all_floors": False,
+    ...                         "pta_g": [0.4, 0.9, 1.2], "vp_m_s": [-0.5, -0.8, -1.0], "scale": 1.0})
+    >>> scaled, factor, _ = scale_to_pga(motions, 0.3, "lab.xlsx", "oq.csv")
+    >>> round(factor, 6), scaled["pta_g"].round(6).tolist()
+    (0.5, [0.2, 0.45, 0.6])
+    """
+    ground = level_motions[level_motions["all_floors"] | (level_motions["floor"] == 0)]
+    ground_pta = pd.to_numeric(ground["pta_g"], errors="coerce").dropna()
+    if ground_pta.empty:
+        raise_if_any([Problem(
+            file=workbook_name, sheet="hazard", column="floor",
+            message="--oq-hazard scales the level's motions to the site's PGA, but the level has no "
+                    "ground motion (floor 0 or 'all') with a pta_g to scale from.",
+            fix="add the level's ground motions (floor 0) with their pta_g, or run without --oq-hazard.")])
+    reference_g = float(np.exp(np.log(ground_pta.to_numpy(dtype=float)).mean()))
+    factor = pga_g / reference_g
+    scaled = level_motions.copy()
+    for column in ("pta_g", "vp_m_s", "scale"):
+        if column in scaled:
+            scaled[column] = scaled[column] * factor
+    note = (f"Motions scaled by {factor:.3f} so that the geometric mean PTA of the level's "
+            f"{len(ground_pta)} ground motion{'s' if len(ground_pta) != 1 else ''} "
+            f"({reference_g:.3f} g in the workbook) equals the PGA {pga_g:.3f} g of the OpenQuake "
+            f"hazard in {source} at this level; floor motions by the same factor.")
+    return scaled, factor, note

@@ -512,8 +512,8 @@ def _choose_site(path, sites, site) -> int:
         if count == 1:
             return 0
         raise _fail(path, f"the file holds {count} sites: {_site_list(sites)}.",
-                    "choose the facility's site, by its coordinates (lon, lat), its row index "
-                    "(0 = first) or its custom_site_id.")
+                    "choose the facility's site (assess: --oq-site) by its coordinates lon,lat, its "
+                    "row index (0 = first) or its custom_site_id.")
     if isinstance(site, (int, np.integer)) and not isinstance(site, bool):
         if 0 <= site < count:
             return int(site)

@@ -263,6 +263,7 @@ def report_context(result) -> dict:
                           for h in getattr(result, "histories", [])],
         },
         "simulation": _simulation_counts(result),
+        "hazard_notes": list(getattr(result, "hazard_notes", [])),
         "stylesheet": Markup(template_text(STYLESHEET_NAME)),  # our own file, not user text
     }
 
