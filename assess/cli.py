@@ -223,7 +223,7 @@ def _oq_site(text):
 def _simulate(args: argparse.Namespace, say) -> int:
     import json
 
-    from assess.hazard.records import pulse_record, read_record
+    from assess.hazard.records import MIN_DURATION_S, pulse_record, read_record
     from assess.mechanics.block import Block
     from assess.simulation import simulate_item
 
@@ -254,7 +254,7 @@ def _simulate(args: argparse.Namespace, say) -> int:
                   height_m=args.height_cm / 100.0, mu=args.mu, mu_static=mu_static,
                   restitution=args.restitution)
     if args.record is not None:
-        motion, period = read_record(args.record).scaled(args.scale), None
+        motion, period = read_record(args.record, min_duration_s=MIN_DURATION_S).scaled(args.scale), None
     else:
         motion, period = pulse_record(args.pulse, args.ap_g, args.tp_s, args.dt_s), args.tp_s
     run = simulate_item(block, motion, pulse_period_s=period, tail_s=args.tail_s, solver=args.solver,

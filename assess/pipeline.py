@@ -19,7 +19,7 @@ from assess.fragility import (
     probability_of_exceedance, sliding_quantile,
 )
 from assess.hazard.motions import motions_by_item, select_level
-from assess.hazard.records import Record, pulse_record, read_record
+from assess.hazard.records import MIN_DURATION_S, Record, pulse_record, read_record
 from assess.inventory import Inventory
 from assess.mechanics.block import Block
 from assess.mechanics.engine import DEFAULT_TAIL_S, simulate, simulate_cases
@@ -108,7 +108,7 @@ def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str) -> dict[
     for row in level_motions.itertuples(index=False):
         if row.record_path:
             try:
-                record = read_record(row.record_path).scaled(float(row.scale))
+                record = read_record(row.record_path, min_duration_s=MIN_DURATION_S).scaled(float(row.scale))
             except InputError as error:
                 raise InputError([replace(problem, message=f"the record of motion '{row.motion}' "
                                           f"({workbook_name}, sheet 'hazard', row {int(row.row)}): "

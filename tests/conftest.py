@@ -5,8 +5,9 @@ import pytest
 
 from workbooks import RECORD_FILE, good_sheets, write_workbook
 
-#: A tiny acceleration record, written next to every built workbook unless asked not to.
-RECORD_TEXT = "time_s,accel_g\n0.00,0.0\n0.01,0.1\n0.02,0.0\n"
+#: A small acceleration record (2.5 s, the reader's minimum is 2 s), written next to every
+#: built workbook unless asked not to.
+RECORD_TEXT = "time_s,accel_g\n" + "".join(f"{k * 0.01:.2f},{0.1 if k == 1 else 0.0}\n" for k in range(251))
 
 
 @pytest.fixture

@@ -3,17 +3,20 @@
 Formats (SPEC §1):
 
 * CSV with a header naming time and acceleration with their units,
-  ``time_s,accel_g`` (also ``accel_m_s2``, ``accel_cm_s2``); lines starting with
-  ``#`` are comments (pyslammer's sample records start with two such lines and
-  give no header: ``Time (s),Acceleration (g's)`` in a comment is read as that
-  header);
+  ``time_s,accel_g`` (also ``accel_m_s2``, ``accel_cm_s2`` and ``accel_gal``,
+  1 gal = 1 cm/s²); lines starting with ``#`` are comments (pyslammer's sample
+  records give no header line: ``Time (s),Acceleration (g's)`` in a comment is
+  read as that header);
 * a single column of accelerations whose header gives the unit and the step,
   e.g. ``accel_g,dt_s=0.005``;
-* PEER NGA ``.AT2``: four header lines, the fourth giving ``NPTS`` and ``DT``,
-  then accelerations in g, several per line.
+* PEER NGA ``.AT2``: four header lines, the fourth giving ``NPTS=`` and ``DT=``
+  (or, in the older format, ``7998  .0050  NPTS, DT``), then accelerations in
+  g, several per line.
 
-Units are read from the header, never guessed. Every problem raises
-:class:`~assess.errors.InputError` naming the file and the line.
+Units are read from the header, never guessed. A byte-order mark (UTF-8 or
+UTF-16) and CRLF or CR line ends are accepted. Every problem raises
+:class:`~assess.errors.InputError` naming the file and the line, what is wrong
+and how to fix it.
 """
 from __future__ import annotations
 
@@ -26,12 +29,23 @@ import numpy as np
 from assess.errors import InputError, Problem
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
 
-#: Factor from each accepted acceleration unit to g.
+#: Factor from each accepted acceleration unit (header suffix) to g.
 ACCELERATION_UNITS_TO_G = {"g": 1.0, "m_s2": 1.0 / STANDARD_GRAVITY_M_S2,
-                           "cm_s2": 0.01 / STANDARD_GRAVITY_M_S2}
+                           "cm_s2": 0.01 / STANDARD_GRAVITY_M_S2, "gal": 0.01 / STANDARD_GRAVITY_M_S2}
+#: How each unit is written in messages.
+_UNIT_TEXT = {"g": "g", "m_s2": "m/s²", "cm_s2": "cm/s²", "gal": "gal (cm/s²)"}
 #: Relative spread of the time steps accepted as "constant".
 DT_TOLERANCE = 1e-3
+#: Above this peak acceleration [g] a record is refused as a probable unit mistake.
+MAX_PLAUSIBLE_PGA_G = 5.0
+#: Shortest record [s] a caller asking for a duration check should demand
+#: (``read_record(path, min_duration_s=MIN_DURATION_S)``).
+MIN_DURATION_S = 2.0
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+_LINE_END = re.compile(r"\r\n|\r|\n")
+_PYSLAMMER_HEADER = "time (s),acceleration (g"
+_HEADER_FIX = ("head the columns time_s,accel_g (or accel_m_s2, accel_cm_s2, accel_gal), or give a "
+               "single column headed accel_g,dt_s=0.01.")
 
 
 @dataclass(frozen=True)
@@ -54,7 +68,13 @@ class Record:
 
     @property
     def duration_s(self) -> float:
+        """Time [s] from the first to the last sample."""
         return (self.accel_g.size - 1) * self.dt_s
+
+    @property
+    def time_s(self) -> np.ndarray:
+        """Times [s] of the samples, from 0."""
+        return np.arange(self.accel_g.size) * self.dt_s
 
     @property
     def pta_g(self) -> float:
@@ -65,83 +85,225 @@ class Record:
         return Record(self.accel_g * factor, self.dt_s, self.name)
 
 
+@dataclass(frozen=True)
+class _Samples:
+    """What a format reader found: values in the declared unit and where each one was."""
+
+    values: np.ndarray   # in the declared unit
+    dt_s: float
+    lines: np.ndarray    # file line (1-based) of each value
+    unit: str            # key of ACCELERATION_UNITS_TO_G
+    unit_source: str     # where the unit was declared, for messages
+
+
 def _problem(path, message, fix, line=None):
     return InputError([Problem(file=str(path), message=message, fix=fix, row=line)])
 
 
-def read_record(path) -> Record:
+def read_record(path, *, min_duration_s: float = 0.0, max_pga_g: float = MAX_PLAUSIBLE_PGA_G) -> Record:
     """Read an acceleration record (CSV, one column with ``dt_s``, or PEER ``.AT2``).
+
+    Parameters
+    ----------
+    path : str or Path
+        The record file; ``.AT2`` (any case) is read as PEER NGA, anything
+        else as CSV.
+    min_duration_s : float, default 0
+        Refuse a record shorter than this [s]. No check by default, as short
+        synthetic histories are valid input to the engine; callers reading a
+        user's earthquake record should pass :data:`MIN_DURATION_S` (2 s).
+    max_pga_g : float, default :data:`MAX_PLAUSIBLE_PGA_G`
+        Refuse a record whose peak acceleration exceeds this [g]: such a
+        value is almost always a unit mistake (m/s² or cm/s² read as g).
+
+    Returns
+    -------
+    Record
+        Accelerations [g] at a constant step, named after the file.
 
     Raises
     ------
     InputError
         The file is missing or cannot be read as a record; the message names
-        the file and the line.
+        the file and the line, and says how to fix it.
+
+    Examples
+    --------
+    >>> import tempfile, os
+    >>> folder = tempfile.mkdtemp()
+    >>> path = os.path.join(folder, "floor.csv")
+    >>> _ = open(path, "w").write("time_s,accel_cm_s2\\n0,0\\n0.01,98.0665\\n0.02,-49.03325\\n")
+    >>> r = read_record(path)
+    >>> r.dt_s, [round(float(a), 12) for a in r.accel_g]
+    (0.01, [0.0, 0.1, -0.05])
     """
     path = Path(path)
     if not path.is_file():
         raise _problem(path, "the record file does not exist.",
                        "check the path (relative paths are taken from the workbook's folder).")
-    text = path.read_text(encoding="utf-8-sig", errors="replace")
-    lines = text.splitlines()
+    try:
+        raw = path.read_bytes()
+    except OSError as error:
+        raise _problem(path, f"the record file cannot be read ({error.strerror}).",
+                       "check that the file is readable and not locked by another program.") from None
+    lines = _LINE_END.split(_decode(raw))
+    if not any(line.strip() for line in lines):
+        raise _problem(path, "the file is empty.",
+                       "give a header (e.g. time_s,accel_g) and one row per sample.")
     if path.suffix.lower() == ".at2":
-        accel, dt = _read_at2(path, lines)
+        samples = _read_at2(path, lines)
     else:
-        accel, dt = _read_csv(path, lines)
-    if accel.size < 2:
-        raise _problem(path, f"the record has {accel.size} sample(s).", "give at least two samples.")
-    if not np.all(np.isfinite(accel)):
-        raise _problem(path, "the record contains NaN or infinite accelerations.",
-                       "remove or fill the missing samples.")
-    return Record(accel_g=accel, dt_s=dt, name=path.name)
+        samples = _read_csv(path, lines)
+    accel_g = samples.values * ACCELERATION_UNITS_TO_G[samples.unit]
+    _check_samples(path, samples, accel_g, min_duration_s, max_pga_g)
+    return Record(accel_g=accel_g, dt_s=samples.dt_s, name=path.name)
 
 
-def _read_at2(path, lines):
+def _decode(raw: bytes) -> str:
+    """Text of a file: UTF-16 when it starts with a UTF-16 byte-order mark, else UTF-8 (mark dropped)."""
+    if raw.startswith((b"\xff\xfe", b"\xfe\xff")):
+        return raw.decode("utf-16", errors="replace")
+    return raw.decode("utf-8-sig", errors="replace")
+
+
+def _check_samples(path, samples: _Samples, accel_g, min_duration_s, max_pga_g):
+    """Checks common to every format: enough samples, finite values, a plausible peak, the duration."""
+    if accel_g.size < 2:
+        raise _problem(path, f"the record has {accel_g.size} sample(s).", "give at least two samples.")
+    bad = np.flatnonzero(~np.isfinite(accel_g))
+    if bad.size:
+        line = int(samples.lines[bad[0]])
+        raise _problem(path, f"the record contains NaN or infinite accelerations ({bad.size} value(s), "
+                       f"the first on line {line}).", "remove or fill the missing samples: a record "
+                       "needs a number at every step.", line=line)
+    peak = int(np.argmax(np.abs(accel_g)))
+    pga_g = float(abs(accel_g[peak]))
+    if pga_g > max_pga_g:
+        line = int(samples.lines[peak])
+        raise _problem(path, f"the peak acceleration is {pga_g:.3g} g (line {line}, value "
+                       f"{samples.values[peak]:g} read as {_UNIT_TEXT[samples.unit]} from "
+                       f"{samples.unit_source}), more than {max_pga_g:g} g: this is probably a unit "
+                       "mistake.", _unit_fix(samples, pga_g, max_pga_g), line=line)
+    duration_s = (accel_g.size - 1) * samples.dt_s
+    if duration_s < min_duration_s:
+        raise _problem(path, f"the record lasts {duration_s:.4g} s ({accel_g.size} samples at "
+                       f"{samples.dt_s:g} s), less than {min_duration_s:g} s.",
+                       "give the whole record; if it is complete, check that the step (dt_s or the "
+                       "time column) is in seconds.", line=int(samples.lines[-1]))
+
+
+def _unit_fix(samples: _Samples, pga_g: float, max_pga_g: float) -> str:
+    """Which declared unit would make the peak plausible, as advice."""
+    raw_peak = pga_g / ACCELERATION_UNITS_TO_G[samples.unit]
+    plausible = [unit for unit in ("m_s2", "cm_s2")
+                 if ACCELERATION_UNITS_TO_G[unit] < ACCELERATION_UNITS_TO_G[samples.unit]
+                 and 0.01 <= raw_peak * ACCELERATION_UNITS_TO_G[unit] <= max_pga_g]
+    if samples.unit_source.startswith("the .AT2"):
+        if plausible:
+            unit = plausible[0]
+            return (f"PEER .AT2 files are in g; these values look like {_UNIT_TEXT[unit]} (peak "
+                    f"{raw_peak * ACCELERATION_UNITS_TO_G[unit]:.3g} g): save the record as a CSV with "
+                    f"the header time_s,accel_{unit}, or check it is an acceleration file.")
+        return "PEER .AT2 files are in g: check that this is an acceleration file and in g."
+    if plausible:
+        unit = plausible[0]
+        return (f"if the values are in {_UNIT_TEXT[unit]} (peak "
+                f"{raw_peak * ACCELERATION_UNITS_TO_G[unit]:.3g} g), head the column accel_{unit}"
+                + (" (or accel_gal)" if unit == "cm_s2" else "") + "; otherwise check the values.")
+    return "check the values and the unit suffix of the acceleration column (accel_g, accel_m_s2, accel_cm_s2)."
+
+
+# ------------------------------------------------------------------ PEER .AT2
+
+def _read_at2(path, lines) -> _Samples:
     if len(lines) < 5:
         raise _problem(path, "a PEER .AT2 file needs four header lines and then data.",
                        "give the file as downloaded from the PEER NGA database.")
-    npts = re.search(r"NPTS\s*=\s*(\d+)", lines[3], re.I)
-    dt = re.search(rf"DT\s*=\s*({_NUMBER})", lines[3], re.I)
-    if not (npts and dt):
-        raise _problem(path, f"line 4 should give NPTS= and DT=, found '{lines[3].strip()}'.",
-                       "give the file as downloaded from the PEER NGA database.", line=4)
-    values = []
+    _check_at2_quantity(path, lines[2])
+    npts, dt = _at2_npts_dt(path, lines[3])
+    values, where = [], []
     for number, line in enumerate(lines[4:], start=5):
-        try:
-            values.extend(float(v) for v in line.replace(",", " ").split())
-        except ValueError:
+        numbers = _numbers_of(line)
+        if numbers is None:
             raise _problem(path, f"line {number} is not a row of numbers: '{line.strip()[:60]}'.",
-                           "remove the stray text.", line=number) from None
-    if len(values) != int(npts.group(1)):
-        raise _problem(path, f"the header says NPTS={npts.group(1)} but {len(values)} values follow.",
-                       "check that the file is complete.")
-    return np.array(values), float(dt.group(1))
+                           "remove the stray text.", line=number)
+        values.extend(numbers)
+        where.extend([number] * len(numbers))
+    if len(values) != npts:
+        span = "" if not where else f" (line {where[0]})" if where[-1] == where[0] else \
+            f" (lines {where[0]} to {where[-1]})"
+        raise _problem(path, f"line 4 says NPTS={npts} but {len(values)} values follow{span}.",
+                       "the file may be truncated or edited: download it again from the PEER NGA "
+                       "database, or correct NPTS on line 4.", line=4)
+    return _Samples(np.array(values, dtype=float), dt, np.array(where), "g", "the .AT2 format (always g)")
 
 
-def _header_units(path, header, number):
-    names = [h.strip().lower() for h in header.split(",")]
-    accel_unit = None
-    for name in names:
-        match = re.fullmatch(r"accel(?:eration)?_(g|m_s2|cm_s2)", name)
-        if match:
-            accel_unit = match.group(1)
-    if header.lower().startswith("time (s),acceleration (g"):  # pyslammer's comment header
-        return 0, 1, "g", None
-    if accel_unit is None:
-        raise _problem(path, f"the header '{header.strip()}' does not name the acceleration with its "
-                       "unit.", "name the columns time_s,accel_g (or accel_m_s2, accel_cm_s2), or give "
-                       "a single column headed accel_g,dt_s=0.01.", line=number)
-    accel_col = next(i for i, n in enumerate(names) if n.startswith("accel"))
-    dt = re.search(rf"dt_s\s*=\s*({_NUMBER})", header, re.I)
-    time_col = names.index("time_s") if "time_s" in names else None
-    if time_col is None and dt is None:
-        raise _problem(path, "the header gives neither a time_s column nor dt_s=.",
-                       "add a time_s column, or write the step in the header: accel_g,dt_s=0.01.",
-                       line=number)
-    return time_col, accel_col, accel_unit, (float(dt.group(1)) if dt else None)
+def _check_at2_quantity(path, line):
+    """Line 3 of an AT2 says what the file holds; refuse velocity, displacement and non-g units."""
+    text = line.upper()
+    for quantity, kind in (("VELOCITY", ".VT2"), ("DISPLACEMENT", ".DT2")):
+        if quantity in text and "ACCELERATION" not in text:
+            raise _problem(path, f"line 3 says this file holds a {quantity.lower()} history "
+                           f"('{line.strip()[:60]}').", f"give the acceleration file (.AT2) of the record, "
+                           f"not the {kind} one.", line=3)
+    unit = re.search(r"UNITS\s+OF\s+([A-Z/0-9*^.]+)", text)
+    if unit and unit.group(1).rstrip(".") != "G":
+        raise _problem(path, f"line 3 gives the units as {unit.group(1)}; a .AT2 file is read in g.",
+                       "save the record as a CSV whose header names its unit "
+                       "(time_s,accel_cm_s2 or accel_m_s2).", line=3)
 
 
-def _read_csv(path, lines):
+def _at2_npts_dt(path, line) -> tuple[int, float]:
+    """NPTS and DT from line 4: ``NPTS= 7998, DT= .0050 SEC`` or the older ``7998  .0050  NPTS, DT``."""
+    npts = re.search(r"NPTS\s*=\s*(\d+)", line, re.I)
+    dt = re.search(rf"DT\s*=\s*({_NUMBER})", line, re.I)
+    if not (npts and dt):
+        old = re.match(rf"\s*(\d+)\s*,?\s+({_NUMBER})\s+NPTS\s*,\s*DT", line, re.I)
+        if not old:
+            raise _problem(path, f"line 4 should give NPTS= and DT=, found '{line.strip()}'.",
+                           "give the file as downloaded from the PEER NGA database.", line=4)
+        count, step = int(old.group(1)), float(old.group(2))
+    else:
+        count, step = int(npts.group(1)), float(dt.group(1))
+    if not (np.isfinite(step) and step > 0.0):
+        raise _problem(path, f"line 4 gives the step DT={step:g}; it must be a positive number of seconds.",
+                       "correct DT on line 4.", line=4)
+    return count, step
+
+
+def _numbers_of(line) -> list[float] | None:
+    """The numbers on a data line of an AT2 (None when it holds anything else).
+
+    Fortran-written files may run two numbers together (``-.1234E-02-.5678E-03``).
+    """
+    text = line.replace(",", " ").strip()
+    if not text:
+        return []
+    try:
+        return [float(v) for v in text.split()]
+    except ValueError:
+        pass
+    found = re.findall(_NUMBER, text)
+    if re.sub(_NUMBER, "", text).strip():
+        return None
+    return [float(v) for v in found]
+
+
+# ------------------------------------------------------------------ CSV
+
+@dataclass(frozen=True)
+class _Layout:
+    """What a CSV header declares."""
+
+    time_col: int | None
+    accel_col: int
+    unit: str
+    dt_s: float | None
+    n_columns: int
+    accel_name: str
+
+
+def _read_csv(path, lines) -> _Samples:
     header, header_line, rows = None, None, []
     for number, line in enumerate(lines, start=1):
         stripped = line.strip()
@@ -149,7 +311,7 @@ def _read_csv(path, lines):
             continue
         if stripped.startswith("#"):
             comment = stripped.lstrip("#").strip()
-            if header is None and comment.lower().startswith("time (s),acceleration (g"):
+            if header is None and comment.lower().startswith(_PYSLAMMER_HEADER):
                 header, header_line = comment, number
             continue
         if header is None:
@@ -157,28 +319,128 @@ def _read_csv(path, lines):
             continue
         rows.append((number, stripped))
     if header is None:
-        raise _problem(path, "the file is empty.", "give a header and one row per sample.")
-    time_col, accel_col, unit, dt = _header_units(path, header, header_line)
-    times, accel = [], []
+        raise _problem(path, "the file holds only comments: no header and no samples.",
+                       "give a header (e.g. time_s,accel_g) and one row per sample.")
+    layout = _header_layout(path, header, header_line)
+    if not rows:
+        raise _problem(path, f"the file has a header (line {header_line}) but no samples.",
+                       "give one row per sample below the header.", line=header_line)
+    header_cells = [c.lower() for c in _cells(header)]
+    times, accel, where = [], [], []
     for number, row in rows:
-        cells = row.split(",")
+        cells = _cells(row)
+        if [c.lower() for c in cells] == header_cells or layout.accel_name in (c.lower() for c in cells):
+            raise _problem(path, f"line {number} repeats the header of line {header_line}: two records "
+                           "in one file?", "keep one record per file (one header, then the samples).",
+                           line=number)
+        if len(cells) != layout.n_columns and all(_is_number(c) for c in cells):
+            raise _problem(path, f"line {number} has {len(cells)} value(s) where the header (line "
+                           f"{header_line}) names {layout.n_columns} column(s): '{row[:60]}'.",
+                           "give one value per column on every row.", line=number)
         try:
-            accel.append(float(cells[accel_col]))
-            if time_col is not None:
-                times.append(float(cells[time_col]))
+            accel.append(float(cells[layout.accel_col]))
+            if layout.time_col is not None:
+                times.append(float(cells[layout.time_col]))
         except (ValueError, IndexError):
             raise _problem(path, f"line {number} is not a row of numbers: '{row[:60]}'.",
                            "remove the stray text or comment it out with #.", line=number) from None
-    accel = np.array(accel) * ACCELERATION_UNITS_TO_G[unit]
-    if time_col is not None and len(times) >= 2:
-        steps = np.diff(times)
-        dt = float(f"{np.mean(steps):.12g}")  # 0.019999999999999997 -> 0.02
-        if dt <= 0 or np.max(np.abs(steps - dt)) > DT_TOLERANCE * dt:
-            k = int(np.argmax(np.abs(steps - dt)))
-            raise _problem(path, f"the time step is not constant: {steps[k]:g} s between lines of times "
-                           f"{times[k]:g} and {times[k + 1]:g} s (mean {dt:g} s).",
-                           "resample the record to a constant step.", line=rows[k + 1][0])
-    return accel, (dt if dt is not None else 0.0)
+        where.append(number)
+    dt = layout.dt_s if layout.time_col is None else _step_of_times(path, times, where, layout.dt_s)
+    source = f"the header '{layout.accel_name}' (line {header_line})"
+    return _Samples(np.array(accel, dtype=float), dt, np.array(where), layout.unit, source)
+
+
+def _is_number(text) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+def _cells(row) -> list[str]:
+    """Comma-separated cells, stripped, without the empty cells a trailing comma leaves."""
+    cells = [c.strip() for c in row.split(",")]
+    while len(cells) > 1 and not cells[-1]:
+        cells.pop()
+    return cells
+
+
+def _header_layout(path, header, number) -> _Layout:
+    if header.lower().startswith(_PYSLAMMER_HEADER):  # pyslammer's comment header
+        return _Layout(0, 1, "g", None, 2, "acceleration (g's)")
+    if "," not in header and len(re.split(r"[;\t ]+", header.strip())) > 1:
+        raise _problem(path, f"the header '{header.strip()}' has no commas; columns must be separated by "
+                       "commas.", "save the file as CSV (comma-separated), e.g. time_s,accel_g.", line=number)
+    cells = _cells(header)
+    try:
+        float(cells[0])
+    except ValueError:
+        pass
+    else:
+        raise _problem(path, f"line {number} holds numbers where the header should be: the file does not "
+                       "say which column is what, nor in which unit.", "add a first line " + _HEADER_FIX,
+                       line=number)
+    time_cols, accel_cols, dt_s, columns = [], [], None, []
+    for cell in cells:
+        name = cell.lower()
+        step = re.fullmatch(rf"dt_s\s*=\s*({_NUMBER})", name)
+        if step:
+            dt_s = float(step.group(1))
+            continue
+        index = len(columns)
+        columns.append(name)
+        if name == "time_s":
+            time_cols.append(index)
+        elif name.startswith("accel"):
+            unit = re.fullmatch(r"accel(?:eration)?_(g|m_s2|cm_s2|gal)", name)
+            if unit is None:
+                raise _problem(path, f"the header '{header.strip()}' does not name the acceleration with its "
+                               f"unit ('{cell}').", _HEADER_FIX, line=number)
+            accel_cols.append((index, unit.group(1), name))
+        elif name.startswith("time"):
+            raise _problem(path, f"the header names the time '{cell}'; only seconds are read (time_s).",
+                           "give the times in seconds under the header time_s.", line=number)
+    for kind, found in (("time", [columns[i] for i in time_cols]), ("acceleration", [a[2] for a in accel_cols])):
+        if len(found) > 1:
+            raise _problem(path, f"the header names the {kind} {len(found)} times ({', '.join(found)}).",
+                           f"keep one {kind} column per file.", line=number)
+    if not accel_cols:
+        raise _problem(path, f"the header '{header.strip()}' does not name the acceleration with its unit.",
+                       _HEADER_FIX, line=number)
+    if dt_s is not None and not (np.isfinite(dt_s) and dt_s > 0.0):
+        raise _problem(path, f"the header gives dt_s={dt_s:g}; the step must be a positive number of seconds.",
+                       "correct dt_s in the header.", line=number)
+    if not time_cols and dt_s is None:
+        raise _problem(path, "the header gives neither a time_s column nor dt_s=.",
+                       "add a time_s column, or write the step in the header: accel_g,dt_s=0.01.",
+                       line=number)
+    index, unit, name = accel_cols[0]
+    return _Layout(time_cols[0] if time_cols else None, index, unit, dt_s, len(columns), name)
+
+
+def _step_of_times(path, times, where, header_dt) -> float:
+    """The constant step [s] of a time column; refuses times that do not increase or steps that vary."""
+    if len(times) < 2:
+        return header_dt if header_dt is not None else 0.0
+    steps = np.diff(times)
+    if np.any(steps <= 0.0):
+        k = int(np.argmax(steps <= 0.0))
+        raise _problem(path, f"the time does not increase at line {where[k + 1]}: {times[k + 1]:g} s after "
+                       f"{times[k]:g} s on line {where[k]}.",
+                       "sort the rows by time and remove repeated rows.", line=where[k + 1])
+    dt = float(f"{np.mean(steps):.12g}")  # 0.019999999999999997 -> 0.02
+    usual = float(f"{np.median(steps):.12g}")
+    if np.max(np.abs(steps - dt)) > DT_TOLERANCE * dt:
+        k = int(np.argmax(np.abs(steps - usual)))
+        raise _problem(path, f"the time step is not constant: {steps[k]:.6g} s between lines {where[k]} and "
+                       f"{where[k + 1]} (times {times[k]:g} and {times[k + 1]:g} s), where the usual step "
+                       f"is {usual:g} s.", "resample the record to a constant step, or fill the missing "
+                       "samples.", line=where[k + 1])
+    if header_dt is not None and abs(header_dt - dt) > DT_TOLERANCE * dt:
+        raise _problem(path, f"the header says dt_s={header_dt:g} but the time column steps by {dt:g} s.",
+                       "remove dt_s= from the header, or correct it.", line=where[0])
+    return dt
 
 
 def pulse_record(pulse: str, ap_g: float, tp_s: float, dt_s: float | None = None) -> Record:
