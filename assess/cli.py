@@ -102,6 +102,10 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--oq-site", metavar="SITE",
                         help="which site of a multi-site OpenQuake file: a row number (0 = first), a "
                              "custom_site_id, or lon,lat (write --oq-site=-122.5,38.1 when lon is negative)")
+    parser.add_argument("--derive-floors", metavar="ROOF_FLOOR", type=_whole_number(1),
+                        help="floors without a motion take the ground motions amplified by 1 + 2z/h "
+                             "(ASCE 7-16 eq. 13.3-1), z/h = floor / ROOF_FLOOR; such items are flagged "
+                             "(default: a floor without a motion is an error)")
     parser.add_argument("--quiet", action="store_true", help="do not print progress")
     parser.add_argument("--version", action="version", version=f"assess {__version__}")
     return parser
@@ -192,7 +196,8 @@ def _assess(args: argparse.Namespace, say) -> int:
     if args.oq_hazard is not None:
         from assess.hazard.openquake import read_openquake_hazard
         oq_hazard = read_openquake_hazard(args.oq_hazard, site=_oq_site(args.oq_site))
-    result = run_assessment(inventory, args.hazard, seed=args.seed, progress=say, oq_hazard=oq_hazard)
+    result = run_assessment(inventory, args.hazard, seed=args.seed, progress=say, oq_hazard=oq_hazard,
+                            derive_floors_roof=args.derive_floors)
     say("rendering " + ", ".join(["summary.csv", "motions.csv"] + [f"report.{f}" for f in args.format]))
     files = render_outputs(result, args.format)
     out_dir = args.out or Path("reports") / f"{args.workbook.stem}-{level_name}"

@@ -38,12 +38,16 @@ HISTORY_ITEMS = 3
 
 
 def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
-                   progress: Progress = lambda message: None, oq_hazard=None) -> AssessmentResult:
+                   progress: Progress = lambda message: None, oq_hazard=None,
+                   derive_floors_roof: int | None = None) -> AssessmentResult:
     """Assess every item of ``inventory`` under the motions of hazard level ``level_text``.
 
     ``oq_hazard`` (an :class:`~assess.hazard.openquake.OpenQuakeHazard`)
     scales the level's motions to the site's PGA at that level
-    (:func:`~assess.hazard.motions.scale_to_pga`).
+    (:func:`~assess.hazard.motions.scale_to_pga`). ``derive_floors_roof``
+    (the roof's floor number) lets floors without a motion take their ground
+    motions amplified by ASCE 7-16 eq. 13.3-1
+    (:func:`~assess.hazard.motions.derive_floor_motions`); such items are flagged.
 
     Raises :class:`~assess.errors.InputError` when the level is missing, a
     floor has no motion, or a motion cannot be described by PTA and Tp.
@@ -65,6 +69,17 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
 
     equipment = inventory.equipment
     freestanding = equipment[~equipment["anchored"]]
+    if derive_floors_roof is not None:
+        from assess.hazard.motions import derive_floor_motions
+        level_motions = derive_floor_motions(level_motions, freestanding["floor"].unique(), derive_floors_roof,
+                                             workbook_name)
+        if level_motions["derived"].any():
+            floors = sorted(set(int(f) for f in level_motions.loc[level_motions["derived"], "floor"]))
+            note = (f"Floors {floors} have no motion in the workbook: their motions are the ground motions "
+                    f"amplified by 1 + 2z/h (ASCE 7-16 eq. 13.3-1, roof = floor {derive_floors_roof}), "
+                    f"with the ground's pulse period.")
+            hazard_notes.append(note)
+            progress(note)
     pairs = motions_by_item(freestanding, level_motions, level_label, workbook_name)
     progress(f"{len(freestanding)} freestanding items, {len(level_motions)} motions at level "
              f"{level_label}: {len(pairs) * len(DIRECTIONS)} item x motion x direction cases")
@@ -184,7 +199,7 @@ def _item_motion_direction_cases(items: pd.DataFrame, pairs: pd.DataFrame) -> pd
     """One row per item x motion x direction with the block's geometry in that direction."""
     item_columns = ["id", "floor", "height_m", "width_m", "depth_m", "cg_height_m", "mu",
                     "mu_static", "clearance_m"]
-    motion_columns = ["id", "motion", "pta_g", "tp_s", "vp_m_s"]
+    motion_columns = ["id", "motion", "pta_g", "tp_s", "vp_m_s"] + (["derived"] if "derived" in pairs else [])
     base = pairs[motion_columns].assign(pair_index=range(len(pairs))) \
         .merge(items[item_columns], on="id", validate="many_to_one")
     frames = []
@@ -355,6 +370,11 @@ def _item_flags(item, item_cases: pd.DataFrame, constants: RegressionConstants) 
         flags.append(Flag(item.id, "im_outside_fit", (
             f"IM = {ims} lies outside the range {constants.im_min:.2f}-{constants.im_max:.2f} the "
             f"regression was fitted on: the sliding demand is an extrapolation.")))
+    if "derived" in item_cases and item_cases["derived"].any():
+        flags.append(Flag(item.id, "derived_floor_motion", (
+            f"floor {item.floor} has no motion in the workbook: it was assessed under the ground motions "
+            f"amplified by ASCE 7-16 eq. 13.3-1 (--derive-floors), an envelope rule, not a floor "
+            f"response analysis.")))
     if not np.isclose(item.cg_height_m, item.height_m / 2.0):
         flags.append(Flag(item.id, "cg_not_mid_height", (
             f"centre of mass at {item.cg_height_m * 100:.0f} cm, not mid-height: alpha and b/h use it; "

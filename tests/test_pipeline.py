@@ -175,3 +175,22 @@ def test_simulation_fills_overturning_and_the_report_shows_histories():
     html = render_html(result)
     assert 'id="simulation"' in html and html.count("as Fig. 7 of the paper") == 2
     assert "Regression and simulation side by side" in html
+
+
+def test_derived_floor_motions_are_amplified_and_flagged():
+    """--derive-floors: floor 3 of 6 takes the ground motions x (1 + 2*3/6) = 2 (ASCE 7-16 eq. 13.3-1)."""
+    inv = inventory([item("UP", floor=3, row=7), item("DOWN", row=8)], TABLE3_GROUND)
+    result = run_assessment(inv, "2in50", derive_floors_roof=6)
+    up = result.motions[result.motions["id"] == "UP"].drop_duplicates("motion")
+    ground = {m["name"]: m["pta_g"] for m in [{"name": r["motion"], "pta_g": r["pta_g"]} for r in TABLE3_GROUND]}
+    for row in up.itertuples():
+        source = row.motion.split(" -> ")[0]
+        assert row.pta_g == pytest.approx(2.0 * ground[source], rel=1e-12)
+        assert "derived" in row.motion
+    assert len(up) == len(TABLE3_GROUND)
+    assert any(f.code == "derived_floor_motion" and f.item_id == "UP" for f in result.flags)
+    assert not any(f.code == "derived_floor_motion" and f.item_id == "DOWN" for f in result.flags)
+    assert any("ASCE 7-16" in note for note in result.hazard_notes)
+    with pytest.raises(InputError) as caught:  # without the option it stays an error
+        run_assessment(inv, "2in50")
+    assert "--derive-floors" in caught.value.problems[0].fix

@@ -53,8 +53,9 @@ def motions_by_item(equipment: pd.DataFrame, level_motions: pd.DataFrame, level_
                 file=workbook_name, sheet="equipment", row=item.row, column="floor",
                 message=f"item '{item.id}' is on floor {item.floor}, but hazard level '{level_label}' "
                         f"has no motion for that floor (it has floors {floors or 'none'}).",
-                fix=f"add hazard rows for floor {item.floor} (or a row with floor 'all'), "
-                    "or correct the item's floor."))
+                fix=f"add hazard rows for floor {item.floor} (or a row with floor 'all'), correct the "
+                    "item's floor, or run with --derive-floors ROOF_FLOOR to derive the floor's motion "
+                    "from the ground motions (ASCE 7-16 eq. 13.3-1; the item is flagged)."))
             continue
         pairs.append(acting.assign(id=item.id))
     raise_if_any(problems)
@@ -98,3 +99,58 @@ def scale_to_pga(level_motions: pd.DataFrame, pga_g: float, workbook_name: str,
             f"({reference_g:.3f} g in the workbook) equals the PGA {pga_g:.3f} g of the OpenQuake "
             f"hazard in {source} at this level; floor motions by the same factor.")
     return scaled, factor, note
+
+
+#: Cap of the floor amplification 1 + 2 z/h (ASCE 7-16 eq. 13.3-1 at the roof).
+FLOOR_AMPLIFICATION_MAX = 3.0
+
+
+def floor_amplification(floor, roof_floor):
+    """Peak floor over peak ground acceleration, 1 + 2 z/h (ASCE 7-16, eq. 13.3-1).
+
+    .. math:: \\frac{PFA}{PGA} = 1 + 2\\frac{z}{h}
+
+    with z/h taken as ``floor / roof_floor`` (storeys of equal height), at most
+    3 (the roof). The rule is the code's envelope for the force on a
+    non-structural component; it ignores the building's periods.
+
+    >>> floor_amplification(0, 6), floor_amplification(3, 6), floor_amplification(6, 6)
+    (1.0, 2.0, 3.0)
+    """
+    ratio = min(max(float(floor) / float(roof_floor), 0.0), 1.0)
+    return min(1.0 + 2.0 * ratio, FLOOR_AMPLIFICATION_MAX)
+
+
+def derive_floor_motions(level_motions: pd.DataFrame, floors, roof_floor: int, workbook_name: str) -> pd.DataFrame:
+    """Add motions for ``floors`` that have none, derived from the level's ground motions.
+
+    Each ground motion (floor 0) is copied to the floor with its PTA, vp and
+    record scale multiplied by :func:`floor_amplification` and its Tp kept
+    (the floor's pulse period is taken as the ground's). The new rows carry
+    ``derived = True`` and a motion name that says so. Floors that have
+    motions are left alone; a level without ground motions is an error.
+    """
+    motions = level_motions.assign(derived=False)
+    have = set(int(f) for f in motions.loc[~motions["all_floors"], "floor"].dropna())
+    missing = sorted(set(int(f) for f in floors) - have) if not motions["all_floors"].any() else []
+    if not missing:
+        return motions
+    ground = motions[(~motions["all_floors"]) & (motions["floor"] == 0)]
+    if ground.empty:
+        raise_if_any([Problem(
+            file=workbook_name, sheet="hazard", column="floor",
+            message=f"floors {missing} have no motion, and there is no ground motion (floor 0) to derive "
+                    "them from.", fix="add the level's ground motions (floor 0), or motions for those floors.")])
+    derived = []
+    for floor in missing:
+        factor = floor_amplification(floor, roof_floor)
+        rows = ground.copy()
+        rows["floor"] = floor
+        rows["motion"] = [f"{name} -> floor {floor} (derived, x{factor:.2f})" for name in ground["motion"]]
+        for column in ("pta_g", "vp_m_s", "scale"):
+            rows[column] = rows[column] * factor
+        rows["derived"] = True
+        derived.append(rows)
+    out = pd.concat([motions, *derived], ignore_index=True)
+    out["floor"] = out["floor"].astype("Int64")
+    return out

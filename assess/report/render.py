@@ -45,6 +45,7 @@ FLAG_TITLES = {
     "uplift": "Uplifts and rocks",
     "sim_beyond_clearance": "Simulated sliding beyond the clearance",
     "cg_not_mid_height": "Centre of mass not at mid-height",
+    "derived_floor_motion": "Floor motion derived from the ground motion",
 }
 
 DASH = "–"
