@@ -106,6 +106,10 @@ def build_parser() -> argparse.ArgumentParser:
                         help="floors without a motion take the ground motions amplified by 1 + 2z/h "
                              "(ASCE 7-16 eq. 13.3-1), z/h = floor / ROOF_FLOOR; such items are flagged "
                              "(default: a floor without a motion is an error)")
+    parser.add_argument("--compare-with", metavar="SUMMARY_CSV", type=Path,
+                        help="a previous run's summary.csv: also write comparison.csv and a report section "
+                             "on which items changed risk class and why (default: the summary.csv already "
+                             "in --out, if any)")
     parser.add_argument("--quiet", action="store_true", help="do not print progress")
     parser.add_argument("--version", action="version", version=f"assess {__version__}")
     return parser
@@ -198,9 +202,16 @@ def _assess(args: argparse.Namespace, say) -> int:
         oq_hazard = read_openquake_hazard(args.oq_hazard, site=_oq_site(args.oq_site))
     result = run_assessment(inventory, args.hazard, seed=args.seed, progress=say, oq_hazard=oq_hazard,
                             derive_floors_roof=args.derive_floors)
+    out_dir = args.out or Path("reports") / f"{args.workbook.stem}-{level_name}"
+    previous = args.compare_with or (out_dir / "summary.csv" if (out_dir / "summary.csv").is_file() else None)
+    if previous is not None:
+        from dataclasses import replace
+
+        from assess.comparison import compare_summaries, read_previous_summary
+        say(f"comparing with the previous run {previous}")
+        result = replace(result, comparison=compare_summaries(read_previous_summary(previous), result.summary))
     say("rendering " + ", ".join(["summary.csv", "motions.csv"] + [f"report.{f}" for f in args.format]))
     files = render_outputs(result, args.format)
-    out_dir = args.out or Path("reports") / f"{args.workbook.stem}-{level_name}"
     written = write_atomically(files, out_dir)
     counts = result.risk_counts()
     say(f"{counts['high']} high, {counts['moderate']} moderate, {counts['low']} low risk, "

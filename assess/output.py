@@ -28,6 +28,8 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...]) -> dict[s
         "summary.csv": csv_text(result.summary).encode(),
         "motions.csv": csv_text(result.motions).encode(),
     }
+    if result.comparison is not None:
+        files["comparison.csv"] = csv_text(result.comparison).encode()
     if "html" in formats or "pdf" in formats:
         from assess.report import render_html, render_pdf
 

@@ -73,6 +73,9 @@ class AssessmentResult:
     hazard_notes : list of str
         How the motions were changed from the workbook's (e.g. scaled to an
         OpenQuake PGA), for the report.
+    comparison : DataFrame or None
+        Against a previous run (:func:`assess.comparison.compare_summaries`):
+        which items changed risk class and why; written as comparison.csv.
     """
 
     workbook: Path
@@ -89,6 +92,7 @@ class AssessmentResult:
     seed: int = 0
     histories: list = field(default_factory=list)
     hazard_notes: list = field(default_factory=list)
+    comparison: pd.DataFrame | None = None
 
     def risk_counts(self) -> dict[str, int]:
         """Number of items (rows, not quantity) in each risk class."""

@@ -171,3 +171,25 @@ def test_oq_hazard_without_the_level_is_refused(tmp_path):
     done = run(LAB, "--hazard", "2in50", "--oq-hazard", hazard_map, "--out", tmp_path / "x", cwd=tmp_path)
     assert done.returncode == 2 and "Traceback" not in done.stderr
     assert hazard_map.name in done.stderr and not (tmp_path / "x").exists()
+
+
+def test_rerun_with_new_hazard_writes_a_comparison(tmp_path):
+    """Run, then rerun into the same folder with the motions scaled down (an OpenQuake PGA):
+    comparison.csv lists the items whose risk class changed, with the PTA that moved."""
+    out = tmp_path / "lab"
+    first = run(LAB, "--hazard", "2in50", "--out", out, "--format", "html", cwd=tmp_path)
+    assert first.returncode == 0, first.stderr
+    assert not (out / "comparison.csv").exists()
+    curve = ROOT / "tests" / "data" / "openquake" / "case_14-hazard_curve-rlz-000_PGA.csv"
+    second = run(LAB, "--hazard", "2in50", "--oq-hazard", curve, "--oq-site", "0", "--out", out,
+                 "--format", "html", cwd=tmp_path)
+    assert second.returncode == 0, second.stderr
+    comparison = pd.read_csv(out / "comparison.csv")
+    summary = pd.read_csv(out / "summary.csv")
+    assert set(comparison["id"]) == set(summary["id"])
+    down = comparison[comparison["change"] == "down"]
+    assert len(down) > 0 and down["why"].str.contains("PTA").all()
+    assert (comparison.loc[comparison["change"] == "same", "risk_before"]
+            == comparison.loc[comparison["change"] == "same", "risk_after"]).all()
+    html = (out / "report.html").read_text()
+    assert "Changes since the previous run" in html and str(down["id"].iloc[0]) in html

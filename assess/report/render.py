@@ -265,8 +265,20 @@ def report_context(result) -> dict:
         },
         "simulation": _simulation_counts(result),
         "hazard_notes": list(getattr(result, "hazard_notes", [])),
+        "changes": _changes(getattr(result, "comparison", None)),
         "stylesheet": Markup(template_text(STYLESHEET_NAME)),  # our own file, not user text
     }
+
+
+def _changes(comparison) -> dict | None:
+    """The rows of a comparison with a previous run whose risk class changed, for the report."""
+    if comparison is None:
+        return None
+    changed = comparison[comparison["change"] != "same"]
+    return {"total": len(comparison), "same": int((comparison["change"] == "same").sum()),
+            "rows": [{"id": _text(r["id"]), "name": _text(r["name"]), "before": _text(r["risk_before"]) or DASH,
+                      "after": _text(r["risk_after"]) or DASH, "change": _text(r["change"]),
+                      "why": _text(r["why"]) or DASH} for _, r in changed.iterrows()]}
 
 
 def _simulation_counts(result) -> dict:

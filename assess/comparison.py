@@ -1,0 +1,101 @@
+"""Reassessment: what changed between a previous run's summary and this one's.
+
+After a hazard update the same workbook is run again; a facility manager wants
+to know which items changed risk class and why. :func:`compare_summaries`
+matches the two ``summary.csv`` tables by item id and names, for every item,
+the quantities that moved (governing PTA, mode, Pf, 84th-percentile sliding,
+overturning share).
+"""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pandas as pd
+
+from assess.errors import InputError, Problem
+
+RISK_ORDER = {"anchored": -1, "low": 0, "moderate": 1, "high": 2}
+#: Columns compared, with how each is written in the explanation.
+COMPARED = (("pta_g", "PTA", "{:.2f} g"), ("mode", "mode", "{}"), ("pf_sliding", "Pf", "{:.0%}"),
+            ("sliding_p84_cm", "84th-percentile sliding", "{:.0f} cm"),
+            ("overturn_fraction", "overturns under", "{:.0%} of motions"))
+COMPARISON_COLUMNS = ["id", "name", "risk_before", "risk_after", "change", "why"] + [
+    f"{column}_{when}" for column, _, _ in COMPARED for when in ("before", "after")]
+
+
+def read_previous_summary(path) -> pd.DataFrame:
+    """A previous run's ``summary.csv``; it must have ``id`` and ``risk`` columns."""
+    path = Path(path)
+    try:
+        table = pd.read_csv(path, dtype={"id": str})
+    except (OSError, ValueError, pd.errors.ParserError) as error:
+        raise InputError([Problem(file=str(path), message=f"the previous summary cannot be read: {error}",
+                                  fix="give the summary.csv of an earlier assess run.")]) from None
+    missing = [c for c in ("id", "risk") if c not in table]
+    if missing:
+        raise InputError([Problem(file=str(path), message=f"the previous summary has no {missing} column(s).",
+                                  fix="give the summary.csv of an earlier assess run.")])
+    return table
+
+
+def _number(value):
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        return None
+    return number if math.isfinite(number) else None
+
+
+def _moved(before, after, label, fmt) -> str | None:
+    """'label a -> b' when the value changed (numbers by more than 0.5 % or 0.005), else None."""
+    b, a = _number(before), _number(after)
+    if b is not None or a is not None:
+        if b is not None and a is not None and abs(a - b) <= max(0.005, 0.005 * abs(b)):
+            return None
+        text = [fmt.format(v) if v is not None else "–" for v in (b, a)]
+        return f"{label} {text[0]} -> {text[1]}"
+    sb, sa = ("" if pd.isna(v) else str(v) for v in (before, after))
+    return None if sb == sa else f"{label} {sb or '–'} -> {sa or '–'}"
+
+
+def compare_summaries(previous: pd.DataFrame, current: pd.DataFrame) -> pd.DataFrame:
+    """One row per item of either run: risk before and after, the change, and why.
+
+    ``change`` is ``up`` / ``down`` (risk class), ``same``, ``new`` (only now)
+    or ``removed`` (only before); ``why`` lists the compared quantities that
+    moved. Rows are ordered: up, down, new, removed, same.
+
+    >>> before = pd.DataFrame({"id": ["A"], "name": ["fridge"], "risk": ["moderate"], "pta_g": [0.54],
+    ...                        "mode": ["slide"], "pf_sliding": [0.2]})
+    >>> after = before.assign(risk="high", pta_g=0.71, pf_sliding=0.62)
+    >>> row = compare_summaries(before, after).iloc[0]
+    >>> row["change"], row["why"]
+    ('up', 'PTA 0.54 g -> 0.71 g; Pf 20% -> 62%')
+    """
+    merged = previous.add_suffix("_before").merge(
+        current.add_suffix("_after"), left_on="id_before", right_on="id_after", how="outer", sort=False)
+    rows = []
+    for record in merged.to_dict("records"):
+        item_id = record["id_after"] if isinstance(record.get("id_after"), str) else record["id_before"]
+        risk_b, risk_a = record.get("risk_before"), record.get("risk_after")
+        if pd.isna(risk_b):
+            change = "new"
+        elif pd.isna(risk_a):
+            change = "removed"
+        else:
+            delta = RISK_ORDER.get(str(risk_a), 0) - RISK_ORDER.get(str(risk_b), 0)
+            change = "up" if delta > 0 else "down" if delta < 0 else "same"
+        reasons = [_moved(record.get(f"{column}_before"), record.get(f"{column}_after"), label, fmt)
+                   for column, label, fmt in COMPARED]
+        name = record.get("name_after")
+        row = {"id": item_id, "name": name if isinstance(name, str) else record.get("name_before"),
+               "risk_before": "" if pd.isna(risk_b) else risk_b, "risk_after": "" if pd.isna(risk_a) else risk_a,
+               "change": change, "why": "; ".join(r for r in reasons if r)}
+        for column, _, _ in COMPARED:
+            for when in ("before", "after"):
+                row[f"{column}_{when}"] = record.get(f"{column}_{when}")
+        rows.append(row)
+    order = {"up": 0, "down": 1, "new": 2, "removed": 3, "same": 4}
+    table = pd.DataFrame(rows, columns=COMPARISON_COLUMNS)
+    return table.sort_values("change", key=lambda s: s.map(order), kind="stable").reset_index(drop=True)
