@@ -203,13 +203,7 @@ def _assess(args: argparse.Namespace, say) -> int:
     result = run_assessment(inventory, args.hazard, seed=args.seed, progress=say, oq_hazard=oq_hazard,
                             derive_floors_roof=args.derive_floors)
     out_dir = args.out or Path("reports") / f"{args.workbook.stem}-{level_name}"
-    previous = args.compare_with or (out_dir / "summary.csv" if (out_dir / "summary.csv").is_file() else None)
-    if previous is not None:
-        from dataclasses import replace
-
-        from assess.comparison import compare_summaries, read_previous_summary
-        say(f"comparing with the previous run {previous}")
-        result = replace(result, comparison=compare_summaries(read_previous_summary(previous), result.summary))
+    result = _with_comparison(result, args.compare_with, out_dir / "summary.csv", say)
     say("rendering " + ", ".join(["summary.csv", "motions.csv"] + [f"report.{f}" for f in args.format]))
     files = render_outputs(result, args.format)
     written = write_atomically(files, out_dir)
@@ -219,6 +213,30 @@ def _assess(args: argparse.Namespace, say) -> int:
     for path in written:
         print(path)
     return EXIT_OK
+
+
+def _with_comparison(result, explicit: Path | None, in_out_dir: Path, say):
+    """``result`` with its comparison against a previous summary.
+
+    An explicit ``--compare-with`` file must be a summary (else exit 2); the
+    summary.csv already in the output folder is used when it is one, and
+    skipped with a note when it is not.
+    """
+    from dataclasses import replace
+
+    from assess.comparison import compare_summaries, read_previous_summary
+    if explicit is not None:
+        previous = read_previous_summary(explicit)
+    elif in_out_dir.is_file():
+        try:
+            previous = read_previous_summary(in_out_dir)
+        except InputError as error:
+            say(f"not comparing with {in_out_dir}: {error.problems[0].message}")
+            return result
+    else:
+        return result
+    say(f"comparing with the previous run {explicit or in_out_dir}")
+    return replace(result, comparison=compare_summaries(previous, result.summary))
 
 
 def _oq_site(text):

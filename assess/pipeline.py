@@ -8,6 +8,8 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Callable
 
+import warnings
+
 import numpy as np
 import pandas as pd
 
@@ -85,11 +87,12 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
              f"{level_label}: {len(pairs) * len(DIRECTIONS)} item x motion x direction cases")
 
     cases = _item_motion_direction_cases(freestanding, pairs)
-    simulated_motions = _simulated_motions(level_motions, workbook_name)
-    cases = _add_simulation(cases, simulated_motions, progress)
+    progress("preparing the motions to simulate")
+    simulated_motions = _simulated_motions(level_motions, workbook_name, settings, seed)
+    cases, runs = _add_simulation(cases, simulated_motions, progress)
     cases = _add_demand(cases, constants)
     summary, flags = _summarise(equipment, cases, constants, settings)
-    histories = _worst_histories(cases, summary, simulated_motions)
+    histories = _worst_histories(cases, runs, summary, simulated_motions)
     regression = {"zeta": constants.zeta, "eta": constants.eta, "sigma": constants.sigma,
                   "im_min": constants.im_min, "im_max": constants.im_max,
                   "source": _regression_source(settings)}
@@ -112,15 +115,24 @@ def _require_pulse_parameters(level_motions: pd.DataFrame, workbook_name: str) -
         for row in missing.itertuples(index=False)])
 
 
-def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str) -> dict[str, tuple[Record, str]]:
-    """Per motion: the floor acceleration the engine simulates, and how it was obtained.
+def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str, settings: dict,
+                       seed: int) -> dict[str, list[tuple[Record, str]]]:
+    """Per motion: the floor accelerations the engine simulates, each with how it was obtained.
 
-    A motion with a record is simulated under the record (times ``scale``);
-    one given by PTA and Tp under its pulse (:data:`DEFAULT_PULSE` where the
-    workbook names none, said so in ``sim_motion``).
+    A motion with a record is simulated under the record (times ``scale``).
+    One given by PTA, Tp and vp is simulated under ``synthetic_realizations``
+    near-fault histories synthesised to match them
+    (:func:`assess.hazard.synthesis.synthesize_motion`, seeded by ``seed`` and
+    the motion's place in the sheet) when ``simulate_motions`` is
+    ``synthetic``, or under its pulse (:data:`DEFAULT_PULSE` where the workbook
+    names none) when it is ``pulse`` or vp is not given.
     """
+    from assess.hazard.synthesis import synthesize_motion
+
+    synthetic = str(settings.get("simulate_motions", "synthetic")).strip().lower() == "synthetic"
+    count = int(settings.get("synthetic_realizations", 5))
     motions = {}
-    for row in level_motions.itertuples(index=False):
+    for k, row in enumerate(level_motions.itertuples(index=False)):
         if row.record_path:
             try:
                 record = read_record(row.record_path, min_duration_s=MIN_DURATION_S).scaled(float(row.scale))
@@ -128,12 +140,22 @@ def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str) -> dict[
                 raise InputError([replace(problem, message=f"the record of motion '{row.motion}' "
                                           f"({workbook_name}, sheet 'hazard', row {int(row.row)}): "
                                           f"{problem.message}") for problem in error.problems]) from None
-            motions[row.motion] = (record, f"record {record.name} x {float(row.scale):g}")
+            motions[row.motion] = [(record, f"record {record.name} x {float(row.scale):g}")]
+            continue
+        pta, tp, vp = float(row.pta_g), float(row.tp_s), float(row.vp_m_s)
+        if synthetic and np.isfinite(vp):
+            with warnings.catch_warnings():  # a pulse above PTA is said in the record's name
+                warnings.simplefilter("ignore")
+                records = synthesize_motion(pta, tp, vp, n_realizations=count,
+                                            seed=np.random.default_rng([seed, k]))
+            motions[row.motion] = [(r, r.name) for r in records]
             continue
         pulse = row.pulse or DEFAULT_PULSE
-        record = pulse_record(pulse, float(row.pta_g), float(row.tp_s))
+        record = pulse_record(pulse, pta, tp)
         note = f"Type-{pulse} pulse" if row.pulse else f"Type-{pulse} pulse (assumed: no pulse type given)"
-        motions[row.motion] = (record, f"{note}, {float(row.pta_g):g} g, Tp {float(row.tp_s):g} s")
+        if synthetic:
+            note += " (no vp given to synthesise from)"
+        motions[row.motion] = [(record, f"{note}, {pta:g} g, Tp {tp:g} s")]
     return motions
 
 
@@ -142,45 +164,85 @@ def _case_block(case) -> Block:
                  height_m=float(case.height_m), mu=float(case.mu), mu_static=float(case.mu_static))
 
 
-def _add_simulation(cases: pd.DataFrame, motions: dict[str, tuple[Record, str]],
-                    progress: Progress) -> pd.DataFrame:
-    """Simulate every case (:func:`assess.mechanics.engine.simulate_cases`): ``sim_*`` columns."""
-    names = list(motions)
-    blocks = [_case_block(case) for case in cases.itertuples(index=False)]
-    record_index = cases["motion"].map({name: k for k, name in enumerate(names)}).to_numpy()
+def _majority_mode(modes: pd.Series) -> str:
+    """The most frequent mode; a tie goes to the more severe."""
+    counts = modes.value_counts()
+    tied = counts[counts == counts.max()].index
+    return max(tied, key=lambda mode: MODE_SEVERITY[mode])
+
+
+def _add_simulation(cases: pd.DataFrame, motions: dict[str, list[tuple[Record, str]]],
+                    progress: Progress) -> tuple[pd.DataFrame, pd.DataFrame]:
+    """Simulate every case under every history of its motion: ``sim_*`` columns, and the runs.
+
+    A case's ``sim_*`` values summarise its runs (one per history): the
+    median peak sliding, residual and θmax/α, the share of runs that overturn
+    (``sim_overturn_share``; ``sim_overturned`` when at least half do), uplift
+    in any run, the most frequent mode. The second table holds every run.
+    """
+    histories = [(name, r) for name in motions for r in range(len(motions[name]))]
+    index_of = {key: j for j, key in enumerate(histories)}
+    run_case, run_history = [], []
+    for k, case in enumerate(cases.itertuples(index=False)):
+        for r in range(len(motions[case.motion])):
+            run_case.append(k)
+            run_history.append(index_of[(case.motion, r)])
+    run_case = np.asarray(run_case)
+    blocks_by_case = [_case_block(case) for case in cases.itertuples(index=False)]
     last = [-1.0]
 
     def report(done, total):
         if done == total or done - last[0] >= max(1, total // 10):
             last[0] = done
-            progress(f"simulated {done} of {total} cases")
+            progress(f"simulated {done} of {total} runs ({len(cases)} cases)")
 
-    peaks = simulate_cases(blocks, [motions[n][0].accel_g for n in names],
-                           [motions[n][0].dt_s for n in names], record_index, progress=report)
-    return cases.assign(
-        sim_motion=cases["motion"].map({n: motions[n][1] for n in names}),
-        sim_mode=peaks.mode, sim_sliding_max_cm=peaks.sliding_max_m * 100.0,
-        sim_sliding_residual_cm=peaks.sliding_residual_m * 100.0,
-        sim_theta_max_over_alpha=peaks.theta_max_over_alpha, sim_uplift=peaks.uplift,
-        sim_overturned=peaks.overturned, sim_solver=peaks.solver)
+    peaks = simulate_cases([blocks_by_case[k] for k in run_case],
+                           [motions[n][r][0].accel_g for n, r in histories],
+                           [motions[n][r][0].dt_s for n, r in histories], np.asarray(run_history),
+                           progress=report)
+    runs = pd.DataFrame({
+        "case": run_case, "realization": [histories[j][1] for j in run_history],
+        "sliding_max_cm": peaks.sliding_max_m * 100.0, "sliding_residual_cm": peaks.sliding_residual_m * 100.0,
+        "theta_max_over_alpha": peaks.theta_max_over_alpha, "uplift": peaks.uplift,
+        "overturned": peaks.overturned, "mode": peaks.mode, "solver": peaks.solver})
+    grouped = runs.groupby("case", sort=True)
+    summary = pd.DataFrame({
+        "sim_realizations": grouped.size(),
+        "sim_sliding_max_cm": grouped["sliding_max_cm"].median(),
+        "sim_sliding_residual_cm": grouped["sliding_residual_cm"].median(),
+        "sim_theta_max_over_alpha": grouped["theta_max_over_alpha"].median(),
+        "sim_overturn_share": grouped["overturned"].mean(),
+        "sim_uplift": grouped["uplift"].any(),
+        "sim_mode": grouped["mode"].agg(_majority_mode),
+        "sim_solver": grouped["solver"].agg(lambda s: ", ".join(sorted(set(s)))),
+    })
+    summary["sim_overturned"] = summary["sim_overturn_share"] >= 0.5
+    cases = cases.reset_index(drop=True).join(summary.reset_index(drop=True))
+    cases["sim_motion"] = cases["motion"].map(
+        {n: (motions[n][0][1] if len(motions[n]) == 1 else f"{len(motions[n])} synthetic histories: "
+             + motions[n][0][1].split(",", 1)[1].strip().replace(", seed", "; first seed", 1))
+         for n in motions})
+    return cases, runs
 
 
-def _worst_histories(cases: pd.DataFrame, summary: pd.DataFrame,
-                     motions: dict[str, tuple[Record, str]]) -> list[dict]:
-    """Time histories (Fig. 7 of the paper) of the worst cases of the :data:`HISTORY_ITEMS` worst items.
+def _worst_histories(cases: pd.DataFrame, runs: pd.DataFrame, summary: pd.DataFrame,
+                     motions: dict[str, list[tuple[Record, str]]]) -> list[dict]:
+    """Time histories (Fig. 7 of the paper) of the worst runs of the :data:`HISTORY_ITEMS` worst items.
 
     Worst: overturned first, then the largest θmax/α, then the largest
-    simulated sliding over clearance; for each item, its worst case.
+    simulated sliding over clearance; for each item, its worst run.
     """
-    ranked = cases.assign(
-        _over=cases["sim_overturned"].astype(int),
-        _ratio=cases["sim_sliding_max_cm"] / (cases["clearance_m"] * 100.0),
-    ).sort_values(["_over", "sim_theta_max_over_alpha", "_ratio"], ascending=False, kind="stable")
+    ranked = runs.assign(
+        id=cases["id"].to_numpy()[runs["case"]],
+        _over=runs["overturned"].astype(int),
+        _ratio=runs["sliding_max_cm"] / (cases["clearance_m"].to_numpy()[runs["case"]] * 100.0),
+    ).sort_values(["_over", "theta_max_over_alpha", "_ratio"], ascending=False, kind="stable")
     worst = ranked.drop_duplicates("id").head(HISTORY_ITEMS)
     names = summary.set_index("id")["name"]
     histories = []
-    for case in worst.itertuples(index=False):
-        record, description = motions[case.motion]
+    for run in worst.itertuples(index=False):
+        case = cases.iloc[int(run.case)]
+        record, description = motions[case.motion][int(run.realization)]
         response = simulate(_case_block(case), record.accel_g, record.dt_s, return_history=True)
         floor = np.zeros(response.time_s.size)
         floor[:min(record.accel_g.size, floor.size)] = record.accel_g[:floor.size]
@@ -305,10 +367,11 @@ def overturning_summary(item_cases: pd.DataFrame) -> dict:
 
     ``overturn_fraction``: share of the level's motions under which the item
     overturns in at least one of its two base directions (a motion may arrive
-    along either). ``theta_max_over_alpha``: the largest peak |θ|/α over all
+    along either); a motion simulated under several synthetic histories counts
+    by the share of them that overturn it. ``theta_max_over_alpha``: the largest peak |θ|/α over all
     its cases, each relative to α of its own direction.
     """
-    per_motion = item_cases.groupby("motion", sort=False)["sim_overturned"].any()
+    per_motion = item_cases.groupby("motion", sort=False)["sim_overturn_share"].max()
     return {"overturn_fraction": float(per_motion.mean()),
             "theta_max_over_alpha": float(item_cases["sim_theta_max_over_alpha"].max())}
 

@@ -22,6 +22,7 @@ MOTION_COLUMNS = [
     "pf_sliding", "sim_sliding_max_cm", "sim_theta_max_over_alpha", "sim_overturned",
     "floor", "vp_cm_s", "b_over_h", "alpha_rad", "mode", "sliding_p84_cm", "capacity_edp",
     "flags", "mode_from_rest", "sim_sliding_residual_cm", "sim_uplift", "sim_motion", "sim_solver",
+    "sim_realizations", "sim_overturn_share",
 ]
 
 RISK_CLASSES = ("high", "moderate", "low", "anchored")
@@ -55,7 +56,9 @@ class AssessmentResult:
         One row per freestanding item x motion x direction, :data:`MOTION_COLUMNS`.
         ``direction`` is 1 (along width) or 2 (along depth); ``sim_*`` from the
         engine (``sim_motion`` says what was simulated, ``sim_solver`` which
-        solver answered); ``mode`` is the simulated mode, ``mode_from_rest``
+        solver answered); a motion simulated under ``sim_realizations``
+        synthetic histories gives the medians of its runs and the share that
+        overturn (``sim_overturn_share``; ``sim_overturned`` if at least half); ``mode`` is the simulated mode, ``mode_from_rest``
         the mode entered first by Shenton's criteria.
     flags : list[Flag]
     regression : dict

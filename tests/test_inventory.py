@@ -377,6 +377,8 @@ def test_unknown_settings_key_suggests_the_closest(make_workbook):
     ("risk_pf_high", 1.5, "setting 'risk_pf_high' is '1.5'; a probability threshold lies"),
     ("risk_pf_high", 0.15, "risk_pf_moderate '0.2' must be less than risk_pf_high '0.15'"),
     ("im_max", 1.0, "im_min '1.71' must be less than im_max '1'"),
+    ("simulate_motions", "records", "setting 'simulate_motions' is 'records'; it is 'synthetic' or 'pulse'"),
+    ("synthetic_realizations", 2.5, "setting 'synthetic_realizations' is '2.5'; it is a whole number"),
 ])
 def test_bad_settings_value(make_workbook, key, value, expected):
     sheets = good_sheets()

@@ -489,6 +489,16 @@ def _check_settings(merged: dict, user: dict, header: Header | None, report: She
             report.at(user[key][1], header, f"setting '{key}' is {schema.quote(merged[key])}; "
                       "a probability threshold lies strictly between 0 and 1.",
                       "write it as a fraction, e.g. 0.1 for 10 %.")
+    if "simulate_motions" in user and str(merged["simulate_motions"]).strip().lower() not in ("synthetic", "pulse"):
+        report.at(user["simulate_motions"][1], header, f"setting 'simulate_motions' is "
+                  f"{schema.quote(merged['simulate_motions'])}; it is 'synthetic' or 'pulse'.",
+                  "write synthetic (near-fault histories) or pulse (the motion's pulse).")
+    if "synthetic_realizations" in user:
+        count = merged["synthetic_realizations"]
+        if not (float(count).is_integer() and 1 <= count <= 100):
+            report.at(user["synthetic_realizations"][1], header, f"setting 'synthetic_realizations' is "
+                      f"{schema.quote(count)}; it is a whole number from 1 to 100.",
+                      "write how many synthetic histories to simulate per motion, e.g. 5.")
     for low, high in _ORDERED_SETTINGS:
         set_by_user = [k for k in (low, high) if k in user]
         if not set_by_user or bad & {low, high} or merged[low] < merged[high]:
