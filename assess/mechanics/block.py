@@ -179,10 +179,14 @@ class Block:
 
     @property
     def restitution_effective(self) -> float:
-        """The restitution in use: the override, or Housner's e for this block [-]."""
+        """The restitution in use: the override, or Housner's e for this block [-].
+
+        Housner's e is negative for squat blocks (sin²α > κ/2, e.g. b/h = 2):
+        the impact then leaves no rocking motion, and 0 is used.
+        """
         if self.restitution is not None:
             return float(self.restitution)
-        return float(housner_restitution(self.alpha_rad, self.inertia_ratio))
+        return max(0.0, float(housner_restitution(self.alpha_rad, self.inertia_ratio)))
 
     def scaled(self, length_factor):
         """The same block with every length multiplied by ``length_factor`` (Froude model)."""
