@@ -8,6 +8,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Callable
 
+import functools
 import warnings
 
 import numpy as np
@@ -59,8 +60,9 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
     constants = RegressionConstants.from_settings(settings)
     level, level_motions = select_level(inventory.hazard, level_text, workbook_name)
     level_label = str(level_motions["level_label"].iloc[0])
-    _require_pulse_parameters(level_motions, workbook_name)
-    hazard_notes = []
+    level_motions, hazard_notes = _measure_pulse_parameters(level_motions, workbook_name)
+    for note in hazard_notes:
+        progress(note)
     if oq_hazard is not None:
         from assess.hazard.motions import scale_to_pga
         from assess.hazard.openquake import pga_at_level
@@ -105,14 +107,58 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
     )
 
 
-def _require_pulse_parameters(level_motions: pd.DataFrame, workbook_name: str) -> None:
-    missing = level_motions[level_motions["pta_g"].isna() | level_motions["tp_s"].isna()]
-    raise_if_any([Problem(
-        file=workbook_name, sheet="hazard", row=int(row.row), column="pta_g / tp_s",
-        message=f"motion '{row.motion}' gives a record but no pta_g and tp_s; this version "
-                "describes every motion by its pulse and does not read records yet.",
-        fix="fill in pta_g and tp_s (and vp_cm_s) of the motion's predominant pulse.")
-        for row in missing.itertuples(index=False)])
+def _motion_record(record_path: str, scale: float, motion: str, row: int, workbook_name: str) -> Record:
+    """The record of a hazard row, read (once per file and scale) and scaled; errors name the row."""
+    try:
+        return _read_scaled(record_path, float(scale))
+    except InputError as error:
+        raise InputError([replace(problem, message=f"the record of motion '{motion}' "
+                                  f"({workbook_name}, sheet 'hazard', row {int(row)}): "
+                                  f"{problem.message}") for problem in error.problems]) from None
+
+
+@functools.lru_cache(maxsize=64)
+def _read_scaled(path: str, scale: float) -> Record:
+    return read_record(path, min_duration_s=MIN_DURATION_S).scaled(scale)
+
+
+def _measure_pulse_parameters(level_motions: pd.DataFrame, workbook_name: str) -> tuple[pd.DataFrame, list[str]]:
+    """Fill PTA, Tp and vp that a motion with a record leaves empty, from the record.
+
+    PTA is the record's peak absolute acceleration (after ``scale``); Tp and
+    vp come from a Type-B pulse fitted to its velocity
+    (:func:`assess.hazard.pulse_identification.identify_pulse`; the paper's
+    regression was fitted with Type-B periods). ``pulse_source`` says, per
+    motion, where its numbers came from; the notes go to the report.
+    """
+    from assess.hazard.pulse_identification import identify_pulse
+
+    motions = level_motions.assign(pulse_source="workbook")
+    notes = []
+    for index, row in motions.iterrows():
+        missing = [c for c in ("pta_g", "tp_s", "vp_m_s") if not np.isfinite(row[c])]
+        if not row["record_path"] or not missing:
+            continue
+        record = _motion_record(row["record_path"], row["scale"], row["motion"], row["row"], workbook_name)
+        measured = []
+        if "pta_g" in missing:
+            motions.at[index, "pta_g"] = record.pta_g
+            measured.append(f"PTA {record.pta_g:.3f} g")
+        if {"tp_s", "vp_m_s"} & set(missing):
+            fit = identify_pulse(record.accel_g, record.dt_s, models=("B",))
+            if "tp_s" in missing:
+                motions.at[index, "tp_s"] = fit.tp_s
+                measured.append(f"Tp {fit.tp_s:.2f} s")
+            if "vp_m_s" in missing:
+                motions.at[index, "vp_m_s"] = fit.vp_m_s
+                measured.append(f"vp {fit.vp_m_s * 100:.0f} cm/s")
+            clarity = "a clear pulse" if fit.is_pulse_like else "no clear pulse: Tp is only the best single pulse"
+            source = f"measured from the record (Type-B fit explains {fit.fit_r2:.0%} of the velocity; {clarity})"
+        else:
+            source = "PTA measured from the record"
+        motions.at[index, "pulse_source"] = source
+        notes.append(f"Motion '{row['motion']}': {', '.join(measured)} {source}.")
+    return motions, notes
 
 
 def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str, settings: dict,
@@ -134,12 +180,7 @@ def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str, settings
     motions = {}
     for k, row in enumerate(level_motions.itertuples(index=False)):
         if row.record_path:
-            try:
-                record = read_record(row.record_path, min_duration_s=MIN_DURATION_S).scaled(float(row.scale))
-            except InputError as error:
-                raise InputError([replace(problem, message=f"the record of motion '{row.motion}' "
-                                          f"({workbook_name}, sheet 'hazard', row {int(row.row)}): "
-                                          f"{problem.message}") for problem in error.problems]) from None
+            record = _motion_record(row.record_path, row.scale, row.motion, row.row, workbook_name)
             motions[row.motion] = [(record, f"record {record.name} x {float(row.scale):g}")]
             continue
         pta, tp, vp = float(row.pta_g), float(row.tp_s), float(row.vp_m_s)
@@ -261,7 +302,8 @@ def _item_motion_direction_cases(items: pd.DataFrame, pairs: pd.DataFrame) -> pd
     """One row per item x motion x direction with the block's geometry in that direction."""
     item_columns = ["id", "floor", "height_m", "width_m", "depth_m", "cg_height_m", "mu",
                     "mu_static", "clearance_m"]
-    motion_columns = ["id", "motion", "pta_g", "tp_s", "vp_m_s"] + (["derived"] if "derived" in pairs else [])
+    motion_columns = ["id", "motion", "pta_g", "tp_s", "vp_m_s", "pulse_source"] + (
+        ["derived"] if "derived" in pairs else [])
     base = pairs[motion_columns].assign(pair_index=range(len(pairs))) \
         .merge(items[item_columns], on="id", validate="many_to_one")
     frames = []

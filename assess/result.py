@@ -22,7 +22,7 @@ MOTION_COLUMNS = [
     "pf_sliding", "sim_sliding_max_cm", "sim_theta_max_over_alpha", "sim_overturned",
     "floor", "vp_cm_s", "b_over_h", "alpha_rad", "mode", "sliding_p84_cm", "capacity_edp",
     "flags", "mode_from_rest", "sim_sliding_residual_cm", "sim_uplift", "sim_motion", "sim_solver",
-    "sim_realizations", "sim_overturn_share",
+    "sim_realizations", "sim_overturn_share", "pulse_source",
 ]
 
 RISK_CLASSES = ("high", "moderate", "low", "anchored")

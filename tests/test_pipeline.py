@@ -215,3 +215,23 @@ def test_synthetic_motions_are_simulated_by_default_and_summarised_over_realisat
     assert again.motions["sim_sliding_max_cm"].equals(result.motions["sim_sliding_max_cm"])
     other = run_assessment(inventory(items, TABLE3_GROUND[:1], synthetic_realizations=3), "2in50", seed=8)
     assert not other.motions["sim_sliding_max_cm"].equals(result.motions["sim_sliding_max_cm"])
+
+
+def test_record_without_pulse_numbers_is_measured_and_simulated(tmp_path):
+    """A hazard row with only a record: PTA from its peak, Tp and vp from a Type-B pulse fitted
+    to its velocity (here a 1.5 s Type-B pulse of 0.4 g inside 12 s of record), then simulated under it."""
+    from assess.hazard.pulses import pulse_acceleration
+
+    time_s = np.arange(0.0, 12.0, 0.005)
+    accel = pulse_acceleration("B", 0.4, 1.5, time_s - 3.0)
+    path = tmp_path / "floor.csv"
+    pd.DataFrame({"time_s": time_s, "accel_g": accel}).to_csv(path, index=False)
+    row = {**motion("recorded", np.nan, np.nan, vp_cm_s=np.nan), "record_path": str(path), "pulse": ""}
+    result = run_assessment(inventory([item("FORMA", mu=0.13)], [row]), "2in50")
+    case = result.motions.iloc[0]
+    assert case["pta_g"] == pytest.approx(0.4, rel=1e-9)
+    assert case["tp_s"] == pytest.approx(1.5, rel=0.05)
+    assert case["vp_cm_s"] == pytest.approx(0.4 * 9.80665 / (2 * np.pi / 1.5) * 100, rel=0.10)  # vp = ap/wp
+    assert "measured from the record" in case["pulse_source"] and "a clear pulse" in case["pulse_source"]
+    assert case["sim_motion"].startswith("record floor.csv") and case["sim_realizations"] == 1
+    assert any("recorded" in note for note in result.hazard_notes)
