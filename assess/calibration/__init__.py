@@ -1,0 +1,174 @@
+"""Calibration against measured tests (SPEC §5, ``assess calibrate``).
+
+:func:`run_calibration` only sequences the pure functions of
+:mod:`assess.calibration.measured` (the tests and the motion each played),
+:mod:`assess.calibration.effects` (the candidate changes of the model) and
+:mod:`assess.calibration.fit` (errors, fitting, cross-validated selection),
+and returns a :class:`CalibrationResult` whose :meth:`~CalibrationResult.as_json`
+is the content of ``calibration.json``.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Callable, Optional
+
+import numpy as np
+import pandas as pd
+
+from assess.calibration.effects import EFFECTS, available_effects, half_width_of
+from assess.calibration.fit import (MARGIN, Case, EffectFit, Measured, Predicted, fit_effect,
+                                    select_effect, sliding_log_ratio, test_losses, theta_difference)
+from assess.calibration.measured import read_measured, test_motion
+
+__all__ = ["CalibrationResult", "run_calibration", "read_measured", "build_cases", "EFFECTS"]
+
+#: Columns of the residual tables (``residuals_before``, ``residuals_after``).
+RESIDUAL_COLUMNS = ["specimen", "motion", "direction", "sliding_measured_cm", "sliding_predicted_cm",
+                    "sliding_log_ratio", "theta_measured", "theta_predicted", "theta_difference",
+                    "overturned_measured", "overturned_predicted", "mode_predicted", "loss"]
+#: Columns of the diagnosis table.
+DIAGNOSIS_COLUMNS = ["specimen", "motion", "direction", "pta_g", "tp_s", "mu", "b_over_h", "im",
+                     "omega_p_over_p", "mode"]
+
+
+@dataclass
+class CalibrationResult:
+    """What ``assess calibrate`` reports.
+
+    Attributes
+    ----------
+    error_before, error_after : dict
+        Error measures (:func:`assess.calibration.fit.error_measures`) of the
+        declared model and of the selected effect at its fitted parameters.
+    selected : str
+        Name of the selected effect (``none`` when no effect earns its parameters).
+    parameters : dict
+        Its fitted parameters (units in :data:`assess.calibration.effects.EFFECTS`).
+    indistinguishable_from : list of str
+        Effects the data cannot tell from the selected one.
+    fits : list of EffectFit
+        Every candidate, ``none`` first.
+    residuals_before, residuals_after : pandas.DataFrame
+        One row per test, columns :data:`RESIDUAL_COLUMNS` (cm for sliding).
+    diagnosis : pandas.DataFrame
+        One row per test, columns :data:`DIAGNOSIS_COLUMNS`: IM = PTA/(μg) − 1,
+        ωp/p (NaN for a record without Tp), the declared μ and b/h, and the
+        declared model's mode.
+    notes : list of str
+        E.g. effects left out because their solver is not installed.
+    margin : float
+        The selection margin used.
+    """
+
+    error_before: dict
+    error_after: dict
+    selected: str
+    parameters: dict
+    indistinguishable_from: list
+    fits: list
+    residuals_before: pd.DataFrame
+    residuals_after: pd.DataFrame
+    diagnosis: pd.DataFrame
+    notes: list = field(default_factory=list)
+    margin: float = MARGIN
+
+    def as_json(self) -> dict:
+        """The content of ``calibration.json`` (SPEC §5)."""
+        return {"error_before": dict(self.error_before), "error_after": dict(self.error_after),
+                "selected": {"effect": self.selected, "parameters": dict(self.parameters)},
+                "indistinguishable_from": list(self.indistinguishable_from),
+                "candidates": [{"effect": f.effect.name, "parameters": dict(f.parameters), "error": dict(f.error),
+                                "score": float(f.score)} for f in self.fits]}
+
+
+def build_cases(inventory, measured: pd.DataFrame) -> list[Case]:
+    """One :class:`Case` per test: the declared item, the half-width shaken, the motion played."""
+    equipment = inventory.equipment.set_index("id", drop=False)
+    records = {}
+    cases = []
+    for test in measured.itertuples(index=False):
+        if test.motion not in records:
+            records[test.motion] = test_motion(inventory, test.motion)
+        item = equipment.loc[test.specimen].to_dict()
+        cases.append(Case(str(test.specimen), str(test.motion), int(test.direction), item,
+                          half_width_of(item, test.direction), records[test.motion]))
+    return cases
+
+
+def run_calibration(inventory, measured: pd.DataFrame, *, effects=None, margin: float = MARGIN,
+                    progress: Optional[Callable[[int, int], None]] = None,
+                    cache: Optional[dict] = None) -> CalibrationResult:
+    """Fit every available effect to the measured tests and select one (SPEC §5).
+
+    Parameters
+    ----------
+    inventory : assess.inventory.Inventory
+    measured : pandas.DataFrame
+        The tests, as :func:`read_measured` returns them.
+    effects : list of str, optional
+        Effect names to try (default: all of :data:`EFFECTS`); ``none`` is
+        always tried. Effects whose solver is not installed are left out with
+        a note.
+    margin : float
+        Selection margin (:func:`assess.calibration.fit.select_effect`).
+    progress : callable(done, total), optional
+        Called after each effect is fitted.
+    cache : dict, optional
+        Predictions already computed, reused between calls on the same tests
+        (the key holds the item's numbers and the motion's samples).
+    """
+    cache = {} if cache is None else cache
+    names = list(EFFECTS) if effects is None else list(effects)
+    chosen = available_effects(names)
+    notes = [f"effect '{n}' not tried: its solver ({EFFECTS[n].requires}) is not installed."
+             for n in names if n in EFFECTS and EFFECTS[n] not in chosen]
+    cases = build_cases(inventory, measured)
+    observed = Measured.from_table(measured)
+    fits: list[EffectFit] = []
+    for k, effect in enumerate(chosen):
+        fits.append(fit_effect(effect, cases, observed, cache))
+        if progress is not None:
+            progress(k + 1, len(chosen))
+    selected, similar = select_effect(fits, margin)
+    by_name = {f.effect.name: f for f in fits}
+    before, after = by_name["none"], by_name[selected]
+    return CalibrationResult(
+        error_before=before.error, error_after=after.error, selected=selected,
+        parameters=dict(after.parameters), indistinguishable_from=similar, fits=fits,
+        residuals_before=residual_table(measured, before.predicted, observed),
+        residuals_after=residual_table(measured, after.predicted, observed),
+        diagnosis=diagnosis_table(inventory, cases, before.predicted), notes=notes, margin=margin)
+
+
+def residual_table(measured: pd.DataFrame, predicted: Predicted, observed: Measured) -> pd.DataFrame:
+    """Per test: measured and predicted peaks, their residuals and the test's loss."""
+    over = [None if not np.isfinite(v) else bool(v) for v in observed.overturned]
+    table = pd.DataFrame({
+        "specimen": measured["specimen"].to_numpy(), "motion": measured["motion"].to_numpy(),
+        "direction": measured["direction"].to_numpy(),
+        "sliding_measured_cm": observed.sliding_m * 100, "sliding_predicted_cm": predicted.sliding_m * 100,
+        "sliding_log_ratio": np.where(np.isfinite(observed.sliding_m),
+                                      sliding_log_ratio(predicted.sliding_m, observed.sliding_m), np.nan),
+        "theta_measured": observed.theta_max_over_alpha, "theta_predicted": predicted.theta_max_over_alpha,
+        "theta_difference": theta_difference(predicted.theta_max_over_alpha, observed.theta_max_over_alpha),
+        "overturned_measured": over, "overturned_predicted": predicted.overturned,
+        "mode_predicted": predicted.mode, "loss": test_losses(predicted, observed)})
+    return table[RESIDUAL_COLUMNS]
+
+
+def diagnosis_table(inventory, cases, declared: Predicted) -> pd.DataFrame:
+    """Per test, what explains a residual: IM = PTA/(μg) − 1, ωp/p, μ, b/h and the declared model's mode."""
+    from assess.calibration.effects import item_block
+
+    first = inventory.hazard.drop_duplicates("motion").set_index("motion")
+    rows = []
+    for case, mode in zip(cases, declared.mode):
+        block = item_block(case.item, case.half_width_m)
+        tp = float(first.loc[case.motion, "tp_s"]) if case.motion in first.index else np.nan
+        pta = case.record.pta_g
+        rows.append({"specimen": case.specimen, "motion": case.motion, "direction": case.direction,
+                     "pta_g": pta, "tp_s": tp, "mu": block.mu, "b_over_h": block.b_over_h,
+                     "im": pta / block.mu - 1.0 if block.mu > 0 else np.inf,
+                     "omega_p_over_p": 2 * np.pi / tp / block.p_rad_s if np.isfinite(tp) and tp > 0 else np.nan,
+                     "mode": mode})
+    return pd.DataFrame(rows, columns=DIAGNOSIS_COLUMNS)

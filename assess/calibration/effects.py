@@ -1,0 +1,222 @@
+"""The effects a calibration may switch on: each a real change of the engine's model.
+
+Every effect changes one physical ingredient of the block model of
+:mod:`assess.mechanics.block` with one or two parameters, each with bounds and
+a neutral value (the value at which the effect changes nothing, or the closest
+the effect comes to that; None for ``restitution``, whose neutral is Housner's
+e, different for every item). :data:`EFFECTS` lists them by name (SPEC §5):
+
+``none``
+    The model as the workbook declares it.
+``friction_scale``
+    μ and μ_s both × k. Konstantinidis & Makris [1] (section 5, Table 3)
+    found the best-fit μ of shake-table tests (0.13/0.17/0.20) well below the
+    slow-pull μ (0.23/0.28/0.31): k ≈ 0.6.
+``static_friction``
+    μ_s = r·μ, r ≥ 1 (sticking needs more than sliding). r = 1 is neutral
+    for the usual workbook that declares no μ_s.
+``restitution``
+    The angular-velocity ratio e at a rocking impact, in [0, 1], instead of
+    Housner's value (:attr:`Block.restitution`). Acts on rocking items only.
+``input_scale``
+    The floor motion × s (the table played a different amplitude from the
+    one it was asked for).
+``velocity_friction``
+    μ falls with slip velocity from μ_max = μ (the slow-pull value the
+    workbook declares) to μ_min = f·μ, at rate ``rate_s_m``
+    (:func:`assess.mechanics.interface.velocity_friction_response`). That
+    kernel is a sliding-only solver, so it is used for items that cannot
+    uplift (μ_s < b/h, :func:`assess.mechanics.engine.pure_sliding_proved`);
+    items that can uplift keep the engine's normal model under this effect.
+``interface_elasticity``
+    A compliant (elastic–perfectly-plastic) interface of yield displacement
+    u_y before slip (:func:`assess.mechanics.interface.elastic_interface_response`),
+    with the same restriction to items that cannot uplift.
+``foot_inset``
+    The item stands on feet inset by a fraction d of its half-width, so it
+    rocks about corners at b(1 − d). Implemented by a block of half-width
+    b(1 − d); this also lowers its moment of inertia a little (the
+    approximation: the mass outside the feet is not kept).
+
+The two interface effects need :mod:`assess.mechanics.interface`; when it is
+not installed, :func:`available_effects` leaves them out.
+
+Which base direction a test shook comes with the test (see
+:mod:`assess.calibration.measured`); the effects take the half-width of that
+direction.
+
+References
+----------
+.. [1] Konstantinidis, D., Makris, N. (2010). Experimental and analytical
+   studies on the response of freestanding laboratory equipment to earthquake
+   shaking. Earthquake Eng. Struct. Dyn. 39(10):1097-1118 (section 5, Table 3).
+"""
+from __future__ import annotations
+
+import importlib
+from dataclasses import dataclass
+from typing import Callable, Mapping, NamedTuple
+
+import numpy as np
+
+from assess.hazard.records import Record
+from assess.mechanics.block import Block
+from assess.mechanics.engine import DEFAULT_TAIL_S, pure_sliding_proved, simulate, with_tail
+
+INTERFACE_MODULE = "assess.mechanics.interface"
+
+
+class Prediction(NamedTuple):
+    """The peaks a model predicts for one test."""
+
+    sliding_max_m: float
+    theta_max_over_alpha: float
+    overturned: bool
+    mode: str
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """One parameter of an effect: bounds, neutral value and whether it is searched on a log scale."""
+
+    name: str
+    lower: float
+    upper: float
+    neutral: float | None
+    unit: str = "-"
+    log: bool = False
+
+    def grid(self, count: int) -> np.ndarray:
+        """``count`` values from lower to upper (geometric when ``log``), and the neutral value."""
+        values = (np.geomspace if self.log else np.linspace)(self.lower, self.upper, count)
+        return np.unique(values if self.neutral is None else np.append(values, self.neutral))
+
+
+@dataclass(frozen=True)
+class Effect:
+    """A change of the model: ``predict(item, half_width_m, motion, parameters) -> Prediction``."""
+
+    name: str
+    description: str
+    parameters: tuple[Parameter, ...]
+    predict: Callable[[Mapping, float, Record, Mapping[str, float]], Prediction]
+    requires: str | None = None
+
+    @property
+    def neutral(self) -> dict[str, float]:
+        return {p.name: p.neutral for p in self.parameters}
+
+    def available(self) -> bool:
+        """Whether the module the effect needs is installed."""
+        if self.requires is None:
+            return True
+        try:
+            importlib.import_module(self.requires)
+        except ImportError:
+            return False
+        return True
+
+
+def half_width_of(item: Mapping, direction: int) -> float:
+    """b [m] of ``item`` when shaken in ``direction`` (1: along the width, 2: along the depth)."""
+    return float(item["width_m"] if int(direction) == 1 else item["depth_m"]) / 2.0
+
+
+def item_block(item: Mapping, half_width_m: float, **changes) -> Block:
+    """The block of ``item`` (an equipment row) of half-width b; ``changes`` override its fields.
+
+    μ_s is raised to μ where a change would leave it below.
+    """
+    values = dict(half_width_m=half_width_m, cg_height_m=float(item["cg_height_m"]),
+                  height_m=float(item["height_m"]), mu=float(item["mu"]),
+                  mu_static=float(item.get("mu_static", item["mu"])))
+    values.update(changes)
+    values["mu_static"] = max(values["mu_static"], values["mu"])
+    return Block(**values)
+
+
+def _engine(block: Block, motion: Record) -> Prediction:
+    response = simulate(block, motion.accel_g, motion.dt_s)
+    return Prediction(float(response.sliding_max_m), float(response.theta_max_over_alpha),
+                      bool(response.overturned), response.mode)
+
+
+def _none(item, half_width_m, motion, parameters):
+    return _engine(item_block(item, half_width_m), motion)
+
+
+def _friction_scale(item, half_width_m, motion, parameters):
+    k = parameters["k"]
+    return _engine(item_block(item, half_width_m, mu=k * float(item["mu"]),
+                          mu_static=k * float(item.get("mu_static", item["mu"]))), motion)
+
+
+def _static_friction(item, half_width_m, motion, parameters):
+    return _engine(item_block(item, half_width_m, mu_static=parameters["r"] * float(item["mu"])), motion)
+
+
+def _restitution(item, half_width_m, motion, parameters):
+    return _engine(item_block(item, half_width_m, restitution=parameters["e"]), motion)
+
+
+def _input_scale(item, half_width_m, motion, parameters):
+    return _engine(item_block(item, half_width_m), motion.scaled(parameters["s"]))
+
+
+def _foot_inset(item, half_width_m, motion, parameters):
+    return _engine(item_block(item, half_width_m * (1.0 - parameters["d"])), motion)
+
+
+def _sliding_only(item, half_width_m, motion, run) -> Prediction:
+    """``run(accel_g, dt_s)`` for an item that cannot uplift; the engine's normal model otherwise."""
+    block = item_block(item, half_width_m)
+    if not pure_sliding_proved(block.mu_static, block.b_over_h):
+        return _engine(block, motion)
+    result = run(with_tail(motion.accel_g, motion.dt_s, DEFAULT_TAIL_S), motion.dt_s, block)
+    sliding = float(result.sliding_max_m)
+    return Prediction(sliding, 0.0, False, "slide" if sliding > 0.0 else "rest")
+
+
+def _velocity_friction(item, half_width_m, motion, parameters):
+    from assess.mechanics.interface import velocity_friction_response
+
+    def run(accel, dt, block):
+        return velocity_friction_response(accel, dt, mu_min=parameters["f"] * block.mu, mu_max=block.mu,
+                                          rate_s_m=parameters["rate_s_m"], mu_static=block.mu_static)
+    return _sliding_only(item, half_width_m, motion, run)
+
+
+def _interface_elasticity(item, half_width_m, motion, parameters):
+    from assess.mechanics.interface import elastic_interface_response
+
+    def run(accel, dt, block):
+        return elastic_interface_response(accel, dt, mu=block.mu,
+                                          yield_displacement_m=parameters["yield_displacement_m"])
+    return _sliding_only(item, half_width_m, motion, run)
+
+
+#: Every effect, by name, in the order the report lists them.
+EFFECTS: dict[str, Effect] = {e.name: e for e in [
+    Effect("none", "the model as declared", (), _none),
+    Effect("friction_scale", "μ and μ_s × k", (Parameter("k", 0.3, 1.5, 1.0),), _friction_scale),
+    Effect("static_friction", "μ_s = r·μ", (Parameter("r", 1.0, 3.0, 1.0),), _static_friction),
+    Effect("restitution", "rocking impact restitution e (instead of Housner's)",
+           (Parameter("e", 0.0, 1.0, None),), _restitution),
+    Effect("input_scale", "floor motion × s", (Parameter("s", 0.5, 2.0, 1.0, log=True),), _input_scale),
+    Effect("velocity_friction", "μ falls with slip velocity from μ to f·μ",
+           (Parameter("f", 0.3, 1.0, 1.0), Parameter("rate_s_m", 1.0, 100.0, 10.0, unit="s/m", log=True)),
+           _velocity_friction, requires=INTERFACE_MODULE),
+    Effect("interface_elasticity", "elastic interface of yield displacement u_y before slip",
+           (Parameter("yield_displacement_m", 0.0005, 0.05, 0.0005, unit="m", log=True),),
+           _interface_elasticity, requires=INTERFACE_MODULE),
+    Effect("foot_inset", "rocks about feet inset by d·b", (Parameter("d", 0.0, 0.6, 0.0),), _foot_inset),
+]}
+
+
+def available_effects(names=None) -> list[Effect]:
+    """The effects (all, or those named) whose solvers are installed, ``none`` first."""
+    chosen = list(EFFECTS) if names is None else ["none"] + [n for n in names if n != "none"]
+    unknown = [n for n in chosen if n not in EFFECTS]
+    if unknown:
+        raise ValueError(f"unknown effects {unknown}; known: {list(EFFECTS)}")
+    return [EFFECTS[n] for n in chosen if EFFECTS[n].available()]
