@@ -26,7 +26,17 @@ item under the motions of hazard level LEVEL, and writes summary.csv,
 motions.csv, report.html and report.pdf into --out.
 
 Other commands:
-  assess simulate ...   one item under one record or pulse (assess simulate --help)"""
+  assess simulate ...   one item under one record or pulse (assess simulate --help)
+  assess calibrate ...  find what the model lacks from measured tests (assess calibrate --help)"""
+
+CALIBRATE_DESCRIPTION = """\
+Simulate every measured test (MEASURED.xlsx, sheet tests: specimen, motion and
+any of sliding_cm, theta_max_over_alpha, overturned) with the model WORKBOOK
+declares, then with each effect the model may lack (friction_scale,
+interface_elasticity, static_friction, velocity_friction, foot_inset,
+restitution, input_scale), fitted to the tests; select the effect that
+predicts held-out tests best, or none when no effect earns its parameters.
+Writes calibration.json, calibration_tests.csv and report.html/.pdf into --out."""
 
 SIMULATE_DESCRIPTION = """\
 Simulate one freestanding item, a rigid block, under one floor motion in one
@@ -155,11 +165,32 @@ def build_simulate_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def build_calibrate_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="assess calibrate", description=CALIBRATE_DESCRIPTION,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        epilog="Exit codes: 0 done; 2 the input is wrong (each problem is named); 1 internal error.")
+    parser.add_argument("workbook", metavar="WORKBOOK", type=Path, help="the inventory workbook (.xlsx)")
+    parser.add_argument("--measured", metavar="MEASURED.xlsx", type=Path, required=True,
+                        help="the measured tests (sheet tests)")
+    parser.add_argument("--out", metavar="DIR", type=Path,
+                        help="output folder (default: reports/<workbook stem>-calibration/)")
+    parser.add_argument("--format", metavar="FORMATS", type=_formats, default=FORMATS,
+                        help="report formats, comma-separated: html, pdf (default: html,pdf)")
+    parser.add_argument("--quiet", action="store_true", help="do not print progress")
+    return parser
+
+
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
     if argv and argv[0] == "simulate":
         args = build_simulate_parser().parse_args(argv[1:])
         command, say = _simulate, (lambda message: None)
+    elif argv and argv[0] == "calibrate":
+        args = build_calibrate_parser().parse_args(argv[1:])
+        command = _calibrate
+        say = (lambda message: None) if args.quiet else (
+            lambda message: print(f"assess: {message}", file=sys.stderr))
     else:
         args = build_parser().parse_args(argv)  # argparse exits with 2 on a wrong option
         command = _assess
@@ -210,6 +241,42 @@ def _assess(args: argparse.Namespace, say) -> int:
     counts = result.risk_counts()
     say(f"{counts['high']} high, {counts['moderate']} moderate, {counts['low']} low risk, "
         f"{counts['anchored']} anchored")
+    for path in written:
+        print(path)
+    return EXIT_OK
+
+
+def _calibrate(args: argparse.Namespace, say) -> int:
+    import json
+
+    from assess.calibration import read_measured, run_calibration
+    from assess.inventory import read_workbook
+    from assess.output import csv_text, write_atomically
+
+    say(f"reading {args.workbook}")
+    inventory = read_workbook(args.workbook)
+    measured = read_measured(args.measured, inventory)
+    say(f"{len(measured)} measured tests; fitting the effects")
+    result = run_calibration(inventory, measured,
+                             progress=lambda done, total: say(f"fitted {done} of {total} candidate effects"))
+    tests = result.diagnosis.join(result.residuals_before.drop(columns=["specimen", "motion", "direction"])
+                                  .add_suffix("_before")).join(
+        result.residuals_after.drop(columns=["specimen", "motion", "direction"]).add_suffix("_after"))
+    files = {"calibration.json": (json.dumps(result.as_json(), indent=2) + "\n").encode(),
+             "calibration_tests.csv": csv_text(tests).encode()}
+    if args.format:
+        from assess.report import render_pdf
+        from assess.report.calibration import render_calibration_html
+        html = render_calibration_html(result, args.workbook.name, args.measured.name)
+        if "html" in args.format:
+            files["report.html"] = html.encode()
+        if "pdf" in args.format:
+            files["report.pdf"] = render_pdf(html)
+    out_dir = args.out or Path("reports") / f"{args.workbook.stem}-calibration"
+    written = write_atomically(files, out_dir)
+    similar = f"; indistinguishable from {', '.join(result.indistinguishable_from)}" \
+        if result.indistinguishable_from else ""
+    say(f"selected: {result.selected} {result.parameters or ''}{similar}")
     for path in written:
         print(path)
     return EXIT_OK

@@ -280,15 +280,9 @@ def write_sheet(ws, header, rows):
         ws.column_dimensions[get_column_letter(i)].width = min(max(len(h), longest) + 2, 60)
 
 
-def build() -> bytes:
-    wb = Workbook()
-    write_sheet(wb.active, list(EQUIPMENT[0]), EQUIPMENT)
-    wb.active.title = "equipment"
-    write_sheet(wb.create_sheet("hazard"), ["level", "motion", "floor", "pta_g", "tp_s", "vp_cm_s", "pulse",
-                                            "source"], hazard_rows())
-    write_sheet(wb.create_sheet("settings"), ["key", "value"], SETTINGS)
-    write_sheet(wb.create_sheet("sources"), ["subject", "source"], SOURCES)
-    wb.properties.creator = "inventories/build_lab.py"
+def deterministic_bytes(wb: Workbook, creator: str) -> bytes:
+    """The .xlsx bytes of ``wb`` with fixed document dates and zip timestamps."""
+    wb.properties.creator = creator
     wb.properties.created = wb.properties.modified = FIXED_DATE
     raw = io.BytesIO()
     wb.save(raw)  # openpyxl stamps `modified` and zip times with now(): rewrite both
@@ -302,6 +296,17 @@ def build() -> bytes:
             zout.writestr(zipfile.ZipInfo(info.filename, FIXED_DATE.timetuple()[:6]), data,
                           compress_type=zipfile.ZIP_DEFLATED)
     return out.getvalue()
+
+
+def build() -> bytes:
+    wb = Workbook()
+    write_sheet(wb.active, list(EQUIPMENT[0]), EQUIPMENT)
+    wb.active.title = "equipment"
+    write_sheet(wb.create_sheet("hazard"), ["level", "motion", "floor", "pta_g", "tp_s", "vp_cm_s", "pulse",
+                                            "source"], hazard_rows())
+    write_sheet(wb.create_sheet("settings"), ["key", "value"], SETTINGS)
+    write_sheet(wb.create_sheet("sources"), ["subject", "source"], SOURCES)
+    return deterministic_bytes(wb, "inventories/build_lab.py")
 
 
 if __name__ == "__main__":

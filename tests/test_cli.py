@@ -135,6 +135,9 @@ def test_installed_wheel_finds_its_templates(tmp_path):
     wheel = next(tmp_path.glob("assess-*.whl"))
     names = zipfile.ZipFile(wheel).namelist()
     assert "assess/templates/report.html.j2" in names and "assess/templates/report.css" in names
+    assert "assess/templates/calibration.html.j2" in names
+    packages = {str(p.relative_to(ROOT)) for p in (ROOT / "assess").rglob("__init__.py")}
+    assert packages <= set(names), f"packages missing from the wheel: {sorted(packages - set(names))}"
     unpacked = tmp_path / "site"
     zipfile.ZipFile(wheel).extractall(unpacked)
     probe = ("import assess.report.render as r; from pathlib import Path; "
@@ -193,3 +196,43 @@ def test_rerun_with_new_hazard_writes_a_comparison(tmp_path):
             == comparison.loc[comparison["change"] == "same", "risk_after"]).all()
     html = (out / "report.html").read_text()
     assert "Changes since the previous run" in html and str(down["id"].iloc[0]) in html
+
+
+KM2010 = ROOT / "inventories" / "km2010-prototypes.xlsx"
+KM2010_MEASURED = ROOT / "inventories" / "km2010-measured.xlsx"
+
+
+def test_calibrate_the_papers_loop_writes_spec_json(tmp_path):
+    """The shipped example (slow-pull mu against Table 3's sliding): calibration.json has SPEC §5's keys,
+    27 tests, every effect tried, a selection the file explains, and a report."""
+    import json
+
+    done = run("calibrate", KM2010, "--measured", KM2010_MEASURED, "--out", tmp_path / "cal", "--format", "html",
+               cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    result = json.loads((tmp_path / "cal" / "calibration.json").read_text())
+    assert {"error_before", "error_after", "selected", "candidates", "indistinguishable_from"} <= set(result)
+    assert {"sliding_rms_log", "overturn_misclassified", "theta_rms"} <= set(result["error_before"])
+    names = {c["effect"] for c in result["candidates"]}
+    assert names == {"none", "friction_scale", "interface_elasticity", "static_friction", "velocity_friction",
+                     "foot_inset", "restitution", "input_scale"}
+    assert result["error_before"]["tests_sliding"] == 27
+    assert result["selected"]["effect"] in names
+    assert result["error_after"]["objective"] <= result["error_before"]["objective"] + 1e-12
+    tests = pd.read_csv(tmp_path / "cal" / "calibration_tests.csv")
+    assert len(tests) == 27 and {"im", "omega_p_over_p", "sliding_log_ratio_before"} <= set(tests.columns)
+    assert "Calibration against measured tests" in (tmp_path / "cal" / "report.html").read_text()
+
+
+def test_calibrate_refuses_a_test_of_an_unknown_specimen(tmp_path):
+    from openpyxl import Workbook
+
+    measured = tmp_path / "measured.xlsx"
+    book = Workbook()
+    book.active.title = "tests"
+    book.active.append(["specimen", "motion", "sliding_cm"])
+    book.active.append(["FROMA", "Corralitos, ground, run 1 (0.84 g)", 20.0])
+    book.save(measured)
+    done = run("calibrate", KM2010, "--measured", measured, "--out", tmp_path / "cal", cwd=tmp_path)
+    assert done.returncode == 2 and "Traceback" not in done.stderr
+    assert "FROMA" in done.stderr and "cell A2" in done.stderr and not (tmp_path / "cal").exists()

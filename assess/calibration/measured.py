@@ -32,6 +32,8 @@ OPTIONAL = ("direction",)
 #: Pulse simulated for a motion given by PTA and Tp without a pulse type (as the assessment does).
 DEFAULT_PULSE = "B"
 #: Columns of the table :func:`read_measured` returns (SI).
+#: Free-text columns, ignored (the same as the workbook's).
+FREE_TEXT = ("notes", "note", "source", "comment")
 COLUMNS = ["specimen", "motion", "direction", "sliding_m", "theta_max_over_alpha", "overturned", "row"]
 
 _YES = {"yes", "y", "true", "1"}
@@ -95,13 +97,16 @@ def measured_from_rows(rows, inventory, *, file="MEASURED.xlsx") -> pd.DataFrame
         if _blank(value):
             continue
         text = str(value).strip().lower()
+        if text in FREE_TEXT:  # as in the workbook: free text, ignored
+            continue
         if text in header:
             report(f"the column '{text}' appears twice.", "keep one of them.", row=1,
                    cell=f"{get_column_letter(k + 1)}1")
         elif text not in REQUIRED + MEASURES + OPTIONAL:
             close = difflib.get_close_matches(text, REQUIRED + MEASURES + OPTIONAL, n=1)
             report(f"unknown column '{value}'.", f"rename it to '{close[0]}'." if close else
-                   f"use only {', '.join(REQUIRED + MEASURES + OPTIONAL)}.", row=1,
+                   f"use only {', '.join(REQUIRED + MEASURES + OPTIONAL)} (and free-text "
+                   f"{', '.join(FREE_TEXT)}).", row=1,
                    cell=f"{get_column_letter(k + 1)}1")
         else:
             header[text] = k

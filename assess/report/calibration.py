@@ -1,0 +1,81 @@
+"""The calibration report (``assess calibrate``): residuals before and after, the chosen effect, the evidence.
+
+Renders a :class:`~assess.calibration.CalibrationResult` with
+``templates/calibration.html.j2`` (same stylesheet, same rules as the risk
+report: autoescaped, figures as data: URIs, no dates).
+"""
+from __future__ import annotations
+
+import math
+
+import matplotlib
+import numpy as np
+
+import assess
+from assess.report import figures
+from assess.report.render import STYLESHEET_NAME, _data_uri, format_significant, make_environment, template_text
+
+from markupsafe import Markup
+
+TEMPLATE_NAME = "calibration.html.j2"
+#: Explanatory quantities plotted against the residuals (diagnosis table column, axis label, log axis).
+EXPLANATORY = (("im", "IM = PTA/(μg) − 1", False), ("omega_p_over_p", "ωp/p", True),
+               ("mu", "μ declared", False), ("b_over_h", "b/h", False))
+
+
+def residual_figure(result) -> str:
+    """ln(predicted/measured) peak sliding against each explanatory quantity, before and after."""
+    before, after, diagnosis = result.residuals_before, result.residuals_after, result.diagnosis
+    with matplotlib.rc_context(figures._RC):
+        figure = figures._new_figure(4.6)
+        axes = figure.subplots(2, 2).ravel()
+        for ax, (column, label, log) in zip(axes, EXPLANATORY):
+            x = diagnosis[column].to_numpy(dtype=float)
+            ax.axhline(0.0, color="black", linewidth=0.7)
+            ax.scatter(x, before["sliding_log_ratio"], s=14, facecolors="none", edgecolors="#c0392b",
+                       linewidths=0.8, label="declared model")
+            ax.scatter(x, after["sliding_log_ratio"], s=10, color="#1f4e79", label=f"with {result.selected}")
+            if log and np.all(x[np.isfinite(x)] > 0):
+                ax.set_xscale("log")
+            ax.set_xlabel(label)
+            ax.set_ylabel("ln(predicted / measured)")
+        axes[0].legend(loc="best", frameon=False)
+        return figures._to_svg(figure)
+
+
+def _number(value) -> str:
+    if value is None:
+        return "–"
+    if isinstance(value, (int, np.integer)) and not isinstance(value, bool):
+        return str(int(value))
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        return str(value)
+    if not math.isfinite(number):
+        return "–"
+    return str(int(number)) if number.is_integer() and abs(number) >= 1 else format_significant(number, 3)
+
+
+def calibration_context(result, workbook: str, measured_file: str) -> dict:
+    errors = [{"name": name, "before": _number(result.error_before.get(name)),
+               "after": _number(result.error_after.get(name))} for name in result.error_before]
+    candidates = [{"effect": f.effect.name, "description": f.effect.description,
+                   "parameters": ", ".join(f"{k} = {_number(v)}" for k, v in f.parameters.items()) or "–",
+                   "score": _number(f.score), "sliding": _number(f.error.get("sliding_rms_log")),
+                   "overturn": _number(f.error.get("overturn_misclassified")),
+                   "selected": f.effect.name == result.selected}
+                  for f in sorted(result.fits, key=lambda f: f.score)]
+    return {"version": assess.__version__, "workbook": workbook, "measured": measured_file,
+            "tests": len(result.residuals_before), "selected": result.selected,
+            "parameters": ", ".join(f"{k} = {_number(v)}" for k, v in result.parameters.items()) or "none",
+            "indistinguishable": list(result.indistinguishable_from), "margin": result.margin,
+            "errors": errors, "candidates": candidates, "notes": list(result.notes),
+            "figure": _data_uri(residual_figure(result)),
+            "stylesheet": Markup(template_text(STYLESHEET_NAME))}
+
+
+def render_calibration_html(result, workbook: str, measured_file: str) -> str:
+    """The calibration report of ``result`` as one self-contained HTML document."""
+    template = make_environment().get_template(TEMPLATE_NAME)
+    return template.render(calibration_context(result, workbook, measured_file))
