@@ -122,7 +122,10 @@ def test_json_structure_and_tables(lab):
     result = run_calibration(lab.inventory, measured_with(lab, "friction_scale", {"k": 0.65}, 3),
                              effects=["friction_scale", "input_scale"], cache=lab.cache)
     out = result.as_json()
-    assert list(out) == ["error_before", "error_after", "selected", "indistinguishable_from", "candidates"]
+    assert list(out) == ["error_before", "error_after", "residual_correlation_before", "selected",
+                         "indistinguishable_from", "candidates"]
+    assert set(out["residual_correlation_before"]) == {"im", "omega_p_over_p", "pgv_m_s", "mu", "b_over_h",
+                                                       "pressure_kpa"}
     assert set(out["selected"]) == {"effect", "parameters"} and out["selected"]["effect"] == "friction_scale"
     assert [c["effect"] for c in out["candidates"]] == ["none", "friction_scale", "input_scale"]
     for candidate in out["candidates"]:
@@ -230,3 +233,19 @@ def test_read_measured_sheet_problems(tmp_path, rows, sheet, phrase):
 def test_read_measured_missing_file(tmp_path):
     with pytest.raises(InputError, match="does not exist"):
         read_measured(tmp_path / "MEASURED.xlsx", make_inventory())
+
+
+def test_residual_correlation_points_to_the_quantity_the_residual_follows():
+    """Residuals made to grow with bearing pressure (as pressure-dependent friction would) are
+    reported as correlated with pressure and not with b/h (independent here)."""
+    from assess.calibration import residual_correlations
+
+    rng = np.random.default_rng(3)
+    pressure = rng.uniform(2.0, 12.0, 20)
+    diagnosis = pd.DataFrame({"im": rng.uniform(1, 5, 20), "omega_p_over_p": rng.uniform(0.5, 4, 20),
+                              "pgv_m_s": rng.uniform(0.2, 1, 20), "mu": rng.uniform(0.1, 0.3, 20),
+                              "b_over_h": rng.uniform(0.2, 0.5, 20), "pressure_kpa": pressure})
+    residuals = pd.DataFrame({"sliding_log_ratio": 0.1 * pressure + rng.normal(0, 0.05, 20)})
+    rho = residual_correlations(residuals, diagnosis)
+    assert rho["pressure_kpa"] > 0.9
+    assert abs(rho["b_over_h"]) < 0.6

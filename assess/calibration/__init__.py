@@ -15,6 +15,9 @@ from typing import Callable, Optional
 import numpy as np
 import pandas as pd
 
+from assess.hazard.processing import peak_velocity_m_s
+from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
+
 from assess.calibration.effects import EFFECTS, available_effects, half_width_of
 from assess.calibration.fit import (MARGIN, Case, EffectFit, Measured, Predicted, fit_effect,
                                     select_effect, sliding_log_ratio, test_losses, theta_difference)
@@ -27,8 +30,10 @@ RESIDUAL_COLUMNS = ["specimen", "motion", "direction", "sliding_measured_cm", "s
                     "sliding_log_ratio", "theta_measured", "theta_predicted", "theta_difference",
                     "overturned_measured", "overturned_predicted", "mode_predicted", "loss"]
 #: Columns of the diagnosis table.
-DIAGNOSIS_COLUMNS = ["specimen", "motion", "direction", "pta_g", "tp_s", "mu", "b_over_h", "im",
-                     "omega_p_over_p", "mode"]
+DIAGNOSIS_COLUMNS = ["specimen", "motion", "direction", "pta_g", "tp_s", "pgv_m_s", "mu", "b_over_h",
+                     "pressure_kpa", "im", "omega_p_over_p", "mode"]
+#: Explanatory quantities whose rank correlation with the residuals is reported.
+EXPLANATORY_QUANTITIES = ("im", "omega_p_over_p", "pgv_m_s", "mu", "b_over_h", "pressure_kpa")
 
 
 @dataclass
@@ -74,7 +79,9 @@ class CalibrationResult:
 
     def as_json(self) -> dict:
         """The content of ``calibration.json`` (SPEC §5)."""
+        correlations = residual_correlations(self.residuals_before, self.diagnosis)
         return {"error_before": dict(self.error_before), "error_after": dict(self.error_after),
+                "residual_correlation_before": {k: (None if np.isnan(v) else v) for k, v in correlations.items()},
                 "selected": {"effect": self.selected, "parameters": dict(self.parameters)},
                 "indistinguishable_from": list(self.indistinguishable_from),
                 "candidates": [{"effect": f.effect.name, "parameters": dict(f.parameters), "error": dict(f.error),
@@ -156,8 +163,30 @@ def residual_table(measured: pd.DataFrame, predicted: Predicted, observed: Measu
     return table[RESIDUAL_COLUMNS]
 
 
+def residual_correlations(residuals: pd.DataFrame, diagnosis: pd.DataFrame) -> dict:
+    """Spearman rank correlation of ln(predicted/measured) sliding with each explanatory quantity.
+
+    A residual that follows one quantity points to the effect the model lacks
+    (pressure-dependent friction: pressure, μ, IM; elastic legs: ωp/p).
+    NaN where fewer than 4 tests have both numbers or the quantity does not vary.
+    """
+    from scipy import stats
+
+    out = {}
+    for name in EXPLANATORY_QUANTITIES:
+        x = pd.to_numeric(diagnosis[name], errors="coerce").to_numpy(dtype=float)
+        y = pd.to_numeric(residuals["sliding_log_ratio"], errors="coerce").to_numpy(dtype=float)
+        ok = np.isfinite(x) & np.isfinite(y)
+        if ok.sum() < 4 or np.ptp(x[ok]) == 0 or np.ptp(y[ok]) == 0:
+            out[name] = float("nan")
+        else:
+            out[name] = float(stats.spearmanr(x[ok], y[ok]).statistic)
+    return out
+
+
 def diagnosis_table(inventory, cases, declared: Predicted) -> pd.DataFrame:
-    """Per test, what explains a residual: IM = PTA/(μg) − 1, ωp/p, μ, b/h and the declared model's mode."""
+    """Per test, what explains a residual: IM = PTA/(μg) − 1, ωp/p, PGV, μ, b/h, bearing
+    pressure mg/(width·depth) and the declared model's mode."""
     from assess.calibration.effects import item_block
 
     first = inventory.hazard.drop_duplicates("motion").set_index("motion")
@@ -166,8 +195,12 @@ def diagnosis_table(inventory, cases, declared: Predicted) -> pd.DataFrame:
         block = item_block(case.item, case.half_width_m)
         tp = float(first.loc[case.motion, "tp_s"]) if case.motion in first.index else np.nan
         pta = case.record.pta_g
+        area_m2 = float(case.item["width_m"]) * float(case.item["depth_m"])
+        pressure_kpa = float(case.item["mass_kg"]) * STANDARD_GRAVITY_M_S2 / area_m2 / 1000.0 \
+            if "mass_kg" in case.item and area_m2 > 0 else np.nan
         rows.append({"specimen": case.specimen, "motion": case.motion, "direction": case.direction,
-                     "pta_g": pta, "tp_s": tp, "mu": block.mu, "b_over_h": block.b_over_h,
+                     "pta_g": pta, "tp_s": tp, "pgv_m_s": peak_velocity_m_s(case.record.accel_g, case.record.dt_s),
+                     "mu": block.mu, "b_over_h": block.b_over_h, "pressure_kpa": pressure_kpa,
                      "im": pta / block.mu - 1.0 if block.mu > 0 else np.inf,
                      "omega_p_over_p": 2 * np.pi / tp / block.p_rad_s if np.isfinite(tp) and tp > 0 else np.nan,
                      "mode": mode})

@@ -66,7 +66,14 @@ def calibration_context(result, workbook: str, measured_file: str) -> dict:
                    "overturn": _number(f.error.get("overturn_misclassified")),
                    "selected": f.effect.name == result.selected}
                   for f in sorted(result.fits, key=lambda f: f.score)]
+    from assess.calibration import residual_correlations
+    labels = {"im": "IM", "omega_p_over_p": "ωp/p", "pgv_m_s": "PGV", "mu": "μ declared", "b_over_h": "b/h",
+              "pressure_kpa": "bearing pressure"}
+    correlations = [{"name": labels.get(k, k), "before": _number(v),
+                     "after": _number(residual_correlations(result.residuals_after, result.diagnosis)[k])}
+                    for k, v in residual_correlations(result.residuals_before, result.diagnosis).items()]
     return {"version": assess.__version__, "workbook": workbook, "measured": measured_file,
+            "correlations": correlations,
             "tests": len(result.residuals_before), "selected": result.selected,
             "parameters": ", ".join(f"{k} = {_number(v)}" for k, v in result.parameters.items()) or "none",
             "indistinguishable": list(result.indistinguishable_from), "margin": result.margin,
