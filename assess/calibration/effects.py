@@ -203,7 +203,7 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in [
     Effect("restitution", "rocking impact restitution e (instead of Housner's)",
            (Parameter("e", 0.0, 1.0, None),), _restitution),
     Effect("input_scale", "floor motion × s", (Parameter("s", 0.5, 2.0, 1.0, log=True),), _input_scale),
-    Effect("velocity_friction", "μ falls with slip velocity from μ to f·μ",
+    Effect("velocity_friction", "kinetic μ rises with slip velocity from f·μ (slow) to μ (fast); breakaway at μ_s",
            (Parameter("f", 0.3, 1.0, 1.0), Parameter("rate_s_m", 1.0, 100.0, 10.0, unit="s/m", log=True)),
            _velocity_friction, requires=INTERFACE_MODULE),
     Effect("interface_elasticity", "elastic interface of yield displacement u_y before slip",
