@@ -124,6 +124,18 @@ def main() -> None:
               f"({steps / plain_seconds / 1e6:.2f} M block-steps/s, kernel/plain time {seconds / plain_seconds:.2f}; "
               f"plain-loop peaks differ from the kernel's by a median "
               f"{np.median(np.abs(plain - peaks.theta_max_over_alpha)):.3f} alpha)")
+    try:
+        import pyslammer
+        motions = [m for _, m in sorted(pyslammer.sample_ground_motions().items())]
+        start = time.perf_counter()
+        for motion in motions:
+            pyslammer.RigidAnalysis(0.2, motion).max_sliding_disp
+        per_py = (time.perf_counter() - start) / len(motions)
+        print(f"pyslammer RigidAnalysis (one-way sliding, a different problem, for scale): "
+              f"{per_py * 1e3:.2f} ms/analysis; rocking kernel with {n} blocks: "
+              f"{seconds / (n * len(records)) * 1e3:.3f} ms/analysis ({per_py / (seconds / (n * len(records))):.0f}x)")
+    except ImportError:
+        pass
     rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
     print(f"process peak RSS {rss:.0f} MiB")
 
