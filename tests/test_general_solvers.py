@@ -73,18 +73,19 @@ def test_the_grid_reaches_slide_rock_survival_and_overturning():
 
 
 def test_solvers_agree_on_a_real_record():
-    """Kobe 1995 Takatori (pyslammer's record), its first 12 s, on slide-rock blocks of 1.8 m."""
+    """Kobe 1995 Takatori (pyslammer's record) x 0.8, its first 12 s, on slide-rock blocks of 1.8 m
+    (one overturns, one survives)."""
     pyslammer = pytest.importorskip("pyslammer")
     motion = pyslammer.sample_ground_motions()["Kobe_1995_TAK-090"]
-    accel, dt = np.asarray(motion.accel, dtype=float)[:1200] * 0.6, float(motion.dt)
+    accel, dt = np.asarray(motion.accel, dtype=float)[:1200] * 0.8, float(motion.dt)
     slid = 0
     for b_over_h in (0.30, 0.40):
-        item = block(b_over_h, 1.1, height_m=1.8)
+        item = block(b_over_h, 1.05, height_m=1.8)
         event = simulate_event_driven(item, accel, dt, tail_s=5.0)
         stepped = simulate_time_stepping(item, accel, dt, tail_s=5.0)
         assert_agree(event, stepped, b_over_h)
         slid += event.mode == "slide-rock"
-    assert slid >= 1
+    assert slid == 2
 
 
 def test_mode_sequences_visit_the_same_modes():

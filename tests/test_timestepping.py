@@ -3,9 +3,10 @@
 Every reference is computed without this solver: closed forms (Newmark's
 rectangle, Housner's restitution), quadrature (free-rocking quarter period),
 the exact sliding kernel, the pure-rocking kernel (RK4 with located impacts),
-Shenton's (1996) initiation criteria and scipy's DOP853 on the slide-rock
-equations of motion. The solver knows none of them: Housner's restitution,
-for instance, must emerge from its inelastic corner impacts.
+Shenton's (1996) initiation criteria, scipy's DOP853 on the slide-rock
+equations of motion and the event-driven general solver. The solver knows none
+of them: Housner's restitution, for instance, must emerge from its inelastic
+corner impacts.
 """
 from __future__ import annotations
 
@@ -18,6 +19,7 @@ from scipy import integrate
 
 from assess.hazard.pulses import pulse_acceleration
 from assess.mechanics.block import Block, BlockResponse
+from assess.mechanics.event_driven import simulate_event_driven
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2 as G, housner_restitution
 from assess.mechanics.modes import initial_mode
 from assess.mechanics.rocking import rocking_response
@@ -82,8 +84,9 @@ def test_newmark_rectangular_pulse_table():
 def test_sliding_records_against_exact_kernel(records, mu, mu_static):
     """All pyslammer records: peak, residual and history of u within 1 % of the exact kernel.
 
-    Found with the default step: worst 5e-4 of the peak (the scheme is second
-    order in pure sliding once stops are located inside the step).
+    Found with the default step: worst 1e-4 of the peak (the scheme is second
+    order in pure sliding once stops are located inside the step, and its
+    position update is exact for a force linear in time).
     """
     block = Block(**SLIDER, mu=mu, mu_static=mu_static)
     worst = 0.0
@@ -105,7 +108,7 @@ def test_static_friction_holds_a_block_that_stops():
 
     The block decelerates at (0.2 + μ)g, stops at t = 1 + 0.4/0.3 s and stays
     (static friction holds 0.2 g): u = ½g·0.4·1² + (0.4g)²/(2·0.3g) = 0.4667 g·1 s².
-    A solver that tested the stop with μ would slide back. Found: 1e-9 relative.
+    A solver that tested the stop with μ would slide back. Found: 5e-14 relative.
     """
     block = Block(**SLIDER, mu=0.1, mu_static=0.25)
     accel = np.concatenate([np.full(1001, -0.5), np.full(3000, 0.2)])
@@ -139,9 +142,9 @@ def test_free_rocking_period_and_emergent_housner_restitution(block):
     Free rocking conserves energy between impacts, so the angular velocity
     just before impact n follows from the peak before it,
     θ̇ = p√(2[cos(α − θ_peak) − cos α]); the ratio of consecutive ones is the
-    restitution. Found (uniform block): quarter period 1.054372 s vs 1.054358 s,
-    e 0.961928 at the first impact vs 0.961927 (within 2e-4 over three impacts;
-    κ = 1.54: 0.89309 vs 0.89307), |u| 2e-6 R.
+    restitution. Found (uniform block): quarter period 1.054367 s vs 1.054358 s,
+    e 0.9619257 at the first impact vs 0.9619266 (within 1e-6 over three impacts;
+    κ = 1.54: 0.893065 vs 0.893069, within 5e-6), |u| 1e-15 R.
     """
     alpha, p = block.alpha_rad, block.p_rad_s
     result = simulate_time_stepping(block, np.zeros(8001), 0.001, initial_theta_rad=alpha / 2, tail_s=0.0,
@@ -162,7 +165,7 @@ def test_free_rocking_period_and_emergent_housner_restitution(block):
 @pytest.mark.parametrize("pulse, omega_over_p, amplitude", [("A", 6, 3.0), ("A", 8, 4.0), ("B", 4, 2.0),
                                                             ("B", 2, 1.4)])
 def test_rocking_pulses_against_rocking_kernel(pulse, omega_over_p, amplitude):
-    """Type-A/B pulses that rock the block without overturning: θmax/α within 1 % (found ≤ 0.2 %)."""
+    """Type-A/B pulses that rock the block without overturning: θmax/α within 1 % (found ≤ 1.2e-5)."""
     accel, dt = pulse_record(pulse, omega_over_p, amplitude)
     reference = rocking_response(accel, dt, ALPHA, P)
     result = simulate_time_stepping(ROCKER, accel, dt)
@@ -172,24 +175,25 @@ def test_rocking_pulses_against_rocking_kernel(pulse, omega_over_p, amplitude):
     assert result.sliding_max_m < 1e-4 * ROCKER.size_m
 
 
-#: Records scaled to PGA 0.3 g whose rocking is a few large cycles. Where the response is a
-#: long train of small rocks (e.g. Duzce, Landers) it is chaotic: both solvers then agree only
-#: to their own discretisation, and the peaks differ by 5-30 % (found; not tested).
-ROCKING_RECORDS = ("Cape_Mendocino_1992_PET-090", "Chi-Chi_1999_TCU068-090", "Kobe_1995_TAK-090",
-                   "Loma_Prieta_1989_HSP-000", "Nisqually_2001_UNR-058", "Northridge_1994_PAC-175")
+#: Records scaled to PGA 0.3 g: all of pyslammer's but one. Mammoth Lakes-1 is ill-conditioned
+#: on this block: the kernel's own θmax/α (0.0785) becomes 0.0755 and 0.0672 when the record is
+#: scaled by 1 ± 1e-6 (found; the solver gives 0.0772). The first version of the solver, which
+#: gained energy on trains of small rocks, was 3-170 % off on seven of the others (Coalinga,
+#: Duzce, Kocaeli, Landers, Mammoth Lakes-2, Morgan Hill, Nahanni).
+ILL_CONDITIONED = ("Mammoth_Lakes-1_1980_CVK-090",)
 
 
 def test_rocking_records_against_rocking_kernel(records):
-    """Same overturning outcome and θmax/α within 2 % (found ≤ 0.24 %), overturning time within 1 %
-    (found 0.2 %), and no sliding unless overturning."""
+    """Same overturning outcome and θmax/α within 1 % (found ≤ 6e-4, Landers; ≤ 4e-5 but for Duzce
+    and Landers), overturning time within 1 % (found 1.5e-4), and no sliding unless overturning."""
     outcomes = set()
-    for name in ROCKING_RECORDS:
+    for name in sorted(set(records) - set(ILL_CONDITIONED)):
         accel, dt = records[name]
         accel = 0.3 * accel / np.abs(accel).max()
         reference = rocking_response(np.concatenate([accel, np.zeros(round(10.0 / dt))]), dt, ALPHA, P)
         result = simulate_time_stepping(ROCKER, accel, dt)
         assert result.overturned == reference.overturned, name
-        assert result.theta_max_over_alpha == pytest.approx(reference.theta_max_over_alpha, rel=0.02), name
+        assert result.theta_max_over_alpha == pytest.approx(reference.theta_max_over_alpha, rel=0.01), name
         if result.overturned:
             assert result.overturn_time_s == pytest.approx(reference.overturn_time_s, rel=0.01), name
         else:
@@ -204,7 +208,7 @@ def test_overturning_type_a_pulse_on_both_sides_of_the_threshold(amplitude, over
     """Type-A pulse, ωp/p = 6: the rocking kernel overturns the block from ap ≈ 3.9 αg.
 
     3 % below and above, both solvers agree on the outcome; θmax/α (below) and
-    the overturning time (above) within 1 % (found 0.004 % and 0.03 %).
+    the overturning time (above) within 1 % (found 0.004 % and 0.07 %).
     """
     accel, dt = pulse_record("A", 6, amplitude, free_s=10.0)
     reference = rocking_response(accel, dt, ALPHA, P)
@@ -252,7 +256,7 @@ def test_slide_rock_against_its_equations_of_motion():
 
     with :math:`r_N = -\\xi\\cos\\theta + h\\sin\\theta`, :math:`r_T = -\\xi\\sin\\theta - h\\cos\\theta`,
     integrated until the pivot's slip stops (v_T = 0). Found: θ and u within
-    2e-4 and 8e-4 of their peaks, stop time within 4e-4.
+    8e-5 and 5e-4 of their peaks, stop time within 4e-4.
     """
     b, h, mu, accel_g = 0.25, 1.0, 0.3, 0.6  # b/h < μ < μ_req(0.6 g) = 0.33: slide-rock
     block = Block(half_width_m=b, cg_height_m=h, height_m=2 * h, mu=mu)
@@ -315,6 +319,73 @@ def test_froude_similitude(records, factor):
     assert [m for _, m in small.mode_sequence] == [m for _, m in full.mode_sequence]
     np.testing.assert_allclose([factor * t for t, _ in small.mode_sequence], [t for t, _ in full.mode_sequence],
                                rtol=1e-6, atol=1e-9)
+
+
+# ------------------------------------------------------------------ 6. trains of small rocks, event-driven solver
+def test_train_of_small_rocks_against_event_driven_solver(records):
+    """Kobe Takatori × 0.6, first 12 s, on a 1.8 m block with b/h = 0.3, μ = 0.33: ~230 small rocks.
+
+    The rocking kernel finds θmax/α = 0.0260 and a pivot friction demand of 0.317 < μ: pure
+    rocking, two trains of small rocks near the uplift threshold, rest between and after. The
+    first version of this solver gained energy at the impacts of such trains (a corner arriving in
+    the second half of a step was carried past the floor and projected back, keeping the energy
+    gained) and overturned the block at 9.2 s; with steps of dt/40 its peak was 4 times too small,
+    and it did not converge as the step shrank. Found now: θmax/α 0.02606 at the default step,
+    0.02601 at dt/40, against the event-driven 0.02600; the same modes, their changes within 15 ms.
+
+    The response is ill-conditioned (found: the event-driven θmax/α is 0.0268 and 0.0252 for the
+    record scaled by 1 ± 1e-7, 0.058 and 0.020 at 1 ± 1e-5, and the block overturns at 1 − 1e-4):
+    agreement to 5 % holds only because both solvers follow the same trajectory through the trains.
+    """
+    accel, dt = records["Kobe_1995_TAK-090"]
+    accel = 0.6 * accel[:1200]
+    block = Block(half_width_m=0.27, cg_height_m=0.9, height_m=1.8, mu=0.33)
+    event = simulate_event_driven(block, accel, dt, tail_s=5.0)
+    assert not event.overturned and event.mode == "rock"
+    assert event.theta_max_over_alpha == pytest.approx(0.0260, abs=2e-4)
+    modes = [mode for _, mode in event.mode_sequence]
+    assert modes == ["rest", "rock", "rest", "rock", "rest", "rock", "rest"]
+    for step_s in (None, dt / 40):
+        result = simulate_time_stepping(block, accel, dt, tail_s=5.0, time_step_s=step_s)
+        assert not result.overturned and result.mode == "rock", step_s
+        assert result.theta_max_over_alpha == pytest.approx(event.theta_max_over_alpha, rel=0.05), step_s
+        assert result.sliding_max_m < 1e-6 * block.size_m, step_s
+        assert [mode for _, mode in result.mode_sequence] == modes, step_s
+        np.testing.assert_allclose([t for t, _ in result.mode_sequence], [t for t, _ in event.mode_sequence],
+                                   atol=0.05, err_msg=str(step_s))
+
+
+#: (record, scale, b/h, μ/(b/h), height [m]): three of the worst disagreements of the first version
+#: with the event-driven solver in a scan of the 18 pyslammer records (first 15 s) x 5 scales
+#: (0.3-1) x 6 uniform blocks (b/h 0.2-0.45, μ = 1.05-1.3 b/h, 1-2.4 m). A disagreement is another
+#: overturning outcome, θmax/α off by more than 5 % and 0.002, or sliding by more than 5 % and
+#: 0.5 mm. The first version disagreed on 42 of the 540 cases, 21 of them well-conditioned (the
+#: event-driven result itself stays within those tolerances when the record is scaled by 1 ± 1e-6
+#: and 1 ± 1e-4); the fixed one on 5, all ill-conditioned. These three are well-conditioned.
+SCAN_CASES = [
+    ("Loma_Prieta_1989_HSP-000", 0.8, 0.25, 1.2, 1.2),   # rock: θmax/α was 0.640 for 0.489
+    ("Landers_1992_LCN-345", 0.6, 0.20, 1.05, 2.4),      # slide-rock, small rocks: 0.126 for 0.068
+    ("Kobe_1995_TAK-090", 0.8, 0.35, 1.05, 2.0),         # overturns: at 9.51 s for 7.41 s, slid 14 for 59 mm
+]
+
+
+@pytest.mark.parametrize("name, scale, b_over_h, mu_ratio, height_m", SCAN_CASES)
+def test_scan_cases_against_event_driven_solver(records, name, scale, b_over_h, mu_ratio, height_m):
+    """Same outcome, θmax/α within 1 % (found ≤ 8e-4), sliding within 3 % or 0.3 mm (found ≤ 1.2e-3),
+    overturning time within 10 ms (found 0.5 ms)."""
+    accel, dt = records[name]
+    accel = scale * accel[:round(15.0 / dt)]
+    block = Block(half_width_m=b_over_h * height_m / 2, cg_height_m=height_m / 2, height_m=height_m,
+                  mu=b_over_h * mu_ratio)
+    event = simulate_event_driven(block, accel, dt, tail_s=5.0)
+    result = simulate_time_stepping(block, accel, dt, tail_s=5.0)
+    assert result.overturned == event.overturned and result.mode == event.mode and result.uplift
+    if event.overturned:
+        assert result.overturn_time_s == pytest.approx(event.overturn_time_s, abs=0.01)
+    else:
+        assert result.theta_max_over_alpha == pytest.approx(event.theta_max_over_alpha, rel=0.01)
+        assert result.sliding_residual_m == pytest.approx(event.sliding_residual_m, rel=0.03, abs=3e-4)
+    assert result.sliding_max_m == pytest.approx(event.sliding_max_m, rel=0.03, abs=3e-4)
 
 
 # ------------------------------------------------------------------ options, batch, API
