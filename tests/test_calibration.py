@@ -126,10 +126,13 @@ def test_json_structure_and_tables(lab):
                          "indistinguishable_from", "candidates"]
     assert set(out["residual_correlation_before"]) == {"im", "omega_p_over_p", "pgv_m_s", "mu", "b_over_h",
                                                        "pressure_kpa"}
-    assert set(out["selected"]) == {"effect", "parameters"} and out["selected"]["effect"] == "friction_scale"
+    assert set(out["selected"]) == {"effect", "parameters", "standard_error"}
+    assert out["selected"]["effect"] == "friction_scale"
+    # the jackknife standard error of k is small against k's offset from 1 (the declared model)
+    assert 0.0 <= out["selected"]["standard_error"]["k"] < 0.1 * abs(out["selected"]["parameters"]["k"] - 1.0)
     assert [c["effect"] for c in out["candidates"]] == ["none", "friction_scale", "input_scale"]
     for candidate in out["candidates"]:
-        assert set(candidate) == {"effect", "parameters", "error", "score"}
+        assert set(candidate) == {"effect", "parameters", "standard_error", "error", "score"}
         assert {"sliding_rms_log", "overturn_misclassified", "theta_rms"} <= set(candidate["error"])
     import json
     json.dumps(out)  # plain JSON types throughout

@@ -82,10 +82,15 @@ class CalibrationResult:
         correlations = residual_correlations(self.residuals_before, self.diagnosis)
         return {"error_before": dict(self.error_before), "error_after": dict(self.error_after),
                 "residual_correlation_before": {k: (None if np.isnan(v) else v) for k, v in correlations.items()},
-                "selected": {"effect": self.selected, "parameters": dict(self.parameters)},
+                "selected": {"effect": self.selected, "parameters": dict(self.parameters),
+                             "standard_error": dict(self._fit(self.selected).standard_error)},
                 "indistinguishable_from": list(self.indistinguishable_from),
-                "candidates": [{"effect": f.effect.name, "parameters": dict(f.parameters), "error": dict(f.error),
+                "candidates": [{"effect": f.effect.name, "parameters": dict(f.parameters),
+                                "standard_error": dict(f.standard_error), "error": dict(f.error),
                                 "score": float(f.score)} for f in self.fits]}
+
+    def _fit(self, name: str):
+        return next(f for f in self.fits if f.effect.name == name)
 
 
 def build_cases(inventory, measured: pd.DataFrame) -> list[Case]:

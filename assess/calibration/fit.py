@@ -213,7 +213,8 @@ class EffectFit:
     ``parameters`` are the refined best fit; ``error`` its error measures on
     all tests; ``score`` the leave-one-out cross-validated objective;
     ``predicted`` the predictions at ``parameters``; ``cv_losses`` each test's
-    held-out loss.
+    held-out loss; ``standard_error`` the jackknife standard error of each
+    parameter (:func:`jackknife_standard_error`).
     """
 
     effect: Effect
@@ -222,6 +223,7 @@ class EffectFit:
     score: float
     predicted: Predicted
     cv_losses: np.ndarray = field(repr=False)
+    standard_error: dict = field(default_factory=dict)
 
 
 def parameter_grid(effect: Effect) -> list[dict]:
@@ -260,10 +262,37 @@ def fit_effect(effect: Effect, cases: Sequence[Case], measured: Measured, cache:
         local = _local_grid(effect, parameters) + [parameters]
         grid += local
         losses += [test_losses(predict_cases(effect, cases, point, cache), measured) for point in local]
-    held, _ = leave_one_out(np.array(losses))
+    held, chosen = leave_one_out(np.array(losses))
     predicted = predict_cases(effect, cases, parameters, cache)
+    error = jackknife_standard_error([grid[k] for k in chosen])
+    if refine and effect.parameters:  # the held-out estimates are grid points: add their quantisation
+        for p, (low, high) in zip(effect.parameters, _cell_bounds(effect, parameters)):
+            count = LOCAL_POINTS_1D if len(effect.parameters) == 1 else LOCAL_POINTS_2D
+            step = (np.exp(high) - np.exp(low) if p.log else high - low) / (count - 1)
+            error[p.name] = float(np.hypot(error[p.name], step / np.sqrt(12.0)))
     return EffectFit(effect, parameters, error_measures(predicted, measured), objective(held, counts),
-                     predicted, held)
+                     predicted, held, error)
+
+
+def jackknife_standard_error(leave_one_out_parameters: Sequence[Mapping[str, float]]) -> dict:
+    """Standard error of each parameter from its leave-one-out estimates (Efron & Stein 1981).
+
+    .. math:: SE = \\sqrt{\\tfrac{n-1}{n}\\sum_i (\\hat\\theta_{(i)} - \\bar\\theta)^2}
+
+    The held-out estimates are the grid points chosen without each test, so
+    :func:`fit_effect` adds the quantisation of the local grid, spacing/√12.
+
+    >>> jackknife_standard_error([{"k": 1.0}, {"k": 1.0}, {"k": 1.3}])
+    {'k': 0.2}
+    """
+    if not leave_one_out_parameters:
+        return {}
+    n = len(leave_one_out_parameters)
+    out = {}
+    for name in leave_one_out_parameters[0]:
+        values = np.array([float(p[name]) for p in leave_one_out_parameters])
+        out[name] = round(float(np.sqrt((n - 1) / n * np.sum((values - values.mean()) ** 2))), 12)
+    return out
 
 
 def _cell_bounds(effect: Effect, point: Mapping[str, float]) -> list[tuple[float, float]]:

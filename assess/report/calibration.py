@@ -20,17 +20,21 @@ from markupsafe import Markup
 TEMPLATE_NAME = "calibration.html.j2"
 #: Explanatory quantities plotted against the residuals (diagnosis table column, axis label, log axis).
 EXPLANATORY = (("im", "IM = PTA/(μg) − 1", False), ("omega_p_over_p", "ωp/p", True),
-               ("mu", "μ declared", False), ("b_over_h", "b/h", False))
+               ("pgv_m_s", "PGV [m/s]", False), ("mu", "μ declared", False), ("b_over_h", "b/h", False),
+               ("pressure_kpa", "bearing pressure [kPa]", False))
 
 
 def residual_figure(result) -> str:
     """ln(predicted/measured) peak sliding against each explanatory quantity, before and after."""
     before, after, diagnosis = result.residuals_before, result.residuals_after, result.diagnosis
     with matplotlib.rc_context(figures._RC):
-        figure = figures._new_figure(4.6)
-        axes = figure.subplots(2, 2).ravel()
+        figure = figures._new_figure(6.4)
+        axes = figure.subplots(3, 2).ravel()
         for ax, (column, label, log) in zip(axes, EXPLANATORY):
             x = diagnosis[column].to_numpy(dtype=float)
+            if not np.isfinite(x).any():
+                ax.set_axis_off()
+                continue
             ax.axhline(0.0, color="black", linewidth=0.7)
             ax.scatter(x, before["sliding_log_ratio"], s=14, facecolors="none", edgecolors="#c0392b",
                        linewidths=0.8, label="declared model")
@@ -57,11 +61,17 @@ def _number(value) -> str:
     return str(int(number)) if number.is_integer() and abs(number) >= 1 else format_significant(number, 3)
 
 
+def _with_errors(parameters: dict, errors: dict) -> str:
+    """'k = 0.651 ± 0.004, …' (± the jackknife standard error), or '' without parameters."""
+    return ", ".join(f"{k} = {_number(v)}" + (f" ± {_number(errors[k])}" if k in errors else "")
+                     for k, v in parameters.items())
+
+
 def calibration_context(result, workbook: str, measured_file: str) -> dict:
     errors = [{"name": name, "before": _number(result.error_before.get(name)),
                "after": _number(result.error_after.get(name))} for name in result.error_before]
     candidates = [{"effect": f.effect.name, "description": f.effect.description,
-                   "parameters": ", ".join(f"{k} = {_number(v)}" for k, v in f.parameters.items()) or "–",
+                   "parameters": _with_errors(f.parameters, f.standard_error) or "–",
                    "score": _number(f.score), "sliding": _number(f.error.get("sliding_rms_log")),
                    "overturn": _number(f.error.get("overturn_misclassified")),
                    "selected": f.effect.name == result.selected}
@@ -75,7 +85,7 @@ def calibration_context(result, workbook: str, measured_file: str) -> dict:
     return {"version": assess.__version__, "workbook": workbook, "measured": measured_file,
             "correlations": correlations,
             "tests": len(result.residuals_before), "selected": result.selected,
-            "parameters": ", ".join(f"{k} = {_number(v)}" for k, v in result.parameters.items()) or "none",
+            "parameters": _with_errors(result.parameters, result._fit(result.selected).standard_error) or "none",
             "indistinguishable": list(result.indistinguishable_from), "margin": result.margin,
             "errors": errors, "candidates": candidates, "notes": list(result.notes),
             "figure": _data_uri(residual_figure(result)),
