@@ -132,3 +132,35 @@ def test_results_do_not_depend_on_the_number_of_threads():
     parallel = simulate_cases(blocks, accel, dts, index)
     for field in ("sliding_max_m", "sliding_residual_m", "theta_max_over_alpha", "overturned", "mode", "solver"):
         assert np.array_equal(getattr(serial, field), getattr(parallel, field)), field
+
+
+def test_feet_inset_rock_about_the_feet_with_the_whole_box_inertia():
+    """A box 2b wide standing on feet inset by d rocks as a block of slenderness atan((b-d)/h)
+    and p = sqrt(m g R / I_O), with R to the foot and I_O = m(4b^2 + H^2)/12 + m R^2 (parallel axes)."""
+    from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2 as g
+
+    b, h, height, inset = 0.3, 0.9, 1.8, 0.06
+    footed = Block(half_width_m=b, cg_height_m=h, height_m=height, mu=0.8, foot_inset_m=inset)
+    radius = np.hypot(b - inset, h)
+    inertia_pivot = (4 * b**2 + height**2) / 12 + radius**2
+    assert footed.alpha_rad == pytest.approx(np.arctan((b - inset) / h), rel=1e-12)
+    assert footed.p_rad_s == pytest.approx(np.sqrt(g * radius / inertia_pivot), rel=1e-12)
+    assert footed.inertia_ratio == pytest.approx(inertia_pivot / radius**2, rel=1e-12)
+    motion = pulse_record("A", 0.35, 0.8)  # above tan(alpha) of the feet (0.267) and of the box (0.333)
+    accel = with_tail(motion.accel_g, motion.dt_s, 4.0)
+    kernel = rocking_response(accel, motion.dt_s, np.arctan((b - inset) / h), np.sqrt(g * radius / inertia_pivot),
+                              inertia_ratio_value=inertia_pivot / radius**2)
+    from assess.mechanics.timestepping import simulate_time_stepping
+    from assess.mechanics.event_driven import simulate_event_driven
+    stepped = simulate_time_stepping(footed, motion.accel_g, motion.dt_s, tail_s=4.0)
+    event = simulate_event_driven(footed, motion.accel_g, motion.dt_s, tail_s=4.0)
+    assert kernel.uplift and not kernel.overturned
+    assert stepped.theta_max_over_alpha == pytest.approx(kernel.theta_max_over_alpha, rel=0.01)
+    assert event.theta_max_over_alpha == pytest.approx(kernel.theta_max_over_alpha, rel=0.005)
+    # the feet make it more slender than the box: it rocks where the box on its edges would not rock as far
+    box = simulate(Block(half_width_m=b, cg_height_m=h, height_m=height, mu=0.8), motion.accel_g, motion.dt_s)
+    assert stepped.theta_max_over_alpha * footed.alpha_rad > box.theta_max_over_alpha * box_alpha(b, h)
+
+
+def box_alpha(b, h):
+    return float(np.arctan(b / h))

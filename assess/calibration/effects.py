@@ -34,9 +34,8 @@ e, different for every item). :data:`EFFECTS` lists them by name (SPEC §5):
     with the same restriction to items that cannot uplift.
 ``foot_inset``
     The item stands on feet inset by a fraction d of its half-width, so it
-    rocks about corners at b(1 − d). Implemented by a block of half-width
-    b(1 − d); this also lowers its moment of inertia a little (the
-    approximation: the mass outside the feet is not kept).
+    rocks about feet at b(1 − d) (``Block.foot_inset_m``): α, R and p are
+    those about a foot, the moment of inertia stays that of the whole box.
 
 The two interface effects need :mod:`assess.mechanics.interface`; when it is
 not installed, :func:`available_effects` leaves them out.
@@ -164,7 +163,7 @@ def _input_scale(item, half_width_m, motion, parameters):
 
 
 def _foot_inset(item, half_width_m, motion, parameters):
-    return _engine(item_block(item, half_width_m * (1.0 - parameters["d"])), motion)
+    return _engine(item_block(item, half_width_m, foot_inset_m=parameters["d"] * half_width_m), motion)
 
 
 def _sliding_only(item, half_width_m, motion, run) -> Prediction:

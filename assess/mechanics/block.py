@@ -96,6 +96,12 @@ class Block:
     restitution : float, optional
         Coefficient of restitution of angular velocity at a rocking impact
         [-], in [0, 1]; defaults to Housner's value for this block.
+    foot_inset_m : float
+        How far the item's feet stand in from the edges of its box [m]
+        (default 0: it stands on its edges). The block then touches the floor
+        at ±(b − inset) (``contact_half_width_m``): α, b/h, R, κ and p are
+        those of rocking about a foot, while the moment of inertia remains
+        that of the whole box.
 
     Examples
     --------
@@ -112,6 +118,7 @@ class Block:
     mu: float
     mu_static: Optional[float] = None
     restitution: Optional[float] = None
+    foot_inset_m: float = 0.0
 
     def __post_init__(self):
         if self.mu_static is None:
@@ -129,6 +136,8 @@ class Block:
             raise ValueError(f"mu_static must be >= mu ({self.mu}), got {self.mu_static!r}")
         if self.restitution is not None and not 0.0 <= self.restitution <= 1.0:
             raise ValueError(f"restitution must lie in [0, 1], got {self.restitution!r}")
+        if not (np.isfinite(self.foot_inset_m) and 0.0 <= self.foot_inset_m < self.half_width_m):
+            raise ValueError(f"foot_inset_m must lie in [0, half_width_m), got {self.foot_inset_m!r}")
 
     @classmethod
     def uniform(cls, alpha_rad, p_rad_s, mu, mu_static=None, restitution=None):
@@ -148,34 +157,44 @@ class Block:
                    height_m=2.0 * cg_height_m, mu=mu, mu_static=mu_static, restitution=restitution)
 
     @property
+    def contact_half_width_m(self) -> float:
+        """b_c = b − foot inset: half the distance between the points it stands on [m]."""
+        return self.half_width_m - self.foot_inset_m
+
+    @property
     def alpha_rad(self) -> float:
-        """Slenderness α = atan(b/h) [rad]."""
-        return float(slenderness(self.half_width_m, self.cg_height_m))
+        """Slenderness α = atan(b_c/h) [rad] (b_c = b without feet)."""
+        return float(slenderness(self.contact_half_width_m, self.cg_height_m))
 
     @property
     def b_over_h(self) -> float:
-        """tan α = b/h [-]."""
-        return self.half_width_m / self.cg_height_m
+        """tan α = b_c/h [-]."""
+        return self.contact_half_width_m / self.cg_height_m
 
     @property
     def size_m(self) -> float:
-        """R, corner to centre of mass [m]."""
-        return float(size(self.half_width_m, self.cg_height_m))
-
-    @property
-    def inertia_ratio(self) -> float:
-        """κ = I_O/(mR²) about a base corner [-] (4/3 for a uniform block)."""
-        return float(inertia_ratio(self.half_width_m, self.cg_height_m, self.height_m))
+        """R, pivot (corner or foot) to centre of mass [m]."""
+        return float(size(self.contact_half_width_m, self.cg_height_m))
 
     @property
     def inertia_cm_over_mass_m2(self) -> float:
-        """I_cm/m = (4b² + H²)/12 [m²]."""
+        """I_cm/m = (4b² + H²)/12 [m²], of the whole box."""
         return (4.0 * self.half_width_m**2 + self.height_m**2) / 12.0
+
+    @property
+    def inertia_ratio(self) -> float:
+        """κ = I_O/(mR²) about the pivot, I_O = I_cm + mR² [-] (4/3 for a uniform block on its edges)."""
+        if self.foot_inset_m == 0.0:
+            return float(inertia_ratio(self.half_width_m, self.cg_height_m, self.height_m))
+        return (self.inertia_cm_over_mass_m2 + self.size_m**2) / self.size_m**2
 
     @property
     def p_rad_s(self) -> float:
         """Frequency parameter p = √(g/(κR)) [rad/s]."""
-        return float(frequency_parameter(self.half_width_m, self.cg_height_m, self.height_m))
+        if self.foot_inset_m == 0.0:
+            return float(frequency_parameter(self.half_width_m, self.cg_height_m, self.height_m))
+        from .geometry import STANDARD_GRAVITY_M_S2
+        return float(np.sqrt(STANDARD_GRAVITY_M_S2 / (self.inertia_ratio * self.size_m)))
 
     @property
     def restitution_effective(self) -> float:
@@ -191,7 +210,8 @@ class Block:
     def scaled(self, length_factor):
         """The same block with every length multiplied by ``length_factor`` (Froude model)."""
         return Block(self.half_width_m * length_factor, self.cg_height_m * length_factor,
-                     self.height_m * length_factor, self.mu, self.mu_static, self.restitution)
+                     self.height_m * length_factor, self.mu, self.mu_static, self.restitution,
+                     self.foot_inset_m * length_factor)
 
 
 def corner_positions(x_m, y_m, theta_rad, half_width_m, cg_height_m):

@@ -138,7 +138,7 @@ class _Params:
 
     @classmethod
     def of(cls, block: Block):
-        return cls(block.half_width_m, block.cg_height_m, block.size_m, block.alpha_rad,
+        return cls(block.contact_half_width_m, block.cg_height_m, block.size_m, block.alpha_rad,
                    block.inertia_cm_over_mass_m2, block.p_rad_s, block.mu, block.mu_static,
                    block.restitution)
 

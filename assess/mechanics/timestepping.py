@@ -729,9 +729,9 @@ def _steps(block, dt_s, time_step_s, tail_s):
 
 
 def _block_constants(block):
-    """(b, h, 1/J, μ, μs, restitution override or −1) of a block."""
+    """(b_c, h, 1/J, μ, μs, restitution override or −1) of a block; b_c is where it stands (feet)."""
     e = -1.0 if block.restitution is None else float(block.restitution)
-    return (block.half_width_m, block.cg_height_m, 1.0 / block.inertia_cm_over_mass_m2, block.mu,
+    return (block.contact_half_width_m, block.cg_height_m, 1.0 / block.inertia_cm_over_mass_m2, block.mu,
             block.mu_static, e)
 
 
