@@ -14,6 +14,7 @@ from assess import __version__
 from assess.errors import InputError, Problem
 
 EXIT_OK, EXIT_INTERNAL, EXIT_INPUT = 0, 1, 2
+EPILOG = "Exit codes: 0 done; 2 the input is wrong (each problem is named); 1 internal error."
 FORMATS = ("html", "pdf")
 
 DESCRIPTION = """\
@@ -92,7 +93,7 @@ def _whole_number(minimum: int):
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="assess", description=DESCRIPTION, formatter_class=argparse.RawDescriptionHelpFormatter,
-        epilog="Exit codes: 0 done; 2 the input is wrong (each problem is named); 1 internal error.")
+        epilog=EPILOG)
     parser.add_argument("workbook", metavar="WORKBOOK", type=Path, help="the inventory workbook (.xlsx)")
     parser.add_argument("--hazard", metavar="LEVEL", required=True,
                         help="hazard level as the workbook names it; 2in50, 2%%/50yr and 2475yr are the same level")
@@ -129,7 +130,7 @@ def build_simulate_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="assess simulate", description=SIMULATE_DESCRIPTION,
         formatter_class=argparse.RawDescriptionHelpFormatter,
-        epilog="Exit codes: 0 done; 2 the input is wrong (each problem is named); 1 internal error.")
+        epilog=EPILOG)
     item = parser.add_argument_group("the item (one base direction)")
     item.add_argument("--height-cm", metavar="H", type=_positive_number, required=True,
                       help="overall height [cm]")
@@ -169,7 +170,7 @@ def build_calibrate_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="assess calibrate", description=CALIBRATE_DESCRIPTION,
         formatter_class=argparse.RawDescriptionHelpFormatter,
-        epilog="Exit codes: 0 done; 2 the input is wrong (each problem is named); 1 internal error.")
+        epilog=EPILOG)
     parser.add_argument("workbook", metavar="WORKBOOK", type=Path, help="the inventory workbook (.xlsx)")
     parser.add_argument("--measured", metavar="MEASURED.xlsx", type=Path, required=True,
                         help="the measured tests (sheet tests)")

@@ -138,10 +138,9 @@ def measured_from_rows(rows, inventory, *, file="MEASURED.xlsx") -> pd.DataFrame
         if _blank(specimen):
             report("no specimen.", f"give the id of an item of {workbook}.", **where("specimen"))
         elif str(specimen).strip() not in known_ids:
-            close = difflib.get_close_matches(str(specimen).strip(), known_ids, n=1)
             report(f"specimen '{specimen}' is not an equipment id of {workbook}.",
-                   f"did you mean '{close[0]}'?" if close else
-                   f"use one of the ids of {workbook}'s equipment sheet, or add the item there.",
+                   _closest(specimen, known_ids,
+                            f"use one of the ids of {workbook}'s equipment sheet, or add the item there."),
                    **where("specimen"))
         elif bool(equipment.loc[str(specimen).strip(), "anchored"]):
             report(f"specimen '{specimen}' is anchored in {workbook}: an anchored item neither slides "
@@ -152,10 +151,9 @@ def measured_from_rows(rows, inventory, *, file="MEASURED.xlsx") -> pd.DataFrame
         if _blank(motion):
             report("no motion.", f"give the name of a motion of {workbook}'s hazard sheet.", **where("motion"))
         elif str(motion).strip() not in known_motions:
-            close = difflib.get_close_matches(str(motion).strip(), known_motions, n=1)
             report(f"motion '{motion}' is not a motion of {workbook}'s hazard sheet.",
-                   f"did you mean '{close[0]}'?" if close else
-                   f"add the motion the table played to {workbook}'s hazard sheet (record or PTA and Tp).",
+                   _closest(motion, known_motions, f"add the motion the table played to {workbook}'s "
+                            "hazard sheet (record or PTA and Tp)."),
                    **where("motion"))
 
         direction = 1
@@ -247,6 +245,12 @@ def test_motion(inventory, motion: str) -> Record:
 
 
 test_motion.__test__ = False  # not a pytest test despite its name
+
+
+def _closest(value, known, otherwise: str) -> str:
+    """'did you mean …?' with the closest of ``known``, or ``otherwise``."""
+    close = difflib.get_close_matches(str(value).strip(), list(known), n=1)
+    return f"did you mean '{close[0]}'?" if close else otherwise
 
 
 def _blank(value) -> bool:

@@ -317,8 +317,9 @@ def identify_pulse(accel_g, dt_s: float, *, models=PULSE_MODELS) -> PulseFit:
 def _velocity_m_s(accel_g, dt_s):
     """Ground velocity [m/s] of an acceleration record [g], baseline-corrected.
 
-    Kept in one place so that it can be replaced by the project's record
-    processing (``processing.velocity_displacement``) when that exists.
+    Not :func:`assess.hazard.processing.velocity_displacement`: its high-pass
+    filter takes about 10 % off a 5 s Type-A pulse, and the fit here carries
+    its own baseline term, so only this light correction is wanted.
 
     1. Remove the mean of the pre-event segment (the samples before |ü| first
        reaches 5 % of the PGA), if it has at least 10 samples: a constant

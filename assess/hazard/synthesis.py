@@ -164,6 +164,7 @@ from assess.hazard.near_fault_pulse import (  # noqa: F401 - part of this module
     mavroeidis_papageorgiou_velocity, modified_mavroeidis_papageorgiou_acceleration,
     modified_mavroeidis_papageorgiou_velocity, pulse_peak_factor,
 )
+from assess.hazard.processing import arias_intensity_m_s
 from assess.hazard.records import Record
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
 
@@ -442,18 +443,6 @@ class SyntheticMotion:
     high_pass_hz: float
 
 
-def arias_intensity_m_s(accel_m_s2, dt_s):
-    """Arias intensity (π/2g)∫a² dt [m/s] of a record in m/s² (trapezoidal rule).
-
-    Examples
-    --------
-    >>> round(float(arias_intensity_m_s(np.full(101, 1.0), 0.01)), 6)  # π/(2g) · 1 s
-    0.160177
-    """
-    a2 = np.asarray(accel_m_s2, dtype=float) ** 2
-    return float(np.pi / (2.0 * STANDARD_GRAVITY_M_S2) * dt_s * (a2.sum() - 0.5 * (a2[0] + a2[-1])))
-
-
 def default_d5_95_s(tp_s, gamma=DEFAULT_PULSE_GAMMA):
     """Default significant duration of the residual [s]: max(10 s, 2γTp).
 
@@ -640,7 +629,7 @@ def simulate_near_fault_motion(pta_g, tp_s, vp_m_s, rng, *, dt_s=0.005, duration
         residual_accel_g=c * residual / STANDARD_GRAVITY_M_S2 * factor,
         pulse_vp_m_s=float(vp_m_s * factor), pulse_gamma=float(pulse_gamma), pulse_nu_rad=nu,
         pulse_t_peak_s=float(t_peak), tp_s=float(tp_s),
-        residual_arias_m_s=arias_intensity_m_s(c * factor * residual, dt_s),
+        residual_arias_m_s=arias_intensity_m_s(c * factor * residual / STANDARD_GRAVITY_M_S2, dt_s),
         residual_d5_95_s=d5_95, residual_t_mid_s=t_mid, high_pass_hz=corner_hz)
 
 

@@ -123,6 +123,14 @@ def _pivot_forces(theta, w, side, accel_g, alpha, kappa):
 
 
 @njit(cache=True)
+def _track_pivot_forces(forces, theta, w, side, accel_g, alpha, kappa):
+    """Update ``forces`` = (max |F|/N, min N/(mg)) with the pivot forces of this state."""
+    friction, normal = _pivot_forces(theta, w, side, accel_g, alpha, kappa)
+    forces[1] = min(forces[1], normal)
+    forces[0] = max(forces[0], abs(friction) / normal if normal > 0.0 else np.inf)
+
+
+@njit(cache=True)
 def _rk4(theta, w, side, alpha, accel_start, slope, h):
     """One classical Runge-Kutta step of length h (τ units), floor accel linear in τ."""
     accel_mid = accel_start + slope * 0.5 * h
@@ -252,9 +260,7 @@ def _simulate(accel_g, dt_s, alpha, p, e, kappa, theta_init, theta_dot_init,
                     accel_s = a0 + slope * s
                 side = -1.0 if accel_s > 0.0 else 1.0
                 theta, w, resting, uplift = 0.0, 0.0, False, True
-                friction, normal = _pivot_forces(0.0, 0.0, side, accel_s, alpha, kappa)
-                forces[1] = min(forces[1], normal)
-                forces[0] = max(forces[0], abs(friction) / normal if normal > 0.0 else np.inf)
+                _track_pivot_forces(forces, 0.0, 0.0, side, accel_s, alpha, kappa)
                 continue
             # next sub-step boundary
             s_end = (np.floor(s / h_nominal) + 1.0) * h_nominal
@@ -320,9 +326,7 @@ def _simulate(accel_g, dt_s, alpha, p, e, kappa, theta_init, theta_dot_init,
             theta, w = th1, w1
             theta_max = max(theta_max, abs(theta))
             s = s_end if full else s + h
-            friction, normal = _pivot_forces(theta, w, side, a0 + slope * s, alpha, kappa)
-            forces[1] = min(forces[1], normal)
-            forces[0] = max(forces[0], abs(friction) / normal if normal > 0.0 else np.inf)
+            _track_pivot_forces(forces, theta, w, side, a0 + slope * s, alpha, kappa)
         if overturned:
             if record:
                 hist_theta[k + 1:] = np.nan

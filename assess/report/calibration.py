@@ -79,9 +79,10 @@ def calibration_context(result, workbook: str, measured_file: str) -> dict:
     from assess.calibration import residual_correlations
     labels = {"im": "IM", "omega_p_over_p": "ωp/p", "pgv_m_s": "PGV", "mu": "μ declared", "b_over_h": "b/h",
               "pressure_kpa": "bearing pressure"}
-    correlations = [{"name": labels.get(k, k), "before": _number(v),
-                     "after": _number(residual_correlations(result.residuals_after, result.diagnosis)[k])}
-                    for k, v in residual_correlations(result.residuals_before, result.diagnosis).items()]
+    before = residual_correlations(result.residuals_before, result.diagnosis)
+    after = residual_correlations(result.residuals_after, result.diagnosis)
+    correlations = [{"name": labels.get(k, k), "before": _number(before[k]), "after": _number(after[k])}
+                    for k in before]
     return {"version": assess.__version__, "workbook": workbook, "measured": measured_file,
             "correlations": correlations,
             "tests": len(result.residuals_before), "selected": result.selected,
