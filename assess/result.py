@@ -14,6 +14,9 @@ SUMMARY_COLUMNS = [
     "governing_direction", "mu", "mode", "governing_motion", "pta_g", "tp_s", "im",
     "edp_median", "sliding_median_cm", "sliding_p84_cm", "clearance_cm", "pf_sliding",
     "overturn_fraction", "theta_max_over_alpha", "risk", "action", "flags", "sim_sliding_max_cm",
+    "demand_source", "demand_median_cm", "demand_p84_cm", "p_beyond_clearance", "p_overturn",
+    "demand_room_cm", "p_beyond_clearance_low", "p_beyond_clearance_high", "p_overturn_low", "p_overturn_high",
+    "risk_range", "suite_motions", "suite_histories", "demand_note",
 ]
 
 #: Columns of ``motions.csv`` in order (SPEC §3 first, then extras).
@@ -22,7 +25,7 @@ MOTION_COLUMNS = [
     "pf_sliding", "sim_sliding_max_cm", "sim_theta_max_over_alpha", "sim_overturned",
     "floor", "vp_cm_s", "b_over_h", "alpha_rad", "mode", "sliding_p84_cm", "capacity_edp",
     "flags", "mode_from_rest", "sim_sliding_residual_cm", "sim_uplift", "sim_motion", "sim_solver",
-    "sim_realizations", "sim_overturn_share", "pulse_source",
+    "sim_realizations", "sim_overturn_share", "pulse_source", "pulse_share", "demand_source",
 ]
 
 RISK_CLASSES = ("high", "moderate", "low", "anchored")
