@@ -466,7 +466,7 @@ def recommended_action(row: dict, uplift: bool, settings: dict) -> str:
     the two never read alike.
     """
     if row["p_overturn"] > 0.0:
-        return f"Anchor: it overturns under {_suite_share_text(row['p_overturn'], row)} in the simulation"
+        return f"Anchor: it overturns under {_suite_share_text(row['p_overturn'], row)}"
     if uplift:
         return (f"Anchor or restrain: it uplifts and rocks (peak rotation {row['theta_max_over_alpha']:.2f} of "
                 f"its overturning angle alpha) but did not overturn under its {int(row['suite_motions'])} "
@@ -490,20 +490,13 @@ def _item_flags(item, item_cases: pd.DataFrame, constants: RegressionConstants) 
             f"{', overturned' if worst['sim_overturned'] else ''}): "
             f"mu_static = {item.mu_static:.2f} >= b/h = {worst['b_over_h']:.2f} and PTA = {worst['pta_g']:.2f} g "
             f"> g b/h. The sliding regression assumes no uplift; the simulation answers for this item.")))
-    beyond = item_cases[item_cases["sim_sliding_max_cm"] > item_cases["clearance_m"] * 100.0]
-    if len(beyond):
-        worst = beyond.sort_values("sim_sliding_max_cm", ascending=False, kind="stable").iloc[0]
-        flags.append(Flag(item.id, "sim_beyond_clearance", (
-            f"the simulation slides it {worst['sim_sliding_max_cm']:.0f} cm under {worst['motion']} "
-            f"(direction {int(worst['direction'])}, {worst['sim_motion']}), more than its "
-            f"{item.clearance_m * 100:.0f} cm clearance; {len(beyond)} of {len(item_cases)} cases do. "
-            f"The risk class follows the regression's probability; this is one deterministic history.")))
     outside = item_cases[item_cases["im_outside_fit"]]
     if len(outside):
         ims = ", ".join(f"{im:.2f}" for im in sorted(set(outside["im"].round(2))))
         flags.append(Flag(item.id, "im_outside_fit", (
             f"IM = {ims} lies outside the range {constants.im_min:.2f}-{constants.im_max:.2f} the "
-            f"regression was fitted on: the sliding demand is an extrapolation.")))
+            f"regression was fitted on: its numbers shown beside are an extrapolation, and the governing "
+            f"demand does not use them for those motions.")))
     if "derived" in item_cases and item_cases["derived"].any():
         flags.append(Flag(item.id, "derived_floor_motion", (
             f"floor {item.floor} has no motion in the workbook: it was assessed under the ground motions "

@@ -36,7 +36,7 @@ class Flag:
     """A caveat attached to one item's result (shown in the report and the CSVs)."""
 
     item_id: str
-    code: str  # e.g. "uplift", "im_outside_fit", "sim_beyond_clearance"
+    code: str  # e.g. "uplift", "im_outside_fit", "derived_floor_motion"
     message: str
 
 

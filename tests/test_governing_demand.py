@@ -193,3 +193,39 @@ def test_the_domain_is_the_pulse_share_of_the_papers_own_motions():
     shares = pulse_acceleration_share(table["pta_g"], table["tp_s"], table["vp_cm_s"] / 100)
     assert round(float(shares.min()), 2) == PULSE_SHARE_MIN  # Los Gatos at 0.60 g; Corralitos 0.78 at most
     assert float(shares.max()) == pytest.approx(0.785, abs=0.001)
+
+
+def test_a_motion_named_on_two_floors_is_two_motions(tmp_path):
+    """M1 at 0.3 g on floor 0 and M1 at 1.5 g on floor 1: each floor's item is simulated under its own row
+    (found by an independent check: the floor-0 item used to be simulated under the 1.5 g motion)."""
+    from assess.hazard.records import pulse_record
+
+    items = [_item("LOW", 228.6, 62.2, 80.0, 0.13, 30.0), {**_item("HIGH", 228.6, 62.2, 80.0, 0.13, 30.0), "floor": 1}]
+    rows = [{"level": "2in50", "level_label": "2in50", "motion": "M1", "all_floors": False, "floor": floor,
+             "pta_g": pta, "tp_s": 1.0, "vp_m_s": np.nan, "pulse": "B", "record_path": "", "scale": 1.0, "row": row}
+            for floor, pta, row in ((0, 0.3, 2), (1, 1.5, 3))]
+    result = run_assessment(_inventory(tmp_path, items, rows), "2in50")
+    for item_id, pta in (("LOW", 0.3), ("HIGH", 1.5)):
+        case = result.motions[(result.motions["id"] == item_id) & (result.motions["direction"] == 1)].iloc[0]
+        pulse = pulse_record("B", pta, 1.0)
+        assert case["pta_g"] == pta
+        assert case["sim_sliding_max_cm"] == pytest.approx(
+            sliding_response(pulse.accel_g, pulse.dt_s, 0.13).sliding_max_m * 100, rel=1e-12)
+
+
+def test_the_report_shows_the_governing_numbers_of_the_summary(sliding_suite):
+    """Page 1 and the all-items table show the summary's governing demand, its interval and its source."""
+    from assess.report import render_html
+    from assess.report.render import format_cm, format_percent
+
+    result, _ = sliding_suite
+    row = result.summary.set_index("id").loc["FORMA"]
+    html = render_html(result)
+    page1 = html.split('<section id="all-items"')[0]
+    assert f"{format_cm(row['demand_median_cm'])} · {format_cm(row['demand_p84_cm'])}" in page1
+    assert format_percent(row["p_beyond_clearance"]) in page1
+    interval = f"{format_percent(row['p_beyond_clearance_low'])}–{format_percent(row['p_beyond_clearance_high'])}"
+    assert interval in page1 and "from records" in page1
+    all_items = html.split('<section id="all-items"')[1].split("</section>")[0]
+    assert f"{format_cm(row['demand_median_cm'])} / {format_cm(row['demand_p84_cm'])}" in all_items
+    assert "4 motions" in all_items and row["action"] in html.replace("&#39;", "'")
