@@ -152,6 +152,7 @@ References
 """
 from __future__ import annotations
 
+import functools
 import warnings
 from dataclasses import dataclass
 from typing import NamedTuple
@@ -320,10 +321,17 @@ def critically_damped_high_pass(accel, dt_s, corner_hz=DEFAULT_HIGH_PASS_HZ):
     >>> abs(float(a[-1])) < 1e-9, abs(float(np.sum(a) * 0.005)) < 1e-6
     (True, True)
     """
+    numerator, denominator = _high_pass_coefficients(float(dt_s), float(corner_hz))
+    return signal.lfilter(numerator, denominator, np.asarray(accel, dtype=float))
+
+
+@functools.lru_cache(maxsize=64)
+def _high_pass_coefficients(dt_s, corner_hz):
+    """The oscillator s²/(s + ωc)² discretised with a first-order hold (computed once per dt and corner)."""
     omega = 2.0 * np.pi * corner_hz
     numerator, denominator, _ = signal.cont2discrete(([1.0, 0.0, 0.0], [1.0, 2.0 * omega, omega * omega]),
                                                      dt_s, method="foh")
-    return signal.lfilter(np.ravel(numerator), denominator, np.asarray(accel, dtype=float))
+    return np.ravel(numerator), np.asarray(denominator)
 
 
 def rezaeian_residual(n_samples, dt_s, arias_intensity_m_s, d5_95_s, t_mid_s, rng, *,
