@@ -15,7 +15,8 @@ SUMMARY_COLUMNS = [
     "edp_median", "sliding_median_cm", "sliding_p84_cm", "clearance_cm", "pf_sliding",
     "overturn_fraction", "theta_max_over_alpha", "risk", "action", "flags", "sim_sliding_max_cm",
     "demand_source", "demand_median_cm", "demand_p84_cm", "p_beyond_clearance", "p_overturn",
-    "demand_room_cm", "p_beyond_clearance_low", "p_beyond_clearance_high", "p_overturn_low", "p_overturn_high",
+    "demand_room_cm", "demand_median_low_cm", "demand_median_high_cm", "demand_p84_low_cm", "demand_p84_high_cm",
+    "p_beyond_clearance_low", "p_beyond_clearance_high", "p_overturn_low", "p_overturn_high",
     "risk_range", "suite_motions", "suite_histories", "demand_note",
 ]
 

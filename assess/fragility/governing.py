@@ -29,8 +29,8 @@ from scipy import stats
 
 from assess.fragility.regression import RegressionConstants, probability_of_exceedance, capacity_edp, sliding_quantile
 from assess.fragility.suite import (
-    PULSE_SHARE_MIN, binomial_interval, effective_count, pulse_acceleration_share, regression_applies,
-    weighted_quantile,
+    PULSE_SHARE_MIN, binomial_interval, effective_count, pulse_acceleration_share, quantile_interval,
+    regression_applies, weighted_quantile,
 )
 
 RECORD, REGRESSION, SYNTHETIC, PULSE = "record", "regression", "synthetic", "pulse"
@@ -38,7 +38,8 @@ RECORD, REGRESSION, SYNTHETIC, PULSE = "record", "regression", "synthetic", "pul
 _LOGNORMAL_POINTS = 199
 #: Columns of :func:`governing_demand`'s table, one row per item.
 DEMAND_COLUMNS = [
-    "demand_source", "demand_median_cm", "demand_p84_cm", "demand_room_cm", "p_beyond_clearance", "p_beyond_clearance_low",
+    "demand_source", "demand_median_cm", "demand_p84_cm", "demand_median_low_cm", "demand_median_high_cm",
+    "demand_p84_low_cm", "demand_p84_high_cm", "demand_room_cm", "p_beyond_clearance", "p_beyond_clearance_low",
     "p_beyond_clearance_high", "p_overturn", "p_overturn_low", "p_overturn_high", "suite_motions",
     "suite_histories", "theta_max_over_alpha", "demand_note",
 ]
@@ -148,12 +149,14 @@ def _item_demand(item_cases: pd.DataFrame, histories: pd.DataFrame | None, regre
         sampled_weights.extend(np.full(len(runs), share))
     p_beyond, p_beyond_interval = _probability(exact_beyond, exact_weight, sampled_beyond, sampled_weights)
     p_overturn, p_overturn_interval = _probability(0.0, exact_weight, sampled_overturn, sampled_weights)
+    intervals = _quantile_intervals(values, weights, sampled_weights, exact_weight)
     sources = [s for s in (RECORD, REGRESSION, SYNTHETIC, PULSE) if s in set(source_of)]
     return {
         "demand_source": " + ".join("records" if s == RECORD else s for s in sources),
         "demand_median_cm": weighted_quantile(values, weights, 0.5),
         "demand_p84_cm": weighted_quantile(values, weights, 0.84),
         "demand_room_cm": weighted_quantile(values, weights, room_quantile),
+        **intervals,
         "p_beyond_clearance": p_beyond, "p_beyond_clearance_low": p_beyond_interval[0],
         "p_beyond_clearance_high": p_beyond_interval[1],
         "p_overturn": p_overturn, "p_overturn_low": p_overturn_interval[0], "p_overturn_high": p_overturn_interval[1],
@@ -161,6 +164,19 @@ def _item_demand(item_cases: pd.DataFrame, histories: pd.DataFrame | None, regre
         "theta_max_over_alpha": theta,
         "demand_note": _source_note(item_cases, source_of, constants),
     }
+
+
+def _quantile_intervals(values, weights, sampled_weights, exact_weight: float) -> dict:
+    """90 % intervals of the median and the 84th percentile: distribution-free over the simulated draws
+    (their effective count); none where the regression gives the whole distribution."""
+    out = {}
+    for name, q in (("median", 0.5), ("p84", 0.84)):
+        if len(sampled_weights) and exact_weight < 1.0:
+            low, high = quantile_interval(values, weights, q, effective_count(sampled_weights))
+        else:
+            low = high = weighted_quantile(values, weights, q)
+        out[f"demand_{name}_low_cm"], out[f"demand_{name}_high_cm"] = low, high
+    return out
 
 
 def _probability(exact: float, exact_weight: float, sampled, sampled_weights) -> tuple[float, tuple[float, float]]:

@@ -122,3 +122,34 @@ def binomial_interval(probability, count, confidence=INTERVAL_CONFIDENCE):
     low = 0.0 if successes <= 0.0 else float(stats.beta.ppf(tail, successes, count - successes + 1.0))
     high = 1.0 if successes >= count else float(stats.beta.ppf(1.0 - tail, successes + 1.0, count - successes))
     return low, high
+
+
+def quantile_interval(values, weights, quantile, count, confidence=INTERVAL_CONFIDENCE):
+    """Distribution-free interval of a quantile estimated from ``count`` (effective) draws.
+
+    Classical order-statistic interval (Conover 1999, §3.2): with n draws,
+    the true q-quantile lies between the r-th and the s-th smallest with
+    probability P(r ≤ Bin(n, q) < s), r and s taken from the binomial's
+    tails. Weighted draws are read as n = ⌊count⌋ draws of their weighted
+    distribution. Where n draws cannot bound the quantile on a side, that
+    end is 0 (sliding is not negative) or infinity.
+
+    >>> quantile_interval([1.0, 2.0, 3.0], [1, 1, 1], 0.5, 3)  # 3 motions cannot bound a median at 90 %
+    (0.0, inf)
+    >>> [round(x, 2) for x in quantile_interval(np.arange(1.0, 31.0), np.ones(30), 0.5, 30)]
+    [11.0, 20.0]
+    """
+    n = max(int(np.floor(count + 1e-9)), 1)
+    tail = 0.5 * (1.0 - confidence)
+    r = int(stats.binom.ppf(tail, n, quantile))
+    s = int(stats.binom.ppf(1.0 - tail, n, quantile)) + 1
+    values, weights = np.asarray(values, dtype=float), np.asarray(weights, dtype=float)
+    order = np.argsort(values, kind="stable")
+    values, cumulative = values[order], np.cumsum(weights[order]) / weights.sum()
+
+    def order_statistic(k):
+        return float(values[min(int(np.searchsorted(cumulative, k / n - 1e-12)), values.size - 1)])
+
+    low = order_statistic(r) if r >= 1 else 0.0
+    high = order_statistic(s) if s <= n else float("inf")
+    return low, high

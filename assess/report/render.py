@@ -206,6 +206,7 @@ def _item_row(row: pd.Series) -> dict:
         "demand_p84": format_cm(row.get("demand_p84_cm")),
         "p_beyond": format_percent(row.get("p_beyond_clearance")),
         "p_beyond_interval": _interval_text(row.get("p_beyond_clearance_low"), row.get("p_beyond_clearance_high")),
+        "demand_interval": _cm_interval_text(row, "median") + " / " + _cm_interval_text(row, "p84"),
         "p_overturn": format_percent(row.get("p_overturn")),
         "p_overturn_interval": _interval_text(row.get("p_overturn_low"), row.get("p_overturn_high")),
         "suite": _suite_text(row),
@@ -218,6 +219,20 @@ def _interval_text(low, high) -> str:
     if low is None or high is None or high - low < 0.005:
         return ""
     return f"{format_percent(low)}–{format_percent(high)}"
+
+
+def _cm_interval_text(row: pd.Series, quantile: str) -> str:
+    """"12–30" for the 90 % interval of the demand's median or 84th percentile [cm]; "∞" where the
+    suite cannot bound it; "–" where the quantile is the regression's own (no interval)."""
+    low, high = _finite(row.get(f"demand_{quantile}_low_cm")), row.get(f"demand_{quantile}_high_cm")
+    value = _finite(row.get(f"demand_{quantile}_cm"))
+    try:
+        high = float(high)
+    except (TypeError, ValueError):
+        return DASH
+    if low is None or value is None or (math.isclose(low, value) and math.isclose(high, value)):
+        return DASH
+    return f"{format_cm(low)}–{'∞' if math.isinf(high) else format_cm(high)}"
 
 
 def _suite_text(row: pd.Series) -> str:
