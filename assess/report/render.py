@@ -213,6 +213,24 @@ def _item_row(row: pd.Series) -> dict:
     }
 
 
+def item_anchors(ids) -> list[str]:
+    """HTML anchors ``item-<id>`` for the items, made of letters, digits, ``-`` and ``_`` only, unique.
+
+    >>> item_anchors(["FRZ-1", "a b", "a_b"])
+    ['item-FRZ-1', 'item-a_b', 'item-a_b-2']
+    """
+    anchors, seen = [], set()
+    for item_id in ids:
+        anchor = "item-" + "".join(c if c.isascii() and (c.isalnum() or c in "-_") else "_" for c in str(item_id))
+        candidate, k = anchor, 1
+        while candidate in seen:
+            k += 1
+            candidate = f"{anchor}-{k}"
+        seen.add(candidate)
+        anchors.append(candidate)
+    return anchors
+
+
 def _interval_text(low, high) -> str:
     """"10–60%" for a probability's interval; "" where it is exact (a model's, not a sample's)."""
     low, high = _finite(low), _finite(high)
@@ -264,6 +282,8 @@ def report_context(result) -> dict:
     """Everything the template shows, formatted (pure: no clock, no I/O)."""
     summary = _sorted_summary(result.summary)
     rows = [_item_row(row) for _, row in summary.iterrows()]
+    for row, anchor in zip(rows, item_anchors([r["id"] for r in rows])):
+        row["anchor"] = anchor
     counts = result.risk_counts()
     quantity = pd.to_numeric(summary.get("quantity", pd.Series(1, index=summary.index)),
                              errors="coerce").fillna(1)
