@@ -394,6 +394,7 @@ def _summarise(equipment: pd.DataFrame, cases: pd.DataFrame, demand: pd.DataFram
                         "b_over_h": half_width_m / item.cg_height_m,
                         "governing_direction": 1 if item.width_m <= item.depth_m else 2,
                         "mode": "", "risk": "anchored", "action": "None: anchored (not analysed as freestanding)",
+                        "action_kind": "anchored",
                         "flags": ""})
             rows.append(row)
             continue
@@ -415,6 +416,7 @@ def _summarise(equipment: pd.DataFrame, cases: pd.DataFrame, demand: pd.DataFram
                   for p in (row["p_beyond_clearance_low"], row["p_beyond_clearance_high"])}
         row["risk_range"] = _risk_range(row["risk"], bounds)
         row["action"] = recommended_action(row, uplift, settings)
+        row["action_kind"] = action_kind(row, uplift)
         rows.append(row)
     return pd.DataFrame(rows), flags
 
@@ -455,6 +457,18 @@ def _suite_share_text(probability: float, row: dict) -> str:
         count = int(round(probability * motions))
         return f"{count} of its {motions} motion{'s' if motions != 1 else ''}"
     return f"{probability:.0%} of its {histories} simulated histories ({motions} motion{'s' if motions != 1 else ''})"
+
+
+def action_kind(row: dict, uplift: bool) -> str:
+    """What the action asks for, in one word the report groups by: ``anchor`` (it overturns or
+    rocks), ``restrain`` (high risk of sliding past its room), ``room`` (moderate), ``none``.
+
+    >>> action_kind({"p_overturn": 0.0, "risk": "moderate"}, False)
+    'room'
+    """
+    if row["p_overturn"] > 0.0 or uplift:
+        return "anchor"
+    return {"high": "restrain", "moderate": "room"}.get(row["risk"], "none")
 
 
 def recommended_action(row: dict, uplift: bool, settings: dict) -> str:

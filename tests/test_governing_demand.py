@@ -257,3 +257,40 @@ def test_the_suite_median_carries_its_interval(sliding_suite):
     assert row["demand_median_low_cm"] <= row["demand_median_cm"] <= row["demand_median_high_cm"]
     # 4 motions cannot bound a median at 90 %: all four fall on one side of it with probability 2/16
     assert row["demand_median_low_cm"] == 0.0 and row["demand_median_high_cm"] == np.inf
+
+
+def test_every_item_is_in_one_action_group_and_no_advice_contradicts_its_numbers(tmp_path):
+    """A small inventory under three Table-3 pulses: page 1's groups add up to the freestanding items, and
+    each item's sentence agrees with its own numbers (walks every item)."""
+    from assess.report import render_html
+    from assess.report.render import _action_groups, report_context
+
+    motions = [{"level": "2in50", "level_label": "2in50", "motion": name, "all_floors": False, "floor": 0,
+                "pta_g": pta, "tp_s": tp, "vp_m_s": vp, "pulse": "B", "record_path": "", "scale": 1.0, "row": k + 2}
+               for k, (name, pta, tp, vp) in enumerate([("LG", 0.54, 2.1, -0.75), ("CO", 0.84, 0.6, -0.61),
+                                                        ("GI", 0.59, 1.5, -0.84)])]
+    items = [_item("TIGHT", 228.6, 62.2, 80.0, 0.13, 2.0), _item("ROOMY", 228.6, 62.2, 80.0, 0.13, 2000.0),
+             _item("RACK", 200.0, 40.0, 60.0, 0.6, 20.0), _item("BOX", 60.0, 80.0, 80.0, 0.9, 10.0),
+             {**_item("ANCH", 200.0, 40.0, 60.0, 0.6, 20.0), "anchored": True}]
+    inventory = _inventory(tmp_path, items, motions)
+    inventory.settings["simulate_motions"] = "pulse"
+    result = run_assessment(inventory, "2in50")
+    summary = result.summary.set_index("id")
+    groups = _action_groups(report_context(result)["rows"])
+    grouped = [r["id"] for g in groups for r in g["rows"]]
+    freestanding = summary[summary["risk"] != "anchored"]
+    assert sorted(grouped) == sorted(freestanding.index) and len(grouped) == len(set(grouped))
+    for item_id, row in freestanding.iterrows():
+        kind, action = row["action_kind"], row["action"]
+        if kind == "anchor":
+            assert action.startswith("Anchor") and row["risk"] == "high"
+        elif kind in ("restrain", "room"):
+            needs = float(action.split("needs ")[1].split(" cm")[0])
+            has = float(action.split("has ")[1].split(" cm")[0])
+            assert needs > has and row["p_beyond_clearance"] >= 0.1, (item_id, action)
+        else:
+            assert action == "No action needed" and row["risk"] == "low", (item_id, action)
+    assert {"TIGHT": "restrain", "ROOMY": "none", "RACK": "anchor", "BOX": "none"} == \
+        {i: summary.loc[i, "action_kind"] for i in ("TIGHT", "ROOMY", "RACK", "BOX")}
+    assert sum(result.risk_counts().values()) == len(summary)
+    assert "What to do first" in render_html(result)

@@ -199,6 +199,7 @@ def _item_row(row: pd.Series) -> dict:
         "theta": format_significant(row.get("theta_max_over_alpha"), 2),
         "risk": _text(row.get("risk")),
         "risk_range": _text(row.get("risk_range")),
+        "action_kind": _text(row.get("action_kind")),
         "action": _text(row.get("action")) or DASH,
         "source": _text(row.get("demand_source")) or DASH,
         "source_note": _text(row.get("demand_note")),
@@ -229,6 +230,25 @@ def item_anchors(ids) -> list[str]:
         seen.add(candidate)
         anchors.append(candidate)
     return anchors
+
+
+#: Page 1's groups of actions, in the order a manager takes them.
+ACTION_GROUPS = (
+    ("anchor", "Anchor", "they overturn or rock in the design earthquake; moving them away from walls does not help"),
+    ("restrain", "Restrain (or give the room listed)", "they are likely to slide past their room"),
+    ("room", "Give room (or restrain)", "they may slide past their room"),
+    ("none", "No action", "they stay within their room"),
+)
+
+
+def _action_groups(rows: list[dict]) -> list[dict]:
+    """The items of each action kind (``action_kind`` of the summary), in the page's order."""
+    groups = []
+    for kind, title, why in ACTION_GROUPS:
+        members = [r for r in rows if r.get("action_kind") == kind]
+        if members:
+            groups.append({"kind": kind, "title": title, "why": why, "rows": members})
+    return groups
 
 
 def _interval_text(low, high) -> str:
@@ -305,6 +325,7 @@ def report_context(result) -> dict:
         "units": units,
         "total_items": len(rows),
         "total_units": int(quantity.sum()),
+        "action_groups": _action_groups(rows),
         "high": [r for r in rows if r["risk"] == "high"],
         "moderate": [r for r in rows if r["risk"] == "moderate"],
         "rows": rows,
