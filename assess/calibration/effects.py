@@ -60,7 +60,7 @@ import numpy as np
 
 from assess.hazard.records import Record
 from assess.mechanics.block import Block
-from assess.mechanics.engine import DEFAULT_TAIL_S, pure_sliding_proved, simulate, with_tail
+from assess.mechanics.engine import pure_sliding_proved, simulate
 
 INTERFACE_MODULE = "assess.mechanics.interface"
 
@@ -171,7 +171,9 @@ def _sliding_only(item, half_width_m, motion, run) -> Prediction:
     block = item_block(item, half_width_m)
     if not pure_sliding_proved(block.mu_static, block.b_over_h):
         return _engine(block, motion)
-    result = run(with_tail(motion.accel_g, motion.dt_s, DEFAULT_TAIL_S), motion.dt_s, block)
+    # the interface kernels, as every solver, take the floor at rest right after the last
+    # sample and follow the run-out themselves (appended zeros would ramp the floor down)
+    result = run(motion.accel_g, motion.dt_s, block)
     sliding = float(result.sliding_max_m)
     return Prediction(sliding, 0.0, False, "slide" if sliding > 0.0 else "rest")
 

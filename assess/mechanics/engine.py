@@ -22,7 +22,10 @@ it, and by the general solver otherwise:
 
 After the record the floor is at rest and the block is followed for
 ``tail_s`` more seconds (run-out of sliding, free rocking, or a late
-overturning).
+overturning). Every solver takes the floor at rest right after the last
+sample (SPEC §4: zero after the record, after Tp for a pulse): a step there,
+not a ramp down over one more sample interval, so that a pulse ending at full
+amplitude (Type B) pushes the block for the same time in each.
 
 References
 ----------
@@ -72,7 +75,13 @@ def pure_rocking_held(friction_demand_max, normal_force_min_over_weight, mu_stat
 
 
 def with_tail(floor_accel_g, dt_s, tail_s=DEFAULT_TAIL_S):
-    """The record followed by ``tail_s`` seconds of floor at rest (zeros) [g]."""
+    """The record followed by ``tail_s`` seconds of zeros [g].
+
+    Not the floor at rest after the record: read as samples, linear between
+    them, these zeros ramp the floor down over the interval after the last
+    sample. The solvers take ``tail_s`` themselves and step the floor to rest
+    at the last sample (SPEC §4).
+    """
     accel = np.asarray(floor_accel_g, dtype=float)
     return np.concatenate([accel, np.zeros(int(np.ceil(tail_s / dt_s)))])
 
@@ -141,9 +150,9 @@ def simulate(block: Block, floor_accel_g, dt_s, *, tail_s=DEFAULT_TAIL_S, return
         raise ValueError(f"solver must be 'auto', 'general' or 'event-driven', not {solver!r}")
     if pure_sliding_proved(block.mu_static, block.b_over_h):
         return _sliding(block, accel, dt_s, tail_s, return_history)
-    rocking = rocking_response(with_tail(accel, dt_s, tail_s), dt_s, block.alpha_rad, block.p_rad_s,
+    rocking = rocking_response(accel, dt_s, block.alpha_rad, block.p_rad_s,
                                restitution=block.restitution_effective, return_history=return_history,
-                               inertia_ratio_value=block.inertia_ratio)
+                               inertia_ratio_value=block.inertia_ratio, tail_s=tail_s)
     if not pure_rocking_held(rocking.friction_demand_max, rocking.normal_force_min_over_weight,
                              block.mu_static):
         return _general(block, accel, dt_s, tail_s, return_history)
@@ -244,9 +253,9 @@ def simulate_cases(blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_
         idx = np.flatnonzero(in_record & ~sliding_set)
         if idx.size:
             rock = rocking_peaks_batch(
-                with_tail(accel, dt_s[j], tail_s), dt_s[j], [blocks[i].alpha_rad for i in idx],
+                accel, dt_s[j], [blocks[i].alpha_rad for i in idx],
                 [blocks[i].p_rad_s for i in idx], [blocks[i].restitution_effective for i in idx],
-                [blocks[i].inertia_ratio for i in idx])
+                [blocks[i].inertia_ratio for i in idx], tail_s=tail_s)
             held = pure_rocking_held(rock.friction_demand_max[:, 0],
                                      rock.normal_force_min_over_weight[:, 0], mu_static[idx])
             kept = idx[held]
