@@ -37,6 +37,11 @@ e, different for every item). :data:`EFFECTS` lists them by name (SPEC §5):
     rocks about feet at b(1 − d) (``Block.foot_inset_m``): α, R and p are
     those about a foot, the moment of inertia stays that of the whole box.
 
+Every effect's θmax/α is θmax over α of the item's **declared** box,
+atan(b/h) (:func:`declared_alpha_rad`), as the measured one is (SPEC §5):
+with feet the solvers divide by α of the feet, and the prediction is
+brought back to the declared α.
+
 The two interface effects need :mod:`assess.mechanics.interface`; when it is
 not installed, :func:`available_effects` leaves them out.
 
@@ -60,6 +65,7 @@ import numpy as np
 
 from assess.hazard.records import Record
 from assess.mechanics.block import Block
+from assess.mechanics.geometry import slenderness
 from assess.mechanics.engine import pure_sliding_proved, simulate
 
 INTERFACE_MODULE = "assess.mechanics.interface"
@@ -134,9 +140,28 @@ def item_block(item: Mapping, half_width_m: float, **changes) -> Block:
     return Block(**values)
 
 
+def declared_alpha_rad(block: Block) -> float:
+    """α = atan(b/h) of the item's declared box [rad], whatever it stands on (SPEC §5).
+
+    A measured θmax/α is divided by this α; an effect may change the points
+    the block pivots on (``foot_inset``), never the α a rotation is read against.
+
+    >>> footed = Block(half_width_m=0.3, cg_height_m=1.0, height_m=2.0, mu=0.7, foot_inset_m=0.09)
+    >>> round(declared_alpha_rad(footed), 6), round(footed.alpha_rad, 6)
+    (0.291457, 0.206992)
+    """
+    return float(slenderness(block.half_width_m, block.cg_height_m))
+
+
+def theta_over_declared_alpha(response_theta_max_over_alpha, block: Block) -> float:
+    """A solver's θmax/α (α of the pivots it rocked on) as θmax over α of the declared box [-]."""
+    return float(response_theta_max_over_alpha) * block.alpha_rad / declared_alpha_rad(block)
+
+
 def _engine(block: Block, motion: Record) -> Prediction:
+    """The engine's peaks, θmax over α of the declared box (as measured, SPEC §5) for every effect."""
     response = simulate(block, motion.accel_g, motion.dt_s)
-    return Prediction(float(response.sliding_max_m), float(response.theta_max_over_alpha),
+    return Prediction(float(response.sliding_max_m), theta_over_declared_alpha(response.theta_max_over_alpha, block),
                       bool(response.overturned), response.mode)
 
 
