@@ -126,13 +126,13 @@ def test_json_structure_and_tables(lab):
                          "indistinguishable_from", "candidates"]
     assert set(out["residual_correlation_before"]) == {"im", "omega_p_over_p", "pgv_m_s", "mu", "b_over_h",
                                                        "pressure_kpa"}
-    assert set(out["selected"]) == {"effect", "parameters", "standard_error"}
+    assert set(out["selected"]) == {"effect", "parameters", "standard_error", "not_determined"}
     assert out["selected"]["effect"] == "friction_scale"
     # the jackknife standard error of k is small against k's offset from 1 (the declared model)
     assert 0.0 <= out["selected"]["standard_error"]["k"] < 0.1 * abs(out["selected"]["parameters"]["k"] - 1.0)
     assert [c["effect"] for c in out["candidates"]] == ["none", "friction_scale", "input_scale"]
     for candidate in out["candidates"]:
-        assert set(candidate) == {"effect", "parameters", "standard_error", "error", "score"}
+        assert set(candidate) == {"effect", "parameters", "standard_error", "not_determined", "error", "score"}
         assert {"sliding_rms_log", "overturn_misclassified", "theta_rms"} <= set(candidate["error"])
     import json
     json.dumps(out)  # plain JSON types throughout
@@ -289,3 +289,32 @@ def test_feet_are_named_from_rotations_over_the_declared_alpha(lab):
     assert result.parameters["d"] == pytest.approx(0.3, abs=0.01), scores
     # the noise on θ/α is 0.02; read against α of the feet the fit was left 0.086 off
     assert result.error_after["theta_rms"] < 0.03 < 0.1 < result.error_before["theta_rms"]
+
+
+def test_a_parameter_the_tests_cannot_fix_is_not_determined(lab):
+    """Only specimens that slide (μ < b/h: they cannot uplift): the restitution of rocking impacts
+    changes no prediction, so it is 'not determined by these tests', null in calibration.json with a
+    reason, and a sentence in the report, never 'e = 0 ± 0.00144'."""
+    import json
+
+    from assess.report.calibration import calibration_context
+
+    sliding_only = lab.tests["specimen"].isin(["INCUBATOR", "FRIDGE"]).to_numpy()
+    measured = measured_with(lab, "friction_scale", {"k": 0.8}, 4)[sliding_only].reset_index(drop=True)
+    result = run_calibration(lab.inventory, measured, effects=["friction_scale", "restitution"], cache=lab.cache)
+    out = json.loads(json.dumps(result.as_json()))
+    restitution = next(c for c in out["candidates"] if c["effect"] == "restitution")
+    assert restitution["parameters"] == {"e": None} and restitution["standard_error"] == {"e": None}
+    assert "rocking impacts" in restitution["not_determined"]["e"]
+    friction = next(c for c in out["candidates"] if c["effect"] == "friction_scale")
+    assert friction["not_determined"] == {} and friction["parameters"]["k"] == pytest.approx(0.8, rel=0.05)
+    assert out["selected"]["effect"] == "friction_scale" and out["selected"]["not_determined"] == {}
+    context = calibration_context(result, "WORKBOOK.xlsx", "MEASURED.xlsx")
+    rows = {c["effect"]: c["parameters"] for c in context["candidates"]}
+    assert rows["restitution"].startswith("restitution e at a rocking impact: not determined by these tests (")
+    assert "±" not in rows["restitution"]
+    assert rows["friction_scale"].startswith("factor k on μ and μ_s = 0.")
+    # the error rows are sentences, not keys
+    names = [e["name"] for e in context["errors"]]
+    assert "RMS of ln(predicted/measured) peak sliding" in names
+    assert not any("_" in name for name in names), names

@@ -90,6 +90,10 @@ class Parameter:
     neutral: float | None
     unit: str = "-"
     log: bool = False
+    #: What it is, in words (the report's rows).
+    label: str = ""
+    #: Which tests can fix it (said when these cannot).
+    determined_by: str = "only tests whose peaks depend on it can fix it"
 
     def grid(self, count: int) -> np.ndarray:
         """``count`` values from lower to upper (geometric when ``log``), and the neutral value."""
@@ -224,18 +228,39 @@ def _interface_elasticity(item, half_width_m, motion, parameters):
 #: Every effect, by name, in the order the report lists them.
 EFFECTS: dict[str, Effect] = {e.name: e for e in [
     Effect("none", "the model as declared", (), _none),
-    Effect("friction_scale", "μ and μ_s × k", (Parameter("k", 0.3, 1.5, 1.0),), _friction_scale),
-    Effect("static_friction", "μ_s = r·μ", (Parameter("r", 1.0, 3.0, 1.0),), _static_friction),
+    Effect("friction_scale", "μ and μ_s × k",
+           (Parameter("k", 0.3, 1.5, 1.0, label="factor k on μ and μ_s",
+                      determined_by="k acts only on tests in which a specimen slides or comes close to it"),),
+           _friction_scale),
+    Effect("static_friction", "μ_s = r·μ",
+           (Parameter("r", 1.0, 3.0, 1.0, label="ratio r of static to kinetic μ",
+                      determined_by="r acts only on tests whose floor acceleration reaches μ"),),
+           _static_friction),
     Effect("restitution", "rocking impact restitution e (instead of Housner's)",
-           (Parameter("e", 0.0, 1.0, None),), _restitution),
-    Effect("input_scale", "floor motion × s", (Parameter("s", 0.5, 2.0, 1.0, log=True),), _input_scale),
+           (Parameter("e", 0.0, 1.0, None, label="restitution e at a rocking impact",
+                      determined_by="e acts only at rocking impacts, so only tests in which a specimen "
+                      "rocks back onto its other edge can fix it"),),
+           _restitution),
+    Effect("input_scale", "floor motion × s",
+           (Parameter("s", 0.5, 2.0, 1.0, log=True, label="factor s on the floor motion",
+                      determined_by="no specimen's peaks change with the motion's amplitude"),),
+           _input_scale),
     Effect("velocity_friction", "kinetic μ rises with slip velocity from f·μ (slow) to μ (fast); breakaway at μ_s",
-           (Parameter("f", 0.3, 1.0, 1.0), Parameter("rate_s_m", 1.0, 100.0, 10.0, unit="s/m", log=True)),
+           (Parameter("f", 0.3, 1.0, 1.0, label="low-speed friction factor f",
+                      determined_by="f acts only on specimens that slide without uplifting"),
+            Parameter("rate_s_m", 1.0, 100.0, 10.0, unit="s/m", log=True, label="rate a of the rise of μ with speed",
+                      determined_by="the rate acts only on specimens that slide without uplifting, and "
+                      "only where f is below 1")),
            _velocity_friction, requires=INTERFACE_MODULE),
     Effect("interface_elasticity", "elastic interface of yield displacement u_y before slip",
-           (Parameter("yield_displacement_m", 0.0005, 0.05, 0.0005, unit="m", log=True),),
+           (Parameter("yield_displacement_m", 0.0005, 0.05, 0.0005, unit="m", log=True,
+                      label="yield displacement u_y of the interface",
+                      determined_by="u_y acts only on specimens that slide without uplifting"),),
            _interface_elasticity, requires=INTERFACE_MODULE),
-    Effect("foot_inset", "rocks about feet inset by d·b", (Parameter("d", 0.0, 0.6, 0.0),), _foot_inset),
+    Effect("foot_inset", "rocks about feet inset by d·b",
+           (Parameter("d", 0.0, 0.6, 0.0, label="foot inset d, as a fraction of the half-width",
+                      determined_by="d acts only on tests in which a specimen uplifts or comes close to it"),),
+           _foot_inset),
 ]}
 
 

@@ -224,6 +224,8 @@ class EffectFit:
     predicted: Predicted
     cv_losses: np.ndarray = field(repr=False)
     standard_error: dict = field(default_factory=dict)
+    not_determined: dict = field(default_factory=dict)
+    """Parameters the tests cannot fix, each with the reason (:func:`undetermined_parameters`)."""
 
 
 def parameter_grid(effect: Effect) -> list[dict]:
@@ -255,6 +257,7 @@ def fit_effect(effect: Effect, cases: Sequence[Case], measured: Measured, cache:
     counts = measured.counts
     grid = parameter_grid(effect)
     losses = [test_losses(predict_cases(effect, cases, point, cache), measured) for point in grid]
+    not_determined = undetermined_parameters(effect, grid, [objective(loss, counts) for loss in losses])
     best = int(np.argmin(np.sum(losses, axis=1)))
     parameters = {k: float(v) for k, v in grid[best].items()}
     if refine and effect.parameters:
@@ -270,8 +273,53 @@ def fit_effect(effect: Effect, cases: Sequence[Case], measured: Measured, cache:
             count = LOCAL_POINTS_1D if len(effect.parameters) == 1 else LOCAL_POINTS_2D
             step = (np.exp(high) - np.exp(low) if p.log else high - low) / (count - 1)
             error[p.name] = float(np.hypot(error[p.name], step / np.sqrt(12.0)))
+    for name in not_determined:
+        error[name] = None
     return EffectFit(effect, parameters, error_measures(predicted, measured), objective(held, counts),
-                     predicted, held, error)
+                     predicted, held, error, not_determined)
+
+
+#: Objective values closer than this (relative, and absolute below 1) count as equal [-].
+FLAT_TOLERANCE = 1e-9
+
+
+def undetermined_parameters(effect: Effect, grid: Sequence[Mapping[str, float]], values: Sequence[float]) -> dict:
+    """The parameters these tests cannot fix, each with a sentence saying why.
+
+    A parameter is not determined when the objective's minimum over the grid
+    is reached (within :data:`FLAT_TOLERANCE`) at three or more of its grid
+    values: the tests then fit a whole interval of it equally well, e.g.
+    the restitution when no tested specimen rocks (every e predicts the same
+    peaks), or the rate of velocity friction when its low-speed factor is 1.
+    A fitted value and a jackknife error would then be artefacts of the grid.
+
+    >>> from assess.calibration.effects import EFFECTS
+    >>> grid = [{"e": v} for v in (0.0, 0.5, 1.0)]
+    >>> undetermined_parameters(EFFECTS["restitution"], grid, [0.3, 0.3, 0.3])["e"][:52]
+    'every value from 0 to 1 predicts these tests alike: '
+    >>> undetermined_parameters(EFFECTS["restitution"], grid, [0.3, 0.1, 0.3])
+    {}
+    """
+    values = np.asarray(values, dtype=float)
+    if values.size == 0 or not effect.parameters:
+        return {}
+    best = float(np.min(values))
+    tied = values <= best + FLAT_TOLERANCE * max(1.0, abs(best))
+    out = {}
+    for p in effect.parameters:
+        tied_values = np.unique([float(point[p.name]) for point, t in zip(grid, tied) if t])
+        if tied_values.size < 3:
+            continue
+        low, high = tied_values.min(), tied_values.max()
+        span = ("every value from {0} to {1}" if (low, high) == (p.lower, p.upper) or tied.all()
+                else "every value from {0} to {1} (of {2} to {3})").format(
+                    _plain(low), _plain(high), _plain(p.lower), _plain(p.upper))
+        out[p.name] = f"{span} predicts these tests alike: {p.determined_by}."
+    return out
+
+
+def _plain(value: float) -> str:
+    return f"{value:.3g}"
 
 
 def jackknife_standard_error(leave_one_out_parameters: Sequence[Mapping[str, float]]) -> dict:
