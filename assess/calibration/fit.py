@@ -45,7 +45,12 @@ cross-validation: every test is predicted with the parameters fitted (on the
 grid) to the other tests, and the score is :math:`J` of those predictions.
 ``none`` has nothing to fit, so its score is its error. An effect earns its
 parameters only if its score is below ``(1 − margin)`` × the score of
-``none`` (:data:`MARGIN` = 10 %). Among the effects that do, those within
+``none`` (:data:`MARGIN` = 10 %) and it is fitted away from the declared
+model: some parameter lies more than :data:`NEUTRAL_STANDARD_ERRORS` = 2
+jackknife standard errors from its neutral value (:func:`departs_from_declared`;
+a rocking response near a threshold can change by 15 % with the input
+amplitude changed by 0.3 %, so an effect fitted at s = 0.997 can beat the
+declared model on noise alone). Among the effects that do, those within
 ``margin`` of the best score fit equally well; the one with the fewest
 parameters is selected (then the lower score). ``indistinguishable_from``
 lists the other effects whose score is within ``margin`` of the selected one's
@@ -395,12 +400,47 @@ def _refine(effect, cases, measured, cache, start: dict, start_value: float) -> 
     return {p.name: float(back(v)) for p, back, v in zip(effect.parameters, backward, x)}
 
 
+#: How many standard errors from its neutral value a parameter must be fitted to count as an effect.
+NEUTRAL_STANDARD_ERRORS = 2.0
+
+
+def departs_from_declared(fit) -> bool:
+    """Whether some parameter of ``fit`` lies more than 2 standard errors from its neutral value.
+
+    A parameter without a neutral value (``restitution``: Housner's e differs
+    per item) or without a standard error counts as departing; one the tests
+    cannot fix (``not_determined``) does not.
+
+    >>> from types import SimpleNamespace
+    >>> from assess.calibration.effects import EFFECTS
+    >>> fit = SimpleNamespace(effect=EFFECTS["input_scale"], parameters={"s": 0.997},
+    ...                       standard_error={"s": 0.004}, not_determined={})
+    >>> departs_from_declared(fit), departs_from_declared(SimpleNamespace(**{**vars(fit), "parameters": {"s": 0.7}}))
+    (False, True)
+    """
+    parameters = getattr(fit, "parameters", None)
+    errors = getattr(fit, "standard_error", None) or {}
+    missing = getattr(fit, "not_determined", None) or {}
+    if not parameters:
+        return True
+    for p in fit.effect.parameters:
+        if p.name in missing:
+            continue
+        error = errors.get(p.name)
+        if p.neutral is None or error is None:
+            return True
+        if abs(float(parameters[p.name]) - p.neutral) > NEUTRAL_STANDARD_ERRORS * float(error):
+            return True
+    return False
+
+
 def select_effect(fits: Sequence[EffectFit], margin: float = MARGIN) -> tuple[str, list[str]]:
     """The selected effect's name and the names it cannot be told from (module docstring)."""
     scores = {f.effect.name: f.score for f in fits}
     sizes = {f.effect.name: len(f.effect.parameters) for f in fits}
     reference = scores["none"]
-    earning = [n for n in scores if n != "none" and scores[n] < (1.0 - margin) * reference]
+    departs = {f.effect.name: departs_from_declared(f) for f in fits}
+    earning = [n for n in scores if n != "none" and scores[n] < (1.0 - margin) * reference and departs[n]]
     if earning:
         best = min(scores[n] for n in earning)
         equal = [n for n in earning if scores[n] <= (1.0 + margin) * best]
