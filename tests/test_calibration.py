@@ -123,7 +123,8 @@ def test_json_structure_and_tables(lab):
                              effects=["friction_scale", "input_scale"], cache=lab.cache)
     out = result.as_json()
     assert list(out) == ["error_before", "error_after", "residual_correlation_before", "selected",
-                         "indistinguishable_from", "candidates"]
+                         "indistinguishable_from", "applies_to", "candidates"]
+    assert out["applies_to"] == ["CABINET", "FRIDGE", "INCUBATOR", "SHELF"]
     assert set(out["residual_correlation_before"]) == {"im", "omega_p_over_p", "pgv_m_s", "mu", "b_over_h",
                                                        "pressure_kpa"}
     assert set(out["selected"]) == {"effect", "parameters", "standard_error", "not_determined"}

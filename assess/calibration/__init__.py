@@ -82,6 +82,8 @@ class CalibrationResult:
 
         A parameter the tests cannot fix (:func:`~assess.calibration.fit.undetermined_parameters`)
         is ``null`` in ``parameters`` and ``standard_error``, and ``not_determined`` says why.
+        ``applies_to`` lists the specimens, the items ``assess --calibration``
+        applies the effect to (:mod:`assess.calibration.apply`; "all" for every item).
         """
         correlations = residual_correlations(self.residuals_before, self.diagnosis)
         selected = self._fit(self.selected)
@@ -89,6 +91,7 @@ class CalibrationResult:
                 "residual_correlation_before": {k: (None if np.isnan(v) else v) for k, v in correlations.items()},
                 "selected": {"effect": self.selected, **_parameters_json(selected)},
                 "indistinguishable_from": list(self.indistinguishable_from),
+                "applies_to": sorted(set(str(s) for s in self.residuals_before["specimen"])),
                 "candidates": [{"effect": f.effect.name, **_parameters_json(f), "error": dict(f.error),
                                 "score": float(f.score)} for f in self.fits]}
 

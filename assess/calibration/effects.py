@@ -194,8 +194,9 @@ def calibrated_block(block: Block, effect: str, parameters: Mapping[str, float])
         return replace(block, mu=k * block.mu, mu_static=k * block.mu_static)
     if effect == "static_friction":
         return replace(block, mu_static=max(float(parameters["r"]) * block.mu, block.mu))
-    if effect == "restitution":
-        return replace(block, restitution=float(parameters["e"]))
+    if effect == "restitution":  # None: Housner's value (a calibration that could not determine e)
+        e = parameters["e"]
+        return replace(block, restitution=None if e is None else float(e))
     if effect == "foot_inset":
         return replace(block, foot_inset_m=float(parameters["d"]) * block.half_width_m)
     if effect == "velocity_friction":
