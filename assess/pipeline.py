@@ -117,7 +117,7 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     cases, runs = _add_simulation(cases, simulated_motions, progress, calibration)
     cases = _add_demand(cases, constants)
     summary, flags = _summarise(equipment, cases, constants, settings)
-    histories = _worst_histories(cases, runs, summary, simulated_motions, calibration)
+    histories = _worst_histories(cases, runs, summary, simulated_motions)
     regression = {"zeta": constants.zeta, "eta": constants.eta, "sigma": constants.sigma,
                   "im_min": constants.im_min, "im_max": constants.im_max,
                   "source": _regression_source(settings)}
@@ -257,6 +257,7 @@ def _add_simulation(cases: pd.DataFrame, motions: dict[str, list[tuple[Record, s
             run_history.append(index_of[(case.motion, r)])
     run_case = np.asarray(run_case)
     blocks_by_case = [_case_block(case, calibration) for case in cases.itertuples(index=False)]
+    cases = cases.assign(block=blocks_by_case)  # built once: the histories re-run these blocks
     if calibration is not None:  # the case's friction is its block's (the regression's IM uses it)
         cases = cases.assign(mu=[b.mu for b in blocks_by_case], mu_static=[b.mu_static for b in blocks_by_case])
     last = [-1.0]
@@ -300,7 +301,7 @@ def _add_simulation(cases: pd.DataFrame, motions: dict[str, list[tuple[Record, s
 
 
 def _worst_histories(cases: pd.DataFrame, runs: pd.DataFrame, summary: pd.DataFrame,
-                     motions: dict[str, list[tuple[Record, str]]], calibration=None) -> list[dict]:
+                     motions: dict[str, list[tuple[Record, str]]]) -> list[dict]:
     """Time histories (Fig. 7 of the paper) of the worst runs of the :data:`HISTORY_ITEMS` worst items.
 
     Worst: overturned first, then the largest θmax/α, then the largest
@@ -317,7 +318,7 @@ def _worst_histories(cases: pd.DataFrame, runs: pd.DataFrame, summary: pd.DataFr
     for run in worst.itertuples(index=False):
         case = cases.iloc[int(run.case)]
         record, description = motions[case.motion][int(run.realization)]
-        response = simulate(_case_block(case, calibration), record.accel_g, record.dt_s, return_history=True)
+        response = simulate(case["block"], record.accel_g, record.dt_s, return_history=True)
         floor = np.zeros(response.time_s.size)
         floor[:min(record.accel_g.size, floor.size)] = record.accel_g[:floor.size]
         histories.append({
