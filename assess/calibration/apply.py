@@ -150,6 +150,10 @@ def with_declared(calibrated, declared, calibration: AppliedCalibration):
     """
     from assess.result import Flag
 
+    if calibration.effect == "none":
+        note = (f"Calibration {calibration.file}: the tests selected no effect (none), so the model is "
+                f"assessed as declared.")
+        return replace(declared, hazard_notes=list(declared.hazard_notes) + [note])
     before = declared.summary.set_index("id")
     after = calibrated.summary.set_index("id")
     flags = list(calibrated.flags)
