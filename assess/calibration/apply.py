@@ -181,13 +181,20 @@ def with_declared(calibrated, declared, calibration: AppliedCalibration):
 
 
 def _state(row) -> str:
-    """'risk high, mode slide, peak simulated sliding 12.3 cm, overturns under 0 % of the motions'."""
-    sliding = row.get("sim_sliding_max_cm")
-    sliding_text = f"{float(sliding):.1f} cm" if sliding is not None and math.isfinite(float(sliding)) else "–"
-    overturn = row.get("overturn_fraction")
-    overturn_text = f"{float(overturn):.0%}" if overturn is not None and math.isfinite(float(overturn)) else "–"
-    return (f"risk {row['risk']}, mode {row['mode'] or '–'}, peak simulated sliding {sliding_text} (governing "
-            f"motion), overturns under {overturn_text} of the motions")
+    """'risk high (mode slide): sliding 12.3 cm median, 20.1 cm 84th percentile, 62 % chance past the
+    clearance, 0 % chance of overturning' from one summary row (the governing demand)."""
+    def number(column, fmt):
+        value = row.get(column)
+        try:
+            value = float(value)
+        except (TypeError, ValueError):
+            return "–"
+        return fmt.format(value) if math.isfinite(value) else "–"
+
+    return (f"risk {row['risk']} (mode {row['mode'] or '–'}): sliding {number('demand_median_cm', '{:.1f}')} cm "
+            f"median, {number('demand_p84_cm', '{:.1f}')} cm 84th percentile, "
+            f"{number('p_beyond_clearance', '{:.0%}')} chance past the clearance, "
+            f"{number('p_overturn', '{:.0%}')} chance of overturning")
 
 
 def read_calibration(path) -> AppliedCalibration:
