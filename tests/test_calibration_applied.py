@@ -122,7 +122,7 @@ def test_report_shows_each_affected_items_risk_with_and_without(lab):
     assert "Calibration calibration.json applied: friction_scale (factor k on μ and μ_s = 0.7" in html
     for item_id, *_ in ITEMS:
         assert "calibrated" in summary.loc[item_id, "flags"]
-        assert f"as declared: risk {declared.loc[item_id, 'risk']}," in html
+        assert f"as declared: risk {declared.loc[item_id, 'risk']} (mode " in html
         assert f"with the calibration (friction_scale" in html
     # the declared run carries no such flag
     assert not declared["flags"].fillna("").str.contains("calibrated").any()
