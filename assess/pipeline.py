@@ -45,7 +45,7 @@ HISTORY_ITEMS = 3
 
 def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
                    progress: Progress = lambda message: None, oq_hazard=None,
-                   derive_floors_roof: int | None = None) -> AssessmentResult:
+                   derive_floors_roof: int | None = None, calibration=None) -> AssessmentResult:
     """Assess every item of ``inventory`` under the motions of hazard level ``level_text``.
 
     ``oq_hazard`` (an :class:`~assess.hazard.openquake.OpenQuakeHazard`)
@@ -55,9 +55,27 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
     motions amplified by ASCE 7-16 eq. 13.3-1
     (:func:`~assess.hazard.motions.derive_floor_motions`); such items are flagged.
 
+    ``calibration`` (an :class:`~assess.calibration.apply.AppliedCalibration`,
+    ``--calibration``) switches its effect on for the items it applies to; the
+    assessment then runs twice, as declared and with it, and each affected
+    item's result both ways is flagged (:func:`~assess.calibration.apply.with_declared`).
+
     Raises :class:`~assess.errors.InputError` when the level is missing, a
     floor has no motion, or a motion cannot be described by PTA and Tp.
     """
+    # --- calibration (assess.calibration.apply): run twice, as declared and with the effect
+    if calibration is not None:
+        from assess.calibration.apply import check_applies, with_declared
+        check_applies(calibration, inventory.equipment)
+        declared = _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, None)
+        progress(f"again with the calibration {calibration.file}")
+        calibrated = _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, calibration)
+        return with_declared(calibrated, declared, calibration)
+    return _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, None)
+
+
+def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, calibration) -> AssessmentResult:
+    """:func:`run_assessment` with ``calibration`` applied (None: as declared)."""
     workbook_name = inventory.path.name
     settings = inventory.settings
     constants = RegressionConstants.from_settings(settings)
@@ -73,6 +91,11 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
         level_motions, _, note = scale_to_pga(level_motions, pga_g, workbook_name, Path(oq_hazard.path).name)
         hazard_notes.append(note)
         progress(note)
+    if calibration is not None:  # input_scale: the motions (assess.calibration.apply)
+        from assess.calibration.apply import scaled_motions
+        level_motions, note = scaled_motions(level_motions, calibration)
+        if note:
+            hazard_notes.append(note)
 
     equipment = inventory.equipment
     freestanding = equipment[~equipment["anchored"]]
@@ -96,7 +119,7 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
     cases = _item_motion_direction_cases(freestanding, pairs)
     progress("preparing the motions to simulate")
     simulated_motions, simulated_as = _simulated_motions(level_motions, workbook_name, settings, seed)
-    cases, runs = _add_simulation(cases, simulated_motions, progress)
+    cases, runs = _add_simulation(cases, simulated_motions, progress, calibration)
     cases = add_pulse_share(_add_demand(cases, constants))
     cases["demand_source"] = motion_sources(cases, simulated_as, constants)
     demand = governing_demand(cases, runs, constants, room_quantile=1.0 - float(settings["risk_pf_moderate"]))
@@ -209,9 +232,13 @@ def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str, settings
     return motions, kinds
 
 
-def _case_block(case) -> Block:
-    return Block(half_width_m=float(case.half_width_m), cg_height_m=float(case.cg_height_m),
-                 height_m=float(case.height_m), mu=float(case.mu), mu_static=float(case.mu_static))
+def _case_block(case, calibration=None) -> Block:
+    block = Block(half_width_m=float(case.half_width_m), cg_height_m=float(case.cg_height_m),
+                  height_m=float(case.height_m), mu=float(case.mu), mu_static=float(case.mu_static))
+    if calibration is None:
+        return block
+    from assess.calibration.apply import case_block  # the calibration's effect, where it applies
+    return case_block(block, case.id, calibration)
 
 
 def _majority_mode(modes: pd.Series) -> str:
@@ -222,7 +249,7 @@ def _majority_mode(modes: pd.Series) -> str:
 
 
 def _add_simulation(cases: pd.DataFrame, motions: dict[int, list[tuple[Record, str]]],
-                    progress: Progress) -> tuple[pd.DataFrame, pd.DataFrame]:
+                    progress: Progress, calibration=None) -> tuple[pd.DataFrame, pd.DataFrame]:
     """Simulate every case under every history of its motion: ``sim_*`` columns, and the runs.
 
     A case's ``sim_*`` values summarise its runs (one per history): the
@@ -238,7 +265,10 @@ def _add_simulation(cases: pd.DataFrame, motions: dict[int, list[tuple[Record, s
             run_case.append(k)
             run_history.append(index_of[(case.motion_key, r)])
     run_case = np.asarray(run_case)
-    blocks_by_case = [_case_block(case) for case in cases.itertuples(index=False)]
+    blocks_by_case = [_case_block(case, calibration) for case in cases.itertuples(index=False)]
+    cases = cases.assign(block=blocks_by_case)  # built once: the histories re-run these blocks
+    if calibration is not None:  # the case's friction is its block's (the regression's IM uses it)
+        cases = cases.assign(mu=[b.mu for b in blocks_by_case], mu_static=[b.mu_static for b in blocks_by_case])
     last = [-1.0]
 
     def report(done, total):
@@ -250,10 +280,14 @@ def _add_simulation(cases: pd.DataFrame, motions: dict[int, list[tuple[Record, s
                            [motions[n][r][0].accel_g for n, r in histories],
                            [motions[n][r][0].dt_s for n, r in histories], np.asarray(run_history),
                            progress=report)
+    theta_max_over_alpha = peaks.theta_max_over_alpha
+    if calibration is not None:  # over α of the declared box, feet or not (SPEC §5)
+        from assess.calibration.apply import theta_over_declared
+        theta_max_over_alpha = theta_over_declared(theta_max_over_alpha, [blocks_by_case[k] for k in run_case])
     runs = pd.DataFrame({
         "case": run_case, "realization": [histories[j][1] for j in run_history],
         "sliding_max_cm": peaks.sliding_max_m * 100.0, "sliding_residual_cm": peaks.sliding_residual_m * 100.0,
-        "theta_max_over_alpha": peaks.theta_max_over_alpha, "uplift": peaks.uplift,
+        "theta_max_over_alpha": theta_max_over_alpha, "uplift": peaks.uplift,
         "overturned": peaks.overturned, "mode": peaks.mode, "solver": peaks.solver})
     grouped = runs.groupby("case", sort=True)
     summary = pd.DataFrame({
@@ -293,7 +327,7 @@ def _worst_histories(cases: pd.DataFrame, runs: pd.DataFrame, summary: pd.DataFr
     for run in worst.itertuples(index=False):
         case = cases.iloc[int(run.case)]
         record, description = motions[case.motion_key][int(run.realization)]
-        response = simulate(_case_block(case), record.accel_g, record.dt_s, return_history=True)
+        response = simulate(case["block"], record.accel_g, record.dt_s, return_history=True)
         floor = np.zeros(response.time_s.size)
         floor[:min(record.accel_g.size, floor.size)] = record.accel_g[:floor.size]
         histories.append({
