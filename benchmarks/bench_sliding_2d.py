@@ -1,6 +1,6 @@
 """How much sliding under both horizontal components differs from the one-way answers, and its cost.
 
-Run: python benchmarks/bench_sliding_2d.py [--blocks 16] [--repeat 3]
+Run: python benchmarks/bench_sliding_2d.py [--blocks 3] [--repeat 5]
 
 Record pairs: pyslammer's 18 sample records, each with the next one in name order
 (the last with the first); the second is resampled linearly onto the first's steps
@@ -61,8 +61,8 @@ def padded(rows):
 
 def main() -> None:
     parser = argparse.ArgumentParser()
-    parser.add_argument("--blocks", type=int, default=16)
-    parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--blocks", type=int, default=3)
+    parser.add_argument("--repeat", type=int, default=5)
     args = parser.parse_args()
 
     pairs = record_pairs()

@@ -200,6 +200,8 @@ def test_record_pairs_against_moreau_time_stepping(records, mu):
     the equation: implicit projection step on substeps of dt/200, no events, first order.
     Measured: largest relative difference of the peak 7.5e-4 (μ 0.1) and 1.5e-3 (μ 0.2)
     (8.8e-4 and 1.7e-3 with the reference on dt/100); residuals within 4.0e-3 of the peak.
+    (Moreau, J. J. (1988). Unilateral contact and dry friction in finite freedom
+    dynamics. CISM Courses and Lectures 302, Springer, 1-82.)
     """
     for first, second in pairs(records)[::3]:
         ax, ay, dt = record_pair(records[first], records[second])
@@ -213,8 +215,8 @@ def test_record_pairs_against_moreau_time_stepping(records, mu):
 def test_default_substep_against_16_times_finer(records):
     """Accuracy of the default 1 ms substep on real pairs: against the same kernel at 1/16 of it.
 
-    Measured on 6 pairs × μ 0.05/0.1/0.2: largest relative difference of the peak 1.2e-3
-    (median 7e-5); on smooth two-component input the difference falls about 4x per halving
+    Measured on 6 pairs × μ 0.05/0.1/0.2: largest relative difference of the peak 1.3e-3
+    (median 6e-5; on all 18 pairs 1.5e-3, median 5e-5); on smooth two-component input the difference falls about 4x per halving
     of the substep (second order), on records less regularly (first order near stops).
     """
     worst = 0.0
@@ -350,7 +352,7 @@ def test_mujoco_box_on_two_component_records(mujoco_pairs, mu):
 
     Pairs: Duzce 375-090 (x) with Kobe TAK-090 (y), 30 s; Northridge PAC-175 (x) with
     Cape Mendocino PET-090 (y), 20 s. Measured |peak_MuJoCo/peak_kernel − 1|:
-    5.5e-3 and 1.4e-3 (Duzce/Kobe, μ 0.1 and 0.2), 2.1e-4 and 2.5e-5 (Northridge/Cape),
+    5.5e-3 and 1.3e-3 (Duzce/Kobe, μ 0.1 and 0.2), 2.1e-4 and 2.5e-5 (Northridge/Cape),
     the same scale as the engine's own one-component error above; residuals agree within
     0.73 % of the peak.
     """
