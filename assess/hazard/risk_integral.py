@@ -346,7 +346,7 @@ def _usable_curve(levels_g, annual_rates):
     if not (np.all(np.isfinite(levels)) and np.all(levels > 0.0)
             and np.all(np.diff(levels) > 0.0)):
         raise ValueError("the levels must be finite, > 0 and increasing")
-    if np.any(np.isnan(rates)) or np.any(rates < 0.0) or np.any(np.diff(rates) > 0.0):
+    if np.any(np.isnan(rates)) or np.any(rates < 0.0) or np.any(rates[1:] > rates[:-1]):
         raise ValueError("the annual rates must be >= 0 and non-increasing with the level")
     keep = np.isfinite(rates) & (rates > 0.0)
     notes = []
