@@ -23,7 +23,7 @@ from scipy import optimize, stats
 
 from assess.fragility.msa import (
     ALL_FAILED, DECREASING, FITTED, NO_FAILURES, ONE_INTENSITY, SEPARATED,
-    fit_lognormal_fragility, stripes_from_outcomes,
+    fit_lognormal_fragilities, fit_lognormal_fragility, stripes_from_outcomes,
 )
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
 from assess.mechanics.sliding import sliding_peaks_batch
@@ -116,6 +116,34 @@ def test_maximum_and_standard_errors_against_an_independent_computation():
     cov = np.linalg.inv(hess)
     np.testing.assert_allclose(fit.covariance, cov, rtol=1e-4)
     assert fit.se_median_g == pytest.approx(fit.median_g * math.sqrt(cov[0, 0]), rel=1e-4)
+
+
+def test_many_fits_at_once_equal_the_fits_one_by_one():
+    """Rows of different designs, padded with empty stripes, with statuses mixed: each row
+    comes out as its own fit (the batch's rows do not share a step or a stopping test)."""
+    rng = np.random.default_rng(11)
+    rows = [_draw(rng, 12), _draw(rng, 40, theta_g=0.3, beta=0.7),
+            _draw(rng, 6, stripes_g=np.geomspace(0.3, 0.9, 4)),
+            (np.array([0.1, 0.2, 0.4]), np.array([5, 5, 5]), np.array([0, 0, 5])),  # separated
+            (np.array([0.1, 0.2]), np.array([5, 5]), np.array([0, 0]))]  # no failure
+    width = max(r[0].size for r in rows)
+
+    def padded(values, fill):
+        return np.array([np.concatenate([v, np.full(width - v.size, fill)]) for v in values])
+
+    fits = fit_lognormal_fragilities(padded([r[0] for r in rows], 1.0),
+                                     padded([r[1] for r in rows], 0),
+                                     padded([r[2] for r in rows], 0))
+    for fit, row in zip(fits, rows):
+        alone = fit_lognormal_fragility(*row)
+        assert fit.status == alone.status and fit.n_trials == alone.n_trials
+        assert fit.n_stripes == alone.n_stripes
+        if alone.fitted:
+            assert fit.median_g == pytest.approx(alone.median_g, rel=1e-9)
+            assert fit.beta == pytest.approx(alone.beta, rel=1e-9)
+            np.testing.assert_allclose(fit.covariance, alone.covariance, rtol=1e-7)
+            assert fit.log_likelihood == pytest.approx(alone.log_likelihood, rel=1e-12)
+    assert [f.status for f in fits] == [FITTED, FITTED, FITTED, SEPARATED, NO_FAILURES]
 
 
 # ----------------------------------------------------------- closed form: Newmark's rectangular pulse
