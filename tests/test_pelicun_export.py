@@ -307,3 +307,23 @@ def test_the_same_harness_on_the_real_library_row(tmp_path):
     probs, _ = _pelicun_damage_probabilities(REAL_CSV, ["E.20.22.001"], tmp_path)
     np.testing.assert_allclose(probs["E.20.22.001"][1], _phi(1.2 * PFA_VALUES_G, 1.0, 0.4),
                                atol=0.025)
+
+
+def test_loads_beside_the_installed_library_as_the_docstring_says(tmp_path):
+    pytest.importorskip("pelicun.assessment", reason="pelicun is not installed")
+    from pelicun.assessment import Assessment
+
+    csv_path, _ = write_pelicun_fragility(tmp_path / "fragility", ITEMS)
+    asmnt = Assessment({"PrintLog": False, "Seed": 1})
+    asmnt.stories = 1
+    marginals = pd.DataFrame({"Units": "ea", "Location": "1", "Direction": "1", "Theta_0": 1.0,
+                              "Blocks": 1}, index=["freezer_F12", "E.20.22.001"])
+    asmnt.asset.load_cmp_model({"marginals": marginals})
+    asmnt.asset.generate_cmp_sample(10)
+    asmnt.damage.load_model_parameters(
+        [str(csv_path), "PelicunDefault/FEMA P-58/fragility.csv"],
+        set(asmnt.asset.list_unique_component_ids()))
+    params = asmnt.damage.ds_model.damage_params
+    assert asmnt.damage.missing_components == []
+    assert set(params.index) == {"freezer_F12", "E.20.22.001"}
+    assert params.loc["freezer_F12", ("LS2", "Theta_1")] == 0.4

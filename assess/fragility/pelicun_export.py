@@ -43,6 +43,19 @@ leaves it out of a damage assessment (with a warning naming it).
 The column set, value domains and metadata schema follow the library's own
 format tests (``tests/test_data_format.py`` of [1]).
 
+Using the files in a FEMA P-58 assessment (pelicun 3.10)
+--------------------------------------------------------
+Give each item a row of the asset model (component marginals) with its
+``ID``, ``Units`` ``ea``, the ``Location`` (story) it stands on, the
+``Direction`` (1 or 2) of the PFA that runs along the simulated direction,
+and ``Theta_0`` = 1; then load the exported table before the library's::
+
+    asmnt.damage.load_model_parameters(
+        ["fragility/fragility.csv", "PelicunDefault/FEMA P-58/fragility.csv"], cmp_set)
+
+Consequences (repair cost and time) are the user's: the library has none for
+these components, as it has none for the P-58 unanchored contents.
+
 References
 ----------
 .. [1] NHERI SimCenter, Damage and Loss Model Library (DLML),
