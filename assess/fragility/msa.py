@@ -17,7 +17,7 @@ stripes ([1], section "Multiple stripes analysis")
     L(\\theta, \\beta) = \\prod_j \\binom{n_j}{z_j}\\, p_j^{z_j} (1 - p_j)^{n_j - z_j},
     \\qquad p_j = \\Phi\\!\\left(\\frac{\\ln(x_j/\\theta)}{\\beta}\\right).
 
-This is a probit regression on :math:`\\ln x` ([2] §3.3, §4.3): with
+This is a probit regression on :math:`\\ln x` ([2], binary data): with
 :math:`\\eta = \\alpha + \\gamma \\ln x`, :math:`\\gamma = 1/\\beta`,
 :math:`\\alpha = -\\ln\\theta/\\beta`. Its log-likelihood is concave in
 :math:`(\\alpha, \\gamma)` (:math:`\\ln\\Phi` is log-concave), so Newton's
@@ -395,7 +395,8 @@ def _probit_terms(alpha, gamma, t, n, z):
     """Per row: log-likelihood (without binomial coefficients); per stripe: dl/dη, -d²l/dη².
 
     With λ₁ = φ(η)/Φ(η) and λ₀ = φ(η)/Φ(-η) (inverse Mills ratios):
-    dl/dη = zλ₁ - (n-z)λ₀ and -d²l/dη² = zλ₁(λ₁+η) + (n-z)λ₀(λ₀-η) > 0 ([2] §4.3).
+    dl/dη = zλ₁ - (n-z)λ₀ and -d²l/dη² = zλ₁(λ₁+η) + (n-z)λ₀(λ₀-η) > 0
+    (differentiating ln Φ(η) and ln Φ(-η) twice).
     """
     eta = alpha[:, None] + gamma[:, None] * t
     log_cdf = special.log_ndtr(eta)

@@ -1,8 +1,8 @@
 """Annual rate of failure: a lognormal fragility integrated over a hazard curve.
 
 The mean annual rate at which an item fails (slides past its clearance,
-overturns) is the fragility integrated over the hazard curve ([1] eq. 1 of
-the PEER framework; [2]):
+overturns) is the fragility integrated over the hazard curve (the total
+probability theorem of performance-based earthquake engineering; [1], [2]):
 
 .. math::
 
