@@ -134,6 +134,7 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
         summary=summary[SUMMARY_COLUMNS], motions=_motion_table(cases), flags=flags,
         regression=regression, settings=dict(settings), simulated=True, seed=seed,
         histories=histories, hazard_notes=hazard_notes, suite_runs=suite_runs(cases, runs),
+        solver_runs={str(k): int(v) for k, v in runs["solver"].value_counts().items()},
     )
 
 
@@ -298,7 +299,7 @@ def _add_simulation(cases: pd.DataFrame, motions: dict[int, list[tuple[Record, s
         "sim_overturn_share": grouped["overturned"].mean(),
         "sim_uplift": grouped["uplift"].any(),
         "sim_mode": grouped["mode"].agg(_majority_mode),
-        "sim_solver": grouped["solver"].agg(lambda s: ", ".join(sorted(set(s)))),
+        "sim_solver": grouped["solver"].agg(lambda s: " | ".join(sorted(set(s)))),
     })
     summary["sim_overturned"] = summary["sim_overturn_share"] >= 0.5
     cases = cases.reset_index(drop=True).join(summary.reset_index(drop=True))

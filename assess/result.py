@@ -83,6 +83,8 @@ class AssessmentResult:
     suite_runs : DataFrame or None
         What the governing demand is made of: one row per item × motion × history
         (:func:`assess.fragility.governing.suite_runs`), for the report's item details.
+    solver_runs : dict or None
+        How many runs each solver answered.
     comparison : DataFrame or None
         Against a previous run (:func:`assess.comparison.compare_summaries`):
         which items changed risk class and why; written as comparison.csv.
@@ -104,6 +106,7 @@ class AssessmentResult:
     hazard_notes: list = field(default_factory=list)
     comparison: pd.DataFrame | None = None
     suite_runs: pd.DataFrame | None = None
+    solver_runs: dict | None = None
 
     def risk_counts(self) -> dict[str, int]:
         """Number of items (rows, not quantity) in each risk class."""

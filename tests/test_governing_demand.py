@@ -294,3 +294,12 @@ def test_every_item_is_in_one_action_group_and_no_advice_contradicts_its_numbers
         {i: summary.loc[i, "action_kind"] for i in ("TIGHT", "ROOMY", "RACK", "BOX")}
     assert sum(result.risk_counts().values()) == len(summary)
     assert "What to do first" in render_html(result)
+
+
+def test_the_simulation_counts_add_up(sliding_suite):
+    from assess.report.render import report_context
+
+    result, _ = sliding_suite
+    counts = report_context(result)["simulation"]
+    assert counts["overturned"] + counts["uplift"] + counts["slid"] + counts["rest"] == counts["cases"]
+    assert sum(n for _, n in counts["solvers"]) == counts["runs"] == len(result.motions)

@@ -419,15 +419,28 @@ def _changes(comparison) -> dict | None:
 
 
 def _simulation_counts(result) -> dict:
-    """How many cases each solver answered, and how many slid, uplifted and overturned."""
+    """How the simulated cases ended, in classes that add up, and how many runs each solver answered.
+
+    A case (item × motion × direction) counts once, by the worst of its runs:
+    ``overturned`` if any run overturns, else ``uplift`` if any uplifts, else
+    ``slid`` if it slides, else ``rest``; the four add up to ``cases``.
+    Solvers are counted per run (a case of several histories may use several).
+    """
     motions = result.motions
     if not result.simulated or "sim_solver" not in motions:
         return {}
-    solvers = motions["sim_solver"].astype(str).value_counts()
-    return {"cases": len(motions), "solvers": [(name, int(n)) for name, n in solvers.items()],
-            "overturned": int(motions["sim_overturned"].astype(bool).sum()),
-            "uplift": int(motions["sim_uplift"].astype(bool).sum()),
-            "slid": int((pd.to_numeric(motions["sim_sliding_max_cm"], errors="coerce") > 0).sum())}
+    overturned = motions["sim_overturn_share"].fillna(0.0).astype(float) > 0.0 if "sim_overturn_share" in motions \
+        else motions["sim_overturned"].astype(bool)
+    uplift = motions["sim_uplift"].astype(bool) & ~overturned
+    slid = (pd.to_numeric(motions["sim_sliding_max_cm"], errors="coerce") > 0) & ~overturned & ~uplift
+    rest = ~(overturned | uplift | slid)
+    solvers = getattr(result, "solver_runs", None)
+    if solvers is None:  # a result built without the pipeline: one run per case
+        solvers = motions["sim_solver"].fillna("").astype(str).value_counts().to_dict()
+    return {"cases": len(motions), "runs": int(sum(solvers.values())),
+            "solvers": sorted(solvers.items(), key=lambda kv: -kv[1]),
+            "overturned": int(overturned.sum()), "uplift": int(uplift.sum()), "slid": int(slid.sum()),
+            "rest": int(rest.sum())}
 
 
 def _with_summary(result, summary: pd.DataFrame):
