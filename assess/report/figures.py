@@ -261,8 +261,15 @@ def sliding_demand_figures(result, per_figure: int = ITEMS_PER_DEMAND_FIGURE) ->
     item is freestanding).
     """
     items = _freestanding(result)
-    return [_sliding_demand_figure(items.iloc[start:start + per_figure])
+    x_top = _demand_axis_top(items)  # one scale for all the figures, so bars compare across them
+    return [_sliding_demand_figure(items.iloc[start:start + per_figure], x_top)
             for start in range(0, len(items), per_figure)]
+
+
+def _demand_axis_top(items: pd.DataFrame) -> float:
+    values = [items[c].astype(float).to_numpy() for c in ("demand_median_cm", "demand_p84_cm", "clearance_cm")]
+    finite = np.concatenate([v[np.isfinite(v)] for v in values] + [[10.0]])
+    return float(np.max(finite)) * 1.12
 
 
 def _short(text: str, limit: int = 26) -> str:
@@ -281,13 +288,11 @@ def _left_align_tick_labels(axes) -> None:
     axes.tick_params(axis="y", pad=widest_px * 72.0 / axes.figure.dpi + 3.0)
 
 
-def _sliding_demand_figure(items: pd.DataFrame) -> str:
+def _sliding_demand_figure(items: pd.DataFrame, x_top: float) -> str:
     count = len(items)
     median = items["demand_median_cm"].astype(float).to_numpy()
     p84 = items["demand_p84_cm"].astype(float).to_numpy()
     clearance = items["clearance_cm"].astype(float).to_numpy()
-    finite = np.concatenate([v[np.isfinite(v)] for v in (median, p84, clearance)] + [[10.0]])
-    x_top = float(np.max(finite)) * 1.12
     rows = np.arange(count)
     colours = [RISK_COLOURS.get(str(r), "#000000") for r in items["risk"]]
     with matplotlib.rc_context(_RC):
@@ -310,7 +315,7 @@ def _sliding_demand_figure(items: pd.DataFrame) -> str:
             if np.isfinite(c):
                 axes.plot([c, c], [row - 0.36, row + 0.36], color="black", lw=2.0, zorder=5,
                           solid_capstyle="butt")
-        labels = [f"{_short(str(i), 12)}  {_short(str(n))}" for i, n in
+        labels = [f"{_short(str(i), 12)}  {_short(str(n), 40)}" for i, n in
                   zip(items["id"], items["name"])]
         axes.set_yticks(rows, labels)
         _left_align_tick_labels(axes)
