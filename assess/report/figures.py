@@ -47,7 +47,7 @@ RISK_COLOURS = {
 FIGURE_WIDTH_IN = 6.6
 
 #: Items per sliding-demand figure; a longer inventory is split over several figures.
-ITEMS_PER_DEMAND_FIGURE = 30
+ITEMS_PER_DEMAND_FIGURE = 36
 
 _RC = {
     "svg.hashsalt": "assess-report",
@@ -296,7 +296,7 @@ def _sliding_demand_figure(items: pd.DataFrame, x_top: float) -> str:
     rows = np.arange(count)
     colours = [RISK_COLOURS.get(str(r), "#000000") for r in items["risk"]]
     with matplotlib.rc_context(_RC):
-        figure = _new_figure(0.9 + 0.27 * count)
+        figure = _new_figure(0.9 + 0.21 * count)
         axes = figure.add_subplot()
         axes.grid(axis="y", visible=False)
         for row, m, p, c, colour, mode in zip(rows, median, p84, clearance, colours,
