@@ -20,6 +20,7 @@ from importlib import resources
 from pathlib import Path
 
 import jinja2
+import numpy as np
 import pandas as pd
 from markupsafe import Markup
 
@@ -232,11 +233,16 @@ def item_anchors(ids) -> list[str]:
     return anchors
 
 
+#: How many of the worst items' histories are drawn full size (Fig. 7 of the paper).
+HISTORY_FIGURES = 3
+#: Size of an item's small history plot [px] and the most points it draws per curve.
+SPARK_WIDTH, SPARK_HEIGHT, SPARK_POINTS = 560, 70, 280
 #: Size of an item's suite strip [px]: width, left margin for the motion names, height per motion.
 STRIP_WIDTH, STRIP_LEFT, STRIP_ROW = 560, 170, 13
 
 
-def _item_details(rows: list[dict], summary: pd.DataFrame, runs: pd.DataFrame | None) -> list[dict]:
+def _item_details(rows: list[dict], summary: pd.DataFrame, runs: pd.DataFrame | None,
+                  histories: dict | None = None) -> list[dict]:
     """One block per freestanding item: its numbers, and its suite drawn as a strip (every motion a line,
     every history a dot at its sliding, overturned ones as crosses, the clearance a bar)."""
     by_id = summary.set_index(summary["id"].astype(str))
@@ -249,9 +255,40 @@ def _item_details(rows: list[dict], summary: pd.DataFrame, runs: pd.DataFrame | 
         strip = None
         if runs is not None and len(runs):
             strip = _suite_strip(runs[runs["id"].astype(str) == row["id"]], _finite(item.get("clearance_cm")))
-        details.append({**row, "strip": strip, "theta": format_significant(item.get("theta_max_over_alpha"), 2),
+        history = (histories or {}).get(row["id"])
+        details.append({**row, "strip": strip, "spark": _history_spark(history) if history else None,
+                        "theta": format_significant(item.get("theta_max_over_alpha"), 2),
                         "alpha": format_significant(item.get("alpha_rad"), 2)})
     return details
+
+
+def _history_spark(history: dict) -> dict:
+    """The item's worst run as two small polylines: sliding [cm] (with the clearance) and θ/α (with ±1)."""
+    time_s = np.asarray(history["time_s"], dtype=float)
+    step = max(1, int(np.ceil(time_s.size / SPARK_POINTS)))
+    time_s = time_s[::step]
+    sliding = np.asarray(history["sliding_cm"], dtype=float)[::step]
+    theta = np.clip(np.asarray(history["theta_over_alpha"], dtype=float)[::step], -3.0, 3.0)
+    span = max(float(time_s[-1]), 1e-9)
+    half = SPARK_HEIGHT / 2.0
+
+    def points(values, limit):
+        limit = max(limit, 1e-9)
+        xs = 40 + (SPARK_WIDTH - 50) * time_s / span
+        ys = half - (half - 4) * np.clip(values / limit, -1.0, 1.0)
+        finite = np.isfinite(xs) & np.isfinite(ys)  # the run stops where the item overturns
+        return " ".join(f"{x:.1f},{y:.1f}" for x, y in zip(xs[finite], ys[finite]))
+
+    clearance = float(history.get("clearance_cm", np.nan))
+    sliding_limit = max(float(np.nanmax(np.abs(sliding))) if np.isfinite(sliding).any() else 0.0,
+                        clearance if np.isfinite(clearance) else 0.0, 0.1)
+    theta_limit = max(float(np.nanmax(np.abs(theta))) if np.isfinite(theta).any() else 0.0, 1.0)
+    return {"width": SPARK_WIDTH, "height": SPARK_HEIGHT, "sliding": points(sliding, sliding_limit),
+            "theta": points(theta, theta_limit), "sliding_limit": format_significant(sliding_limit, 2),
+            "theta_limit": format_significant(theta_limit, 2), "duration": f"{span:.0f}",
+            "clearance_y": (half - (half - 4) * clearance / sliding_limit) if np.isfinite(clearance) else None,
+            "motion": _text(history.get("sim_motion")), "overturned": bool(history.get("overturned")),
+            "direction": history.get("direction")}
 
 
 def _suite_strip(runs: pd.DataFrame, clearance_cm: float | None) -> dict | None:
@@ -377,7 +414,8 @@ def report_context(result) -> dict:
         "total_items": len(rows),
         "total_units": int(quantity.sum()),
         "action_groups": _action_groups(rows),
-        "details": _item_details(rows, summary, getattr(result, "suite_runs", None)),
+        "details": _item_details(rows, summary, getattr(result, "suite_runs", None),
+                                 {str(h["id"]): h for h in getattr(result, "histories", [])}),
         "high": [r for r in rows if r["risk"] == "high"],
         "moderate": [r for r in rows if r["risk"] == "moderate"],
         "rows": rows,
@@ -398,7 +436,7 @@ def report_context(result) -> dict:
             "histories": [{"uri": _data_uri(figures.history_figure(h)), "id": h["id"], "name": h["name"],
                            "motion": h["motion"], "sim_motion": h["sim_motion"], "solver": h["solver"],
                            "direction": h["direction"]}
-                          for h in getattr(result, "histories", [])],
+                          for h in list(getattr(result, "histories", []))[:HISTORY_FIGURES]],
         },
         "simulation": _simulation_counts(result),
         "hazard_notes": list(getattr(result, "hazard_notes", [])),
