@@ -41,6 +41,7 @@ def residual_figure(result) -> str:
             ax.scatter(x, after["sliding_log_ratio"], s=10, color="#1f4e79", label=f"with {result.selected}")
             if log and np.all(x[np.isfinite(x)] > 0):
                 ax.set_xscale("log")
+                figures.plain_log_ticks(ax.xaxis)
             ax.set_xlabel(label)
             ax.set_ylabel("ln(predicted / measured)")
         axes[0].legend(loc="best", frameon=False)

@@ -131,6 +131,13 @@ def _place_labels(axes, points, labels, colours, fontsize=6.5) -> None:
         placed.append(chosen[1])
 
 
+def plain_log_ticks(*axes_axis) -> None:
+    """Label a log axis with plain numbers (0.5, 2, 30), never "2×10⁰"; no labels on minor ticks."""
+    for axis in axes_axis:
+        axis.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda v, _: f"{v:g}"))
+        axis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+
+
 def _shade_fitted_range(axes, im_min: float, im_max: float, label: str | None) -> None:
     axes.axvspan(im_min, im_max, color="#eaf2f8", zorder=0, lw=0, label=label)
 
@@ -229,9 +236,7 @@ def regression_figure(result, table3: pd.DataFrame | None = None) -> str:
                 axes.set_title("log–log: ln Π is linear in ln IM", loc="left")
                 axes.set_xticks([0.5, 1, 2, 3, 5, 7])
                 axes.set_yticks([0.1, 0.2, 0.5, 1, 2, 5])
-                for axis in (axes.xaxis, axes.yaxis):
-                    axis.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda v, _: f"{v:g}"))
-                    axis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+                plain_log_ticks(axes.xaxis, axes.yaxis)
             else:
                 axes.set_xlim(0, im_top)
                 axes.set_ylim(0, max(4.0, float(table["edp"].max()) * 1.2))
@@ -389,6 +394,7 @@ def simulation_vs_regression_figure(result) -> str:
             axes.set_yscale("log")
             axes.set_xlim(low, high)
             axes.set_ylim(low, high)
+            plain_log_ticks(axes.xaxis, axes.yaxis)
             axes.legend(loc="upper left", frameon=False)
         else:
             axes.text(0.5, 0.5, "no case slides in both", ha="center", va="center", transform=axes.transAxes)
