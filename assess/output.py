@@ -54,9 +54,14 @@ def neutralise_formulas(table: pd.DataFrame) -> pd.DataFrame:
     """
     out = table.copy()
     for column in out.columns:
-        if out[column].dtype == object or pd.api.types.is_string_dtype(out[column].dtype):
+        if _is_text(out[column]):
             out[column] = out[column].map(_neutralised)
     return out
+
+
+def _is_text(column: pd.Series) -> bool:
+    """Whether a column may hold text (object or string dtype); numeric columns never change."""
+    return column.dtype == object or pd.api.types.is_string_dtype(column.dtype)
 
 
 def _neutralised(value):
@@ -69,7 +74,7 @@ def restore_text(table: pd.DataFrame) -> pd.DataFrame:
     """The text cells of a CSV written through :func:`neutralise_formulas`, as they were."""
     out = table.copy()
     for column in out.columns:
-        if out[column].dtype == object:
+        if _is_text(out[column]):
             out[column] = out[column].map(
                 lambda v: v[1:] if isinstance(v, str) and v.startswith("'") and v[1:].startswith(_FORMULA_START)
                 else v)
