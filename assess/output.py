@@ -28,6 +28,7 @@ from assess.result import AssessmentResult
 OUTPUT_NAMES = frozenset({
     "summary.csv", "motions.csv", "comparison.csv", "summary.xlsx", "report.html", "report.pdf",
     "calibration.json", "calibration_tests.csv", "fragility",
+    ".DS_Store", "Thumbs.db", "desktop.ini",  # what a file browser leaves in a folder it has shown
 })
 #: First characters that make a spreadsheet read a cell as a formula (OWASP, "CSV Injection"):
 #: = + - @, tab and carriage return; and the quote itself, so that the prefix can be undone exactly.

@@ -198,3 +198,16 @@ def test_zero_vp_with_synthetic_motions_is_refused_located(tmp_path):
     done = run(book, "--hazard", "2in50", "--out", tmp_path / "out", cwd=tmp_path)
     assert_refused(done, "wb.xlsx, sheet 'hazard', row 2, column 'vp_cm_s'", "vp is 0",
                    "leave the cell empty")
+
+
+# ------------------------------------------------------------------ how much of the input a message may echo
+
+def test_messages_are_bounded_whatever_the_input():
+    """A 40,000-character cell and a sheet of 100,000 wrong rows give messages of a few kB."""
+    from assess.errors import MAX_PROBLEMS_SHOWN, Problem
+    long = Problem(file="x" * 40_000, message="m" * 40_000, fix="f" * 40_000, sheet="hazard", row=2)
+    assert len(str(long)) < 2_000 and "more characters" in str(long)
+    many = InputError([Problem(file="wb.xlsx", message=f"row {k} is wrong.", row=k) for k in range(100_000)])
+    text = str(many)
+    assert text.startswith("100000 problems in the input:")
+    assert len(text.splitlines()) == 1 + MAX_PROBLEMS_SHOWN + 1 and "99950 more" in text
