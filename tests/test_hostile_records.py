@@ -211,3 +211,16 @@ def test_messages_are_bounded_whatever_the_input():
     text = str(many)
     assert text.startswith("100000 problems in the input:")
     assert len(text.splitlines()) == 1 + MAX_PROBLEMS_SHOWN + 1 and "99950 more" in text
+
+
+@pytest.mark.parametrize("dt_s, accepted", [(MIN_STEP_S, True), (MIN_STEP_S / 10, False), (MAX_STEP_S, True),
+                                            (0.2, False), (5.0, False)])
+def test_time_step_bounds(tmp_path, dt_s, accepted):
+    count = int(round(2.5 / dt_s)) + 1  # 2.5 s of samples
+    path = tmp_path / "r.csv"
+    path.write_text(f"accel_g,dt_s={dt_s!r}\n" + "0.1\n-0.1\n" * (count // 2 + 1))
+    if accepted:
+        assert read_record(path).dt_s == dt_s
+    else:
+        with pytest.raises(InputError, match=f"the time step is {dt_s:g} s .dt_s in the header, line 1."):
+            read_record(path)

@@ -52,9 +52,9 @@ MAX_PLAUSIBLE_PGA_G = 5.0
 #: Shortest record [s] a caller asking for a duration check should demand
 #: (``read_record(path, min_duration_s=MIN_DURATION_S)``).
 MIN_DURATION_S = 2.0
-#: Most samples a record may hold: 16 minutes at 1 kHz (the finest shake-table
-#: acquisition the calibration reads), 2.8 hours at 100 Hz. The simulation's time
-#: and memory grow with the sample count; a longer file is not one floor motion.
+#: Most samples a record may hold: 16 minutes at 1 kHz, 2.8 hours at 100 Hz, far
+#: longer than a floor motion. The simulation's time and memory grow with the
+#: sample count.
 MAX_RECORD_SAMPLES = 1_000_000
 #: Largest record file [bytes]: MAX_RECORD_SAMPLES samples written as
 #: ``time,acceleration`` lines of up to ~30 characters, with room for comments.
@@ -317,10 +317,13 @@ def _check_samples(path, samples: _Samples, accel_g, min_duration_s, max_pga_g):
                        "give one floor motion per file, resampled to a coarser step if it is sampled more "
                        "finely than needed (0.005 s is usual).")
     if not MIN_STEP_S <= samples.dt_s <= MAX_STEP_S:
+        why = (f"a step over {MAX_STEP_S:g} s cannot carry the frequencies (up to 10-25 Hz) of a floor motion"
+               if samples.dt_s > MAX_STEP_S else
+               f"no accelerograph samples finer than {MIN_STEP_S:g} s (10 kHz), and the simulation's cost "
+               "grows with the number of samples")
         raise _problem(path, f"the time step is {samples.dt_s:g} s ({samples.step_source}); a record's step "
-                       f"must be between {MIN_STEP_S:g} s and {MAX_STEP_S:g} s.",
-                       f"check that the step is in seconds. A step over {MAX_STEP_S:g} s cannot carry the "
-                       "frequencies (up to 10-25 Hz) a floor motion has; resample the record to 0.005-0.02 s.",
+                       f"must be between {MIN_STEP_S:g} s and {MAX_STEP_S:g} s: {why}.",
+                       "check that the step is in seconds; resample the record to 0.005-0.02 s if needed.",
                        line=samples.step_line)
     bad = np.flatnonzero(~np.isfinite(accel_g))
     if bad.size:
