@@ -299,18 +299,20 @@ def main(argv: list[str] | None = None) -> int:
 def _main(argv: list[str] | None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
     if argv and argv[0] == "simulate":
-        args = build_simulate_parser().parse_args(argv[1:])
-        command, say = _simulate, (lambda message: None)
+        args, command = build_simulate_parser().parse_args(argv[1:]), _simulate
     elif argv and argv[0] == "calibrate":
-        args = build_calibrate_parser().parse_args(argv[1:])
-        command = _calibrate
-        say = (lambda message: None) if args.quiet else (
-            lambda message: print(f"assess: {message}", file=sys.stderr))
+        args, command = build_calibrate_parser().parse_args(argv[1:]), _calibrate
     else:
         args = build_parser().parse_args(argv)  # argparse exits with 2 on a wrong option
         command = _assess
-        say = (lambda message: None) if args.quiet else (
-            lambda message: print(f"assess: {message}", file=sys.stderr))
+    quiet = command is _simulate or args.quiet
+
+    def say(message: str) -> None:
+        """Progress, to stderr; also where an interrupt a library swallowed stops the run."""
+        _Interrupt.stop_if_received()
+        if not quiet:
+            print(f"assess: {message}", file=sys.stderr)
+
     try:
         return command(args, say)
     except InputError as error:
