@@ -508,6 +508,9 @@ def _simulate(args: argparse.Namespace, say) -> int:
     if args.restitution is not None and args.restitution > 1.0:
         problems.append(Problem(file="command line", message=f"--restitution {args.restitution:g} is above 1.",
                                 fix="give a coefficient between 0 and 1, or leave it out for Housner's."))
+    if args.history is not None and args.history.is_dir():
+        problems.append(Problem(file=str(args.history), message="--history names a folder; it takes a file.",
+                                fix="give a file name, e.g. --history history.csv."))
     if problems:
         raise InputError(problems)
     block = Block(half_width_m=args.width_cm / 200.0, cg_height_m=cg_cm / 100.0,
