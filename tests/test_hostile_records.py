@@ -224,3 +224,28 @@ def test_time_step_bounds(tmp_path, dt_s, accepted):
     else:
         with pytest.raises(InputError, match=f"the time step is {dt_s:g} s .dt_s in the header, line 1."):
             read_record(path)
+
+
+# ------------------------------------------------------------------ user text in figures
+
+@pytest.mark.parametrize("name", [r"Freezer $\foo$", r"a\$b$c$", "$5 and $6", "x_1^2 $"])
+def test_figures_draw_user_text_as_text(name):
+    """Matplotlib parses text between two $ as mathtext (``$\\foo$`` fails when drawn); escaped, it is drawn
+    as written. The check uses matplotlib's own reading of a text (math or not, and what it shows)."""
+    import io
+
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    from assess.report.figures import plain_text
+    figure = Figure()
+    FigureCanvasAgg(figure)
+    axes = figure.add_subplot()
+    title = axes.set_title(plain_text(name))
+    axes.set_yticks([0], [plain_text(name)])
+    figure.savefig(io.BytesIO(), format="svg")
+    assert title._preprocess_math(title.get_text()) == (name, False)
+    if name == r"Freezer $\foo$":  # unescaped, the same name cannot be drawn
+        axes.set_title(name)
+        with pytest.raises(ValueError):
+            figure.savefig(io.BytesIO(), format="svg")
