@@ -19,7 +19,7 @@ from assess.errors import InputError
 from assess.hazard.pulse_identification import identify_pulse
 from assess.hazard.pulses import pulse_acceleration
 from assess.hazard.records import (MAX_RECORD_BYTES, MAX_STEP_S, MIN_STEP_S, check_record_location,
-                                   read_record)
+                                   read_record, record_file_problem)
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2 as G
 from workbooks import good_sheets, write_workbook
 
@@ -249,3 +249,19 @@ def test_figures_draw_user_text_as_text(name):
         axes.set_title(name)
         with pytest.raises(ValueError):
             figure.savefig(io.BytesIO(), format="svg")
+
+
+def test_what_is_wrong_with_a_record_path_is_said_without_raising(tmp_path):
+    (tmp_path / "a.csv").symlink_to(tmp_path / "b.csv")
+    (tmp_path / "b.csv").symlink_to(tmp_path / "a.csv")
+    os.mkfifo(tmp_path / "fifo.csv")
+    (tmp_path / "good.csv").write_text(GOOD_RECORD)
+    assert "loop of symbolic links" in record_file_problem(tmp_path / "a.csv")
+    assert "too long" in record_file_problem(tmp_path / ("x" * 300 + ".csv"))
+    assert record_file_problem(tmp_path / "none.csv") == "the record file does not exist."
+    assert "not a regular file" in record_file_problem(tmp_path / "fifo.csv")
+    assert "folder" in record_file_problem(tmp_path)
+    assert record_file_problem(tmp_path / "good.csv") is None
+    for path in (tmp_path / ("x" * 300 + ".csv"), "a\0b.csv"):
+        with pytest.raises(InputError):
+            read_record(path)

@@ -243,6 +243,30 @@ _OPEN_ERRORS = {
 }
 
 
+def record_file_problem(path) -> str | None:
+    """What is wrong with ``path`` as a record file before it is read (None: it is a regular file).
+
+    Never raises: a loop of links, a name too long for the file system or a
+    missing file is said in words (``Path.is_file`` raises on a name over 255
+    characters; ``Path.resolve`` on a loop). For readers of the workbook,
+    which check the path of every record before anything is read.
+
+    >>> record_file_problem("/nowhere/at/all.csv")
+    'the record file does not exist.'
+    """
+    try:
+        mode = os.stat(path).st_mode
+    except OSError as error:
+        return _OPEN_ERRORS.get(error.errno, (f"the record file cannot be opened ({error.strerror}).",))[0]
+    except ValueError:  # a NUL character in the path
+        return "the path holds a NUL character."
+    if stat.S_ISDIR(mode):
+        return "this is a folder, not a record file."
+    if not stat.S_ISREG(mode):
+        return "this is not a regular file (a device, a pipe or a socket)."
+    return None
+
+
 def _read_bounded(path: Path) -> bytes:
     """The bytes of the regular file ``path``: at most :data:`MAX_RECORD_BYTES`, else refused.
 
@@ -256,6 +280,8 @@ def _read_bounded(path: Path) -> bytes:
             f"the record file cannot be opened ({error.strerror}).",
             "check that the file exists, is readable and not locked by another program."))
         raise _problem(path, message, fix) from None
+    except ValueError:
+        raise _problem(path, "the path holds a NUL character.", "check the path.") from None
     try:
         mode = os.fstat(descriptor).st_mode
         if stat.S_ISDIR(mode):
