@@ -125,6 +125,10 @@ def build_parser() -> argparse.ArgumentParser:
                         help="floors without a motion take the ground motions amplified by 1 + 2z/h "
                              "(ASCE 7-16 eq. 13.3-1), z/h = floor / ROOF_FLOOR; such items are flagged "
                              "(default: a floor without a motion is an error)")
+    parser.add_argument("--calibration", metavar="CALIBRATION_JSON", type=Path,
+                        help="the calibration.json of assess calibrate: its selected effect is applied to the "
+                             "items it names (applies_to: its specimens, or all) and the report shows each "
+                             "one's risk with and without it (the assessment runs twice)")
     parser.add_argument("--compare-with", metavar="SUMMARY_CSV", type=Path,
                         help="a previous run's summary.csv: also write comparison.csv and a report section "
                              "on which items changed risk class and why (default: the summary.csv already "
@@ -352,8 +356,12 @@ def _assess(args: argparse.Namespace, say) -> int:
     if args.oq_hazard is not None:
         from assess.hazard.openquake import read_openquake_hazard
         oq_hazard = read_openquake_hazard(args.oq_hazard, site=_oq_site(args.oq_site))
+    calibration = None
+    if args.calibration is not None:
+        from assess.calibration.apply import read_calibration
+        calibration = read_calibration(args.calibration)
     result = run_assessment(inventory, args.hazard, seed=args.seed, progress=say, oq_hazard=oq_hazard,
-                            derive_floors_roof=args.derive_floors)
+                            derive_floors_roof=args.derive_floors, calibration=calibration)
     result = _with_comparison(result, args.compare_with, out_dir / "summary.csv", say)
     say("rendering " + ", ".join(["summary.csv", "motions.csv"] + [f"report.{f}" for f in args.format]))
     files = render_outputs(result, args.format)

@@ -17,9 +17,11 @@ from assess.errors import InputError, Problem
 
 RISK_ORDER = {"anchored": -1, "low": 0, "moderate": 1, "high": 2}
 #: Columns compared, with how each is written in the explanation.
-COMPARED = (("pta_g", "PTA", "{:.2f} g"), ("mode", "mode", "{}"), ("pf_sliding", "Pf", "{:.0%}"),
-            ("sliding_p84_cm", "84th-percentile sliding", "{:.0f} cm"),
-            ("overturn_fraction", "overturns under", "{:.0%} of motions"))
+#: The governing demand's columns (what the risk class rests on), after PTA and mode.
+COMPARED = (("pta_g", "PTA", "{:.2f} g"), ("mode", "mode", "{}"), ("demand_source", "demand from", "{}"),
+            ("p_beyond_clearance", "chance of sliding past the clearance", "{:.0%}"),
+            ("demand_p84_cm", "84th-percentile sliding", "{:.0f} cm"),
+            ("p_overturn", "chance of overturning", "{:.0%}"))
 COMPARISON_COLUMNS = ["id", "name", "risk_before", "risk_after", "change", "why"] + [
     f"{column}_{when}" for column, _, _ in COMPARED for when in ("before", "after")]
 
@@ -67,11 +69,11 @@ def compare_summaries(previous: pd.DataFrame, current: pd.DataFrame) -> pd.DataF
     moved. Rows are ordered: up, down, new, removed, same.
 
     >>> before = pd.DataFrame({"id": ["A"], "name": ["fridge"], "risk": ["moderate"], "pta_g": [0.54],
-    ...                        "mode": ["slide"], "pf_sliding": [0.2]})
-    >>> after = before.assign(risk="high", pta_g=0.71, pf_sliding=0.62)
+    ...                        "mode": ["slide"], "p_beyond_clearance": [0.2]})
+    >>> after = before.assign(risk="high", pta_g=0.71, p_beyond_clearance=0.62)
     >>> row = compare_summaries(before, after).iloc[0]
     >>> row["change"], row["why"]
-    ('up', 'PTA 0.54 g -> 0.71 g; Pf 20% -> 62%')
+    ('up', 'PTA 0.54 g -> 0.71 g; chance of sliding past the clearance 20% -> 62%')
     """
     merged = previous.add_suffix("_before").merge(
         current.add_suffix("_after"), left_on="id_before", right_on="id_after", how="outer", sort=False)

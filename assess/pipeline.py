@@ -17,6 +17,9 @@ import pandas as pd
 from dataclasses import replace
 
 from assess.errors import InputError, Problem, raise_if_any
+from assess.fragility.governing import (
+    PULSE, RECORD, SYNTHETIC, add_pulse_share, governing_demand, motion_sources,
+)
 from assess.fragility import (
     RegressionConstants, capacity_edp, intensity_measure, median_edp,
     probability_of_exceedance, sliding_quantile,
@@ -42,7 +45,7 @@ HISTORY_ITEMS = 3
 
 def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
                    progress: Progress = lambda message: None, oq_hazard=None,
-                   derive_floors_roof: int | None = None) -> AssessmentResult:
+                   derive_floors_roof: int | None = None, calibration=None) -> AssessmentResult:
     """Assess every item of ``inventory`` under the motions of hazard level ``level_text``.
 
     ``oq_hazard`` (an :class:`~assess.hazard.openquake.OpenQuakeHazard`)
@@ -52,9 +55,27 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
     motions amplified by ASCE 7-16 eq. 13.3-1
     (:func:`~assess.hazard.motions.derive_floor_motions`); such items are flagged.
 
+    ``calibration`` (an :class:`~assess.calibration.apply.AppliedCalibration`,
+    ``--calibration``) switches its effect on for the items it applies to; the
+    assessment then runs twice, as declared and with it, and each affected
+    item's result both ways is flagged (:func:`~assess.calibration.apply.with_declared`).
+
     Raises :class:`~assess.errors.InputError` when the level is missing, a
     floor has no motion, or a motion cannot be described by PTA and Tp.
     """
+    # --- calibration (assess.calibration.apply): run twice, as declared and with the effect
+    if calibration is not None:
+        from assess.calibration.apply import check_applies, with_declared
+        check_applies(calibration, inventory.equipment)
+        declared = _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, None)
+        progress(f"again with the calibration {calibration.file}")
+        calibrated = _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, calibration)
+        return with_declared(calibrated, declared, calibration)
+    return _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, None)
+
+
+def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, calibration) -> AssessmentResult:
+    """:func:`run_assessment` with ``calibration`` applied (None: as declared)."""
     workbook_name = inventory.path.name
     settings = inventory.settings
     constants = RegressionConstants.from_settings(settings)
@@ -70,6 +91,11 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
         level_motions, _, note = scale_to_pga(level_motions, pga_g, workbook_name, Path(oq_hazard.path).name)
         hazard_notes.append(note)
         progress(note)
+    if calibration is not None:  # input_scale: the motions (assess.calibration.apply)
+        from assess.calibration.apply import scaled_motions
+        level_motions, note = scaled_motions(level_motions, calibration)
+        if note:
+            hazard_notes.append(note)
 
     equipment = inventory.equipment
     freestanding = equipment[~equipment["anchored"]]
@@ -84,16 +110,20 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
                     f"with the ground's pulse period.")
             hazard_notes.append(note)
             progress(note)
+    # one key per motion row: a motion named on several floors is a different motion on each
+    level_motions = level_motions.reset_index(drop=True).assign(motion_key=lambda m: np.arange(len(m)))
     pairs = motions_by_item(freestanding, level_motions, level_label, workbook_name)
     progress(f"{len(freestanding)} freestanding items, {len(level_motions)} motions at level "
              f"{level_label}: {len(pairs) * len(DIRECTIONS)} item x motion x direction cases")
 
     cases = _item_motion_direction_cases(freestanding, pairs)
     progress("preparing the motions to simulate")
-    simulated_motions = _simulated_motions(level_motions, workbook_name, settings, seed)
-    cases, runs = _add_simulation(cases, simulated_motions, progress)
-    cases = _add_demand(cases, constants)
-    summary, flags = _summarise(equipment, cases, constants, settings)
+    simulated_motions, simulated_as = _simulated_motions(level_motions, workbook_name, settings, seed)
+    cases, runs = _add_simulation(cases, simulated_motions, progress, calibration)
+    cases = add_pulse_share(_add_demand(cases, constants))
+    cases["demand_source"] = motion_sources(cases, simulated_as, constants)
+    demand = governing_demand(cases, runs, constants, room_quantile=1.0 - float(settings["risk_pf_moderate"]))
+    summary, flags = _summarise(equipment, cases, demand, constants, settings)
     histories = _worst_histories(cases, runs, summary, simulated_motions)
     regression = {"zeta": constants.zeta, "eta": constants.eta, "sigma": constants.sigma,
                   "im_min": constants.im_min, "im_max": constants.im_max,
@@ -162,8 +192,9 @@ def _measure_pulse_parameters(level_motions: pd.DataFrame, workbook_name: str) -
 
 
 def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str, settings: dict,
-                       seed: int) -> dict[str, list[tuple[Record, str]]]:
-    """Per motion: the floor accelerations the engine simulates, each with how it was obtained.
+                       seed: int) -> tuple[dict[int, list[tuple[Record, str]]], dict[int, str]]:
+    """Per motion (``motion_key``): the floor accelerations the engine simulates, each with how it
+    was obtained; and how each motion was simulated (``record``, ``synthetic`` or ``pulse``).
 
     A motion with a record is simulated under the record (times ``scale``).
     One given by PTA, Tp and vp is simulated under ``synthetic_realizations``
@@ -177,11 +208,12 @@ def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str, settings
 
     synthetic = str(settings.get("simulate_motions", "synthetic")).strip().lower() == "synthetic"
     count = int(settings.get("synthetic_realizations", 5))
-    motions = {}
-    for k, row in enumerate(level_motions.itertuples(index=False)):
+    motions, kinds = {}, {}
+    for row in level_motions.itertuples(index=False):
+        k = int(row.motion_key)
         if row.record_path:
             record = _motion_record(row.record_path, row.scale, row.motion, row.row, workbook_name)
-            motions[row.motion] = [(record, f"record {record.name} x {float(row.scale):g}")]
+            motions[k], kinds[k] = [(record, f"record {record.name} x {float(row.scale):g}")], RECORD
             continue
         pta, tp, vp = float(row.pta_g), float(row.tp_s), float(row.vp_m_s)
         if synthetic and np.isfinite(vp):
@@ -189,20 +221,24 @@ def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str, settings
                 warnings.simplefilter("ignore")
                 records = synthesize_motion(pta, tp, vp, n_realizations=count,
                                             seed=np.random.default_rng([seed, k]))
-            motions[row.motion] = [(r, r.name) for r in records]
+            motions[k], kinds[k] = [(r, r.name) for r in records], SYNTHETIC
             continue
         pulse = row.pulse or DEFAULT_PULSE
         record = pulse_record(pulse, pta, tp)
         note = f"Type-{pulse} pulse" if row.pulse else f"Type-{pulse} pulse (assumed: no pulse type given)"
         if synthetic:
             note += " (no vp given to synthesise from)"
-        motions[row.motion] = [(record, f"{note}, {pta:g} g, Tp {tp:g} s")]
-    return motions
+        motions[k], kinds[k] = [(record, f"{note}, {pta:g} g, Tp {tp:g} s")], PULSE
+    return motions, kinds
 
 
-def _case_block(case) -> Block:
-    return Block(half_width_m=float(case.half_width_m), cg_height_m=float(case.cg_height_m),
-                 height_m=float(case.height_m), mu=float(case.mu), mu_static=float(case.mu_static))
+def _case_block(case, calibration=None) -> Block:
+    block = Block(half_width_m=float(case.half_width_m), cg_height_m=float(case.cg_height_m),
+                  height_m=float(case.height_m), mu=float(case.mu), mu_static=float(case.mu_static))
+    if calibration is None:
+        return block
+    from assess.calibration.apply import case_block  # the calibration's effect, where it applies
+    return case_block(block, case.id, calibration)
 
 
 def _majority_mode(modes: pd.Series) -> str:
@@ -212,8 +248,8 @@ def _majority_mode(modes: pd.Series) -> str:
     return max(tied, key=lambda mode: MODE_SEVERITY[mode])
 
 
-def _add_simulation(cases: pd.DataFrame, motions: dict[str, list[tuple[Record, str]]],
-                    progress: Progress) -> tuple[pd.DataFrame, pd.DataFrame]:
+def _add_simulation(cases: pd.DataFrame, motions: dict[int, list[tuple[Record, str]]],
+                    progress: Progress, calibration=None) -> tuple[pd.DataFrame, pd.DataFrame]:
     """Simulate every case under every history of its motion: ``sim_*`` columns, and the runs.
 
     A case's ``sim_*`` values summarise its runs (one per history): the
@@ -225,11 +261,14 @@ def _add_simulation(cases: pd.DataFrame, motions: dict[str, list[tuple[Record, s
     index_of = {key: j for j, key in enumerate(histories)}
     run_case, run_history = [], []
     for k, case in enumerate(cases.itertuples(index=False)):
-        for r in range(len(motions[case.motion])):
+        for r in range(len(motions[case.motion_key])):
             run_case.append(k)
-            run_history.append(index_of[(case.motion, r)])
+            run_history.append(index_of[(case.motion_key, r)])
     run_case = np.asarray(run_case)
-    blocks_by_case = [_case_block(case) for case in cases.itertuples(index=False)]
+    blocks_by_case = [_case_block(case, calibration) for case in cases.itertuples(index=False)]
+    cases = cases.assign(block=blocks_by_case)  # built once: the histories re-run these blocks
+    if calibration is not None:  # the case's friction is its block's (the regression's IM uses it)
+        cases = cases.assign(mu=[b.mu for b in blocks_by_case], mu_static=[b.mu_static for b in blocks_by_case])
     last = [-1.0]
 
     def report(done, total):
@@ -241,10 +280,14 @@ def _add_simulation(cases: pd.DataFrame, motions: dict[str, list[tuple[Record, s
                            [motions[n][r][0].accel_g for n, r in histories],
                            [motions[n][r][0].dt_s for n, r in histories], np.asarray(run_history),
                            progress=report)
+    theta_max_over_alpha = peaks.theta_max_over_alpha
+    if calibration is not None:  # over α of the declared box, feet or not (SPEC §5)
+        from assess.calibration.apply import theta_over_declared
+        theta_max_over_alpha = theta_over_declared(theta_max_over_alpha, [blocks_by_case[k] for k in run_case])
     runs = pd.DataFrame({
         "case": run_case, "realization": [histories[j][1] for j in run_history],
         "sliding_max_cm": peaks.sliding_max_m * 100.0, "sliding_residual_cm": peaks.sliding_residual_m * 100.0,
-        "theta_max_over_alpha": peaks.theta_max_over_alpha, "uplift": peaks.uplift,
+        "theta_max_over_alpha": theta_max_over_alpha, "uplift": peaks.uplift,
         "overturned": peaks.overturned, "mode": peaks.mode, "solver": peaks.solver})
     grouped = runs.groupby("case", sort=True)
     summary = pd.DataFrame({
@@ -259,7 +302,7 @@ def _add_simulation(cases: pd.DataFrame, motions: dict[str, list[tuple[Record, s
     })
     summary["sim_overturned"] = summary["sim_overturn_share"] >= 0.5
     cases = cases.reset_index(drop=True).join(summary.reset_index(drop=True))
-    cases["sim_motion"] = cases["motion"].map(
+    cases["sim_motion"] = cases["motion_key"].map(
         {n: (motions[n][0][1] if len(motions[n]) == 1 else f"{len(motions[n])} synthetic histories: "
              + motions[n][0][1].split(",", 1)[1].strip().replace(", seed", "; first seed", 1))
          for n in motions})
@@ -267,7 +310,7 @@ def _add_simulation(cases: pd.DataFrame, motions: dict[str, list[tuple[Record, s
 
 
 def _worst_histories(cases: pd.DataFrame, runs: pd.DataFrame, summary: pd.DataFrame,
-                     motions: dict[str, list[tuple[Record, str]]]) -> list[dict]:
+                     motions: dict[int, list[tuple[Record, str]]]) -> list[dict]:
     """Time histories (Fig. 7 of the paper) of the worst runs of the :data:`HISTORY_ITEMS` worst items.
 
     Worst: overturned first, then the largest θmax/α, then the largest
@@ -283,8 +326,8 @@ def _worst_histories(cases: pd.DataFrame, runs: pd.DataFrame, summary: pd.DataFr
     histories = []
     for run in worst.itertuples(index=False):
         case = cases.iloc[int(run.case)]
-        record, description = motions[case.motion][int(run.realization)]
-        response = simulate(_case_block(case), record.accel_g, record.dt_s, return_history=True)
+        record, description = motions[case.motion_key][int(run.realization)]
+        response = simulate(case["block"], record.accel_g, record.dt_s, return_history=True)
         floor = np.zeros(response.time_s.size)
         floor[:min(record.accel_g.size, floor.size)] = record.accel_g[:floor.size]
         histories.append({
@@ -302,7 +345,7 @@ def _item_motion_direction_cases(items: pd.DataFrame, pairs: pd.DataFrame) -> pd
     """One row per item x motion x direction with the block's geometry in that direction."""
     item_columns = ["id", "floor", "height_m", "width_m", "depth_m", "cg_height_m", "mu",
                     "mu_static", "clearance_m"]
-    motion_columns = ["id", "motion", "pta_g", "tp_s", "vp_m_s", "pulse_source"] + (
+    motion_columns = ["id", "motion", "motion_key", "pta_g", "tp_s", "vp_m_s", "pulse_source"] + (
         ["derived"] if "derived" in pairs else [])
     base = pairs[motion_columns].assign(pair_index=range(len(pairs))) \
         .merge(items[item_columns], on="id", validate="many_to_one")
@@ -368,8 +411,10 @@ def _governing(cases: pd.DataFrame) -> pd.DataFrame:
     return governing.merge(worst_mode, on="id")
 
 
-def _summarise(equipment: pd.DataFrame, cases: pd.DataFrame, constants: RegressionConstants,
-               settings: dict) -> tuple[pd.DataFrame, list[Flag]]:
+def _summarise(equipment: pd.DataFrame, cases: pd.DataFrame, demand: pd.DataFrame,
+               constants: RegressionConstants, settings: dict) -> tuple[pd.DataFrame, list[Flag]]:
+    """One row per item: its geometry, the regression's numbers for its governing case, the
+    governing demand over its suite (``demand``), and the risk class and action that follow from it."""
     governing = _governing(cases).set_index("id") if len(cases) else pd.DataFrame()
     rows, flags = [], []
     for item in equipment.itertuples(index=False):
@@ -383,6 +428,7 @@ def _summarise(equipment: pd.DataFrame, cases: pd.DataFrame, constants: Regressi
                         "b_over_h": half_width_m / item.cg_height_m,
                         "governing_direction": 1 if item.width_m <= item.depth_m else 2,
                         "mode": "", "risk": "anchored", "action": "None: anchored (not analysed as freestanding)",
+                        "action_kind": "anchored",
                         "flags": ""})
             rows.append(row)
             continue
@@ -393,59 +439,90 @@ def _summarise(equipment: pd.DataFrame, cases: pd.DataFrame, constants: Regressi
             "sliding_median_cm", "sliding_p84_cm", "pf_sliding", "sim_sliding_max_cm")})
         row["governing_direction"] = int(case["direction"])
         row["governing_motion"] = case["motion"]
-        row.update(overturning_summary(item_cases))
+        row.update(demand.loc[item.id].to_dict())
+        row["overturn_fraction"] = row["p_overturn"]
+        uplift = bool(item_cases["sim_uplift"].any())
         item_flags = _item_flags(item, item_cases, constants)
         flags.extend(item_flags)
         row["flags"] = "; ".join(flag.code for flag in item_flags)
-        row["risk"] = classify_risk(row["mode"], row["pf_sliding"], settings, row["overturn_fraction"])
-        row["action"] = recommended_action(row["risk"], row["mode"], row["sliding_p84_cm"], row["clearance_cm"],
-                                           row["overturn_fraction"], row["theta_max_over_alpha"])
+        row["risk"] = classify_risk(row["p_beyond_clearance"], row["p_overturn"], uplift, settings)
+        bounds = {classify_risk(p, row["p_overturn"], uplift, settings)
+                  for p in (row["p_beyond_clearance_low"], row["p_beyond_clearance_high"])}
+        row["risk_range"] = _risk_range(row["risk"], bounds)
+        row["action"] = recommended_action(row, uplift, settings)
+        row["action_kind"] = action_kind(row, uplift)
         rows.append(row)
     return pd.DataFrame(rows), flags
 
 
-def overturning_summary(item_cases: pd.DataFrame) -> dict:
-    """``overturn_fraction`` and ``theta_max_over_alpha`` of one item from its simulated cases.
+def classify_risk(p_beyond_clearance: float, p_overturn: float, uplift: bool, settings: dict) -> str:
+    """Risk class from the governing demand.
 
-    ``overturn_fraction``: share of the level's motions under which the item
-    overturns in at least one of its two base directions (a motion may arrive
-    along either); a motion simulated under several synthetic histories counts
-    by the share of them that overturn it. ``theta_max_over_alpha``: the largest peak |θ|/α over all
-    its cases, each relative to α of its own direction.
+    ``high`` when the item overturns under any motion of its suite
+    (``p_overturn`` > 0), uplifts (rocks) under any, or slides past its
+    clearance with probability ≥ ``risk_pf_high``; ``moderate`` when that
+    probability ≥ ``risk_pf_moderate``; else ``low``.
+
+    >>> settings = {"risk_pf_high": 0.5, "risk_pf_moderate": 0.1}
+    >>> classify_risk(0.2, 0.0, False, settings), classify_risk(0.0, 0.1, True, settings)
+    ('moderate', 'high')
     """
-    per_motion = item_cases.groupby("motion", sort=False)["sim_overturn_share"].max()
-    return {"overturn_fraction": float(per_motion.mean()),
-            "theta_max_over_alpha": float(item_cases["sim_theta_max_over_alpha"].max())}
-
-
-def classify_risk(mode: str, pf_sliding: float, settings: dict, overturn_fraction: float = 0.0) -> str:
-    """``high`` when the simulation overturns or uplifts the item (rock or slide-rock) or
-    P(sliding > clearance) ≥ ``risk_pf_high``; ``moderate`` when that probability ≥
-    ``risk_pf_moderate``; else ``low``."""
-    if overturn_fraction > 0.0 or mode in UPLIFT_MODES:
+    if p_overturn > 0.0 or uplift or p_beyond_clearance >= float(settings["risk_pf_high"]):
         return "high"
-    if pf_sliding >= float(settings["risk_pf_high"]):
-        return "high"
-    if pf_sliding >= float(settings["risk_pf_moderate"]):
+    if p_beyond_clearance >= float(settings["risk_pf_moderate"]):
         return "moderate"
     return "low"
 
 
-def recommended_action(risk: str, mode: str, sliding_p84_cm: float, clearance_cm: float,
-                       overturn_fraction: float = 0.0, theta_max_over_alpha: float = 0.0) -> str:
-    """A plain sentence a facility manager can act on."""
-    if overturn_fraction > 0.0:
-        return (f"Anchor: it overturns under {overturn_fraction:.0%} of the design motions "
-                f"in the simulation")
-    if mode in UPLIFT_MODES:
-        return (f"Anchor or restrain: it uplifts and rocks under the design motion "
-                f"(peak rotation {theta_max_over_alpha:.2f} of its overturning angle alpha; "
-                f"it did not overturn in the simulation)")
-    if risk == "high":
-        return (f"Restrain, or give it room: needs {sliding_p84_cm:.0f} cm (84th percentile), "
-                f"has {clearance_cm:.0f} cm")
-    if risk == "moderate":
-        return f"Give it room ({sliding_p84_cm:.0f} cm, 84th percentile; has {clearance_cm:.0f} cm) or restrain"
+def _risk_range(risk: str, classes: set) -> str:
+    """The classes the 90 % interval of P(sliding > clearance) spans, when it spans more than ``risk``."""
+    classes = classes | {risk}
+    if len(classes) == 1:
+        return ""
+    order = ["low", "moderate", "high"]
+    spanned = sorted(classes, key=order.index)
+    return f"{spanned[0]} to {spanned[-1]}"
+
+
+def _suite_share_text(probability: float, row: dict) -> str:
+    """"2 of its 3 motions" for records, "12 % of its 30 synthetic histories" otherwise."""
+    motions, histories = int(row["suite_motions"]), int(row["suite_histories"])
+    if histories == motions:
+        count = int(round(probability * motions))
+        return f"{count} of its {motions} motion{'s' if motions != 1 else ''}"
+    return f"{probability:.0%} of its {histories} simulated histories ({motions} motion{'s' if motions != 1 else ''})"
+
+
+def action_kind(row: dict, uplift: bool) -> str:
+    """What the action asks for, in one word the report groups by: ``anchor`` (it overturns or
+    rocks), ``restrain`` (high risk of sliding past its room), ``room`` (moderate), ``none``.
+
+    >>> action_kind({"p_overturn": 0.0, "risk": "moderate"}, False)
+    'room'
+    """
+    if row["p_overturn"] > 0.0 or uplift:
+        return "anchor"
+    return {"high": "restrain", "moderate": "room"}.get(row["risk"], "none")
+
+
+def recommended_action(row: dict, uplift: bool, settings: dict) -> str:
+    """A plain sentence a facility manager can act on, from the item's governing demand.
+
+    The room to give is the sliding that is exceeded with probability
+    ``risk_pf_moderate`` (``demand_room_cm``): with that much room the item
+    would be low risk on sliding. It is rounded up and the clearance down, so
+    the two never read alike.
+    """
+    if row["p_overturn"] > 0.0:
+        return f"Anchor: it overturns under {_suite_share_text(row['p_overturn'], row)}"
+    if uplift:
+        return (f"Anchor or restrain: it uplifts and rocks (peak rotation {row['theta_max_over_alpha']:.2f} of "
+                f"its overturning angle alpha) but did not overturn under its {int(row['suite_motions'])} "
+                f"motion{'s' if row['suite_motions'] != 1 else ''}")
+    if row["risk"] in ("high", "moderate"):
+        verb = "Restrain it, or give it room" if row["risk"] == "high" else "Give it room, or restrain it"
+        return (f"{verb}: it needs {np.ceil(row['demand_room_cm']):.0f} cm to be low risk and has "
+                f"{np.floor(row['clearance_cm']):.0f} cm ({row['p_beyond_clearance']:.0%} chance of sliding past it)")
     return "No action needed"
 
 
@@ -461,20 +538,13 @@ def _item_flags(item, item_cases: pd.DataFrame, constants: RegressionConstants) 
             f"{', overturned' if worst['sim_overturned'] else ''}): "
             f"mu_static = {item.mu_static:.2f} >= b/h = {worst['b_over_h']:.2f} and PTA = {worst['pta_g']:.2f} g "
             f"> g b/h. The sliding regression assumes no uplift; the simulation answers for this item.")))
-    beyond = item_cases[item_cases["sim_sliding_max_cm"] > item_cases["clearance_m"] * 100.0]
-    if len(beyond):
-        worst = beyond.sort_values("sim_sliding_max_cm", ascending=False, kind="stable").iloc[0]
-        flags.append(Flag(item.id, "sim_beyond_clearance", (
-            f"the simulation slides it {worst['sim_sliding_max_cm']:.0f} cm under {worst['motion']} "
-            f"(direction {int(worst['direction'])}, {worst['sim_motion']}), more than its "
-            f"{item.clearance_m * 100:.0f} cm clearance; {len(beyond)} of {len(item_cases)} cases do. "
-            f"The risk class follows the regression's probability; this is one deterministic history.")))
     outside = item_cases[item_cases["im_outside_fit"]]
     if len(outside):
         ims = ", ".join(f"{im:.2f}" for im in sorted(set(outside["im"].round(2))))
         flags.append(Flag(item.id, "im_outside_fit", (
             f"IM = {ims} lies outside the range {constants.im_min:.2f}-{constants.im_max:.2f} the "
-            f"regression was fitted on: the sliding demand is an extrapolation.")))
+            f"regression was fitted on: its numbers shown beside are an extrapolation, and the governing "
+            f"demand does not use them for those motions.")))
     if "derived" in item_cases and item_cases["derived"].any():
         flags.append(Flag(item.id, "derived_floor_motion", (
             f"floor {item.floor} has no motion in the workbook: it was assessed under the ground motions "

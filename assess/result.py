@@ -14,6 +14,10 @@ SUMMARY_COLUMNS = [
     "governing_direction", "mu", "mode", "governing_motion", "pta_g", "tp_s", "im",
     "edp_median", "sliding_median_cm", "sliding_p84_cm", "clearance_cm", "pf_sliding",
     "overturn_fraction", "theta_max_over_alpha", "risk", "action", "flags", "sim_sliding_max_cm",
+    "demand_source", "demand_median_cm", "demand_p84_cm", "p_beyond_clearance", "p_overturn",
+    "demand_room_cm", "demand_median_low_cm", "demand_median_high_cm", "demand_p84_low_cm", "demand_p84_high_cm",
+    "p_beyond_clearance_low", "p_beyond_clearance_high", "p_overturn_low", "p_overturn_high",
+    "risk_range", "suite_motions", "suite_histories", "demand_note", "action_kind",
 ]
 
 #: Columns of ``motions.csv`` in order (SPEC §3 first, then extras).
@@ -22,7 +26,7 @@ MOTION_COLUMNS = [
     "pf_sliding", "sim_sliding_max_cm", "sim_theta_max_over_alpha", "sim_overturned",
     "floor", "vp_cm_s", "b_over_h", "alpha_rad", "mode", "sliding_p84_cm", "capacity_edp",
     "flags", "mode_from_rest", "sim_sliding_residual_cm", "sim_uplift", "sim_motion", "sim_solver",
-    "sim_realizations", "sim_overturn_share", "pulse_source",
+    "sim_realizations", "sim_overturn_share", "pulse_source", "pulse_share", "demand_source",
 ]
 
 RISK_CLASSES = ("high", "moderate", "low", "anchored")
@@ -33,7 +37,7 @@ class Flag:
     """A caveat attached to one item's result (shown in the report and the CSVs)."""
 
     item_id: str
-    code: str  # e.g. "uplift", "im_outside_fit", "sim_beyond_clearance"
+    code: str  # e.g. "uplift", "im_outside_fit", "derived_floor_motion"
     message: str
 
 

@@ -12,8 +12,8 @@ import pytest
 from assess.data import km2010_table3
 from assess.hazard.records import pulse_record
 from assess.mechanics.block import Block
-from assess.mechanics.engine import (GENERAL, ROCKING_KERNEL, SLIDING_KERNEL, simulate, simulate_cases,
-                                     with_tail)
+from assess.mechanics.engine import (DEFAULT_TAIL_S, GENERAL, ROCKING_KERNEL, SLIDING_KERNEL, simulate,
+                                     simulate_cases)
 from assess.mechanics.rocking import rocking_response
 from assess.mechanics.sliding import sliding_response
 
@@ -49,8 +49,8 @@ def test_rocking_kept_where_the_pivot_holds():
     block = prototype("FORMA", MODEL_MU)
     motion = pulse_record("B", 0.30, 2.1)
     response = simulate(block, motion.accel_g, motion.dt_s)
-    direct = rocking_response(with_tail(motion.accel_g, motion.dt_s), motion.dt_s, block.alpha_rad,
-                              block.p_rad_s)
+    direct = rocking_response(motion.accel_g, motion.dt_s, block.alpha_rad, block.p_rad_s,
+                              tail_s=DEFAULT_TAIL_S)
     assert response.solver == ROCKING_KERNEL
     assert direct.friction_demand_max <= MODEL_MU and direct.normal_force_min_over_weight > 0
     assert response.theta_max_over_alpha == direct.theta_max_over_alpha
@@ -61,8 +61,8 @@ def test_rocking_handed_to_the_general_solver_where_the_pivot_would_slip():
     """μs just above b/h: the block uplifts from rest, then the pivot needs more friction than it has."""
     block = Block(half_width_m=0.3, cg_height_m=1.0, height_m=2.0, mu=0.31)
     motion = pulse_record("A", 0.6, 1.0)
-    direct = rocking_response(with_tail(motion.accel_g, motion.dt_s), motion.dt_s, block.alpha_rad,
-                              block.p_rad_s)
+    direct = rocking_response(motion.accel_g, motion.dt_s, block.alpha_rad, block.p_rad_s,
+                              tail_s=DEFAULT_TAIL_S)
     assert direct.friction_demand_max > block.mu_static  # the premise of this test
     response = simulate(block, motion.accel_g, motion.dt_s)
     assert response.solver == GENERAL
@@ -147,9 +147,9 @@ def test_feet_inset_rock_about_the_feet_with_the_whole_box_inertia():
     assert footed.p_rad_s == pytest.approx(np.sqrt(g * radius / inertia_pivot), rel=1e-12)
     assert footed.inertia_ratio == pytest.approx(inertia_pivot / radius**2, rel=1e-12)
     motion = pulse_record("A", 0.35, 0.8)  # above tan(alpha) of the feet (0.267) and of the box (0.333)
-    accel = with_tail(motion.accel_g, motion.dt_s, 4.0)
-    kernel = rocking_response(accel, motion.dt_s, np.arctan((b - inset) / h), np.sqrt(g * radius / inertia_pivot),
-                              inertia_ratio_value=inertia_pivot / radius**2)
+    kernel = rocking_response(motion.accel_g, motion.dt_s, np.arctan((b - inset) / h),
+                              np.sqrt(g * radius / inertia_pivot), inertia_ratio_value=inertia_pivot / radius**2,
+                              tail_s=4.0)
     from assess.mechanics.timestepping import simulate_time_stepping
     from assess.mechanics.event_driven import simulate_event_driven
     stepped = simulate_time_stepping(footed, motion.accel_g, motion.dt_s, tail_s=4.0)

@@ -164,8 +164,16 @@ def _page_count(pdf: bytes) -> int:
 # --------------------------------------------------------------------------- HTML
 def test_workbook_text_is_escaped(html):
     assert "&lt;script&gt;alert(1)&lt;/script&gt; &amp; &#34;quotes&#34;" in html
-    assert "<script" not in html
+    assert html.count("<script") == 1  # our own inline sort-and-filter script, and nothing from the workbook
     assert "alert(1)</script>" not in html
+
+
+def test_every_link_on_page_1_lands_on_its_item_in_the_table(html, result):
+    first = _first_section(html)
+    targets = re.findall(r'href="#(item-[^"]+)"', first)
+    assert targets and len(targets) == len(set(targets))
+    for target in targets:
+        assert re.search(rf'<tr class="row-[a-z]+" id="{re.escape(target)}">', html), target
 
 
 def test_counts_are_shown(html, result):
@@ -181,7 +189,7 @@ def test_first_section_lists_every_high_item_and_its_action(html, result):
     first = _first_section(html)
     high = result.summary[result.summary["risk"] == "high"]
     for _, row in high.iterrows():
-        assert f'<span class="id">{row["id"]}</span>' in first
+        assert f'<a class="id" href="#item-{row["id"]}">{row["id"]}</a>' in first
         assert str(row["action"]) in first
     assert "Life Sciences Building" in first and "Berkeley, CA" in first
     assert "2% in 50 years (return period 2475 years)" in first
@@ -201,12 +209,12 @@ def test_not_simulated_sentence(result):
 
 def test_nan_shows_as_dash_and_numbers_are_rounded(html):
     all_items = re.search(r'<section id="all-items".*?</section>', html, re.S).group(0)
-    rock_row = re.search(r'<tr class="row-high">\s*<td class="c-id id">K-02</td>.*?</tr>',
+    rock_row = re.search(r'<tr class="row-high" id="item-K-02">\s*<td class="c-id id">K-02</td>.*?</tr>',
                          all_items, re.S).group(0)
-    assert '<td class="num c-sl">– / –</td>' in rock_row
+    assert '<td class="num c-sl">– / – · –</td>' in rock_row
     assert '<td class="num c-pfa">–</td>' in rock_row
     forma = re.search(r'<td class="c-id id">F-01</td>.*?</tr>', all_items, re.S).group(0)
-    assert '<td class="num c-sl">74 / 115</td>' in forma
+    assert '<td class="num c-sl">74 / 115 · ' in forma
     assert '<td class="num c-im">3.38</td>' in forma
     assert not re.search(r"\b(nan|NaN|None|<NA>)\b", html)
 

@@ -78,19 +78,34 @@ class CalibrationResult:
     margin: float = MARGIN
 
     def as_json(self) -> dict:
-        """The content of ``calibration.json`` (SPEC §5)."""
+        """The content of ``calibration.json`` (SPEC §5).
+
+        A parameter the tests cannot fix (:func:`~assess.calibration.fit.undetermined_parameters`)
+        is ``null`` in ``parameters`` and ``standard_error``, and ``not_determined`` says why.
+        ``applies_to`` lists the specimens, the items ``assess --calibration``
+        applies the effect to (:mod:`assess.calibration.apply`; "all" for every item).
+        """
         correlations = residual_correlations(self.residuals_before, self.diagnosis)
+        selected = self._fit(self.selected)
         return {"error_before": dict(self.error_before), "error_after": dict(self.error_after),
                 "residual_correlation_before": {k: (None if np.isnan(v) else v) for k, v in correlations.items()},
-                "selected": {"effect": self.selected, "parameters": dict(self.parameters),
-                             "standard_error": dict(self._fit(self.selected).standard_error)},
+                "selected": {"effect": self.selected, **_parameters_json(selected)},
                 "indistinguishable_from": list(self.indistinguishable_from),
-                "candidates": [{"effect": f.effect.name, "parameters": dict(f.parameters),
-                                "standard_error": dict(f.standard_error), "error": dict(f.error),
+                "applies_to": sorted(set(str(s) for s in self.residuals_before["specimen"])),
+                "candidates": [{"effect": f.effect.name, **_parameters_json(f), "error": dict(f.error),
                                 "score": float(f.score)} for f in self.fits]}
 
     def _fit(self, name: str):
         return next(f for f in self.fits if f.effect.name == name)
+
+
+def _parameters_json(fit) -> dict:
+    """``parameters``, ``standard_error`` (null where not determined) and ``not_determined`` of a fit."""
+    missing = fit.not_determined
+    return {"parameters": {k: (None if k in missing else float(v)) for k, v in fit.parameters.items()},
+            "standard_error": {k: (None if k in missing or v is None else float(v))
+                               for k, v in fit.standard_error.items()},
+            "not_determined": dict(missing)}
 
 
 def build_cases(inventory, measured: pd.DataFrame) -> list[Case]:

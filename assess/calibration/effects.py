@@ -37,6 +37,11 @@ e, different for every item). :data:`EFFECTS` lists them by name (SPEC §5):
     rocks about feet at b(1 − d) (``Block.foot_inset_m``): α, R and p are
     those about a foot, the moment of inertia stays that of the whole box.
 
+Every effect's θmax/α is θmax over α of the item's **declared** box,
+atan(b/h) (:func:`declared_alpha_rad`), as the measured one is (SPEC §5):
+with feet the solvers divide by α of the feet, and the prediction is
+brought back to the declared α.
+
 The two interface effects need :mod:`assess.mechanics.interface`; when it is
 not installed, :func:`available_effects` leaves them out.
 
@@ -53,14 +58,16 @@ References
 from __future__ import annotations
 
 import importlib
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from dataclasses import fields as dataclass_fields
 from typing import Callable, Mapping, NamedTuple
 
 import numpy as np
 
 from assess.hazard.records import Record
 from assess.mechanics.block import Block
-from assess.mechanics.engine import DEFAULT_TAIL_S, pure_sliding_proved, simulate, with_tail
+from assess.mechanics.geometry import slenderness
+from assess.mechanics.engine import BlockOnInterface, SlidingInterface, simulate
 
 INTERFACE_MODULE = "assess.mechanics.interface"
 
@@ -84,6 +91,10 @@ class Parameter:
     neutral: float | None
     unit: str = "-"
     log: bool = False
+    #: What it is, in words (the report's rows).
+    label: str = ""
+    #: Which tests can fix it (said when these cannot).
+    determined_by: str = "only tests whose peaks depend on it can fix it"
 
     def grid(self, count: int) -> np.ndarray:
         """``count`` values from lower to upper (geometric when ``log``), and the neutral value."""
@@ -134,81 +145,120 @@ def item_block(item: Mapping, half_width_m: float, **changes) -> Block:
     return Block(**values)
 
 
+def declared_alpha_rad(block: Block) -> float:
+    """α = atan(b/h) of the item's declared box [rad], whatever it stands on (SPEC §5).
+
+    A measured θmax/α is divided by this α; an effect may change the points
+    the block pivots on (``foot_inset``), never the α a rotation is read against.
+
+    >>> footed = Block(half_width_m=0.3, cg_height_m=1.0, height_m=2.0, mu=0.7, foot_inset_m=0.09)
+    >>> round(declared_alpha_rad(footed), 6), round(footed.alpha_rad, 6)
+    (0.291457, 0.206992)
+    """
+    return float(slenderness(block.half_width_m, block.cg_height_m))
+
+
+def theta_over_declared_alpha(response_theta_max_over_alpha, block: Block) -> float:
+    """A solver's θmax/α (α of the pivots it rocked on) as θmax over α of the declared box [-]."""
+    return float(response_theta_max_over_alpha) * block.alpha_rad / declared_alpha_rad(block)
+
+
 def _engine(block: Block, motion: Record) -> Prediction:
+    """The engine's peaks, θmax over α of the declared box (as measured, SPEC §5) for every effect."""
     response = simulate(block, motion.accel_g, motion.dt_s)
-    return Prediction(float(response.sliding_max_m), float(response.theta_max_over_alpha),
+    return Prediction(float(response.sliding_max_m), theta_over_declared_alpha(response.theta_max_over_alpha, block),
                       bool(response.overturned), response.mode)
 
 
-def _none(item, half_width_m, motion, parameters):
-    return _engine(item_block(item, half_width_m), motion)
+def calibrated_block(block: Block, effect: str, parameters: Mapping[str, float]) -> Block:
+    """``block`` with ``effect`` switched on at ``parameters``: the one definition of every effect.
+
+    The calibration's predictions (:func:`predict`) and the assessment under
+    ``--calibration`` (:mod:`assess.calibration.apply`) both call it, so the
+    main job simulates what ``assess calibrate`` fitted. ``input_scale``
+    changes the motion, not the block (:func:`calibrated_motion`).
+
+    >>> block = Block(half_width_m=0.3, cg_height_m=1.0, height_m=2.0, mu=0.2, mu_static=0.25)
+    >>> scaled = calibrated_block(block, "friction_scale", {"k": 0.5})
+    >>> scaled.mu, scaled.mu_static
+    (0.1, 0.125)
+    >>> calibrated_block(block, "static_friction", {"r": 2.0}).mu_static
+    0.4
+    >>> round(calibrated_block(block, "foot_inset", {"d": 0.2}).contact_half_width_m, 12)
+    0.24
+    """
+    if effect in ("none", "input_scale"):
+        return block
+    if effect == "friction_scale":
+        k = float(parameters["k"])
+        return replace(block, mu=k * block.mu, mu_static=k * block.mu_static)
+    if effect == "static_friction":
+        return replace(block, mu_static=max(float(parameters["r"]) * block.mu, block.mu))
+    if effect == "restitution":  # None: Housner's value (a calibration that could not determine e)
+        e = parameters["e"]
+        return replace(block, restitution=None if e is None else float(e))
+    if effect == "foot_inset":
+        return replace(block, foot_inset_m=float(parameters["d"]) * block.half_width_m)
+    if effect == "velocity_friction":
+        interface = SlidingInterface(low_speed_factor=float(parameters["f"]), rate_s_m=float(parameters["rate_s_m"]))
+    elif effect == "interface_elasticity":
+        interface = SlidingInterface(yield_displacement_m=float(parameters["yield_displacement_m"]))
+    else:
+        raise ValueError(f"unknown effect {effect!r}; known: {list(EFFECTS)}")
+    fields = {f.name: getattr(block, f.name) for f in dataclass_fields(Block)}
+    return BlockOnInterface(**fields, interface=interface)
 
 
-def _friction_scale(item, half_width_m, motion, parameters):
-    k = parameters["k"]
-    return _engine(item_block(item, half_width_m, mu=k * float(item["mu"]),
-                          mu_static=k * float(item.get("mu_static", item["mu"]))), motion)
+def calibrated_motion(motion: Record, effect: str, parameters: Mapping[str, float]) -> Record:
+    """The floor motion with ``effect`` switched on: × s for ``input_scale``, unchanged otherwise."""
+    return motion.scaled(float(parameters["s"])) if effect == "input_scale" else motion
 
 
-def _static_friction(item, half_width_m, motion, parameters):
-    return _engine(item_block(item, half_width_m, mu_static=parameters["r"] * float(item["mu"])), motion)
-
-
-def _restitution(item, half_width_m, motion, parameters):
-    return _engine(item_block(item, half_width_m, restitution=parameters["e"]), motion)
-
-
-def _input_scale(item, half_width_m, motion, parameters):
-    return _engine(item_block(item, half_width_m), motion.scaled(parameters["s"]))
-
-
-def _foot_inset(item, half_width_m, motion, parameters):
-    return _engine(item_block(item, half_width_m, foot_inset_m=parameters["d"] * half_width_m), motion)
-
-
-def _sliding_only(item, half_width_m, motion, run) -> Prediction:
-    """``run(accel_g, dt_s)`` for an item that cannot uplift; the engine's normal model otherwise."""
-    block = item_block(item, half_width_m)
-    if not pure_sliding_proved(block.mu_static, block.b_over_h):
-        return _engine(block, motion)
-    result = run(with_tail(motion.accel_g, motion.dt_s, DEFAULT_TAIL_S), motion.dt_s, block)
-    sliding = float(result.sliding_max_m)
-    return Prediction(sliding, 0.0, False, "slide" if sliding > 0.0 else "rest")
-
-
-def _velocity_friction(item, half_width_m, motion, parameters):
-    from assess.mechanics.interface import velocity_friction_response
-
-    def run(accel, dt, block):
-        return velocity_friction_response(accel, dt, mu_min=parameters["f"] * block.mu, mu_max=block.mu,
-                                          rate_s_m=parameters["rate_s_m"], mu_static=block.mu_static)
-    return _sliding_only(item, half_width_m, motion, run)
-
-
-def _interface_elasticity(item, half_width_m, motion, parameters):
-    from assess.mechanics.interface import elastic_interface_response
-
-    def run(accel, dt, block):
-        return elastic_interface_response(accel, dt, mu=block.mu,
-                                          yield_displacement_m=parameters["yield_displacement_m"])
-    return _sliding_only(item, half_width_m, motion, run)
+def _predictor(effect: str):
+    """``predict(item, half_width_m, motion, parameters)`` of one effect (see :class:`Effect`)."""
+    def predict(item, half_width_m, motion, parameters):
+        return _engine(calibrated_block(item_block(item, half_width_m), effect, parameters),
+                       calibrated_motion(motion, effect, parameters))
+    predict.__name__ = f"predict_{effect}"
+    return predict
 
 
 #: Every effect, by name, in the order the report lists them.
 EFFECTS: dict[str, Effect] = {e.name: e for e in [
-    Effect("none", "the model as declared", (), _none),
-    Effect("friction_scale", "μ and μ_s × k", (Parameter("k", 0.3, 1.5, 1.0),), _friction_scale),
-    Effect("static_friction", "μ_s = r·μ", (Parameter("r", 1.0, 3.0, 1.0),), _static_friction),
+    Effect("none", "the model as declared", (), _predictor("none")),
+    Effect("friction_scale", "μ and μ_s × k",
+           (Parameter("k", 0.3, 1.5, 1.0, label="factor k on μ and μ_s",
+                      determined_by="k acts only on tests in which a specimen slides or comes close to it"),),
+           _predictor("friction_scale")),
+    Effect("static_friction", "μ_s = r·μ",
+           (Parameter("r", 1.0, 3.0, 1.0, label="ratio r of static to kinetic μ",
+                      determined_by="r acts only on tests whose floor acceleration reaches μ"),),
+           _predictor("static_friction")),
     Effect("restitution", "rocking impact restitution e (instead of Housner's)",
-           (Parameter("e", 0.0, 1.0, None),), _restitution),
-    Effect("input_scale", "floor motion × s", (Parameter("s", 0.5, 2.0, 1.0, log=True),), _input_scale),
+           (Parameter("e", 0.0, 1.0, None, label="restitution e at a rocking impact",
+                      determined_by="e acts only at rocking impacts, so only tests in which a specimen "
+                      "rocks back onto its other edge can fix it"),),
+           _predictor("restitution")),
+    Effect("input_scale", "floor motion × s",
+           (Parameter("s", 0.5, 2.0, 1.0, log=True, label="factor s on the floor motion",
+                      determined_by="no specimen's peaks change with the motion's amplitude"),),
+           _predictor("input_scale")),
     Effect("velocity_friction", "kinetic μ rises with slip velocity from f·μ (slow) to μ (fast); breakaway at μ_s",
-           (Parameter("f", 0.3, 1.0, 1.0), Parameter("rate_s_m", 1.0, 100.0, 10.0, unit="s/m", log=True)),
-           _velocity_friction, requires=INTERFACE_MODULE),
+           (Parameter("f", 0.3, 1.0, 1.0, label="low-speed friction factor f",
+                      determined_by="f acts only on specimens that slide without uplifting"),
+            Parameter("rate_s_m", 1.0, 100.0, 10.0, unit="s/m", log=True, label="rate a of the rise of μ with speed",
+                      determined_by="the rate acts only on specimens that slide without uplifting, and "
+                      "only where f is below 1")),
+           _predictor("velocity_friction"), requires=INTERFACE_MODULE),
     Effect("interface_elasticity", "elastic interface of yield displacement u_y before slip",
-           (Parameter("yield_displacement_m", 0.0005, 0.05, 0.0005, unit="m", log=True),),
-           _interface_elasticity, requires=INTERFACE_MODULE),
-    Effect("foot_inset", "rocks about feet inset by d·b", (Parameter("d", 0.0, 0.6, 0.0),), _foot_inset),
+           (Parameter("yield_displacement_m", 0.0005, 0.05, 0.0005, unit="m", log=True,
+                      label="yield displacement u_y of the interface",
+                      determined_by="u_y acts only on specimens that slide without uplifting"),),
+           _predictor("interface_elasticity"), requires=INTERFACE_MODULE),
+    Effect("foot_inset", "rocks about feet inset by d·b",
+           (Parameter("d", 0.0, 0.6, 0.0, label="foot inset d, as a fraction of the half-width",
+                      determined_by="d acts only on tests in which a specimen uplifts or comes close to it"),),
+           _predictor("foot_inset")),
 ]}
 
 

@@ -45,7 +45,12 @@ cross-validation: every test is predicted with the parameters fitted (on the
 grid) to the other tests, and the score is :math:`J` of those predictions.
 ``none`` has nothing to fit, so its score is its error. An effect earns its
 parameters only if its score is below ``(1 − margin)`` × the score of
-``none`` (:data:`MARGIN` = 10 %). Among the effects that do, those within
+``none`` (:data:`MARGIN` = 10 %) and it is fitted away from the declared
+model: some parameter lies more than :data:`NEUTRAL_STANDARD_ERRORS` = 2
+jackknife standard errors from its neutral value (:func:`departs_from_declared`;
+a rocking response near a threshold can change by 15 % with the input
+amplitude changed by 0.3 %, so an effect fitted at s = 0.997 can beat the
+declared model on noise alone). Among the effects that do, those within
 ``margin`` of the best score fit equally well; the one with the fewest
 parameters is selected (then the lower score). ``indistinguishable_from``
 lists the other effects whose score is within ``margin`` of the selected one's
@@ -224,6 +229,8 @@ class EffectFit:
     predicted: Predicted
     cv_losses: np.ndarray = field(repr=False)
     standard_error: dict = field(default_factory=dict)
+    not_determined: dict = field(default_factory=dict)
+    """Parameters the tests cannot fix, each with the reason (:func:`undetermined_parameters`)."""
 
 
 def parameter_grid(effect: Effect) -> list[dict]:
@@ -255,6 +262,7 @@ def fit_effect(effect: Effect, cases: Sequence[Case], measured: Measured, cache:
     counts = measured.counts
     grid = parameter_grid(effect)
     losses = [test_losses(predict_cases(effect, cases, point, cache), measured) for point in grid]
+    not_determined = undetermined_parameters(effect, grid, [objective(loss, counts) for loss in losses])
     best = int(np.argmin(np.sum(losses, axis=1)))
     parameters = {k: float(v) for k, v in grid[best].items()}
     if refine and effect.parameters:
@@ -270,8 +278,53 @@ def fit_effect(effect: Effect, cases: Sequence[Case], measured: Measured, cache:
             count = LOCAL_POINTS_1D if len(effect.parameters) == 1 else LOCAL_POINTS_2D
             step = (np.exp(high) - np.exp(low) if p.log else high - low) / (count - 1)
             error[p.name] = float(np.hypot(error[p.name], step / np.sqrt(12.0)))
+    for name in not_determined:
+        error[name] = None
     return EffectFit(effect, parameters, error_measures(predicted, measured), objective(held, counts),
-                     predicted, held, error)
+                     predicted, held, error, not_determined)
+
+
+#: Objective values closer than this (relative, and absolute below 1) count as equal [-].
+FLAT_TOLERANCE = 1e-9
+
+
+def undetermined_parameters(effect: Effect, grid: Sequence[Mapping[str, float]], values: Sequence[float]) -> dict:
+    """The parameters these tests cannot fix, each with a sentence saying why.
+
+    A parameter is not determined when the objective's minimum over the grid
+    is reached (within :data:`FLAT_TOLERANCE`) at three or more of its grid
+    values: the tests then fit a whole interval of it equally well, e.g.
+    the restitution when no tested specimen rocks (every e predicts the same
+    peaks), or the rate of velocity friction when its low-speed factor is 1.
+    A fitted value and a jackknife error would then be artefacts of the grid.
+
+    >>> from assess.calibration.effects import EFFECTS
+    >>> grid = [{"e": v} for v in (0.0, 0.5, 1.0)]
+    >>> undetermined_parameters(EFFECTS["restitution"], grid, [0.3, 0.3, 0.3])["e"][:52]
+    'every value from 0 to 1 predicts these tests alike: '
+    >>> undetermined_parameters(EFFECTS["restitution"], grid, [0.3, 0.1, 0.3])
+    {}
+    """
+    values = np.asarray(values, dtype=float)
+    if values.size == 0 or not effect.parameters:
+        return {}
+    best = float(np.min(values))
+    tied = values <= best + FLAT_TOLERANCE * max(1.0, abs(best))
+    out = {}
+    for p in effect.parameters:
+        tied_values = np.unique([float(point[p.name]) for point, t in zip(grid, tied) if t])
+        if tied_values.size < 3:
+            continue
+        low, high = tied_values.min(), tied_values.max()
+        span = ("every value from {0} to {1}" if (low, high) == (p.lower, p.upper) or tied.all()
+                else "every value from {0} to {1} (of {2} to {3})").format(
+                    _plain(low), _plain(high), _plain(p.lower), _plain(p.upper))
+        out[p.name] = f"{span} predicts these tests alike: {p.determined_by}."
+    return out
+
+
+def _plain(value: float) -> str:
+    return f"{value:.3g}"
 
 
 def jackknife_standard_error(leave_one_out_parameters: Sequence[Mapping[str, float]]) -> dict:
@@ -347,12 +400,47 @@ def _refine(effect, cases, measured, cache, start: dict, start_value: float) -> 
     return {p.name: float(back(v)) for p, back, v in zip(effect.parameters, backward, x)}
 
 
+#: How many standard errors from its neutral value a parameter must be fitted to count as an effect.
+NEUTRAL_STANDARD_ERRORS = 2.0
+
+
+def departs_from_declared(fit) -> bool:
+    """Whether some parameter of ``fit`` lies more than 2 standard errors from its neutral value.
+
+    A parameter without a neutral value (``restitution``: Housner's e differs
+    per item) or without a standard error counts as departing; one the tests
+    cannot fix (``not_determined``) does not.
+
+    >>> from types import SimpleNamespace
+    >>> from assess.calibration.effects import EFFECTS
+    >>> fit = SimpleNamespace(effect=EFFECTS["input_scale"], parameters={"s": 0.997},
+    ...                       standard_error={"s": 0.004}, not_determined={})
+    >>> departs_from_declared(fit), departs_from_declared(SimpleNamespace(**{**vars(fit), "parameters": {"s": 0.7}}))
+    (False, True)
+    """
+    parameters = getattr(fit, "parameters", None)
+    errors = getattr(fit, "standard_error", None) or {}
+    missing = getattr(fit, "not_determined", None) or {}
+    if not parameters:
+        return True
+    for p in fit.effect.parameters:
+        if p.name in missing:
+            continue
+        error = errors.get(p.name)
+        if p.neutral is None or error is None:
+            return True
+        if abs(float(parameters[p.name]) - p.neutral) > NEUTRAL_STANDARD_ERRORS * float(error):
+            return True
+    return False
+
+
 def select_effect(fits: Sequence[EffectFit], margin: float = MARGIN) -> tuple[str, list[str]]:
     """The selected effect's name and the names it cannot be told from (module docstring)."""
     scores = {f.effect.name: f.score for f in fits}
     sizes = {f.effect.name: len(f.effect.parameters) for f in fits}
     reference = scores["none"]
-    earning = [n for n in scores if n != "none" and scores[n] < (1.0 - margin) * reference]
+    departs = {f.effect.name: departs_from_declared(f) for f in fits}
+    earning = [n for n in scores if n != "none" and scores[n] < (1.0 - margin) * reference and departs[n]]
     if earning:
         best = min(scores[n] for n in earning)
         equal = [n for n in earning if scores[n] <= (1.0 + margin) * best]

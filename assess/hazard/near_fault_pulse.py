@@ -27,6 +27,8 @@ References
 """
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 from scipy import optimize
 
@@ -206,3 +208,83 @@ def pulse_peak_factor(gamma, nu):
         bounds=(max(tau[0], tau[k] - step), min(tau[-1], tau[k] + step)), method="bounded",
         options={"xatol": 1e-12})
     return float(sign * max(-best.fun, sign * velocity[k]))
+
+
+def type_b_approximation(gamma, nu):
+    """The Type-B pulse that best approximates the modified MP pulse of Vp = 1, Tp = 1.
+
+    The workbook's and the identifier's (Tp, vp) describe a motion's pulse
+    by the Type-B pulse u̇ = vp·sin(2π(t − t0)/T_B), t0 ≤ t ≤ t0 + T_B, that
+    approximates it (the paper's Table 3, third column; the least-squares
+    fit of :func:`assess.hazard.pulse_identification.identify_pulse`). This
+    is that fit for the modified MP velocity pulse itself: the signed
+    amplitude and the period of the Type-B pulse closest to it in the
+    least-squares sense, over (T_B, t0) with the amplitude solved exactly.
+    The synthesis divides the workbook's (Tp, vp) by these to find the MP
+    pulse whose Type-B approximation they are.
+
+    Returns
+    -------
+    (amplitude, period) : tuple of float
+        Signed vp of the Type-B approximation [per unit Vp] and T_B [per unit Tp].
+
+    Examples
+    --------
+    For γ = 2.3 the Type-B approximation reads 0.80-1.00 of the MP pulse's
+    peak velocity, depending on the phase ν (measured independently with
+    ``identify_pulse(models=("B",))`` on the sampled pulses: the same to 0.01):
+
+    >>> [round(abs(type_b_approximation(2.3, nu)[0] / pulse_peak_factor(2.3, nu)), 2) for nu in (0.0, np.pi / 2)]
+    [0.8, 1.0]
+    """
+    tau = np.linspace(-0.5 * gamma - 1.5, 0.5 * gamma + 1.5, 2401)
+    step = tau[1] - tau[0]
+    velocity = modified_mavroeidis_papageorgiou_velocity(tau, 1.0, 1.0, gamma, nu, 0.0)
+
+    def fit(parameters):
+        period, start = parameters
+        phase = (tau - start) / period
+        shape = np.where((phase >= 0.0) & (phase <= 1.0), np.sin(2.0 * np.pi * phase), 0.0)
+        norm = float(shape @ shape)
+        amplitude = float(shape @ velocity) / norm if norm > 0.0 else 0.0
+        return amplitude, float(np.sum((velocity - amplitude * shape) ** 2)) * step
+
+    starts = [(period, start) for period in (0.7, 0.9, 1.1, 1.3)
+              for start in np.arange(-0.5 * gamma - 0.5, 0.5 * gamma, 0.1)]
+    best = min(starts, key=lambda x: fit(x)[1])
+    refined = optimize.minimize(lambda x: fit(x)[1], best, method="Nelder-Mead",
+                                options={"xatol": 1e-6, "fatol": 1e-12, "maxiter": 2000})
+    amplitude, _ = fit(refined.x)
+    return amplitude, float(refined.x[0])
+
+
+#: Phases ν on [0, π) at which :func:`type_b_reading` tabulates the Type-B approximation.
+_READING_PHASES = 24
+
+
+@functools.lru_cache(maxsize=16)
+def _type_b_reading_table(gamma):
+    phases = np.linspace(0.0, np.pi, _READING_PHASES, endpoint=False)
+    readings = []
+    for nu in phases:
+        amplitude, period = type_b_approximation(gamma, nu)
+        readings.append((abs(amplitude) / abs(pulse_peak_factor(gamma, nu)), period))
+    return phases, np.array(readings)
+
+
+def type_b_reading(gamma, nu):
+    """How a Type-B approximation reads the modified MP pulse: (|vp_B| / peak velocity, T_B / Tp).
+
+    :func:`type_b_approximation` tabulated at 24 phases on [0, π) and
+    interpolated periodically (both ratios repeat with period π in ν: the
+    pulse of ν + π is the pulse of ν reversed).
+
+    >>> [round(x, 3) for x in type_b_reading(2.3, 0.0)]
+    [0.8, 0.955]
+    """
+    phases, readings = _type_b_reading_table(float(gamma))
+    nu = float(np.mod(nu, np.pi))
+    period = np.pi
+    extended = np.concatenate([phases, [period]])
+    values = np.vstack([readings, readings[:1]])
+    return float(np.interp(nu, extended, values[:, 0])), float(np.interp(nu, extended, values[:, 1]))

@@ -152,17 +152,19 @@ References
 """
 from __future__ import annotations
 
+import functools
 import warnings
 from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
+from numba import njit
 from scipy import optimize, signal, special
 
 from assess.hazard.near_fault_pulse import (  # noqa: F401 - part of this module's API
     _pulse_window, mavroeidis_papageorgiou_acceleration, mavroeidis_papageorgiou_residual_displacement,
     mavroeidis_papageorgiou_velocity, modified_mavroeidis_papageorgiou_acceleration,
-    modified_mavroeidis_papageorgiou_velocity, pulse_peak_factor,
+    modified_mavroeidis_papageorgiou_velocity, pulse_peak_factor, type_b_reading,
 )
 from assess.hazard.processing import arias_intensity_m_s
 from assess.hazard.records import Record
@@ -319,10 +321,17 @@ def critically_damped_high_pass(accel, dt_s, corner_hz=DEFAULT_HIGH_PASS_HZ):
     >>> abs(float(a[-1])) < 1e-9, abs(float(np.sum(a) * 0.005)) < 1e-6
     (True, True)
     """
+    numerator, denominator = _high_pass_coefficients(float(dt_s), float(corner_hz))
+    return signal.lfilter(numerator, denominator, np.asarray(accel, dtype=float))
+
+
+@functools.lru_cache(maxsize=64)
+def _high_pass_coefficients(dt_s, corner_hz):
+    """The oscillator s²/(s + ωc)² discretised with a first-order hold (computed once per dt and corner)."""
     omega = 2.0 * np.pi * corner_hz
     numerator, denominator, _ = signal.cont2discrete(([1.0, 0.0, 0.0], [1.0, 2.0 * omega, omega * omega]),
                                                      dt_s, method="foh")
-    return signal.lfilter(np.ravel(numerator), denominator, np.asarray(accel, dtype=float))
+    return np.ravel(numerator), np.asarray(denominator)
 
 
 def rezaeian_residual(n_samples, dt_s, arias_intensity_m_s, d5_95_s, t_mid_s, rng, *,
@@ -350,7 +359,8 @@ def rezaeian_residual(n_samples, dt_s, arias_intensity_m_s, d5_95_s, t_mid_s, rn
     unit-variance filtered noise modulated by q(t)
     (:func:`gamma_modulating_parameters`), then high-passed by
     :func:`critically_damped_high_pass`. Impulse responses are cut after 12
-    decay times 1/(ζ_f ω_f) (the neglected share of h² is e⁻²⁴).
+    decay times 1/(ζ_f ω_f(t_i)) of their own frequency (the neglected share of
+    h² is e⁻²⁴), computed by :func:`_filtered_noise_sums`.
 
     The expected Arias intensity before the high-pass is Ia; the high-pass
     removes the energy below its corner, as in [1]_ (measured for Ia 1 m/s,
@@ -382,22 +392,41 @@ def rezaeian_residual(n_samples, dt_s, arias_intensity_m_s, d5_95_s, t_mid_s, rn
     time_s = np.arange(n) * dt_s
     omega = 2.0 * np.pi * filter_frequency_hz(time_s, f_mid_hz, f_slope_hz_s, t_mid_s)
     noise = rng.standard_normal(n)
-    root = np.sqrt(1.0 - zeta * zeta)
-    lags = min(n, int(np.ceil(_FILTER_MEMORY_DECAY_TIMES / (zeta * float(np.min(omega)) * dt_s))) + 1)
-    numerator = np.zeros(n)
-    energy = np.zeros(n)
-    for lag in range(1, lags):  # h(0) = 0
-        w = omega[:n - lag]
-        elapsed = lag * dt_s
-        h = w / root * np.exp(-zeta * w * elapsed) * np.sin(w * root * elapsed)
-        numerator[lag:] += h * noise[:n - lag]
-        energy[lag:] += h * h
+    numerator, energy = _filtered_noise_sums(omega, noise, float(zeta), float(dt_s), _FILTER_MEMORY_DECAY_TIMES)
     unit = np.divide(numerator, np.sqrt(energy), out=np.zeros(n), where=energy > 0.0)
     accel = gamma_modulating_function(time_s, gamma_modulating_parameters(
         arias_intensity_m_s, d5_95_s, t_mid_s)) * unit
     if high_pass_hz is not None:
         accel = critically_damped_high_pass(accel, dt_s, high_pass_hz)
     return accel
+
+
+@njit(cache=True)
+def _filtered_noise_sums(omega, noise, zeta, dt_s, memory_decay_times):
+    """Σ h(t − t_i; t_i) u_i and Σ h²(t − t_i; t_i) at every sample (see :func:`rezaeian_residual`).
+
+    Each impulse response is followed from its source for
+    ``memory_decay_times`` decay times 1/(ζ ω(t_i)) of its own frequency; its
+    damped sine is stepped by the exact rotation e^{(−ζω + iω_d)Δt}, so a
+    sample costs one complex product instead of an exponential and a sine.
+    """
+    n = omega.size
+    numerator = np.zeros(n)
+    energy = np.zeros(n)
+    root = np.sqrt(1.0 - zeta * zeta)
+    for i in range(n):
+        w = omega[i]
+        lags = min(n - i, int(np.ceil(memory_decay_times / (zeta * w * dt_s))) + 1)
+        decay = np.exp(-zeta * w * dt_s)
+        c_re, c_im = decay * np.cos(w * root * dt_s), decay * np.sin(w * root * dt_s)
+        z_re, z_im = 1.0, 0.0
+        gain = w / root
+        for lag in range(1, lags):  # h(0) = 0
+            z_re, z_im = z_re * c_re - z_im * c_im, z_re * c_im + z_im * c_re
+            h = gain * z_im
+            numerator[i + lag] += h * noise[i]
+            energy[i + lag] += h * h
+    return numerator, energy
 
 
 # --------------------------------------------------------------------------- synthesis
@@ -536,7 +565,7 @@ def simulate_near_fault_motion(pta_g, tp_s, vp_m_s, rng, *, dt_s=0.005, duration
                                residual_f_mid_hz=DEFAULT_FILTER_FREQUENCY_HZ,
                                residual_f_slope_hz_s=DEFAULT_FILTER_SLOPE_HZ_S,
                                residual_zeta=DEFAULT_FILTER_DAMPING,
-                               high_pass_hz=None) -> SyntheticMotion:
+                               high_pass_hz=None, vp_reading="type-b") -> SyntheticMotion:
     """One realisation of a near-fault motion with peak acceleration PTA and pulse (Tp, vp).
 
     See the module docstring for the model, the defaults and how PTA and vp
@@ -582,13 +611,20 @@ def simulate_near_fault_motion(pta_g, tp_s, vp_m_s, rng, *, dt_s=0.005, duration
     d5_95 = default_d5_95_s(tp_s, pulse_gamma) if residual_d5_95_s is None else float(residual_d5_95_s)
     t_mid = DEFAULT_T_MID_OVER_D5_95 * d5_95 if residual_t_mid_s is None else float(residual_t_mid_s)
     corner_hz = default_high_pass_hz(tp_s) if high_pass_hz is None else float(high_pass_hz)
-    half_window = 0.5 * pulse_gamma * tp_s
+    nu = float(rng.uniform(0.0, 2.0 * np.pi)) if pulse_nu_rad is None else float(pulse_nu_rad)
+    if vp_reading == "type-b":
+        vp_ratio, tp_ratio = type_b_reading(pulse_gamma, nu)
+    elif vp_reading == "peak":
+        vp_ratio, tp_ratio = 1.0, 1.0
+    else:
+        raise ValueError(f"vp_reading must be 'type-b' or 'peak', got {vp_reading!r}")
+    pulse_tp_s, pulse_peak_m_s = tp_s / tp_ratio, vp_m_s / vp_ratio
+    half_window = 0.5 * pulse_gamma * pulse_tp_s
     t_peak = max(t_mid, half_window) if pulse_t_peak_s is None else float(pulse_t_peak_s)
     if t_peak < half_window:
         raise ValueError(f"pulse_t_peak_s = {t_peak:g} s starts the pulse before t = 0: give at least "
                          f"γTp/2 = {half_window:g} s.")
     pulse_end = t_peak + half_window
-    nu = float(rng.uniform(0.0, 2.0 * np.pi)) if pulse_nu_rad is None else float(pulse_nu_rad)
 
     modulating = gamma_modulating_parameters(1.0, d5_95, t_mid)
     k, rate = 2.0 * modulating.alpha2 - 1.0, 2.0 * modulating.alpha3
@@ -603,8 +639,8 @@ def simulate_near_fault_motion(pta_g, tp_s, vp_m_s, rng, *, dt_s=0.005, duration
     time_s = np.arange(n) * dt_s
     taper_end = min(taper_end, time_s[-1])
 
-    amplitude = vp_m_s / pulse_peak_factor(pulse_gamma, nu)
-    pulse = _sampled_pulse(time_s, dt_s, amplitude, tp_s, pulse_gamma, nu, t_peak)
+    amplitude = pulse_peak_m_s / pulse_peak_factor(pulse_gamma, nu)
+    pulse = _sampled_pulse(time_s, dt_s, amplitude, pulse_tp_s, pulse_gamma, nu, t_peak)
     residual = rezaeian_residual(n, dt_s, 1.0, d5_95, t_mid, rng, f_mid_hz=residual_f_mid_hz,
                                  f_slope_hz_s=residual_f_slope_hz_s, zeta=residual_zeta, high_pass_hz=None)
     residual = critically_damped_high_pass(
@@ -627,8 +663,8 @@ def simulate_near_fault_motion(pta_g, tp_s, vp_m_s, rng, *, dt_s=0.005, duration
         accel_g=total_g * factor, dt_s=float(dt_s),
         pulse_accel_g=pulse / STANDARD_GRAVITY_M_S2 * factor,
         residual_accel_g=c * residual / STANDARD_GRAVITY_M_S2 * factor,
-        pulse_vp_m_s=float(vp_m_s * factor), pulse_gamma=float(pulse_gamma), pulse_nu_rad=nu,
-        pulse_t_peak_s=float(t_peak), tp_s=float(tp_s),
+        pulse_vp_m_s=float(pulse_peak_m_s * factor), pulse_gamma=float(pulse_gamma), pulse_nu_rad=nu,
+        pulse_t_peak_s=float(t_peak), tp_s=float(pulse_tp_s),
         residual_arias_m_s=arias_intensity_m_s(c * factor * residual / STANDARD_GRAVITY_M_S2, dt_s),
         residual_d5_95_s=d5_95, residual_t_mid_s=t_mid, high_pass_hz=corner_hz)
 
@@ -646,7 +682,7 @@ def synthesize_motion(pta_g, tp_s, vp_m_s, *, n_realizations=5, seed=0, dt_s=0.0
                       residual_f_mid_hz=DEFAULT_FILTER_FREQUENCY_HZ,
                       residual_f_slope_hz_s=DEFAULT_FILTER_SLOPE_HZ_S,
                       residual_zeta=DEFAULT_FILTER_DAMPING,
-                      high_pass_hz=None) -> list[Record]:
+                      high_pass_hz=None, vp_reading="type-b") -> list[Record]:
     """Synthetic acceleration histories of a motion given by PTA [g], Tp [s] and vp [m/s].
 
     Each :class:`~assess.hazard.records.Record` is a pulse (modified
@@ -680,7 +716,7 @@ def synthesize_motion(pta_g, tp_s, vp_m_s, *, n_realizations=5, seed=0, dt_s=0.0
             pulse_nu_rad=pulse_nu_rad, pulse_t_peak_s=pulse_t_peak_s, residual_d5_95_s=residual_d5_95_s,
             residual_t_mid_s=residual_t_mid_s, residual_f_mid_hz=residual_f_mid_hz,
             residual_f_slope_hz_s=residual_f_slope_hz_s, residual_zeta=residual_zeta,
-            high_pass_hz=high_pass_hz)
+            high_pass_hz=high_pass_hz, vp_reading=vp_reading)
         name = (f"synthetic {i}/{n} ({MODEL_LABEL}), PTA {pta_g:g} g, Tp {tp_s:g} s, "
                 f"vp {vp_m_s * 100:g} cm/s, {seed_text}")
         records.append(Record(accel_g=motion.accel_g, dt_s=motion.dt_s, name=name))

@@ -22,7 +22,10 @@ it, and by the general solver otherwise:
 
 After the record the floor is at rest and the block is followed for
 ``tail_s`` more seconds (run-out of sliding, free rocking, or a late
-overturning).
+overturning). Every solver takes the floor at rest right after the last
+sample (SPEC §4: zero after the record, after Tp for a pulse): a step there,
+not a ramp down over one more sample interval, so that a pulse ending at full
+amplitude (Type B) pushes the block for the same time in each.
 
 References
 ----------
@@ -45,11 +48,71 @@ from .rocking import rocking_peaks_batch, rocking_response
 from .sliding import sliding_peaks_batch, sliding_response
 
 SLIDING_KERNEL = "sliding kernel"
+VELOCITY_FRICTION_KERNEL = "sliding kernel (velocity-dependent friction)"
+ELASTIC_INTERFACE_KERNEL = "sliding kernel (elastic interface)"
 ROCKING_KERNEL = "rocking kernel"
 GENERAL = "general (time-stepping)"
 EVENT_DRIVEN = "general (event-driven)"
 #: Seconds followed after the record, floor at rest, by default.
 DEFAULT_TAIL_S = 10.0
+
+
+@dataclass(frozen=True)
+class SlidingInterface:
+    """A sliding law richer than Coulomb friction, for a block that cannot uplift.
+
+    Exactly one of the two laws of :mod:`assess.mechanics.interface`:
+    velocity-dependent friction (``low_speed_factor`` f and ``rate_s_m``:
+    μ(u̇) rises from f·μ at rest to μ, breakaway at μ_s;
+    :func:`~assess.mechanics.interface.velocity_friction_response`) or an
+    elastic-perfectly-plastic interface (``yield_displacement_m``;
+    :func:`~assess.mechanics.interface.elastic_interface_response`). Those
+    kernels model sliding only, so the engine uses them where uplift is
+    impossible (μ_s < b/h) and the rigid block's solvers elsewhere.
+    """
+
+    low_speed_factor: Optional[float] = None
+    rate_s_m: Optional[float] = None
+    yield_displacement_m: Optional[float] = None
+
+    def __post_init__(self):
+        velocity = self.low_speed_factor is not None or self.rate_s_m is not None
+        elastic = self.yield_displacement_m is not None
+        if velocity == elastic:
+            raise ValueError("give either low_speed_factor and rate_s_m, or yield_displacement_m")
+        if velocity and not (self.low_speed_factor is not None and self.rate_s_m is not None
+                             and 0.0 < self.low_speed_factor <= 1.0 and self.rate_s_m > 0.0):
+            raise ValueError("velocity friction needs 0 < low_speed_factor <= 1 and rate_s_m > 0")
+        if elastic and not (np.isfinite(self.yield_displacement_m) and self.yield_displacement_m > 0.0):
+            raise ValueError("yield_displacement_m must be positive")
+
+    @property
+    def solver(self) -> str:
+        return ELASTIC_INTERFACE_KERNEL if self.yield_displacement_m is not None else VELOCITY_FRICTION_KERNEL
+
+    def response(self, block: Block, floor_accel_g, dt_s, return_history=False):
+        """The interface kernel's :class:`~assess.mechanics.sliding.SlidingResult` for ``block``."""
+        from .interface import elastic_interface_response, velocity_friction_response
+        if self.yield_displacement_m is not None:
+            return elastic_interface_response(floor_accel_g, dt_s, mu=block.mu,
+                                              yield_displacement_m=self.yield_displacement_m,
+                                              return_history=return_history)
+        return velocity_friction_response(floor_accel_g, dt_s, mu_min=self.low_speed_factor * block.mu,
+                                          mu_max=block.mu, rate_s_m=self.rate_s_m, mu_static=block.mu_static,
+                                          return_history=return_history)
+
+
+@dataclass(frozen=True)
+class BlockOnInterface(Block):
+    """A :class:`~assess.mechanics.block.Block` that slides on a :class:`SlidingInterface`.
+
+    >>> block = BlockOnInterface(half_width_m=0.3, cg_height_m=1.0, height_m=2.0, mu=0.2,
+    ...                          interface=SlidingInterface(yield_displacement_m=0.005))
+    >>> block.interface.solver
+    'sliding kernel (elastic interface)'
+    """
+
+    interface: Optional[SlidingInterface] = None
 
 
 def pure_sliding_proved(mu_static, b_over_h):
@@ -72,7 +135,13 @@ def pure_rocking_held(friction_demand_max, normal_force_min_over_weight, mu_stat
 
 
 def with_tail(floor_accel_g, dt_s, tail_s=DEFAULT_TAIL_S):
-    """The record followed by ``tail_s`` seconds of floor at rest (zeros) [g]."""
+    """The record followed by ``tail_s`` seconds of zeros [g].
+
+    Not the floor at rest after the record: read as samples, linear between
+    them, these zeros ramp the floor down over the interval after the last
+    sample. The solvers take ``tail_s`` themselves and step the floor to rest
+    at the last sample (SPEC §4).
+    """
     accel = np.asarray(floor_accel_g, dtype=float)
     return np.concatenate([accel, np.zeros(int(np.ceil(tail_s / dt_s)))])
 
@@ -140,10 +209,12 @@ def simulate(block: Block, floor_accel_g, dt_s, *, tail_s=DEFAULT_TAIL_S, return
     if solver != "auto":
         raise ValueError(f"solver must be 'auto', 'general' or 'event-driven', not {solver!r}")
     if pure_sliding_proved(block.mu_static, block.b_over_h):
+        if getattr(block, "interface", None) is not None:
+            return _on_interface(block, accel, dt_s, tail_s, return_history)
         return _sliding(block, accel, dt_s, tail_s, return_history)
-    rocking = rocking_response(with_tail(accel, dt_s, tail_s), dt_s, block.alpha_rad, block.p_rad_s,
+    rocking = rocking_response(accel, dt_s, block.alpha_rad, block.p_rad_s,
                                restitution=block.restitution_effective, return_history=return_history,
-                               inertia_ratio_value=block.inertia_ratio)
+                               inertia_ratio_value=block.inertia_ratio, tail_s=tail_s)
     if not pure_rocking_held(rocking.friction_demand_max, rocking.normal_force_min_over_weight,
                              block.mu_static):
         return _general(block, accel, dt_s, tail_s, return_history)
@@ -174,6 +245,24 @@ def _sliding(block, accel, dt_s, tail_s, return_history):
     return BlockResponse(sliding_max_m=result.sliding_max_m, sliding_residual_m=result.sliding_residual_m,
                          theta_max_over_alpha=0.0, uplift=False, overturned=False, overturn_time_s=np.nan,
                          mode_sequence=sequence, solver=SLIDING_KERNEL, **history)
+
+
+def _on_interface(block, accel, dt_s, tail_s, return_history):
+    """A block that cannot uplift, sliding on its :class:`SlidingInterface` (run-out included)."""
+    result = block.interface.response(block, accel, dt_s, return_history=return_history)
+    onset = _onset_time_s(accel, dt_s, block.mu_static)
+    slid = result.slide_time_s > 0.0
+    sequence = ((0.0, REST),) + (((float(onset) if np.isfinite(onset) else 0.0, SLIDE),) if slid else ())
+    history = {}
+    if return_history:
+        n_tail = int(np.ceil(tail_s / dt_s))
+        time_s = np.arange(accel.size + n_tail) * dt_s
+        sliding_m = np.concatenate([result.sliding_m, np.full(n_tail, result.sliding_residual_m)])
+        history = dict(time_s=time_s, sliding_m=sliding_m, theta_rad=np.zeros(time_s.size))
+    return BlockResponse(sliding_max_m=float(result.sliding_max_m),
+                         sliding_residual_m=float(result.sliding_residual_m), theta_max_over_alpha=0.0,
+                         uplift=False, overturned=False, overturn_time_s=np.nan, mode_sequence=sequence,
+                         solver=block.interface.solver, **history)
 
 
 def _general(block, accel, dt_s, tail_s, return_history):
@@ -213,7 +302,8 @@ def simulate_cases(blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_
     Cases are grouped by record and by the solver proved for them, and each
     group runs in the parallel batch kernels; rocking runs whose pivot would
     have slipped or lifted are re-run, as a batch per record, by the general
-    solver. Same results as :func:`simulate` case by case, peaks only.
+    solver. Blocks on a :class:`SlidingInterface` that cannot uplift run its
+    kernel one by one. Same results as :func:`simulate` case by case, peaks only.
 
     ``progress(done, total)`` is called after each record's group.
     """
@@ -231,11 +321,16 @@ def simulate_cases(blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_
     mu = np.array([b.mu for b in blocks])
     mu_static = np.array([b.mu_static for b in blocks])
     sliding_set = pure_sliding_proved(mu_static, np.array([b.b_over_h for b in blocks]))
+    on_interface = np.array([getattr(b, "interface", None) is not None for b in blocks], dtype=bool)
     done = 0
     for j, record in enumerate(records_g):
         in_record = record_index == j
         accel = np.asarray(record, dtype=float)
-        idx = np.flatnonzero(in_record & sliding_set)
+        for i in np.flatnonzero(in_record & sliding_set & on_interface):
+            response = _on_interface(blocks[i], accel, dt_s[j], tail_s, False)
+            sliding_max[i], residual[i] = response.sliding_max_m, response.sliding_residual_m
+            mode[i], solver[i] = response.mode, response.solver
+        idx = np.flatnonzero(in_record & sliding_set & ~on_interface)
         if idx.size:
             peak, res = sliding_peaks_batch([accel], dt_s[j], mu[idx], mu_static[idx])
             sliding_max[idx], residual[idx] = peak[:, 0], res[:, 0]
@@ -244,9 +339,9 @@ def simulate_cases(blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_
         idx = np.flatnonzero(in_record & ~sliding_set)
         if idx.size:
             rock = rocking_peaks_batch(
-                with_tail(accel, dt_s[j], tail_s), dt_s[j], [blocks[i].alpha_rad for i in idx],
+                accel, dt_s[j], [blocks[i].alpha_rad for i in idx],
                 [blocks[i].p_rad_s for i in idx], [blocks[i].restitution_effective for i in idx],
-                [blocks[i].inertia_ratio for i in idx])
+                [blocks[i].inertia_ratio for i in idx], tail_s=tail_s)
             held = pure_rocking_held(rock.friction_demand_max[:, 0],
                                      rock.normal_force_min_over_weight[:, 0], mu_static[idx])
             kept = idx[held]

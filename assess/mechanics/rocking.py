@@ -53,6 +53,13 @@ After an impact whose outgoing angular velocity is below
 towards θ = 0, the block is put back at rest (the Zeno sequence of ever
 smaller rocks has converged); the impacts of that sequence are counted.
 
+**End of the record.** After the last sample the floor is at rest (SPEC §4:
+zero after the record or after Tp): the acceleration steps to zero there, as
+in the sliding kernel and both general solvers, and ``tail_s`` more seconds
+are followed. (Appending zeros to the samples instead would ramp the floor
+down over one more sample interval: a pulse that ends at full amplitude, as
+Type B does, would push the block for half an interval longer.)
+
 **Numerics.** The floor acceleration is piecewise linear between samples. Each
 sample interval is integrated with the classical Runge-Kutta scheme in the
 dimensionless time τ = p t, with sub-steps of at most
@@ -203,14 +210,18 @@ def _hermite_extremum(th0, w0, th1, w1, h):
 
 
 @njit(cache=True)
-def _simulate(accel_g, dt_s, alpha, p, e, kappa, theta_init, theta_dot_init,
+def _simulate(accel_g, dt_s, n_tail, alpha, p, e, kappa, theta_init, theta_dot_init,
               hist_theta, hist_theta_dot, impact_t, impact_w, peak_t, peak_theta, counts, forces):
-    """Integrate one block over one record; history arrays of size 0 are not written.
+    """Integrate one block over one record and ``n_tail`` intervals of floor at rest after it.
 
-    Returns (theta_max_rad, uplift, overturned, overturn_time_s, impacts);
-    ``forces`` receives (max |F|/N, min N/(mg)) over the rocking phases.
+    The floor is linear between the record's samples and zero from the last
+    sample on (a step there, never a ramp into the tail). History arrays of
+    size 0 are not written (otherwise of size n + n_tail). Returns
+    (theta_max_rad, uplift, overturned, overturn_time_s, impacts); ``forces``
+    receives (max |F|/N, min N/(mg)) over the rocking phases.
     """
-    n = accel_g.size
+    n_record = accel_g.size
+    n = n_record + n_tail
     tan_alpha = np.tan(alpha)
     dtau = p * dt_s
     nsub = max(1, int(np.ceil(dtau / MAX_STEP_DIMENSIONLESS - 1e-9)))
@@ -236,8 +247,17 @@ def _simulate(accel_g, dt_s, alpha, p, e, kappa, theta_init, theta_dot_init,
         hist_theta[0] = theta
         hist_theta_dot[0] = w * p
     for k in range(n - 1):
-        a0 = accel_g[k]
-        a1 = accel_g[k + 1]
+        if k < n_record - 1:
+            a0 = accel_g[k]
+            a1 = accel_g[k + 1]
+        else:  # after the record: the floor is at rest
+            a0 = 0.0
+            a1 = 0.0
+            if resting:  # and so is the block, for good
+                if record:
+                    hist_theta[k + 1:] = 0.0
+                    hist_theta_dot[k + 1:] = 0.0
+                break
         slope = (a1 - a0) / dtau
         tau0 = k * dtau
         s = 0.0
@@ -339,7 +359,7 @@ def _simulate(accel_g, dt_s, alpha, p, e, kappa, theta_init, theta_dot_init,
 
 
 @njit(cache=True, parallel=True)
-def _batch(accel_flat, offsets, dts, alpha, p, e, kappa, theta_max, uplift, overturned, overturn_time,
+def _batch(accel_flat, offsets, dts, tails, alpha, p, e, kappa, theta_max, uplift, overturned, overturn_time,
            impacts, friction_demand, normal_min):
     n_blocks = alpha.size
     n_records = dts.size
@@ -349,7 +369,7 @@ def _batch(accel_flat, offsets, dts, alpha, p, e, kappa, theta_max, uplift, over
         i = job % n_blocks
         counts = np.zeros(2, dtype=np.int64)
         forces = np.empty(2)
-        out = _simulate(accel_flat[offsets[j]:offsets[j + 1]], dts[j], alpha[i], p[i], e[i], kappa[i],
+        out = _simulate(accel_flat[offsets[j]:offsets[j + 1]], dts[j], tails[j], alpha[i], p[i], e[i], kappa[i],
                         0.0, 0.0, empty, empty, empty, empty, empty, empty, counts, forces)
         theta_max[i, j] = out[0] / alpha[i]
         uplift[i, j] = out[1]
@@ -450,6 +470,18 @@ def _check_block(alpha_rad, p_rad_s, restitution, inertia_ratio_value=4.0 / 3.0)
             np.ascontiguousarray(kappa))
 
 
+def tail_intervals(tail_s, dt_s) -> int:
+    """Sample intervals of floor at rest that cover ``tail_s`` seconds after a record.
+
+    >>> tail_intervals(10.0, 0.005), tail_intervals(0.0, 0.01)
+    (2000, 0)
+    """
+    tail_s = float(tail_s)
+    if not (np.isfinite(tail_s) and tail_s >= 0.0):
+        raise ValueError("tail_s must be finite and >= 0")
+    return int(np.ceil(tail_s / float(dt_s) - 1e-9))
+
+
 def _check_record(accel_g, dt_s):
     accel = np.ascontiguousarray(np.asarray(accel_g, dtype=float))
     if accel.ndim != 1 or accel.size < 2:
@@ -464,7 +496,7 @@ def _check_record(accel_g, dt_s):
 
 def rocking_response(floor_accel_g, dt_s, alpha_rad, p_rad_s, restitution=None, return_history=False,
                      initial_theta_rad=0.0, initial_theta_dot_rad_s=0.0,
-                     inertia_ratio_value=4.0 / 3.0) -> RockingResult:
+                     inertia_ratio_value=4.0 / 3.0, tail_s=0.0) -> RockingResult:
     """Pure-rocking response of a rigid block to a floor acceleration record.
 
     Integrates the equation of motion of the module docstring ([1], eq. 1)
@@ -475,8 +507,9 @@ def rocking_response(floor_accel_g, dt_s, alpha_rad, p_rad_s, restitution=None, 
     ----------
     floor_accel_g : array-like
         Floor acceleration ü_g/g [g] at times 0, dt, 2dt, ...; linear between
-        samples. The response is computed over the record only: append zeros
-        to follow the free rocking after the shaking ends.
+        samples, and zero from the last sample on (SPEC §4: the floor is at
+        rest after the record, a step at the last sample, as in every solver
+        of :mod:`assess.mechanics.engine`).
     dt_s : float
         Sample interval [s].
     alpha_rad : float
@@ -494,6 +527,9 @@ def rocking_response(floor_accel_g, dt_s, alpha_rad, p_rad_s, restitution=None, 
     inertia_ratio_value : float
         κ = I_O/(mR²) [-], 4/3 for a uniform block; used for the pivot forces
         and the default restitution (p already contains it).
+    tail_s : float
+        Seconds followed after the last sample with the floor at rest
+        (ceil(tail_s/dt) more intervals; the history covers them too).
 
     Returns
     -------
@@ -507,7 +543,7 @@ def rocking_response(floor_accel_g, dt_s, alpha_rad, p_rad_s, restitution=None, 
     >>> r = rocking_response([0.15] * 101, 0.01, 0.16, 1.25)
     >>> r.uplift, r.theta_max_over_alpha
     (False, 0.0)
-    >>> r = rocking_response([0.3] * 51 + [0.0] * 500, 0.01, 0.16, 1.25)
+    >>> r = rocking_response([0.3] * 51, 0.01, 0.16, 1.25, tail_s=5.0)
     >>> r.uplift, r.overturned, r.theta_max_over_alpha < 1.0
     (True, False, True)
     """
@@ -515,7 +551,8 @@ def rocking_response(floor_accel_g, dt_s, alpha_rad, p_rad_s, restitution=None, 
     alpha, p, e, kappa = _check_block(alpha_rad, p_rad_s, restitution, inertia_ratio_value)
     if alpha.size != 1:
         raise ValueError("rocking_response takes one block; use rocking_peaks_batch for many")
-    n = accel.size
+    n_tail = tail_intervals(tail_s, dt)
+    n = accel.size + n_tail
     counts = np.zeros(2, dtype=np.int64)
     if return_history:
         capacity = 4 * n + 4096
@@ -526,7 +563,7 @@ def rocking_response(floor_accel_g, dt_s, alpha_rad, p_rad_s, restitution=None, 
         hist_theta = hist_theta_dot = impact_t = impact_w = peak_t = peak_theta = np.empty(0)
     forces = np.empty(2)
     theta_max, uplift, overturned, overturn_time, impacts = _simulate(
-        accel, dt, alpha[0], p[0], e[0], kappa[0], float(initial_theta_rad), float(initial_theta_dot_rad_s),
+        accel, dt, n_tail, alpha[0], p[0], e[0], kappa[0], float(initial_theta_rad), float(initial_theta_dot_rad_s),
         hist_theta, hist_theta_dot, impact_t, impact_w, peak_t, peak_theta, counts, forces)
     extra = {}
     if return_history:
@@ -541,7 +578,7 @@ def rocking_response(floor_accel_g, dt_s, alpha_rad, p_rad_s, restitution=None, 
 
 
 def rocking_peaks_batch(records_g, dt_s, alpha_rad, p_rad_s, restitution=None,
-                        inertia_ratio_value=4.0 / 3.0) -> RockingPeaks:
+                        inertia_ratio_value=4.0 / 3.0, tail_s=0.0) -> RockingPeaks:
     """Peak rocking responses of many blocks to one or more records, in parallel.
 
     Same model as :func:`rocking_response`, started from rest; only the peaks
@@ -559,6 +596,8 @@ def rocking_peaks_batch(records_g, dt_s, alpha_rad, p_rad_s, restitution=None,
         Slenderness α [rad], frequency parameter p [rad/s], coefficient of
         restitution e [-] (default 1 − (2/κ) sin²α) and inertia ratio κ [-]
         (default 4/3) of each block, broadcast.
+    tail_s : float
+        Seconds followed after each record's last sample with the floor at rest.
 
     Returns
     -------
@@ -567,7 +606,7 @@ def rocking_peaks_batch(records_g, dt_s, alpha_rad, p_rad_s, restitution=None,
 
     Examples
     --------
-    >>> peaks = rocking_peaks_batch([0.3] * 51 + [0.0] * 500, 0.01, [0.16, 0.4], 1.25)
+    >>> peaks = rocking_peaks_batch([0.3] * 51, 0.01, [0.16, 0.4], 1.25, tail_s=5.0)
     >>> peaks.uplift[:, 0].tolist()
     [True, False]
     """
@@ -579,6 +618,7 @@ def rocking_peaks_batch(records_g, dt_s, alpha_rad, p_rad_s, restitution=None,
     offsets = np.zeros(len(checked) + 1, dtype=np.int64)
     offsets[1:] = np.cumsum([c[0].size for c in checked])
     dts = np.array([c[1] for c in checked])
+    tails = np.array([tail_intervals(tail_s, d) for d in dts], dtype=np.int64)
     alpha, p, e, kappa = _check_block(alpha_rad, p_rad_s, restitution, inertia_ratio_value)
     shape = (alpha.size, dts.size)
     theta_max = np.empty(shape)
@@ -587,7 +627,7 @@ def rocking_peaks_batch(records_g, dt_s, alpha_rad, p_rad_s, restitution=None,
     overturn_time = np.empty(shape)
     impacts = np.zeros(shape, dtype=np.int64)
     friction_demand, normal_min = np.empty(shape), np.empty(shape)
-    _batch(accel_flat, offsets, dts, alpha, p, e, kappa, theta_max, uplift, overturned, overturn_time,
+    _batch(accel_flat, offsets, dts, tails, alpha, p, e, kappa, theta_max, uplift, overturned, overturn_time,
            impacts, friction_demand, normal_min)
     return RockingPeaks(theta_max_over_alpha=theta_max, uplift=uplift, overturned=overturned,
                         overturn_time_s=overturn_time, impacts=impacts,

@@ -61,17 +61,40 @@ def _number(value) -> str:
     return str(int(number)) if number.is_integer() and abs(number) >= 1 else format_significant(number, 3)
 
 
-def _with_errors(parameters: dict, errors: dict) -> str:
-    """'k = 0.651 ± 0.004, …' (± the jackknife standard error), or '' without parameters."""
-    return ", ".join(f"{k} = {_number(v)}" + (f" ± {_number(errors[k])}" if k in errors else "")
-                     for k, v in parameters.items())
+#: What each error measure is, in words (the rows of the error table).
+ERROR_SENTENCES = {
+    "sliding_rms_log": "RMS of ln(predicted/measured) peak sliding",
+    "overturn_misclassified": "Tests whose overturning (yes or no) the model gets wrong",
+    "theta_rms": "RMS of predicted minus measured peak rotation θmax/α (both capped at 1)",
+    "objective": "Objective: mean squared standardised residual per measure",
+    "tests_sliding": "Tests with a measured peak sliding",
+    "tests_theta": "Tests with a measured peak rotation",
+    "tests_overturned": "Tests with an observed overturning (yes or no)",
+}
+NOT_DETERMINED = "not determined by these tests"
+
+
+def _with_errors(fit) -> str:
+    """'factor k on μ and μ_s = 0.651 ± 0.004, …' (± the jackknife standard error), a sentence
+    for a parameter the tests cannot fix, or '' without parameters."""
+    parts = []
+    for p in fit.effect.parameters:
+        label = p.label or p.name
+        unit = "" if p.unit == "-" else f" {p.unit}"
+        if p.name in fit.not_determined:
+            parts.append(f"{label}: {NOT_DETERMINED} ({fit.not_determined[p.name].rstrip('.')})")
+            continue
+        error = fit.standard_error.get(p.name)
+        parts.append(f"{label} = {_number(fit.parameters[p.name])}{unit}"
+                     + (f" ± {_number(error)}{unit}" if error is not None else ""))
+    return "; ".join(parts)
 
 
 def calibration_context(result, workbook: str, measured_file: str) -> dict:
-    errors = [{"name": name, "before": _number(result.error_before.get(name)),
+    errors = [{"name": ERROR_SENTENCES.get(name, name), "before": _number(result.error_before.get(name)),
                "after": _number(result.error_after.get(name))} for name in result.error_before]
     candidates = [{"effect": f.effect.name, "description": f.effect.description,
-                   "parameters": _with_errors(f.parameters, f.standard_error) or "–",
+                   "parameters": _with_errors(f) or "–",
                    "score": _number(f.score), "sliding": _number(f.error.get("sliding_rms_log")),
                    "overturn": _number(f.error.get("overturn_misclassified")),
                    "selected": f.effect.name == result.selected}
@@ -86,7 +109,8 @@ def calibration_context(result, workbook: str, measured_file: str) -> dict:
     return {"version": assess.__version__, "workbook": workbook, "measured": measured_file,
             "correlations": correlations,
             "tests": len(result.residuals_before), "selected": result.selected,
-            "parameters": _with_errors(result.parameters, result._fit(result.selected).standard_error) or "none",
+            "parameters": _with_errors(result._fit(result.selected)) or "none",
+            "description": result._fit(result.selected).effect.description,
             "indistinguishable": list(result.indistinguishable_from), "margin": result.margin,
             "errors": errors, "candidates": candidates, "notes": list(result.notes),
             "figure": _data_uri(residual_figure(result)),

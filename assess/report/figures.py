@@ -267,7 +267,7 @@ def regression_figure(result, table3: pd.DataFrame | None = None) -> str:
 
 
 def sliding_demand_figures(result, per_figure: int = ITEMS_PER_DEMAND_FIGURE) -> list[str]:
-    """Per item: median sliding (bar) and 84th percentile (whisker) against clearance.
+    """Per item: the governing demand's median sliding (bar) and 84th percentile (whisker) against clearance.
 
     One horizontal row per freestanding item, in the order of ``result.summary``
     (the caller sorts it); an item with no sliding estimate (it rocks, or stays
@@ -298,8 +298,8 @@ def _left_align_tick_labels(axes) -> None:
 
 def _sliding_demand_figure(items: pd.DataFrame) -> str:
     count = len(items)
-    median = items["sliding_median_cm"].astype(float).to_numpy()
-    p84 = items["sliding_p84_cm"].astype(float).to_numpy()
+    median = items["demand_median_cm"].astype(float).to_numpy()
+    p84 = items["demand_p84_cm"].astype(float).to_numpy()
     clearance = items["clearance_cm"].astype(float).to_numpy()
     finite = np.concatenate([v[np.isfinite(v)] for v in (median, p84, clearance)] + [[10.0]])
     x_top = float(np.max(finite)) * 1.12

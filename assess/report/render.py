@@ -43,7 +43,6 @@ MODE_TEXT = {
 FLAG_TITLES = {
     "im_outside_fit": "Outside the range the regression was fitted on",
     "uplift": "Uplifts and rocks",
-    "sim_beyond_clearance": "Simulated sliding beyond the clearance",
     "cg_not_mid_height": "Centre of mass not at mid-height",
     "derived_floor_motion": "Floor motion derived from the ground motion",
 }
@@ -149,14 +148,16 @@ def _integer_text(value) -> str:
 
 # --------------------------------------------------------------------------- context
 def _sorted_summary(summary: pd.DataFrame) -> pd.DataFrame:
-    """Items by urgency: risk class, then rocking before sliding, then Pf high to low, then id."""
+    """Items by urgency: risk class, then the chance of overturning, then rocking before sliding,
+    then the chance of sliding past the clearance, high to low, then id (all from the governing demand)."""
     keys = pd.DataFrame({
         "risk": summary["risk"].astype(str).map(RISK_ORDER).fillna(len(RISK_ORDER)),
+        "overturn": -pd.to_numeric(summary["p_overturn"], errors="coerce").fillna(-1.0),
         "rocks": ~summary["mode"].astype(str).isin(["rock", "slide-rock"]),
-        "pf": -pd.to_numeric(summary["pf_sliding"], errors="coerce").fillna(-1.0),
+        "pf": -pd.to_numeric(summary["p_beyond_clearance"], errors="coerce").fillna(-1.0),
         "id": summary["id"].astype(str),
     }, index=summary.index)
-    order = keys.sort_values(["risk", "rocks", "pf", "id"], kind="mergesort").index
+    order = keys.sort_values(["risk", "overturn", "rocks", "pf", "id"], kind="mergesort").index
     return summary.loc[order]
 
 
@@ -197,8 +198,89 @@ def _item_row(row: pd.Series) -> dict:
         "sim_sliding": format_cm(row.get("sim_sliding_max_cm")),
         "theta": format_significant(row.get("theta_max_over_alpha"), 2),
         "risk": _text(row.get("risk")),
+        "risk_range": _text(row.get("risk_range")),
+        "action_kind": _text(row.get("action_kind")),
         "action": _text(row.get("action")) or DASH,
+        "source": _text(row.get("demand_source")) or DASH,
+        "source_note": _text(row.get("demand_note")),
+        "demand_median": format_cm(row.get("demand_median_cm")),
+        "demand_p84": format_cm(row.get("demand_p84_cm")),
+        "p_beyond": format_percent(row.get("p_beyond_clearance")),
+        "p_beyond_interval": _interval_text(row.get("p_beyond_clearance_low"), row.get("p_beyond_clearance_high")),
+        "demand_interval": _cm_interval_text(row, "median") + " / " + _cm_interval_text(row, "p84"),
+        "p_overturn": format_percent(row.get("p_overturn")),
+        "p_overturn_interval": _interval_text(row.get("p_overturn_low"), row.get("p_overturn_high")),
+        "suite": _suite_text(row),
     }
+
+
+def item_anchors(ids) -> list[str]:
+    """HTML anchors ``item-<id>`` for the items, made of letters, digits, ``-`` and ``_`` only, unique.
+
+    >>> item_anchors(["FRZ-1", "a b", "a_b"])
+    ['item-FRZ-1', 'item-a_b', 'item-a_b-2']
+    """
+    anchors, seen = [], set()
+    for item_id in ids:
+        anchor = "item-" + "".join(c if c.isascii() and (c.isalnum() or c in "-_") else "_" for c in str(item_id))
+        candidate, k = anchor, 1
+        while candidate in seen:
+            k += 1
+            candidate = f"{anchor}-{k}"
+        seen.add(candidate)
+        anchors.append(candidate)
+    return anchors
+
+
+#: Page 1's groups of actions, in the order a manager takes them.
+ACTION_GROUPS = (
+    ("anchor", "Anchor", "they overturn or rock in the design earthquake; moving them away from walls does not help"),
+    ("restrain", "Restrain (or give the room listed)", "they are likely to slide past their room"),
+    ("room", "Give room (or restrain)", "they may slide past their room"),
+    ("none", "No action", "they stay within their room"),
+)
+
+
+def _action_groups(rows: list[dict]) -> list[dict]:
+    """The items of each action kind (``action_kind`` of the summary), in the page's order."""
+    groups = []
+    for kind, title, why in ACTION_GROUPS:
+        members = [r for r in rows if r.get("action_kind") == kind]
+        if members:
+            groups.append({"kind": kind, "title": title, "why": why, "rows": members})
+    return groups
+
+
+def _interval_text(low, high) -> str:
+    """"10–60%" for a probability's interval; "" where it is exact (a model's, not a sample's)."""
+    low, high = _finite(low), _finite(high)
+    if low is None or high is None or high - low < 0.005:
+        return ""
+    return f"{format_percent(low)}–{format_percent(high)}"
+
+
+def _cm_interval_text(row: pd.Series, quantile: str) -> str:
+    """"12–30" for the 90 % interval of the demand's median or 84th percentile [cm]; "∞" where the
+    suite cannot bound it; "–" where the quantile is the regression's own (no interval)."""
+    low, high = _finite(row.get(f"demand_{quantile}_low_cm")), row.get(f"demand_{quantile}_high_cm")
+    value = _finite(row.get(f"demand_{quantile}_cm"))
+    try:
+        high = float(high)
+    except (TypeError, ValueError):
+        return DASH
+    if low is None or value is None or (math.isclose(low, value) and math.isclose(high, value)):
+        return DASH
+    return f"{format_cm(low)}–{'∞' if math.isinf(high) else format_cm(high)}"
+
+
+def _suite_text(row: pd.Series) -> str:
+    motions, histories = _finite(row.get("suite_motions")), _finite(row.get("suite_histories"))
+    if motions is None:
+        return ""
+    text = f"{motions:.0f} motion{'s' if motions != 1 else ''}"
+    if histories and histories != motions:
+        text += f", {histories:.0f} simulated histories"
+    return text
 
 
 def _flag_groups(flags) -> list[dict]:
@@ -220,6 +302,8 @@ def report_context(result) -> dict:
     """Everything the template shows, formatted (pure: no clock, no I/O)."""
     summary = _sorted_summary(result.summary)
     rows = [_item_row(row) for _, row in summary.iterrows()]
+    for row, anchor in zip(rows, item_anchors([r["id"] for r in rows])):
+        row["anchor"] = anchor
     counts = result.risk_counts()
     quantity = pd.to_numeric(summary.get("quantity", pd.Series(1, index=summary.index)),
                              errors="coerce").fillna(1)
@@ -241,6 +325,7 @@ def report_context(result) -> dict:
         "units": units,
         "total_items": len(rows),
         "total_units": int(quantity.sum()),
+        "action_groups": _action_groups(rows),
         "high": [r for r in rows if r["risk"] == "high"],
         "moderate": [r for r in rows if r["risk"] == "moderate"],
         "rows": rows,

@@ -1,0 +1,235 @@
+"""The governing demand: each item's sliding and overturning over its floor's suite, from the model that holds.
+
+Every motion of the suite weighs the same (SPEC §1, Suites), and each motion
+contributes the distribution of the model that governs for it:
+
+* ``record`` — the engine under the record itself: exact for the rigid-block
+  model, one value per motion;
+* ``regression`` — the paper's lognormal regression (eqs. 7-21), only where
+  :func:`~assess.fragility.suite.regression_applies` (a pulse that carries
+  the motion's PTA, IM inside the fitted range, no uplift);
+* ``synthetic`` — the engine under the motion's synthetic near-fault histories
+  (each history an equal share of the motion's weight);
+* ``pulse`` — the engine under the motion's pulse, where a motion given by
+  PTA and Tp alone lies outside the regression's domain (no vp to synthesise from).
+
+Per motion and history the sliding is the larger of the two base directions
+and the item overturns if it does in either. Over the suite:
+``demand_median_cm`` and ``demand_p84_cm`` are quantiles of the mixture,
+``p_beyond_clearance`` and ``p_overturn`` its probabilities, with exact
+binomial intervals (:func:`~assess.fragility.suite.binomial_interval`) for
+the part estimated from simulated motions (records, histories, pulses): a
+suite of 3 records cannot give a probability to two digits.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+from scipy import stats
+
+from assess.fragility.regression import RegressionConstants, probability_of_exceedance, capacity_edp, sliding_quantile
+from assess.fragility.suite import (
+    PULSE_SHARE_MIN, binomial_interval, effective_count, pulse_acceleration_share, quantile_interval,
+    regression_applies, weighted_quantile,
+)
+
+RECORD, REGRESSION, SYNTHETIC, PULSE = "record", "regression", "synthetic", "pulse"
+#: Points standing for one motion's lognormal regression demand in the suite's quantiles.
+_LOGNORMAL_POINTS = 199
+#: Columns of :func:`governing_demand`'s table, one row per item.
+DEMAND_COLUMNS = [
+    "demand_source", "demand_median_cm", "demand_p84_cm", "demand_median_low_cm", "demand_median_high_cm",
+    "demand_p84_low_cm", "demand_p84_high_cm", "demand_room_cm", "p_beyond_clearance", "p_beyond_clearance_low",
+    "p_beyond_clearance_high", "p_overturn", "p_overturn_low", "p_overturn_high", "suite_motions",
+    "suite_histories", "theta_max_over_alpha", "demand_note",
+]
+
+
+def motion_sources(cases: pd.DataFrame, simulated_as: dict, constants: RegressionConstants) -> pd.Series:
+    """The model that governs each case's motion for its item (:data:`RECORD`, ...), as a Series on ``cases``.
+
+    ``simulated_as`` maps a case's ``motion_key`` to how the engine simulated
+    it: ``record``, ``synthetic`` or ``pulse``. A motion given by parameters
+    takes the regression where it applies to the item under that motion in
+    both directions; ``cases`` needs ``pulse_share``, ``im`` and ``sim_uplift``.
+    """
+    kind = cases["motion_key"].map(simulated_as)
+    uplift = cases.groupby(["id", "motion_key"])["sim_uplift"].transform("any")
+    applies = regression_applies(cases["pulse_share"].fillna(1.0), cases["im"], constants.im_min,
+                                 constants.im_max, uplift)
+    applies = pd.Series(applies, index=cases.index).groupby([cases["id"], cases["motion_key"]]).transform("all")
+    return pd.Series(np.where(kind == RECORD, RECORD, np.where(applies, REGRESSION, kind)), index=cases.index)
+
+
+def add_pulse_share(cases: pd.DataFrame) -> pd.DataFrame:
+    """``pulse_share`` = 2π|vp|/(Tp·PTA·g) of each case's motion (1 where vp is not given: the motion is its pulse)."""
+    share = pulse_acceleration_share(cases["pta_g"], cases["tp_s"], cases["vp_m_s"])
+    return cases.assign(pulse_share=np.where(np.isfinite(cases["vp_m_s"]), share, 1.0))
+
+
+def governing_demand(cases: pd.DataFrame, runs: pd.DataFrame, constants: RegressionConstants,
+                     room_quantile: float = 0.9) -> pd.DataFrame:
+    """One row per item (index ``id``): :data:`DEMAND_COLUMNS`.
+
+    ``demand_room_cm`` is the ``room_quantile`` quantile of the suite's
+    sliding: the room that leaves a chance 1 − ``room_quantile`` of sliding past it.
+
+    Parameters
+    ----------
+    cases : DataFrame
+        One row per item × motion × direction with ``id``, ``motion_key``,
+        ``direction``, ``demand_source`` (:func:`motion_sources`), ``pta_g``,
+        ``tp_s``, ``im``, ``mode``, ``clearance_m``, ``pulse_share``.
+    runs : DataFrame
+        One row per case × history: ``case`` (row of ``cases``),
+        ``realization``, ``sliding_max_cm``, ``overturned``, ``theta_max_over_alpha``.
+    """
+    per_history = _per_history(cases, runs)
+    regression = _regression_by_motion(cases, constants)
+    rows = {}
+    for item_id, item_cases in cases.groupby("id", sort=False):
+        rows[item_id] = _item_demand(item_cases, per_history.get(item_id), regression.get(item_id), constants,
+                                     room_quantile)
+    return pd.DataFrame.from_dict(rows, orient="index")[DEMAND_COLUMNS]
+
+
+def _per_history(cases: pd.DataFrame, runs: pd.DataFrame) -> dict:
+    """Per item: one row per (motion, history), the larger sliding of the two directions, overturned in either."""
+    table = runs.assign(id=cases["id"].to_numpy()[runs["case"]],
+                        motion_key=cases["motion_key"].to_numpy()[runs["case"]])
+    grouped = table.groupby(["id", "motion_key", "realization"], sort=False).agg(
+        sliding_cm=("sliding_max_cm", "max"), overturned=("overturned", "any"),
+        theta=("theta_max_over_alpha", "max"))
+    return {item_id: frame.reset_index(level=0, drop=True) for item_id, frame in grouped.groupby(level=0)}
+
+
+def _regression_by_motion(cases: pd.DataFrame, constants: RegressionConstants) -> dict:
+    """Per item and motion: the regression's median sliding [cm] (larger of the directions that slide) and P(> clearance)."""
+    slides = cases["mode"].isin(("slide", "slide-rock"))
+    im = np.where(slides, cases["im"], 0.0)
+    median_cm = np.asarray(sliding_quantile(im, cases["pta_g"], cases["tp_s"], constants, 0.5)) * 100.0
+    pf = np.asarray(probability_of_exceedance(im, capacity_edp(cases["clearance_m"], cases["pta_g"], cases["tp_s"]),
+                                              constants.zeta, constants.eta, constants.sigma))
+    table = pd.DataFrame({"id": cases["id"], "motion_key": cases["motion_key"], "median_cm": median_cm, "pf": pf})
+    grouped = table.groupby(["id", "motion_key"], sort=False).max()
+    return {item_id: frame.reset_index(level=0, drop=True) for item_id, frame in grouped.groupby(level=0)}
+
+
+def _item_demand(item_cases: pd.DataFrame, histories: pd.DataFrame | None, regression: pd.DataFrame | None,
+                 constants: RegressionConstants, room_quantile: float) -> dict:
+    clearance_cm = float(item_cases["clearance_m"].iloc[0]) * 100.0
+    source_of = item_cases.drop_duplicates("motion_key").set_index("motion_key")["demand_source"]
+    n_motions = len(source_of)
+    values, weights = [], []
+    sampled_beyond, sampled_overturn, sampled_weights = [], [], []
+    exact_beyond, exact_weight = 0.0, 0.0
+    theta = 0.0
+    for key, source in source_of.items():
+        if histories is not None and key in histories.index.get_level_values(0):
+            runs = histories.loc[key]
+            theta = max(theta, float(runs["theta"].max()))
+        else:
+            runs = None
+        if source == REGRESSION:
+            median_cm, pf = regression.loc[key, ["median_cm", "pf"]]
+            if median_cm > 0.0:
+                quantiles = (np.arange(_LOGNORMAL_POINTS) + 0.5) / _LOGNORMAL_POINTS
+                values.extend(median_cm * np.exp(constants.sigma * stats.norm.ppf(quantiles)))
+            else:
+                values.extend(np.zeros(_LOGNORMAL_POINTS))
+            weights.extend(np.full(_LOGNORMAL_POINTS, 1.0 / (n_motions * _LOGNORMAL_POINTS)))
+            exact_beyond += float(pf) / n_motions
+            exact_weight += 1.0 / n_motions
+            continue
+        share = 1.0 / (n_motions * len(runs))
+        values.extend(runs["sliding_cm"].to_numpy())
+        weights.extend(np.full(len(runs), share))
+        sampled_beyond.extend((runs["sliding_cm"] > clearance_cm).to_numpy())
+        sampled_overturn.extend(runs["overturned"].to_numpy())
+        sampled_weights.extend(np.full(len(runs), share))
+    p_beyond, p_beyond_interval = _probability(exact_beyond, exact_weight, sampled_beyond, sampled_weights)
+    p_overturn, p_overturn_interval = _probability(0.0, exact_weight, sampled_overturn, sampled_weights)
+    intervals = _quantile_intervals(values, weights, sampled_weights, exact_weight)
+    sources = [s for s in (RECORD, REGRESSION, SYNTHETIC, PULSE) if s in set(source_of)]
+    return {
+        "demand_source": " + ".join("records" if s == RECORD else s for s in sources),
+        "demand_median_cm": weighted_quantile(values, weights, 0.5),
+        "demand_p84_cm": weighted_quantile(values, weights, 0.84),
+        "demand_room_cm": weighted_quantile(values, weights, room_quantile),
+        **intervals,
+        "p_beyond_clearance": p_beyond, "p_beyond_clearance_low": p_beyond_interval[0],
+        "p_beyond_clearance_high": p_beyond_interval[1],
+        "p_overturn": p_overturn, "p_overturn_low": p_overturn_interval[0], "p_overturn_high": p_overturn_interval[1],
+        "suite_motions": n_motions, "suite_histories": len(sampled_weights),
+        "theta_max_over_alpha": theta,
+        "demand_note": _source_note(item_cases, source_of, constants),
+    }
+
+
+def _quantile_intervals(values, weights, sampled_weights, exact_weight: float) -> dict:
+    """90 % intervals of the median and the 84th percentile: distribution-free over the simulated draws
+    (their effective count); none where the regression gives the whole distribution."""
+    out = {}
+    for name, q in (("median", 0.5), ("p84", 0.84)):
+        if len(sampled_weights) and exact_weight < 1.0:
+            low, high = quantile_interval(values, weights, q, effective_count(sampled_weights))
+        else:
+            low = high = weighted_quantile(values, weights, q)
+        out[f"demand_{name}_low_cm"], out[f"demand_{name}_high_cm"] = low, high
+    return out
+
+
+def _probability(exact: float, exact_weight: float, sampled, sampled_weights) -> tuple[float, tuple[float, float]]:
+    """The suite's probability: the regression's part exactly, the simulated part with its interval."""
+    if not len(sampled_weights):
+        return exact, (exact, exact)
+    weights = np.asarray(sampled_weights, dtype=float)
+    share = float(np.sum(weights * np.asarray(sampled, dtype=float)) / weights.sum())
+    low, high = binomial_interval(share, effective_count(weights))
+    sampled_weight = 1.0 - exact_weight
+    return (exact + sampled_weight * share,
+            (exact + sampled_weight * low, exact + sampled_weight * high))
+
+
+def _source_note(item_cases: pd.DataFrame, source_of: pd.Series, constants: RegressionConstants) -> str:
+    """Why each motion's demand comes from where it comes from, in one sentence."""
+    parts = []
+    counts = source_of.value_counts()
+    n = len(source_of)
+    if counts.get(RECORD, 0):
+        parts.append(f"{_of(counts[RECORD], n)} simulated under their records (exact for the rigid-block model)")
+    if counts.get(REGRESSION, 0):
+        parts.append(f"{_of(counts[REGRESSION], n)} from the paper's regression (a pulse carrying at least "
+                     f"{PULSE_SHARE_MIN:.0%} of PTA, IM within {constants.im_min:g}-{constants.im_max:g}, no uplift)")
+    for source, what in ((SYNTHETIC, "synthetic near-fault histories"), (PULSE, "the motion's pulse")):
+        if counts.get(source, 0):
+            keys = source_of.index[source_of == source]
+            outside = item_cases[item_cases["motion_key"].isin(keys)].drop_duplicates("motion_key")
+            reasons = _outside_reasons(item_cases[item_cases["motion_key"].isin(keys)], outside, constants)
+            parts.append(f"{_of(counts[source], n)} simulated under {what}"
+                         + (f" (the regression does not hold: {reasons})" if reasons else ""))
+    return "; ".join(parts) + "."
+
+
+def _outside_reasons(cases: pd.DataFrame, motions: pd.DataFrame, constants: RegressionConstants) -> str:
+    reasons = []
+    weak = motions[motions["pulse_share"] < PULSE_SHARE_MIN]
+    if len(weak):
+        reasons.append(f"pulse share {_range(weak['pulse_share'])} < {PULSE_SHARE_MIN:g}, no clear pulse")
+    outside = motions[(motions["im"] < constants.im_min) | (motions["im"] > constants.im_max)]
+    if len(outside):
+        reasons.append(f"IM {_range(outside['im'])} outside {constants.im_min:g}-{constants.im_max:g}")
+    if cases["sim_uplift"].any():
+        reasons.append("the item uplifts")
+    return ", ".join(reasons)
+
+
+def _range(values: pd.Series) -> str:
+    low, high = float(values.min()), float(values.max())
+    return f"{low:.2g}" if np.isclose(low, high, rtol=0.005) else f"{low:.2g}-{high:.2g}"
+
+
+def _of(count: int, total: int) -> str:
+    if total == 1:
+        return "its one motion"
+    return f"{count} of its {total} motions" if count < total else f"all {total} motions"

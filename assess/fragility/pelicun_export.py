@@ -1,0 +1,275 @@
+"""Item fragilities in pelicun's damage-and-loss model library format (``fragility.csv`` + ``.json``).
+
+pelicun (NHERI SimCenter) reads component fragilities from a table, one row
+per component, and a metadata file that documents each component and its
+damage states, as in its model library ([1]; e.g. ``seismic/building/
+component/FEMA P-58 2nd Edition/fragility.csv`` and ``fragility.json``).
+This module writes each item as one component:
+
+* ``ID``: the item, made safe for pelicun (:func:`pelicun_component_id`:
+  pelicun splits its random-variable tags on ``-``);
+* ``Demand-Type`` ``Peak Floor Acceleration`` in ``g``, ``Demand-Offset`` 0
+  (the floor the item stands on; pelicun's default ``DemandOffset``
+  ``{"PFA": -1}`` then reads the PFA of that floor's slab, as for the FEMA
+  P-58 unanchored contents ``E.20.22.*``);
+* ``Demand-Directional`` 1 by default: the fragility was fitted on the floor
+  acceleration along the direction simulated, so pelicun must feed it the PFA
+  of the direction the user gives the component. With 0 (as the FEMA P-58
+  contents) pelicun feeds 1.2 × the larger of the two directions (its
+  ``NonDirectionalMultipliers`` default), which the fit never saw;
+* ``LS1`` = slides past its clearance (``beyond_clearance``), ``LS2`` =
+  overturns (``overturn``), each ``lognormal`` with ``Theta_0`` = θ [g] and
+  ``Theta_1`` = β; one damage state per limit state (DS1, DS2), so no
+  ``DamageStateWeights``.
+
+How pelicun reads two limit states
+----------------------------------
+pelicun's damage state is the *highest* limit state whose capacity the demand
+exceeds, and it samples the capacities of one component's limit states fully
+correlated (one standard normal for all; ``pelicun/model/damage_model.py``,
+"perfectly correlated limit state random variables"). Hence
+P(DS2 | a) = P(overturn | a) exactly, and P(DS ≥ 1 | a) = max(P₁, P₂): where
+the overturning fragility lies above the sliding one (an item that tips
+before it slides that far), DS1 is "slid past the clearance or overturned".
+The metadata says so, per item.
+
+A limit state without a finite fit (no failure simulated, outcomes separated;
+:mod:`assess.fragility.msa`) is never given invented numbers: without LS2 the
+component has LS1 only (overturning was not simulated, say up to which
+intensity, in ``Comments``); without LS1 the row is flagged ``Incomplete`` =
+1, as the library flags components whose parameters it lacks, and pelicun
+leaves it out of a damage assessment (with a warning naming it).
+
+The column set, value domains and metadata schema follow the library's own
+format tests (``tests/test_data_format.py`` of [1]).
+
+Using the files in a FEMA P-58 assessment (pelicun 3.10)
+--------------------------------------------------------
+Give each item a row of the asset model (component marginals) with its
+``ID``, ``Units`` ``ea``, the ``Location`` (story) it stands on, the
+``Direction`` (1 or 2) of the PFA that runs along the simulated direction,
+and ``Theta_0`` = 1; then load the exported table before the library's::
+
+    asmnt.damage.load_model_parameters(
+        ["fragility/fragility.csv", "PelicunDefault/FEMA P-58/fragility.csv"], cmp_set)
+
+Consequences (repair cost and time) are the user's: the library has none for
+these components, as it has none for the P-58 unanchored contents.
+
+References
+----------
+.. [1] NHERI SimCenter, Damage and Loss Model Library (DLML),
+   https://github.com/NHERI-SimCenter/DamageAndLossModelLibrary (BSD-3-Clause),
+   ``src/dlml/data/seismic/building/component/FEMA P-58 2nd Edition/``.
+.. [2] Zsarnóczay, A., Deierlein, G. G. (2020). PELICUN - A computational
+   framework for estimating damage, loss and community resilience.
+   Proc. 17th World Conf. Earthquake Eng., Sendai.
+"""
+from __future__ import annotations
+
+import json
+import math
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import pandas as pd
+
+from assess import __version__
+from assess.fragility.msa import FragilityFit
+
+DEMAND_TYPE = "Peak Floor Acceleration"
+DEMAND_UNIT = "g"
+FAMILY = "lognormal"
+#: The library's columns up to LS2, in its order (the FEMA P-58 table goes on to LS4).
+COLUMNS = (
+    "ID", "Incomplete", "Demand-Type", "Demand-Unit", "Demand-Offset", "Demand-Directional",
+    "LS1-Family", "LS1-Theta_0", "LS1-Theta_1", "LS1-DamageStateWeights",
+    "LS2-Family", "LS2-Theta_0", "LS2-Theta_1", "LS2-DamageStateWeights",
+)
+#: Significant digits written for θ and β (a fit's standard error is a few per cent).
+SIGNIFICANT_DIGITS = 4
+CSV_NAME = "fragility.csv"
+JSON_NAME = "fragility.json"
+
+_LIMIT_STATES = (
+    ("LS1", "DS1", "beyond_clearance",
+     "Slides past its clearance: the item's peak sliding exceeds the free distance around it.",
+     "Move the item back into place; inspect it, its cables and hoses, and what it struck."),
+    ("LS2", "DS2", "overturn",
+     "Overturns.",
+     "Right or replace the item and its contents; repair what it struck."),
+)
+
+
+@dataclass(frozen=True)
+class LimitStateFragility:
+    """One limit state's lognormal fragility in PFA, or the reason there is none.
+
+    Attributes
+    ----------
+    median_g : float
+        θ [g]; NaN when there is no finite fragility.
+    beta : float
+        β [-]; NaN when there is none.
+    note : str
+        How it was obtained (the fit's sentence), or why it is missing.
+    """
+
+    median_g: float
+    beta: float
+    note: str = ""
+
+    @property
+    def defined(self) -> bool:
+        return math.isfinite(self.median_g) and math.isfinite(self.beta)
+
+    @classmethod
+    def from_fit(cls, fit: FragilityFit) -> "LimitStateFragility":
+        """The fitted θ, β of a :class:`~assess.fragility.msa.FragilityFit` (NaN without a fit)."""
+        return cls(median_g=fit.median_g, beta=fit.beta, note=fit.message)
+
+
+@dataclass(frozen=True)
+class ItemFragilities:
+    """An item's two fragilities, as one pelicun component."""
+
+    component_id: str
+    description: str
+    beyond_clearance: LimitStateFragility
+    overturn: LimitStateFragility
+
+
+def pelicun_component_id(name) -> str:
+    """A component ID pelicun accepts: letters, digits, ``.`` and ``_`` only.
+
+    pelicun builds tags such as ``FRG-<ID>-<loc>-<dir>-...`` and splits them on
+    ``-``, so other characters become ``_``.
+
+    >>> pelicun_component_id("Freezer F-12 (room 2.14)")
+    'Freezer_F_12_room_2.14'
+    """
+    text = re.sub(r"[^A-Za-z0-9._]+", "_", str(name).strip()).strip("_")
+    if not text:
+        raise ValueError(f"item name {name!r} gives an empty pelicun component ID")
+    return text
+
+
+def fragility_table(items, directional=True) -> pd.DataFrame:
+    """The rows of ``fragility.csv``: one component per item, columns :data:`COLUMNS`.
+
+    >>> item = ItemFragilities("cabinet_1", "Cabinet", LimitStateFragility(0.35, 0.4),
+    ...                        LimitStateFragility(0.8, 0.5))
+    >>> print(fragility_table([item]).to_csv(index=False, lineterminator="\\n"), end="")
+    ID,Incomplete,Demand-Type,Demand-Unit,Demand-Offset,Demand-Directional,LS1-Family,LS1-Theta_0,LS1-Theta_1,LS1-DamageStateWeights,LS2-Family,LS2-Theta_0,LS2-Theta_1,LS2-DamageStateWeights
+    cabinet_1,0,Peak Floor Acceleration,g,0,1,lognormal,0.35,0.4,,lognormal,0.8,0.5,
+    """
+    items = list(items)
+    _check_ids(items)
+    rows = []
+    for item in items:
+        row = {"ID": item.component_id, "Incomplete": 0, "Demand-Type": DEMAND_TYPE,
+               "Demand-Unit": DEMAND_UNIT, "Demand-Offset": 0,
+               "Demand-Directional": 1 if directional else 0}
+        for (ls, _ds, _mode, _text, _repair), state in zip(
+                _LIMIT_STATES, (item.beyond_clearance, item.overturn)):
+            present = state.defined or ls == "LS1"  # LS1 stays, flagged incomplete, if missing
+            row[f"{ls}-Family"] = FAMILY if present else None
+            row[f"{ls}-Theta_0"] = _rounded(state.median_g) if state.defined else None
+            row[f"{ls}-Theta_1"] = _rounded(state.beta) if state.defined else None
+            row[f"{ls}-DamageStateWeights"] = None
+        if not item.beyond_clearance.defined:
+            row["Incomplete"] = 1
+        rows.append(row)
+    return pd.DataFrame(rows, columns=list(COLUMNS))
+
+
+def fragility_metadata(items, directional=True) -> dict:
+    """The content of ``fragility.json``: ``_GeneralInformation`` and one entry per component."""
+    items = list(items)
+    _check_ids(items)
+    meta = {"_GeneralInformation": {
+        "ShortName": "assess freestanding items",
+        "Description": (
+            "Fragilities of freestanding (unanchored) items, fitted by assess "
+            f"{__version__} by maximum likelihood on rigid-body simulations over stripes of "
+            "peak floor acceleration (multiple-stripe analysis, Baker 2015, Earthquake "
+            "Spectra 31(1):579-599). LS1: the item slides past its clearance; LS2: it "
+            "overturns. pelicun takes the highest limit state exceeded, with the two "
+            "capacities fully correlated: DS2 is overturning; DS1 is sliding past the "
+            "clearance without overturning (or overturning, where that is the likelier)."),
+        "Version": __version__,
+        "ComponentGroups": {"Freestanding items": [
+            f"{item.component_id} - {item.description}" for item in items]},
+    }}
+    for item in items:
+        states = {}
+        for (ls, ds, _mode, text, repair), state in zip(
+                _LIMIT_STATES, (item.beyond_clearance, item.overturn)):
+            if state.defined or ls == "LS1":
+                states[ls] = {ds: {"Description": text, "RepairAction": repair}}
+        meta[item.component_id] = {
+            "Description": item.description,
+            "Comments": _comments(item, directional),
+            "SuggestedComponentBlockSize": "1 EA",
+            "RoundUpToIntegerQuantity": "True",
+            "LimitStates": states,
+        }
+    return meta
+
+
+def write_pelicun_fragility(folder, items, directional=True) -> tuple[Path, Path]:
+    """Write ``fragility.csv`` and ``fragility.json`` into ``folder``; return their paths.
+
+    Both are built in memory first, so a failure leaves no half-written pair.
+    """
+    items = list(items)
+    table = fragility_table(items, directional)
+    meta = fragility_metadata(items, directional)
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    csv_path, json_path = folder / CSV_NAME, folder / JSON_NAME
+    csv_text = table.to_csv(index=False, lineterminator="\n")
+    json_text = json.dumps(meta, indent=2, ensure_ascii=False) + "\n"
+    csv_path.write_text(csv_text, encoding="utf-8")
+    json_path.write_text(json_text, encoding="utf-8")
+    return csv_path, json_path
+
+
+# --------------------------------------------------------------------------- helpers
+
+
+def _rounded(value) -> float:
+    return float(f"{value:.{SIGNIFICANT_DIGITS}g}")
+
+
+def _check_ids(items) -> None:
+    seen = set()
+    for item in items:
+        if item.component_id != pelicun_component_id(item.component_id):
+            raise ValueError(f"component ID {item.component_id!r}: use letters, digits, '.' "
+                             "and '_' only (pelicun_component_id makes one)")
+        if item.component_id in seen:
+            raise ValueError(f"component ID {item.component_id!r} is given twice")
+        seen.add(item.component_id)
+
+
+def _comments(item: ItemFragilities, directional: bool) -> str:
+    lines = []
+    for (ls, _ds, mode, _text, _repair), state in zip(
+            _LIMIT_STATES, (item.beyond_clearance, item.overturn)):
+        if state.defined:
+            lines.append(f"{ls} ({mode}): median {_rounded(state.median_g):g} g, beta "
+                         f"{_rounded(state.beta):g}. {state.note}".strip())
+        elif ls == "LS1":
+            lines.append(f"{ls} ({mode}): no fragility, hence Incomplete. {state.note}".strip())
+        else:
+            lines.append(f"{ls} ({mode}) not defined: {state.note}".strip())
+    a, b = item.beyond_clearance, item.overturn
+    if a.defined and b.defined and not (b.beta == a.beta and b.median_g >= a.median_g):
+        lines.append("The two fragilities cross or overturning comes first: in pelicun "
+                     "P(DS>=1) = max(P(LS1), P(LS2)).")
+    lines.append("Demand: peak floor acceleration of the floor the item stands on, "
+                 + ("along the component's direction (Demand-Directional 1)." if directional
+                    else "non-directional (pelicun: 1.2 x the larger direction)."))
+    return "\n".join(lines)

@@ -1,0 +1,106 @@
+"""``summary.xlsx``: the summary table for people who open it in a spreadsheet.
+
+The same rows and columns as ``summary.csv`` (one sheet per hazard level),
+with a frozen bold header whose names carry their units, number formats that
+show what the numbers are (percent for probabilities, one decimal for
+lengths), widths that fit, and an autofilter. Text from the workbook is made
+inert as in the CSV (:func:`assess.output.neutralise_formulas`): a cell never
+becomes a formula. With ``units="us"`` the lengths are also given in inches
+and the accelerations stay in g (a US engineer's unit for them), in columns
+named with their unit beside the SI ones.
+"""
+from __future__ import annotations
+
+import io
+import re
+
+import numpy as np
+import pandas as pd
+
+#: Inches per centimetre.
+IN_PER_CM = 1.0 / 2.54
+_FORBIDDEN_IN_SHEET_NAMES = re.compile(r"[\[\]:*?/\\]")
+
+
+def sheet_name(label: str) -> str:
+    """A sheet name Excel accepts: at most 31 characters, none of []:*?/\\.
+
+    >>> sheet_name("2%/50yr"), sheet_name("")
+    ('2%_50yr', 'level')
+    """
+    name = _FORBIDDEN_IN_SHEET_NAMES.sub("_", str(label)).strip("'")[:31]
+    return name or "level"
+
+
+def with_us_units(summary: pd.DataFrame) -> pd.DataFrame:
+    """``summary`` with every ``*_cm`` column followed by the same length in inches (``*_in``).
+
+    >>> with_us_units(pd.DataFrame({"clearance_cm": [2.54]})).to_dict("list")
+    {'clearance_cm': [2.54], 'clearance_in': [1.0]}
+    """
+    columns = {}
+    for column in summary.columns:
+        columns[column] = summary[column]
+        if column.endswith("_cm"):
+            columns[column[:-3] + "_in"] = pd.to_numeric(summary[column], errors="coerce") * IN_PER_CM
+    return pd.DataFrame(columns, index=summary.index)
+
+
+def _number_format(column: str) -> str | None:
+    if column.startswith("p_") or column in ("pf_sliding", "overturn_fraction"):
+        return "0.0%"
+    if column.endswith(("_cm", "_in")):
+        return "0.0"
+    if column.endswith(("_g", "_rad", "_rad_s", "_s")) or column in ("b_over_h", "mu", "im", "edp_median",
+                                                                      "theta_max_over_alpha"):
+        return "0.000"
+    return None
+
+
+def summary_workbook(tables: dict[str, pd.DataFrame], units: str = "si") -> bytes:
+    """The ``.xlsx`` bytes of one sheet per level: ``tables`` maps a level's label to its summary.
+
+    ``units``: ``"si"`` (the CSV's columns) or ``"us"`` (inches beside every length in cm).
+    """
+    from openpyxl import Workbook
+    from openpyxl.styles import Alignment, Font, PatternFill
+    from openpyxl.utils import get_column_letter
+
+    from assess.output import neutralise_formulas
+
+    workbook = Workbook()
+    workbook.remove(workbook.active)
+    for label, summary in tables.items():
+        table = neutralise_formulas(with_us_units(summary) if units == "us" else summary)
+        sheet = workbook.create_sheet(sheet_name(label))
+        sheet.append(list(table.columns))
+        for values in table.itertuples(index=False):
+            sheet.append([_cell(v) for v in values])
+        for k, column in enumerate(table.columns, start=1):
+            letter = get_column_letter(k)
+            header = sheet.cell(row=1, column=k)
+            header.font = Font(bold=True)
+            header.fill = PatternFill("solid", fgColor="E5E8E8")
+            header.alignment = Alignment(wrap_text=True, vertical="top")
+            number_format = _number_format(column)
+            if number_format:
+                for cell in sheet[letter][1:]:
+                    cell.number_format = number_format
+            longest = max([len(str(column))] + [len(str(v)) for v in table[column].head(200) if isinstance(v, str)])
+            sheet.column_dimensions[letter].width = min(max(9, longest * 0.9 + 2), 60)
+        sheet.freeze_panes = "C2"  # the header, and the id and name columns
+        sheet.auto_filter.ref = sheet.dimensions
+    buffer = io.BytesIO()
+    workbook.save(buffer)
+    return buffer.getvalue()
+
+
+def _cell(value):
+    """A value openpyxl writes as it is: NaN as an empty cell, numpy scalars as Python numbers."""
+    if value is None or (isinstance(value, float) and np.isnan(value)) or value is pd.NA:
+        return None
+    if isinstance(value, np.generic):
+        value = value.item()
+        if isinstance(value, float) and np.isnan(value):
+            return None
+    return value

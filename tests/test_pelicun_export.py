@@ -1,0 +1,329 @@
+"""The pelicun export (assess/fragility/pelicun_export.py) against the real library files and pelicun.
+
+* the columns are those of the FEMA P-58 ``fragility.csv`` of NHERI SimCenter's
+  Damage and Loss Model Library (tests/data/pelicun, verbatim excerpt), and the
+  values and the metadata obey the library's own format rules and JSON schema
+  (transcribed from its tests/test_data_format.py), which also accept the real
+  excerpt here;
+* pelicun itself (when installed: it is in the ``test`` extra) loads the
+  exported file into a damage model and computes, at given peak floor
+  accelerations, damage-state probabilities equal to the lognormal
+  fragilities: P(DS2) = Φ(ln(a/θ₂)/β₂) and P(DS ≥ 1) = max(P₁, P₂) (its limit
+  states are exceeded in order, with fully correlated capacities).
+"""
+from __future__ import annotations
+
+import csv
+import json
+import math
+import re
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+from scipy import stats
+
+from assess.fragility.msa import fit_lognormal_fragility
+from assess.fragility.pelicun_export import (
+    COLUMNS, ItemFragilities, LimitStateFragility, fragility_metadata, fragility_table,
+    pelicun_component_id, write_pelicun_fragility,
+)
+
+DATA = Path(__file__).parent / "data" / "pelicun"
+REAL_CSV = DATA / "fema_p58_fragility_excerpt.csv"
+REAL_JSON = DATA / "fema_p58_fragility_excerpt.json"
+
+NAN = float("nan")
+ITEMS = [
+    # sliding first, overturning later with the same β: nested limit states
+    ItemFragilities("freezer_F12", "Upright freezer F-12, lab 2.14",
+                    LimitStateFragility(0.35, 0.4, "fitted"), LimitStateFragility(0.8, 0.4)),
+    # a slender cabinet that tips before it slides that far: the fragilities cross
+    ItemFragilities("cabinet_C3", "Gas-bottle cabinet C-3",
+                    LimitStateFragility(0.6, 0.3), LimitStateFragility(0.45, 0.5)),
+    # squat item never overturned in the simulations: LS1 only
+    ItemFragilities("incubator_7", "Incubator 7",
+                    LimitStateFragility(0.5, 0.45), LimitStateFragility(NAN, NAN, "no overturn")),
+]
+
+
+def _phi(a_g, median_g, beta):
+    return stats.norm.cdf(np.log(a_g / median_g) / beta)
+
+
+# ----------------------------------------------------------- the library's format
+
+
+def test_columns_are_the_library_columns():
+    with REAL_CSV.open(newline="", encoding="utf-8") as handle:
+        real_header = next(csv.reader(handle))
+    assert list(COLUMNS) == real_header[:len(COLUMNS)]  # the library goes on to LS4
+    ours = fragility_table(ITEMS).columns.tolist()
+    assert ours == real_header[:14]
+
+
+def test_rows_read_back_like_the_library_rows(tmp_path):
+    csv_path, _ = write_pelicun_fragility(tmp_path, ITEMS)
+    ours = pd.read_csv(csv_path, index_col=0)
+    real = pd.read_csv(REAL_CSV, index_col=0)
+    for column in ours.columns:  # same parsed types column by column (int flags, str, float)
+        assert ours[column].dtype.kind == real[column].dtype.kind or ours[column].isna().all(), \
+            column
+    pfa_contents = real.loc["E.20.22.001"]
+    for column in ("Demand-Type", "Demand-Unit", "Demand-Offset", "LS1-Family"):
+        assert ours.loc["freezer_F12", column] == pfa_contents[column], column
+    assert ours.loc["freezer_F12", "LS1-Theta_0"] == 0.35
+    assert ours.loc["cabinet_C3", "LS2-Theta_1"] == 0.5
+    assert ours.loc["incubator_7", ["LS2-Family", "LS2-Theta_0"]].isna().all()
+
+
+def _multiindex(frame: pd.DataFrame) -> pd.DataFrame:
+    """'LS1-Theta_0' -> ('LS1', 'Theta_0'); 'Incomplete' -> ('Incomplete', ''), as dlml and pelicun read."""
+    frame = frame.copy()
+    frame.columns = pd.MultiIndex.from_tuples(
+        [tuple(c.split("-", 1)) if "-" in c else (c, "") for c in frame.columns])
+    return frame
+
+
+def _library_rule_violations(frame: pd.DataFrame) -> list:
+    """The fragility rules of the library's tests/test_data_format.py (closed-world columns,
+    binary flags, whole offsets, θ0 > 0, θ1 > 0, complete unless Incomplete)."""
+    bad = []
+    fixed = {"Demand": {"Directional", "Offset", "Type", "Unit"}, "Incomplete": {""}}
+    numbered = {"Family", "Theta_0", "Theta_1", "DamageStateWeights"}
+    for top, sub in frame.columns:
+        ok = (sub in fixed[top]) if top in fixed else (
+            re.fullmatch(r"LS\d+", top) is not None and sub in numbered)
+        if not ok:
+            bad.append(("column", top, sub))
+    for (top, sub), flag in (((("Demand", "Directional")), "binary"),
+                             (("Incomplete", ""), "binary"), (("Demand", "Offset"), "whole")):
+        for key, value in frame[(top, sub)].dropna().items():
+            if (flag == "binary" and float(value) not in (0.0, 1.0)) or (
+                    flag == "whole" and not float(value).is_integer()):
+                bad.append((key, top, sub, value))
+    incomplete = frame[("Incomplete", "")] == 1
+    for top in {t for t, _ in frame.columns if t.startswith("LS")}:
+        for key, value in frame[(top, "Theta_1")].dropna().items():
+            if not float(value) > 0.0:
+                bad.append((key, top, "Theta_1", value))
+        for key, value in frame[(top, "Theta_0")].dropna().items():
+            if not float(value) > 0.0:
+                bad.append((key, top, "Theta_0", value))
+        active = frame[(top, "Family")].notna() & ~incomplete
+        for key in frame.index[active & (frame[(top, "Theta_0")].isna()
+                                         | frame[(top, "Theta_1")].isna())]:
+            bad.append((key, top, "under-specified"))
+    return bad
+
+
+def test_values_obey_the_library_rules(tmp_path):
+    real = _multiindex(pd.read_csv(REAL_CSV, index_col=0))
+    assert _library_rule_violations(real) == []  # the transcription accepts the real file
+    csv_path, _ = write_pelicun_fragility(tmp_path, ITEMS)
+    ours = _multiindex(pd.read_csv(csv_path, index_col=0))
+    assert _library_rule_violations(ours) == []
+    # and a rule that bites: a zero dispersion would be refused
+    broken = ours.copy()
+    broken.loc["freezer_F12", ("LS1", "Theta_1")] = 0.0
+    assert _library_rule_violations(broken)
+
+
+# The metadata schema of the library's tests/test_data_format.py (fragility collection).
+_REPAIR_STATE = {"type": "object", "required": ["Description"], "additionalProperties": False,
+                 "properties": {"Description": {"type": "string"},
+                                "RepairAction": {"type": "string"}}}
+_LIMIT_STATES = {"type": "object", "additionalProperties": False, "patternProperties": {
+    r"^LS\d+$": {"type": "object", "additionalProperties": False,
+                 "patternProperties": {r"^DS\d+$": _REPAIR_STATE}}}}
+_GENERAL_INFORMATION = {
+    "type": "object", "required": ["ShortName", "Description", "Version", "ComponentGroups"],
+    "additionalProperties": False,
+    "properties": {"ShortName": {"type": "string"}, "Description": {"type": "string"},
+                   "Version": {"type": "string"},
+                   "ComponentGroups": {"type": ["object", "array"]},
+                   "DecisionVariables": {"type": "object"}}}
+FRAGILITY_METADATA_SCHEMA = {
+    "type": "object", "required": ["_GeneralInformation"],
+    "properties": {"_GeneralInformation": _GENERAL_INFORMATION,
+                   "References": {"type": "object", "additionalProperties": {"type": "string"}}},
+    "additionalProperties": {
+        "type": "object", "additionalProperties": False,
+        "required": ["Description", "SuggestedComponentBlockSize", "RoundUpToIntegerQuantity",
+                     "LimitStates"],
+        "properties": {"Description": {"type": "string"},
+                       "SuggestedComponentBlockSize": {"type": "string"},
+                       "RoundUpToIntegerQuantity": {"enum": ["True", "False"]},
+                       "Comments": {"type": "string"},
+                       "Reference": {"type": "array", "items": {"type": "string"}},
+                       "LimitStates": _LIMIT_STATES}},
+}
+
+
+def _states_in_csv(frame: pd.DataFrame) -> dict:
+    """Each model's LS<n> groups with any non-empty cell (the library's metadata/CSV check)."""
+    states: dict = {}
+    for top, sub in frame.columns:
+        if re.fullmatch(r"LS\d+", top):
+            for model in frame.index[frame[(top, sub)].notna().to_numpy()]:
+                states.setdefault(model, set()).add(top)
+    return states
+
+
+def test_metadata_obeys_the_library_schema_and_matches_the_table(tmp_path):
+    jsonschema = pytest.importorskip("jsonschema", reason="jsonschema (a pelicun dependency) "
+                                     "validates the metadata against the library's schema")
+    validator = jsonschema.Draft7Validator(FRAGILITY_METADATA_SCHEMA)
+    real = json.loads(REAL_JSON.read_text(encoding="utf-8"))
+    assert list(validator.iter_errors(real)) == []  # the transcription accepts the real file
+    csv_path, json_path = write_pelicun_fragility(tmp_path, ITEMS)
+    ours = json.loads(json_path.read_text(encoding="utf-8"))
+    errors = [f"{e.json_path}: {e.message}" for e in validator.iter_errors(ours)]
+    assert errors == []
+    table = _multiindex(pd.read_csv(csv_path, index_col=0))
+    assert set(ours) - {"_GeneralInformation"} == set(table.index)
+    in_csv = _states_in_csv(table)
+    for model, entry in ours.items():
+        if model != "_GeneralInformation":
+            assert set(entry["LimitStates"]) == in_csv[model], model
+    assert set(ours["incubator_7"]["LimitStates"]) == {"LS1"}
+    assert "max(P(LS1), P(LS2))" in ours["cabinet_C3"]["Comments"]
+
+
+def test_missing_fits_are_never_invented():
+    no_slide = ItemFragilities("heavy_safe", "Safe", LimitStateFragility(NAN, NAN, "none"),
+                               LimitStateFragility(1.2, 0.3))
+    row = fragility_table([no_slide]).iloc[0]
+    assert row["Incomplete"] == 1 and row["LS1-Family"] == "lognormal"
+    assert pd.isna(row["LS1-Theta_0"]) and row["LS2-Theta_0"] == 1.2
+    # from real fits: outcomes with no overturn give no LS2
+    x = [0.2, 0.4, 0.8]
+    sliding = fit_lognormal_fragility(x, [20, 20, 20], [2, 9, 17])
+    overturn = fit_lognormal_fragility(x, [20, 20, 20], [0, 0, 0])
+    item = ItemFragilities("bench_1", "Bench", LimitStateFragility.from_fit(sliding),
+                           LimitStateFragility.from_fit(overturn))
+    meta = fragility_metadata([item])
+    assert set(meta["bench_1"]["LimitStates"]) == {"LS1"}
+    assert "no failure in 60 simulations up to 0.8 g" in meta["bench_1"]["Comments"]
+    assert fragility_table([item]).iloc[0]["LS1-Theta_0"] == pytest.approx(sliding.median_g,
+                                                                           rel=1e-3)
+
+
+def test_component_ids():
+    assert pelicun_component_id(" Fume hood - FH-2 ") == "Fume_hood_FH_2"
+    with pytest.raises(ValueError):
+        fragility_table([ItemFragilities("bad-id", "x", ITEMS[0].beyond_clearance,
+                                         ITEMS[0].overturn)])
+    with pytest.raises(ValueError):
+        fragility_table([ITEMS[0], ITEMS[0]])
+
+
+# ----------------------------------------------------------- pelicun itself
+
+PFA_VALUES_G = np.array([0.2, 0.35, 0.5, 0.8, 1.2])
+REPEATS = 8000  # rows per PFA value; a probability's sampling sd is at most 0.0056
+
+
+def _pelicun_damage_probabilities(csv_path, component_ids, tmp_path):
+    """Run pelicun's damage model on the exported file: P(DS = k) per component and PFA value."""
+    pelicun_assessment = pytest.importorskip(
+        "pelicun.assessment", reason="pelicun is not installed (pip install -e '.[test]' adds it)")
+    n = PFA_VALUES_G.size * REPEATS
+    pfa = np.tile(PFA_VALUES_G, REPEATS)  # interleaved, so any ordering of the sample mixes them
+    demand_csv = tmp_path / "demand_sample.csv"
+    with demand_csv.open("w", newline="", encoding="utf-8") as handle:
+        writer = csv.writer(handle)
+        writer.writerow(["", "1-PFA-0-1", "1-PFA-0-2", "1-PFA-1-1", "1-PFA-1-2"])
+        writer.writerow(["Units", "g", "g", "g", "g"])
+        for i, value in enumerate(pfa):
+            writer.writerow([i, value, value, value, value])
+    asmnt = pelicun_assessment.Assessment({"PrintLog": False, "Seed": 12})
+    asmnt.stories = 1
+    asmnt.demand.load_sample(str(demand_csv))
+    marginals = pd.DataFrame({"Units": "ea", "Location": "1", "Direction": "1", "Theta_0": 1.0,
+                              "Blocks": 1}, index=list(component_ids))
+    asmnt.asset.load_cmp_model({"marginals": marginals})
+    asmnt.asset.generate_cmp_sample(n)
+    cmp_set = set(asmnt.asset.list_unique_component_ids())
+    asmnt.damage.load_model_parameters([str(csv_path)], cmp_set)
+    asmnt.damage.calculate()
+    # rows: realisations in the demand's order; columns (cmp, loc, dir, uid, ds): the quantity
+    # in each damage state, here 1 in the state reached and 0 elsewhere (one block of 1 ea)
+    sample = asmnt.damage.ds_model.sample
+    result = {}
+    for cmp in component_ids:
+        per_state = sample.xs(cmp, axis=1, level="cmp").T.groupby(level="ds").sum().T
+        result[cmp] = {k: np.array([per_state[str(k)].to_numpy()[pfa == a].mean()
+                                    if str(k) in per_state else 0.0 for a in PFA_VALUES_G])
+                       for k in (0, 1, 2)}
+    return result, asmnt.damage.missing_components
+
+
+def test_pelicun_computes_the_exported_lognormals(tmp_path):
+    csv_path, _ = write_pelicun_fragility(tmp_path / "fragility", ITEMS)
+    ids = [item.component_id for item in ITEMS]
+    probs, missing = _pelicun_damage_probabilities(csv_path, ids, tmp_path)
+    assert missing == []
+    tol = 0.025  # > 4 sampling sd of 8000 draws
+    for item in ITEMS:
+        p = probs[item.component_id]
+        p1 = _phi(PFA_VALUES_G, item.beyond_clearance.median_g, item.beyond_clearance.beta)
+        if item.overturn.defined:
+            p2 = _phi(PFA_VALUES_G, item.overturn.median_g, item.overturn.beta)
+            np.testing.assert_allclose(p[2], p2, atol=tol, err_msg=item.component_id)
+            np.testing.assert_allclose(p[1] + p[2], np.maximum(p1, p2), atol=tol,
+                                       err_msg=item.component_id)
+        else:
+            assert np.all(p[2] == 0.0)
+            np.testing.assert_allclose(p[1], p1, atol=tol, err_msg=item.component_id)
+        np.testing.assert_allclose(p[0] + p[1] + p[2], 1.0, atol=1e-12)
+        print(item.component_id, "pelicun P(DS>=1)", np.round(p[1] + p[2], 4), "lognormal",
+              np.round(p1 if not item.overturn.defined else np.maximum(p1, p2), 4))
+
+
+def test_pelicun_drops_an_incomplete_component(tmp_path):
+    pytest.importorskip("pelicun.assessment", reason="pelicun is not installed")
+    items = [ITEMS[0], ItemFragilities("safe_S1", "Safe", LimitStateFragility(NAN, NAN, "none"),
+                                       LimitStateFragility(1.2, 0.3))]
+    csv_path, _ = write_pelicun_fragility(tmp_path / "fragility", items)
+    from pelicun.assessment import Assessment
+
+    asmnt = Assessment({"PrintLog": False, "Seed": 1})
+    asmnt.stories = 1
+    marginals = pd.DataFrame({"Units": "ea", "Location": "1", "Direction": "1", "Theta_0": 1.0,
+                              "Blocks": 1}, index=["freezer_F12", "safe_S1"])
+    asmnt.asset.load_cmp_model({"marginals": marginals})
+    asmnt.asset.generate_cmp_sample(10)
+    asmnt.damage.load_model_parameters([str(csv_path)], {"freezer_F12", "safe_S1"},
+                                       warn_missing=True)
+    assert asmnt.damage.missing_components == ["safe_S1"]
+
+
+def test_the_same_harness_on_the_real_library_row(tmp_path):
+    """The P-58 unanchored-contents row E.20.22.001 (θ 1.0 g, β 0.4, non-directional) through
+    the same pelicun run: P(DS1) = Φ(ln(1.2·a/θ)/β), 1.2 being pelicun's multiplier on the
+    larger direction of a non-directional demand. Checks the harness and the module's claim."""
+    probs, _ = _pelicun_damage_probabilities(REAL_CSV, ["E.20.22.001"], tmp_path)
+    np.testing.assert_allclose(probs["E.20.22.001"][1], _phi(1.2 * PFA_VALUES_G, 1.0, 0.4),
+                               atol=0.025)
+
+
+def test_loads_beside_the_installed_library_as_the_docstring_says(tmp_path):
+    pytest.importorskip("pelicun.assessment", reason="pelicun is not installed")
+    from pelicun.assessment import Assessment
+
+    csv_path, _ = write_pelicun_fragility(tmp_path / "fragility", ITEMS)
+    asmnt = Assessment({"PrintLog": False, "Seed": 1})
+    asmnt.stories = 1
+    marginals = pd.DataFrame({"Units": "ea", "Location": "1", "Direction": "1", "Theta_0": 1.0,
+                              "Blocks": 1}, index=["freezer_F12", "E.20.22.001"])
+    asmnt.asset.load_cmp_model({"marginals": marginals})
+    asmnt.asset.generate_cmp_sample(10)
+    asmnt.damage.load_model_parameters(
+        [str(csv_path), "PelicunDefault/FEMA P-58/fragility.csv"],
+        set(asmnt.asset.list_unique_component_ids()))
+    params = asmnt.damage.ds_model.damage_params
+    assert asmnt.damage.missing_components == []
+    assert set(params.index) == {"freezer_F12", "E.20.22.001"}
+    assert params.loc["freezer_F12", ("LS2", "Theta_1")] == 0.4
