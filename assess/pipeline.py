@@ -18,7 +18,7 @@ from dataclasses import replace
 
 from assess.errors import InputError, Problem, raise_if_any
 from assess.fragility.governing import (
-    PULSE, RECORD, SYNTHETIC, add_pulse_share, governing_demand, motion_sources,
+    PULSE, RECORD, SYNTHETIC, add_pulse_share, governing_demand, motion_sources, suite_runs,
 )
 from assess.fragility import (
     RegressionConstants, capacity_edp, intensity_measure, median_edp,
@@ -133,7 +133,7 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
         site=str(settings.get("site", "")), level=level, level_label=level_label,
         summary=summary[SUMMARY_COLUMNS], motions=_motion_table(cases), flags=flags,
         regression=regression, settings=dict(settings), simulated=True, seed=seed,
-        histories=histories, hazard_notes=hazard_notes,
+        histories=histories, hazard_notes=hazard_notes, suite_runs=suite_runs(cases, runs),
     )
 
 

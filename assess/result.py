@@ -80,6 +80,9 @@ class AssessmentResult:
     hazard_notes : list of str
         How the motions were changed from the workbook's (e.g. scaled to an
         OpenQuake PGA), for the report.
+    suite_runs : DataFrame or None
+        What the governing demand is made of: one row per item × motion × history
+        (:func:`assess.fragility.governing.suite_runs`), for the report's item details.
     comparison : DataFrame or None
         Against a previous run (:func:`assess.comparison.compare_summaries`):
         which items changed risk class and why; written as comparison.csv.
@@ -100,6 +103,7 @@ class AssessmentResult:
     histories: list = field(default_factory=list)
     hazard_notes: list = field(default_factory=list)
     comparison: pd.DataFrame | None = None
+    suite_runs: pd.DataFrame | None = None
 
     def risk_counts(self) -> dict[str, int]:
         """Number of items (rows, not quantity) in each risk class."""

@@ -135,7 +135,7 @@ def test_weighted_quantile_with_equal_weights_is_hazens_and_weights_count():
 
 def test_a_regression_governed_suite_has_the_regressions_median_and_p84():
     """One motion in the regression's domain: the suite's quantiles are the lognormal's."""
-    cases = pd.DataFrame({"id": ["A", "A"], "motion_key": [0, 0], "direction": [1, 2],
+    cases = pd.DataFrame({"id": ["A", "A"], "motion_key": [0, 0], "motion": ["LG"] * 2, "direction": [1, 2],
                           "demand_source": ["regression"] * 2, "pta_g": [0.54] * 2, "tp_s": [2.1] * 2,
                           "im": [0.54 / 0.13 - 1] * 2, "mode": ["slide"] * 2, "clearance_m": [0.5] * 2,
                           "pulse_share": [0.42] * 2, "sim_uplift": [False] * 2})

@@ -168,12 +168,16 @@ def test_workbook_text_is_escaped(html):
     assert "alert(1)</script>" not in html
 
 
-def test_every_link_on_page_1_lands_on_its_item_in_the_table(html, result):
+def test_every_link_on_page_1_lands_on_its_item_details(html, result):
     first = _first_section(html)
-    targets = re.findall(r'href="#(item-[^"]+)"', first)
-    assert targets and len(targets) == len(set(targets))
+    targets = set(re.findall(r'href="#(item-[^"]+)"', first))
+    assert targets
     for target in targets:
-        assert re.search(rf'<tr class="row-[a-z]+" id="{re.escape(target)}">', html), target
+        block = re.search(rf'<div class="item-detail" id="{re.escape(target)}">\s*<h3><span class="id">([^<]+)</span>',
+                          html)
+        assert block and f"item-{block.group(1)}" == target, target
+    freestanding = result.summary[result.summary["risk"] != "anchored"]
+    assert html.count('<div class="item-detail"') == len(freestanding)
 
 
 def test_counts_are_shown(html, result):
@@ -209,11 +213,11 @@ def test_not_simulated_sentence(result):
 
 def test_nan_shows_as_dash_and_numbers_are_rounded(html):
     all_items = re.search(r'<section id="all-items".*?</section>', html, re.S).group(0)
-    rock_row = re.search(r'<tr class="row-high" id="item-K-02">\s*<td class="c-id id">K-02</td>.*?</tr>',
+    rock_row = re.search(r'<tr class="row-high">\s*<td class="c-id id"><a class="id" href="#item-K-02">K-02</a></td>.*?</tr>',
                          all_items, re.S).group(0)
     assert '<td class="num c-sl">– / – · –</td>' in rock_row
     assert '<td class="num c-pfa">–</td>' in rock_row
-    forma = re.search(r'<td class="c-id id">F-01</td>.*?</tr>', all_items, re.S).group(0)
+    forma = re.search(r'<td class="c-id id"><a class="id" href="#item-F-01">F-01</a></td>.*?</tr>', all_items, re.S).group(0)
     assert '<td class="num c-sl">74 / 115 · ' in forma
     assert '<td class="num c-im">3.38</td>' in forma
     assert not re.search(r"\b(nan|NaN|None|<NA>)\b", html)

@@ -5,7 +5,7 @@ Python package ``playwright`` (``pip install playwright``; its own browser
 download is not needed, the system Chromium is used) is absent. Checks what a
 reader does: the page opens with no console error and fetches nothing from
 the network, the all-items table sorts by a column and filters by text, and
-every item link on page 1 lands on that item's row.
+every item link on page 1 lands on that item's details.
 """
 from __future__ import annotations
 
@@ -72,7 +72,7 @@ def test_the_filter_keeps_only_matching_rows(page):
     assert len(_ids(page)) == page.locator("#all-items-table tbody tr").count()
 
 
-def test_every_link_on_page_1_lands_on_its_item(page):
+def test_every_link_on_page_1_lands_on_its_item_details(page):
     links = page.locator("#summary a.id")
     assert links.count() > 0
     for k in range(links.count()):
@@ -81,6 +81,6 @@ def test_every_link_on_page_1_lands_on_its_item(page):
         link.click()
         assert page.url.endswith(target)
         row = page.locator(target)
-        assert row.is_visible() and row.locator("td.c-id").inner_text().strip() == link.inner_text().strip()
+        assert row.is_visible() and row.locator("h3 .id").inner_text().strip() == link.inner_text().strip()
         box = row.bounding_box()
         assert -1 <= box["y"] < 900  # scrolled into view (to the top, within a pixel)

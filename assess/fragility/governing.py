@@ -93,14 +93,21 @@ def governing_demand(cases: pd.DataFrame, runs: pd.DataFrame, constants: Regress
     return pd.DataFrame.from_dict(rows, orient="index")[DEMAND_COLUMNS]
 
 
+def suite_runs(cases: pd.DataFrame, runs: pd.DataFrame) -> pd.DataFrame:
+    """One row per item × motion × history: ``id``, ``motion_key``, ``motion``, ``realization``, the larger
+    sliding of the two directions (``sliding_cm``), ``overturned`` in either, the larger ``theta`` (θmax/α)."""
+    case = runs["case"].to_numpy()
+    table = runs.assign(id=cases["id"].to_numpy()[case], motion_key=cases["motion_key"].to_numpy()[case],
+                        motion=cases["motion"].to_numpy()[case])
+    return table.groupby(["id", "motion_key", "realization"], sort=False).agg(
+        motion=("motion", "first"), sliding_cm=("sliding_max_cm", "max"), overturned=("overturned", "any"),
+        theta=("theta_max_over_alpha", "max")).reset_index()
+
+
 def _per_history(cases: pd.DataFrame, runs: pd.DataFrame) -> dict:
-    """Per item: one row per (motion, history), the larger sliding of the two directions, overturned in either."""
-    table = runs.assign(id=cases["id"].to_numpy()[runs["case"]],
-                        motion_key=cases["motion_key"].to_numpy()[runs["case"]])
-    grouped = table.groupby(["id", "motion_key", "realization"], sort=False).agg(
-        sliding_cm=("sliding_max_cm", "max"), overturned=("overturned", "any"),
-        theta=("theta_max_over_alpha", "max"))
-    return {item_id: frame.reset_index(level=0, drop=True) for item_id, frame in grouped.groupby(level=0)}
+    """Per item: :func:`suite_runs` indexed by (motion_key, realization)."""
+    table = suite_runs(cases, runs).set_index(["motion_key", "realization"])
+    return {item_id: frame.drop(columns="id") for item_id, frame in table.groupby("id", sort=False)}
 
 
 def _regression_by_motion(cases: pd.DataFrame, constants: RegressionConstants) -> dict:

@@ -232,6 +232,57 @@ def item_anchors(ids) -> list[str]:
     return anchors
 
 
+#: Size of an item's suite strip [px]: width, left margin for the motion names, height per motion.
+STRIP_WIDTH, STRIP_LEFT, STRIP_ROW = 560, 170, 13
+
+
+def _item_details(rows: list[dict], summary: pd.DataFrame, runs: pd.DataFrame | None) -> list[dict]:
+    """One block per freestanding item: its numbers, and its suite drawn as a strip (every motion a line,
+    every history a dot at its sliding, overturned ones as crosses, the clearance a bar)."""
+    by_id = summary.set_index(summary["id"].astype(str))
+    details = []
+    for row in rows:
+        if row["risk"] == "anchored":
+            continue
+        item = by_id.loc[row["id"]]
+        item = item.iloc[0] if isinstance(item, pd.DataFrame) else item
+        strip = None
+        if runs is not None and len(runs):
+            strip = _suite_strip(runs[runs["id"].astype(str) == row["id"]], _finite(item.get("clearance_cm")))
+        details.append({**row, "strip": strip, "theta": format_significant(item.get("theta_max_over_alpha"), 2),
+                        "alpha": format_significant(item.get("alpha_rad"), 2)})
+    return details
+
+
+def _suite_strip(runs: pd.DataFrame, clearance_cm: float | None) -> dict | None:
+    if runs.empty:
+        return None
+    sliding = pd.to_numeric(runs["sliding_cm"], errors="coerce").fillna(0.0)
+    top = max(float(sliding.max()), clearance_cm or 0.0, 1.0) * 1.08
+    scale = (STRIP_WIDTH - STRIP_LEFT - 10) / top
+    motions = list(dict.fromkeys(runs["motion_key"]))
+    lines = []
+    for k, key in enumerate(motions):
+        mine = runs[runs["motion_key"] == key]
+        y = 8 + STRIP_ROW * k
+        lines.append({"y": y, "label": _text(mine["motion"].iloc[0])[:34],
+                      "dots": [{"x": STRIP_LEFT + float(v) * scale, "overturned": bool(o)}
+                               for v, o in zip(pd.to_numeric(mine["sliding_cm"], errors="coerce").fillna(0.0),
+                                               mine["overturned"])]})
+    height = 8 + STRIP_ROW * len(motions) + 14
+    ticks = [{"x": STRIP_LEFT + t * scale, "label": f"{t:g}"} for t in _nice_ticks(top)]
+    return {"width": STRIP_WIDTH, "height": height, "left": STRIP_LEFT, "lines": lines, "axis_y": height - 14,
+            "ticks": ticks, "clearance_x": None if clearance_cm is None else STRIP_LEFT + clearance_cm * scale}
+
+
+def _nice_ticks(top: float) -> list[float]:
+    """Round tick values from 0 to below ``top`` (about five)."""
+    raw = top / 5.0
+    magnitude = 10 ** math.floor(math.log10(raw))
+    step = min((m * magnitude for m in (1, 2, 5, 10) if m * magnitude >= raw), default=magnitude * 10)
+    return [k * step for k in range(int(top // step) + 1)]
+
+
 #: Page 1's groups of actions, in the order a manager takes them.
 ACTION_GROUPS = (
     ("anchor", "Anchor", "they overturn or rock in the design earthquake; moving them away from walls does not help"),
@@ -326,6 +377,7 @@ def report_context(result) -> dict:
         "total_items": len(rows),
         "total_units": int(quantity.sum()),
         "action_groups": _action_groups(rows),
+        "details": _item_details(rows, summary, getattr(result, "suite_runs", None)),
         "high": [r for r in rows if r["risk"] == "high"],
         "moderate": [r for r in rows if r["risk"] == "moderate"],
         "rows": rows,
