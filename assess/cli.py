@@ -1,20 +1,28 @@
 """Command line: parses arguments, calls the core, formats what it returns.
 
 Exit codes: 0 done; 2 the input is wrong (every problem listed, no traceback,
-nothing written); 1 an internal error.
+nothing written); 1 an internal error; 130 interrupted (Ctrl-C, nothing
+written); 141 the reader of the output went away (``assess simulate --json |
+head``), as for any command stopped by a closed pipe.
 """
 from __future__ import annotations
 
 import argparse
+import contextlib
+import os
+import signal
 import sys
 import traceback
 from pathlib import Path
 
 from assess import __version__
-from assess.errors import InputError, Problem
+from assess.errors import InputError, Problem, raise_if_any
 
 EXIT_OK, EXIT_INTERNAL, EXIT_INPUT = 0, 1, 2
-EPILOG = "Exit codes: 0 done; 2 the input is wrong (each problem is named); 1 internal error."
+#: 128 + the signal's number, as a shell reports a command a signal stopped.
+EXIT_INTERRUPTED, EXIT_BROKEN_PIPE = 128 + signal.SIGINT, 128 + 13
+EPILOG = ("Exit codes: 0 done; 2 the input is wrong (each problem is named); 1 internal error; "
+          "130 interrupted (Ctrl-C).")
 FORMATS = ("html", "pdf")
 
 DESCRIPTION = """\
@@ -125,9 +133,17 @@ def build_parser() -> argparse.ArgumentParser:
                         help="a previous run's summary.csv: also write comparison.csv and a report section "
                              "on which items changed risk class and why (default: the summary.csv already "
                              "in --out, if any)")
+    _add_allow_records_outside(parser)
     parser.add_argument("--quiet", action="store_true", help="do not print progress")
     parser.add_argument("--version", action="version", version=f"assess {__version__}")
     return parser
+
+
+def _add_allow_records_outside(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--allow-records-outside", action="store_true",
+                        help="read record files that lie outside the workbook's folder (default: refused, so "
+                             "that a workbook from someone else cannot make assess read other files of this "
+                             "machine; records belong in the workbook's folder or its subfolders)")
 
 
 def build_simulate_parser() -> argparse.ArgumentParser:
@@ -151,7 +167,7 @@ def build_simulate_parser() -> argparse.ArgumentParser:
                            "(default Housner's 1 - (2/kappa) sin^2 alpha)")
     motion = parser.add_argument_group("the motion: --record FILE, or --pulse with --ap-g and --tp-s")
     motion.add_argument("--record", metavar="FILE", type=Path, help="floor acceleration record")
-    motion.add_argument("--scale", metavar="S", type=float, default=1.0,
+    motion.add_argument("--scale", metavar="S", type=_positive_number, default=1.0,
                         help="factor applied to the record (default 1)")
     motion.add_argument("--pulse", choices=("A", "B", "C", "rect"), help="pulse type")
     motion.add_argument("--ap-g", metavar="A", type=_positive_number, help="pulse amplitude [g]")
@@ -182,35 +198,136 @@ def build_calibrate_parser() -> argparse.ArgumentParser:
                         help="output folder (default: reports/<workbook stem>-calibration/)")
     parser.add_argument("--format", metavar="FORMATS", type=_formats, default=FORMATS,
                         help="report formats, comma-separated: html, pdf (default: html,pdf)")
+    _add_allow_records_outside(parser)
     parser.add_argument("--quiet", action="store_true", help="do not print progress")
     return parser
 
 
+class _Interrupt:
+    """Ctrl-C as the run sees it: whether it came, and whether it may stop the run now.
+
+    The SIGINT handler records the interrupt before raising KeyboardInterrupt,
+    so that an interrupt that a library swallows (an exception raised in a
+    cffi callback while WeasyPrint draws the PDF is printed and dropped) or
+    wraps (numba's threads turn it into a SystemError) is still seen. While
+    the output folder is swapped in, it is only recorded, and acted on after.
+    """
+
+    received = False
+    deferred = False
+    written_to: Path | None = None
+
+    @classmethod
+    def handler(cls, signum, frame):
+        cls.received = True
+        if not cls.deferred:
+            raise KeyboardInterrupt
+
+    @classmethod
+    def stop_if_received(cls):
+        if cls.received:
+            raise KeyboardInterrupt
+
+
+@contextlib.contextmanager
+def _sigint_recorded():
+    """Install :meth:`_Interrupt.handler` for the run (only the main thread may), then restore."""
+    _Interrupt.received, _Interrupt.deferred, _Interrupt.written_to = False, False, None
+    try:
+        previous = signal.signal(signal.SIGINT, _Interrupt.handler)
+    except ValueError:  # not the main thread: leave signals alone
+        previous = None
+    try:
+        yield
+    finally:
+        if previous is not None:
+            signal.signal(signal.SIGINT, previous)
+
+
+def _write_uninterrupted(files: dict[str, bytes], out_dir: Path) -> list[Path]:
+    """:func:`assess.output.write_atomically`, Ctrl-C held back until the folder is swapped in."""
+    from assess.output import write_atomically
+    _Interrupt.stop_if_received()  # an interrupt swallowed while rendering stops the run here
+    _Interrupt.deferred = True
+    try:
+        written = write_atomically(files, out_dir)
+        _Interrupt.written_to = Path(out_dir)
+    finally:
+        _Interrupt.deferred = False
+    _Interrupt.stop_if_received()
+    return written
+
+
+def _caused_by(error: BaseException, kind: type) -> bool:
+    """Whether ``error`` is ``kind`` or was raised while handling one (``__cause__``/``__context__``)."""
+    seen = set()
+    while error is not None and id(error) not in seen:
+        if isinstance(error, kind):
+            return True
+        seen.add(id(error))
+        error = error.__cause__ or error.__context__
+    return False
+
+
+def _interrupted() -> int:
+    if _Interrupt.written_to is not None:
+        print(f"assess: interrupted after the outputs were written to {_Interrupt.written_to}.", file=sys.stderr)
+    else:
+        print("assess: interrupted; nothing was written.", file=sys.stderr)
+    return EXIT_INTERRUPTED
+
+
+def _reader_gone() -> int:
+    """stdout's reader closed the pipe: send what is left to /dev/null (Python docs, 'Note on SIGPIPE')."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):
+        pass
+    return EXIT_BROKEN_PIPE
+
+
 def main(argv: list[str] | None = None) -> int:
+    """Run one command; returns its exit code (module docstring). Ctrl-C anywhere exits 130, in one line."""
+    with _sigint_recorded():
+        try:
+            code = _main(argv)
+            sys.stdout.flush()
+            return code
+        except KeyboardInterrupt:
+            return _interrupted()
+        except BrokenPipeError:
+            return _reader_gone()
+
+
+def _main(argv: list[str] | None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
     if argv and argv[0] == "simulate":
-        args = build_simulate_parser().parse_args(argv[1:])
-        command, say = _simulate, (lambda message: None)
+        args, command = build_simulate_parser().parse_args(argv[1:]), _simulate
     elif argv and argv[0] == "calibrate":
-        args = build_calibrate_parser().parse_args(argv[1:])
-        command = _calibrate
-        say = (lambda message: None) if args.quiet else (
-            lambda message: print(f"assess: {message}", file=sys.stderr))
+        args, command = build_calibrate_parser().parse_args(argv[1:]), _calibrate
     else:
         args = build_parser().parse_args(argv)  # argparse exits with 2 on a wrong option
         command = _assess
-        say = (lambda message: None) if args.quiet else (
-            lambda message: print(f"assess: {message}", file=sys.stderr))
+    quiet = command is _simulate or args.quiet
+
+    def say(message: str) -> None:
+        """Progress, to stderr; also where an interrupt a library swallowed stops the run."""
+        _Interrupt.stop_if_received()
+        if not quiet:
+            print(f"assess: {message}", file=sys.stderr)
+
     try:
         return command(args, say)
     except InputError as error:
         print(str(error), file=sys.stderr)
         print("Nothing was written.", file=sys.stderr)
         return EXIT_INPUT
-    except KeyboardInterrupt:
-        print("assess: interrupted; nothing was written.", file=sys.stderr)
-        return EXIT_INTERNAL
-    except Exception:  # noqa: BLE001 - the one place that turns a bug into exit code 1
+    except Exception as error:  # noqa: BLE001 - the one place that turns a bug into exit code 1
+        if _Interrupt.received or _caused_by(error, KeyboardInterrupt):  # e.g. SystemError from numba
+            return _interrupted()
+        if _caused_by(error, BrokenPipeError):
+            return _reader_gone()
         traceback.print_exc()
         print("assess: internal error (a bug, not your input): please report it with the "
               "traceback above. Nothing was written.", file=sys.stderr)
@@ -220,7 +337,7 @@ def main(argv: list[str] | None = None) -> int:
 def _assess(args: argparse.Namespace, say) -> int:
     from assess.hazard.levels import parse_level
     from assess.inventory import read_workbook
-    from assess.output import render_outputs, write_atomically
+    from assess.output import check_output_folder, render_outputs
     from assess.pipeline import run_assessment
 
     try:
@@ -230,8 +347,11 @@ def _assess(args: argparse.Namespace, say) -> int:
     if args.jobs is not None:
         import numba
         numba.set_num_threads(min(args.jobs, numba.config.NUMBA_NUM_THREADS))
+    out_dir = args.out or Path("reports") / f"{args.workbook.stem}-{level_name}"
+    check_output_folder(out_dir)
     say(f"reading {args.workbook}")
     inventory = read_workbook(args.workbook)
+    raise_if_any(_hazard_problems(inventory, args.allow_records_outside))
     oq_hazard = None
     if args.oq_hazard is not None:
         from assess.hazard.openquake import read_openquake_hazard
@@ -242,11 +362,10 @@ def _assess(args: argparse.Namespace, say) -> int:
         calibration = read_calibration(args.calibration)
     result = run_assessment(inventory, args.hazard, seed=args.seed, progress=say, oq_hazard=oq_hazard,
                             derive_floors_roof=args.derive_floors, calibration=calibration)
-    out_dir = args.out or Path("reports") / f"{args.workbook.stem}-{level_name}"
     result = _with_comparison(result, args.compare_with, out_dir / "summary.csv", say)
     say("rendering " + ", ".join(["summary.csv", "motions.csv"] + [f"report.{f}" for f in args.format]))
     files = render_outputs(result, args.format)
-    written = write_atomically(files, out_dir)
+    written = _write_uninterrupted(files, out_dir)
     counts = result.risk_counts()
     say(f"{counts['high']} high, {counts['moderate']} moderate, {counts['low']} low risk, "
         f"{counts['anchored']} anchored")
@@ -260,10 +379,13 @@ def _calibrate(args: argparse.Namespace, say) -> int:
 
     from assess.calibration import read_measured, run_calibration
     from assess.inventory import read_workbook
-    from assess.output import csv_text, write_atomically
+    from assess.output import check_output_folder, csv_text
 
+    out_dir = args.out or Path("reports") / f"{args.workbook.stem}-calibration"
+    check_output_folder(out_dir)
     say(f"reading {args.workbook}")
     inventory = read_workbook(args.workbook)
+    raise_if_any(_hazard_problems(inventory, args.allow_records_outside))
     measured = read_measured(args.measured, inventory)
     say(f"{len(measured)} measured tests; fitting the effects")
     result = run_calibration(inventory, measured,
@@ -281,8 +403,7 @@ def _calibrate(args: argparse.Namespace, say) -> int:
             files["report.html"] = html.encode()
         if "pdf" in args.format:
             files["report.pdf"] = render_pdf(html)
-    out_dir = args.out or Path("reports") / f"{args.workbook.stem}-calibration"
-    written = write_atomically(files, out_dir)
+    written = _write_uninterrupted(files, out_dir)
     similar = f"; indistinguishable from {', '.join(result.indistinguishable_from)}" \
         if result.indistinguishable_from else ""
     say(f"selected: {result.selected} {result.parameters or ''}{similar}")
@@ -301,6 +422,7 @@ def _with_comparison(result, explicit: Path | None, in_out_dir: Path, say):
     from dataclasses import replace
 
     from assess.comparison import compare_summaries, read_previous_summary
+    from assess.output import restore_text
     if explicit is not None:
         previous = read_previous_summary(explicit)
     elif in_out_dir.is_file():
@@ -311,8 +433,44 @@ def _with_comparison(result, explicit: Path | None, in_out_dir: Path, say):
             return result
     else:
         return result
+    previous = restore_text(previous)  # the text summary.csv protects from spreadsheet formulas
     say(f"comparing with the previous run {explicit or in_out_dir}")
     return replace(result, comparison=compare_summaries(previous, result.summary))
+
+
+def _hazard_problems(inventory, allow_records_outside: bool) -> list[Problem]:
+    """What in the hazard sheet the run must refuse before reading any record or simulating.
+
+    * a record outside the workbook's folder (:func:`assess.hazard.records.check_record_location`),
+      unless ``--allow-records-outside``;
+    * ``vp`` = 0: a velocity pulse has a non-zero amplitude (a pulse of
+      acceleration ap and period Tp reaches vp = ap Tp / 2 pi for Type B), so a
+      0 is a placeholder, not a measurement. Read as "no vp" it would silently
+      change how the motion is simulated (its pulse instead of synthetic
+      near-fault histories), so it is refused and the user says which is meant.
+    """
+    import math
+
+    from assess.hazard.records import check_record_location
+    workbook = Path(inventory.path)
+    problems = []
+    for row in inventory.hazard.itertuples(index=False):
+        record_path = str(getattr(row, "record_path", "") or "")
+        why = check_record_location(record_path, workbook.parent) if record_path else None
+        if why and not allow_records_outside:
+            problems.append(Problem(file=workbook.name, sheet="hazard", row=int(row.row), column="record",
+                                    message=f"motion '{row.motion}': {why}",
+                                    fix="copy the record into the workbook's folder (or a subfolder) and "
+                                        "give its path relative to the workbook, or run with "
+                                        "--allow-records-outside if you trust this workbook."))
+        vp = float(row.vp_m_s)
+        if not math.isnan(vp) and vp == 0.0:
+            problems.append(Problem(file=workbook.name, sheet="hazard", row=int(row.row), column="vp_cm_s",
+                                    message=f"motion '{row.motion}': the pulse velocity vp is 0; a velocity "
+                                            "pulse has a non-zero amplitude.",
+                                    fix="give the pulse's peak velocity (e.g. -75 cm/s for Los Gatos), or "
+                                        "leave the cell empty to simulate the motion's pulse from PTA and Tp."))
+    return problems
 
 
 def _oq_site(text):
@@ -358,20 +516,24 @@ def _simulate(args: argparse.Namespace, say) -> int:
     if args.restitution is not None and args.restitution > 1.0:
         problems.append(Problem(file="command line", message=f"--restitution {args.restitution:g} is above 1.",
                                 fix="give a coefficient between 0 and 1, or leave it out for Housner's."))
+    if args.history is not None and args.history.is_dir():
+        problems.append(Problem(file=str(args.history), message="--history names a folder; it takes a file.",
+                                fix="give a file name, e.g. --history history.csv."))
     if problems:
         raise InputError(problems)
     block = Block(half_width_m=args.width_cm / 200.0, cg_height_m=cg_cm / 100.0,
                   height_m=args.height_cm / 100.0, mu=args.mu, mu_static=mu_static,
                   restitution=args.restitution)
     if args.record is not None:
-        motion, period = read_record(args.record, min_duration_s=MIN_DURATION_S).scaled(args.scale), None
+        motion, period = read_record(args.record, min_duration_s=MIN_DURATION_S, scale=args.scale), None
     else:
         motion, period = pulse_record(args.pulse, args.ap_g, args.tp_s, args.dt_s), args.tp_s
     run = simulate_item(block, motion, pulse_period_s=period, tail_s=args.tail_s, solver=args.solver,
                         return_history=args.history is not None)
     if args.history is not None:
-        from assess.output import write_atomically
-        write_atomically({args.history.name: _history_csv(run)}, args.history.parent)
+        from assess.output import write_file_atomically
+        _Interrupt.stop_if_received()
+        write_file_atomically(args.history, _history_csv(run))
     result = run.as_dict()
     if args.json:
         print(json.dumps(result, indent=2))

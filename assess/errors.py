@@ -8,6 +8,23 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+#: Longest message of one problem as printed (its location a quarter of it, its fix
+#: half): they quote the user's paths and cells, which may be of any length (a
+#: 40,000-character cell).
+MAX_PROBLEM_CHARS = 1000
+#: Problems printed; the rest are counted (a sheet of a million wrong rows is one mistake).
+MAX_PROBLEMS_SHOWN = 50
+
+
+def capped(text: str, limit: int = MAX_PROBLEM_CHARS) -> str:
+    """``text`` cut to ``limit`` characters, saying how much was left out.
+
+    >>> capped("x" * 30, 10)
+    'xxxxxxxxxx… (20 more characters)'
+    """
+    text = str(text)
+    return text if len(text) <= limit else f"{text[:limit]}… ({len(text) - limit} more characters)"
+
 
 @dataclass(frozen=True)
 class Problem:
@@ -39,9 +56,9 @@ class Problem:
         return ", ".join(parts)
 
     def __str__(self) -> str:
-        text = f"{self.location()}: {self.message}"
+        text = f"{capped(self.location(), MAX_PROBLEM_CHARS // 4)}: {capped(self.message)}"
         if self.fix:
-            text += f" Fix: {self.fix}"
+            text += f" Fix: {capped(self.fix, MAX_PROBLEM_CHARS // 2)}"
         return text
 
 
@@ -57,7 +74,10 @@ class InputError(Exception):
     def __str__(self) -> str:
         count = len(self.problems)
         head = f"{count} problem{'s' if count != 1 else ''} in the input:"
-        return "\n".join([head] + [f"  - {p}" for p in self.problems])
+        lines = [head] + [f"  - {p}" for p in self.problems[:MAX_PROBLEMS_SHOWN]]
+        if count > MAX_PROBLEMS_SHOWN:
+            lines.append(f"  ... and {count - MAX_PROBLEMS_SHOWN} more; fix these first.")
+        return "\n".join(lines)
 
 
 def raise_if_any(problems: list[Problem]) -> None:

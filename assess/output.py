@@ -1,25 +1,90 @@
 """Writing the run's files so that a failed run leaves nothing half-written.
 
-Everything is first produced in memory, written into a temporary folder next
-to the output folder, and only then moved into place file by file with
-``os.replace`` (atomic on one file system). A failure before the move leaves
-the output folder as it was.
+Everything is first produced in memory and written into a temporary folder
+next to the output folder; that folder then takes the output folder's place
+in one rename (:func:`write_atomically`). A run that fails leaves the previous
+folder as it was; one that succeeds leaves exactly its own files, no stale
+``report.pdf`` of an earlier ``--format html,pdf`` run.
+
+Text written to CSV is protected from spreadsheet formulas
+(:func:`neutralise_formulas`).
 """
 from __future__ import annotations
 
+import contextlib
 import os
+import re
 import shutil
 import tempfile
 from pathlib import Path
 
 import pandas as pd
 
+from assess.errors import InputError, Problem
 from assess.result import AssessmentResult
+
+#: Everything assess writes into an output folder. A folder holding anything
+#: else is not swapped (it would be lost): the user is asked for another one.
+OUTPUT_NAMES = frozenset({
+    "summary.csv", "motions.csv", "comparison.csv", "summary.xlsx", "report.html", "report.pdf",
+    "calibration.json", "calibration_tests.csv", "fragility",
+    ".DS_Store", "Thumbs.db", "desktop.ini",  # what a file browser leaves in a folder it has shown
+})
+#: First characters that make a spreadsheet read a cell as a formula (OWASP, "CSV Injection"):
+#: = + - @, tab and carriage return; and the quote itself, so that the prefix can be undone exactly.
+_FORMULA_START = ("=", "+", "-", "@", "\t", "\r", "'")
+#: Text that is a plain number (e.g. an id "-5") is no formula and is left as it is.
+_PLAIN_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+
+
+def neutralise_formulas(table: pd.DataFrame) -> pd.DataFrame:
+    """``table`` with every text cell that a spreadsheet would run as a formula made inert.
+
+    A cell written from user text (an item's name ``=HYPERLINK(...)``, a
+    motion ``-M1``) that starts with ``=``, ``+``, ``-``, ``@``, a tab or a
+    carriage return gets a single quote in front, as the OWASP "CSV
+    Injection" page recommends; a spreadsheet then shows it as text. A text
+    starting with a quote gets one more, so that :func:`restore_text` gives
+    back exactly what was written. Only text cells change: numbers (negative
+    ones included) and text that is a plain number (an id ``-5``) are left as
+    they are.
+
+    >>> table = pd.DataFrame({"name": ["=1+2", "-80 freezer", "fridge", "-5"], "x": [-1.5, 2.0, 3.0, 4.0]})
+    >>> neutralise_formulas(table).to_dict("list")
+    {'name': ["'=1+2", "'-80 freezer", 'fridge', '-5'], 'x': [-1.5, 2.0, 3.0, 4.0]}
+    """
+    out = table.copy()
+    for column in out.columns:
+        if _is_text(out[column]):
+            out[column] = out[column].map(_neutralised)
+    return out
+
+
+def _is_text(column: pd.Series) -> bool:
+    """Whether a column may hold text (object or string dtype); numeric columns never change."""
+    return column.dtype == object or pd.api.types.is_string_dtype(column.dtype)
+
+
+def _neutralised(value):
+    if isinstance(value, str) and value.startswith(_FORMULA_START) and not _PLAIN_NUMBER.fullmatch(value):
+        return "'" + value
+    return value
+
+
+def restore_text(table: pd.DataFrame) -> pd.DataFrame:
+    """The text cells of a CSV written through :func:`neutralise_formulas`, as they were."""
+    out = table.copy()
+    for column in out.columns:
+        if _is_text(out[column]):
+            out[column] = out[column].map(
+                lambda v: v[1:] if isinstance(v, str) and v.startswith("'") and v[1:].startswith(_FORMULA_START)
+                else v)
+    return out
 
 
 def csv_text(table: pd.DataFrame) -> str:
-    """A table as CSV text: fixed float format so that reruns compare byte for byte."""
-    return table.to_csv(index=False, float_format="%.6g", lineterminator="\n")
+    """A table as CSV text: formulas neutralised, fixed float format so that reruns compare byte for byte."""
+    return neutralise_formulas(table).to_csv(index=False, float_format="%.6g", lineterminator="\n")
 
 
 def render_outputs(result: AssessmentResult, formats: tuple[str, ...]) -> dict[str, bytes]:
@@ -41,19 +106,101 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...]) -> dict[s
     return files
 
 
-def write_atomically(files: dict[str, bytes], out_dir: Path) -> list[Path]:
-    """Write ``files`` into ``out_dir``: all of them, or (on failure) none of them."""
+def check_output_folder(out_dir: Path) -> None:
+    """Refuse an output folder that :func:`write_atomically` may not replace as a whole.
+
+    It may be new, empty, or hold only what assess writes (:data:`OUTPUT_NAMES`):
+    replacing the folder replaces everything in it, so ``--out .`` or a folder
+    of the user's own documents is refused before anything runs.
+    """
     out_dir = Path(out_dir)
+    if not out_dir.exists() and not out_dir.is_symlink():
+        return
+    if not out_dir.is_dir():
+        raise InputError([Problem(file=str(out_dir), message="the output folder is a file, not a folder.",
+                                  fix="give --out a new folder, or the folder of an earlier run.")])
+    foreign = sorted(entry.name for entry in out_dir.iterdir() if entry.name not in OUTPUT_NAMES)
+    if foreign:
+        shown = ", ".join(name[:60] for name in foreign[:5]) + (f" and {len(foreign) - 5} more"
+                                                                 if len(foreign) > 5 else "")
+        raise InputError([Problem(
+            file=str(out_dir), message=f"the output folder holds files assess did not write ({shown}); "
+            "assess replaces its output folder as a whole, so these would be lost.",
+            fix="give --out a new or empty folder, or the folder of an earlier run.")])
+
+
+def write_atomically(files: dict[str, bytes], out_dir: Path) -> list[Path]:
+    """Make ``out_dir`` hold exactly ``files``: all of them, or (on failure) the folder as it was.
+
+    The files are written into a temporary sibling folder, which then takes
+    ``out_dir``'s place: the old folder is renamed aside, the new one renamed
+    in, the old one deleted. A failure (or Ctrl-C) before the second rename
+    renames the old folder back. Only a crash of the machine between the two
+    renames leaves the old folder under its temporary name
+    (``.<name>-old-...`` beside it) instead of ``out_dir``. ``out_dir`` must
+    pass :func:`check_output_folder`. Names may contain ``/`` (a subfolder).
+    """
+    out_dir = Path(out_dir)
+    check_output_folder(out_dir)
+    if out_dir.is_symlink():
+        out_dir = out_dir.resolve()
     out_dir.parent.mkdir(parents=True, exist_ok=True)
-    staging = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}-", dir=out_dir.parent))
+    staging = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}-new-", dir=out_dir.parent))
+    aside = None
     try:
+        os.chmod(staging, _folder_mode(out_dir))
         for name, content in files.items():
-            (staging / name).write_bytes(content)
-        out_dir.mkdir(exist_ok=True)
-        written = []
-        for name in files:
-            os.replace(staging / name, out_dir / name)
-            written.append(out_dir / name)
-        return written
+            target = staging / name
+            target.parent.mkdir(parents=True, exist_ok=True)
+            target.write_bytes(content)
+        if out_dir.exists():
+            aside = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}-old-", dir=out_dir.parent))
+            os.replace(out_dir, aside)  # aside is an empty folder: rename replaces it
+        try:
+            os.replace(staging, out_dir)
+        except BaseException:
+            if aside is not None:
+                os.replace(aside, out_dir)
+                aside = None
+            raise
+        staging = None
+        return [out_dir / name for name in files]
     finally:
-        shutil.rmtree(staging, ignore_errors=True)
+        for leftover in (staging, aside):
+            if leftover is not None:
+                shutil.rmtree(leftover, ignore_errors=True)
+
+
+def _folder_mode(out_dir: Path) -> int:
+    """Permissions of the new output folder: the old one's, else what the umask gives a new folder."""
+    if out_dir.is_dir():
+        return out_dir.stat().st_mode & 0o7777
+    return 0o777 & ~_umask()
+
+
+def write_file_atomically(path: Path, content: bytes) -> Path:
+    """Write one file (``assess simulate --history``): a temporary sibling renamed over ``path``.
+
+    Other files in its folder are left alone.
+    """
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    handle, temporary = tempfile.mkstemp(prefix=f".{path.name}-", dir=path.parent)
+    try:
+        with os.fdopen(handle, "wb") as stream:
+            stream.write(content)
+        os.chmod(temporary, 0o666 & ~_umask())
+        os.replace(temporary, path)
+        temporary = None
+        return path
+    finally:
+        if temporary is not None:
+            with contextlib.suppress(OSError):
+                os.unlink(temporary)
+
+
+def _umask() -> int:
+    """The process's umask (read by setting it, then put back)."""
+    umask = os.umask(0)
+    os.umask(umask)
+    return umask

@@ -150,7 +150,7 @@ def _motion_record(record_path: str, scale: float, motion: str, row: int, workbo
 
 @functools.lru_cache(maxsize=64)
 def _read_scaled(path: str, scale: float) -> Record:
-    return read_record(path, min_duration_s=MIN_DURATION_S).scaled(scale)
+    return read_record(path, min_duration_s=MIN_DURATION_S, scale=scale)
 
 
 def _measure_pulse_parameters(level_motions: pd.DataFrame, workbook_name: str) -> tuple[pd.DataFrame, list[str]]:

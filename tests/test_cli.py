@@ -20,9 +20,14 @@ SPEC_MOTIONS = ["id", "motion", "direction", "pta_g", "tp_s", "im", "edp_median"
                 "pf_sliding", "sim_sliding_max_cm", "sim_theta_max_over_alpha", "sim_overturned"]
 
 
+def cli_env() -> dict:
+    """The environment of a CLI run in a scratch folder: this checkout first on the path."""
+    return {**os.environ, "PYTHONPATH": os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")])}
+
+
 def run(*args, cwd):
     return subprocess.run([sys.executable, "-m", "assess", *map(str, args)], cwd=cwd,
-                          capture_output=True, text=True)
+                          capture_output=True, text=True, env=cli_env())
 
 
 @pytest.fixture(scope="module")
@@ -236,3 +241,188 @@ def test_calibrate_refuses_a_test_of_an_unknown_specimen(tmp_path):
     done = run("calibrate", KM2010, "--measured", measured, "--out", tmp_path / "cal", cwd=tmp_path)
     assert done.returncode == 2 and "Traceback" not in done.stderr
     assert "FROMA" in done.stderr and "cell A2" in done.stderr and not (tmp_path / "cal").exists()
+
+
+# ------------------------------------------------------------------ writing the output folder
+
+def test_a_later_run_leaves_no_stale_file_of_an_earlier_one(lab_run, tmp_path):
+    """html,pdf then html into one folder: the folder holds this run's files only (no report.pdf)."""
+    import shutil
+
+    scratch, _ = lab_run
+    out = tmp_path / "lab"
+    shutil.copytree(scratch / "reports" / "lab-2in50", out)
+    done = run(LAB, "--hazard", "2in50", "--format", "html", "--out", out, "--quiet", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    assert sorted(p.name for p in out.iterdir()) == ["comparison.csv", "motions.csv", "report.html", "summary.csv"]
+    assert [p.name for p in tmp_path.iterdir()] == ["lab"]  # no temporary folder left beside it
+    umask = os.umask(0)
+    os.umask(umask)
+    assert out.stat().st_mode & 0o777 == 0o777 & ~umask  # a folder as mkdir makes it, not mkdtemp's 0700
+
+
+def test_an_output_folder_holding_other_files_is_refused_before_running(tmp_path):
+    (tmp_path / "notes.txt").write_text("mine\n")
+    done = run(LAB, "--hazard", "2in50", "--out", tmp_path, cwd=tmp_path)
+    assert done.returncode == 2 and "Traceback" not in done.stderr
+    assert "holds files assess did not write (notes.txt)" in done.stderr and "reading" not in done.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["notes.txt"]
+
+
+def test_a_failed_swap_puts_the_previous_folder_back(tmp_path, monkeypatch):
+    from assess import output
+
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "summary.csv").write_text("previous\n")
+    (out / "report.pdf").write_text("previous pdf\n")
+    real_replace, calls = os.replace, []
+
+    def failing_second_rename(source, target):
+        calls.append((source, target))
+        if len(calls) == 2:
+            raise OSError("disk gone")
+        return real_replace(source, target)
+
+    monkeypatch.setattr(output.os, "replace", failing_second_rename)
+    with pytest.raises(OSError, match="disk gone"):
+        output.write_atomically({"summary.csv": b"new\n"}, out)
+    assert (out / "summary.csv").read_text() == "previous\n" and (out / "report.pdf").exists()
+    assert [p.name for p in tmp_path.iterdir()] == ["out"]
+    monkeypatch.setattr(output.os, "replace", real_replace)
+    assert output.write_atomically({"summary.csv": b"new\n"}, out) == [out / "summary.csv"]
+    assert sorted(p.name for p in out.iterdir()) == ["summary.csv"] and [p.name for p in tmp_path.iterdir()] == ["out"]
+
+
+# ------------------------------------------------------------------ user text in CSV files and figures
+
+def test_formulas_are_neutralised_in_the_csv_files_and_mathtext_names_are_drawn(tmp_path):
+    """Names and ids a spreadsheet would run as formulas get a leading quote in summary.csv and
+    motions.csv; numbers, negative ones included, do not; a rerun compares the items by their real ids.
+    An item named with matplotlib mathtext is drawn as text (the run used to crash after simulating)."""
+    import csv
+
+    import openpyxl
+
+    from workbooks import good_sheets, write_workbook
+    sheets = good_sheets()
+    sheets["hazard"] = [{"level": "2in50", "motion": "M1", "floor": "all", "pta_g": 0.5, "tp_s": 1.0}]
+    sheets["equipment"][3]["name"], sheets["equipment"][3]["mu"] = "X", 0.9  # BSC-3: im = 0.5/0.9 - 1 < 0
+    book = write_workbook(tmp_path / "wb.xlsx", sheets)
+    workbook = openpyxl.load_workbook(book)
+    texts = {("equipment", "A2"): "=1+1", ("equipment", "B2"): '=HYPERLINK("http://x.example","y")',
+             ("equipment", "B3"): "@SUM(A1)", ("equipment", "B5"): r"Freezer $\foo$", ("hazard", "B2"): "+M1"}
+    for (sheet, ref), text in texts.items():
+        workbook[sheet][ref].value = text
+        workbook[sheet][ref].data_type = "s"  # text that starts with '=', not a formula
+    workbook.save(book)
+
+    done = run(book, "--hazard", "2in50", "--out", tmp_path / "out", "--quiet", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    with open(tmp_path / "out" / "summary.csv", newline="") as stream:
+        summary = {row["id"]: row for row in csv.DictReader(stream)}
+    assert set(summary) == {"'=1+1", "FRZ-2", "BSC-3"}
+    assert summary["'=1+1"]["name"] == "'=HYPERLINK(\"http://x.example\",\"y\")"
+    assert summary["FRZ-2"]["name"] == "'@SUM(A1)"
+    assert summary["BSC-3"]["name"] == r"Freezer $\foo$"
+    assert float(summary["BSC-3"]["im"]) == pytest.approx(0.5 / 0.9 - 1.0, abs=1e-5)  # written as -0.444444
+    assert summary["BSC-3"]["im"].startswith("-0.444")
+    with open(tmp_path / "out" / "motions.csv", newline="") as stream:
+        assert {row["motion"] for row in csv.DictReader(stream)} == {"'+M1"}
+    assert r"Freezer $\foo$" in (tmp_path / "out" / "report.html").read_text()
+    assert (tmp_path / "out" / "report.pdf").read_bytes().startswith(b"%PDF")
+
+    again = run(book, "--hazard", "2in50", "--out", tmp_path / "out", "--format", "html", "--quiet", cwd=tmp_path)
+    assert again.returncode == 0, again.stderr
+    with open(tmp_path / "out" / "comparison.csv", newline="") as stream:
+        changes = {row["id"]: row["change"] for row in csv.DictReader(stream)}
+    assert changes == {"'=1+1": "same", "FRZ-2": "same", "BSC-3": "same"}
+
+
+# ------------------------------------------------------------------ Ctrl-C and a closed pipe
+
+INTERRUPTED = "assess: interrupted; nothing was written."
+
+
+@pytest.mark.parametrize("phase", ["reading", "preparing the motions", "simulated", "rendering"])
+def test_ctrl_c_in_every_phase_exits_130_in_one_line(tmp_path, phase):
+    """SIGINT when the run reports ``phase`` (the simulation runs in numba's threads; the PDF in
+    WeasyPrint, whose cffi callbacks swallow exceptions): exit 130, one line, the folder untouched."""
+    import signal
+
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "summary.csv").write_text("previous\n")
+    process = subprocess.Popen([sys.executable, "-m", "assess", str(LAB), "--hazard", "2in50", "--out", str(out)],
+                               cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                               env=cli_env())
+    after = []
+    for line in process.stderr:
+        if after or phase in line:
+            if not after:
+                process.send_signal(signal.SIGINT)
+                after.append("")
+                continue
+            after.append(line.rstrip("\n"))
+    process.wait(timeout=600)
+    assert after, f"the run never reported '{phase}'"
+    assert process.returncode == 130, after
+    assert after[-1] == INTERRUPTED and after.count(INTERRUPTED) == 1, after
+    assert all(line.startswith("assess: ") for line in after[1:]), after  # progress printed before it landed
+    assert sorted(p.name for p in out.iterdir()) == ["summary.csv"] and (out / "summary.csv").read_text() == "previous\n"
+    assert [p.name for p in tmp_path.iterdir()] == ["out"]
+
+
+def test_an_interrupt_a_library_swallows_still_stops_the_run(tmp_path, monkeypatch, capsys):
+    """WeasyPrint draws through cffi callbacks, which print and drop an exception raised in them."""
+    import signal
+
+    import assess.report
+
+    def render_swallowing(html):
+        try:
+            os.kill(os.getpid(), signal.SIGINT)
+            for _ in range(10**6):
+                pass
+        except KeyboardInterrupt:
+            pass  # what a cffi callback does with it
+        return b"%PDF-1.7\n"
+
+    monkeypatch.setattr(assess.report, "render_pdf", render_swallowing)
+    code = cli.main([str(LAB), "--hazard", "2in50", "--out", str(tmp_path / "out"), "--quiet"])
+    assert code == 130 and capsys.readouterr().err.splitlines() == [INTERRUPTED]
+    assert not (tmp_path / "out").exists()
+
+
+def test_an_interrupt_wrapped_in_a_system_error_exits_130(tmp_path, monkeypatch, capsys):
+    """numba's threads may turn KeyboardInterrupt into 'SystemError: ... returned a result with an exception set'."""
+    import assess.pipeline
+
+    def wrapped(*args, **kwargs):
+        try:
+            raise KeyboardInterrupt
+        except KeyboardInterrupt as interrupt:
+            raise SystemError("<built-in function> returned a result with an exception set") from interrupt
+
+    monkeypatch.setattr(assess.pipeline, "run_assessment", wrapped)
+    code = cli.main([str(LAB), "--hazard", "2in50", "--out", str(tmp_path / "out"), "--quiet"])
+    assert code == 130 and capsys.readouterr().err.splitlines() == [INTERRUPTED]
+
+
+def test_a_closed_pipe_exits_quietly(tmp_path):
+    """``assess simulate --json | head -c 10``: the reader has gone; no traceback, no 'internal error'."""
+    read_end, write_end = os.pipe()
+    os.close(read_end)  # the reader is gone before anything is written
+    try:
+        done = subprocess.run([sys.executable, "-m", "assess", "simulate", "--height-cm", "200", "--width-cm", "80",
+                               "--mu", "0.3", "--pulse", "B", "--ap-g", "0.5", "--tp-s", "1", "--json"],
+                              cwd=tmp_path, stdout=write_end, stderr=subprocess.PIPE, text=True, env=cli_env())
+    finally:
+        os.close(write_end)
+    assert done.returncode == 141 and done.stderr == ""
+    shell = subprocess.run("set -o pipefail; " + " ".join([sys.executable, "-m", "assess", "simulate",
+                           "--height-cm", "200", "--width-cm", "80", "--mu", "0.3", "--pulse", "B", "--ap-g", "0.5",
+                           "--tp-s", "1", "--json"]) + " | head -c 10", shell=True, executable="/bin/bash",
+                           cwd=tmp_path, capture_output=True, text=True, env=cli_env())
+    assert shell.stdout == '{\n  "alpha' and "Error" not in shell.stderr and "internal" not in shell.stderr
+    assert shell.returncode in (0, 141)  # 0 when head read everything before closing

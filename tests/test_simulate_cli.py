@@ -2,8 +2,10 @@
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -17,9 +19,14 @@ SPEC_KEYS = {"alpha_rad", "p_rad_s", "mode", "sliding_max_cm", "sliding_residual
              "theta_max_over_alpha", "uplift", "overturned"}
 
 
+ROOT = Path(__file__).resolve().parents[1]
+
+
 def simulate(*args, cwd=None):
+    """The command run from ``cwd``, importing this checkout (not whatever assess is installed)."""
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")])}
     return subprocess.run([sys.executable, "-m", "assess", "simulate", *map(str, args)],
-                          capture_output=True, text=True, cwd=cwd)
+                          capture_output=True, text=True, cwd=cwd, env=env)
 
 
 def test_rectangular_pulse_gives_newmark_closed_form():
@@ -77,6 +84,7 @@ def test_record_and_history(tmp_path):
     (["--record", "missing.csv"], "missing.csv: the record file does not exist"),
     (["--pulse", "B", "--ap-g", 0.5, "--tp-s", 1, "--mu-static", 0.1], "--mu-static 0.1 is below --mu"),
     (["--pulse", "B", "--ap-g", 0.5, "--tp-s", 1, "--cg-height-cm", 300], "above the top"),
+    (["--pulse", "B", "--ap-g", 0.5, "--tp-s", 1, "--history", "."], "--history names a folder"),
 ])
 def test_wrong_input_exits_2_without_traceback(args, expected, tmp_path):
     done = simulate("--height-cm", 200, "--width-cm", 80, "--mu", 0.3, *args, cwd=tmp_path)

@@ -295,7 +295,25 @@ def identify_pulse(accel_g, dt_s: float, *, models=PULSE_MODELS) -> PulseFit:
         raise ValueError("accel_g is zero throughout: there is no pulse to find")
     if not (np.isfinite(dt_s) and dt_s > 0.0):
         raise ValueError(f"dt_s must be positive, got {dt_s!r}")
+    if dt_s > TP_MIN_S or (accel_g.size - 1) * dt_s < TP_MIN_S:
+        raise ValueError(f"a record of {accel_g.size} samples at {dt_s:g} s cannot hold a pulse of "
+                         f"{TP_MIN_S:g} to {TP_MAX_S:g} s (the periods searched)")
+    # Fit a record of unit size: a record scaled by 1e-300 (a workbook's scale) has the same pulse,
+    # and its squares would underflow. A power of two scales every operation exactly.
+    unit_g = 2.0 ** float(np.floor(np.log2(np.max(np.abs(accel_g)))))
+    return _rescaled(_identify_unit_pulse(accel_g / unit_g, dt_s, models), unit_g)
 
+
+def _rescaled(fit: "PulseFit", unit_g: float) -> "PulseFit":
+    """``fit`` of a record divided by ``unit_g``, as the fit of the record itself (amplitudes × unit_g)."""
+    def scale(one):
+        return replace(one, vp_m_s=one.vp_m_s * unit_g, pgv_m_s=one.pgv_m_s * unit_g,
+                       pga_g=one.pga_g * unit_g, ap_g=one.ap_g * unit_g)
+    return replace(scale(fit), by_model=tuple(scale(one) for one in fit.by_model))
+
+
+def _identify_unit_pulse(accel_g, dt_s, models) -> PulseFit:
+    """:func:`identify_pulse` of a checked record whose peak is between 1 and 2 g."""
     velocity = _velocity_m_s(accel_g, dt_s)
     time_s = np.arange(velocity.size) * dt_s
     fit_time_s, fit_velocity = _block_average(time_s, velocity, dt_s)

@@ -16,11 +16,22 @@ Formats (SPEC §1):
 Units are read from the header, never guessed. A byte-order mark (UTF-8 or
 UTF-16) and CRLF or CR line ends are accepted. Every problem raises
 :class:`~assess.errors.InputError` naming the file and the line, what is wrong
-and how to fix it.
+and how to fix it; a message never quotes the file's text (it may not be a
+record at all), only its numbers and, where they are plain names such as
+``time_ms``, its header cells.
+
+What is read is bounded: at most :data:`MAX_RECORD_BYTES` bytes and
+:data:`MAX_RECORD_SAMPLES` samples, text only (a NUL byte outside UTF-16 is
+binary data), at a step between :data:`MIN_STEP_S` and :data:`MAX_STEP_S`.
+:func:`check_record_location` keeps the records a workbook names inside its
+folder.
 """
 from __future__ import annotations
 
+import errno
+import os
 import re
+import stat
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -41,6 +52,24 @@ MAX_PLAUSIBLE_PGA_G = 5.0
 #: Shortest record [s] a caller asking for a duration check should demand
 #: (``read_record(path, min_duration_s=MIN_DURATION_S)``).
 MIN_DURATION_S = 2.0
+#: Most samples a record may hold: 16 minutes at 1 kHz, 2.8 hours at 100 Hz, far
+#: longer than a floor motion. The simulation's time and memory grow with the
+#: sample count.
+MAX_RECORD_SAMPLES = 1_000_000
+#: Largest record file [bytes]: MAX_RECORD_SAMPLES samples written as
+#: ``time,acceleration`` lines of up to ~30 characters, with room for comments.
+#: Reading is bounded by it, whatever the file claims to be (``/proc`` files
+#: report a size of 0).
+MAX_RECORD_BYTES = 32 * 1024 * 1024
+#: Finest and coarsest time step [s] accepted. Above 0.1 s a record holds
+#: nothing above 5 Hz (its Nyquist frequency), where floor motions carry much of
+#: their energy, and the solvers, which read it as piecewise linear, would shake
+#: the item with a coarse polygon; below 0.1 ms (10 kHz) no strong-motion or
+#: shake-table instrument samples, and such a step is rather a time column in
+#: another unit than seconds.
+MIN_STEP_S, MAX_STEP_S = 1e-4, 0.1
+#: A header cell is named in a message only when it is a plain name like this one.
+_PLAIN_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,39}")
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _LINE_END = re.compile(r"\r\n|\r|\n")
 _PYSLAMMER_HEADER = "time (s),acceleration (g"
@@ -94,13 +123,50 @@ class _Samples:
     lines: np.ndarray    # file line (1-based) of each value
     unit: str            # key of ACCELERATION_UNITS_TO_G
     unit_source: str     # where the unit was declared, for messages
+    step_source: str     # where the step was read, for messages
+    step_line: int       # ... and on which line
+
+
+def _named(cell: str, otherwise: str) -> str:
+    """``'cell'`` when the header cell is a plain name, else ``otherwise`` (file text is never echoed)."""
+    cell = cell.strip()
+    return f"'{cell}'" if _PLAIN_NAME.fullmatch(cell) else otherwise
 
 
 def _problem(path, message, fix, line=None):
     return InputError([Problem(file=str(path), message=message, fix=fix, row=line)])
 
 
-def read_record(path, *, min_duration_s: float = 0.0, max_pga_g: float = MAX_PLAUSIBLE_PGA_G) -> Record:
+def check_record_location(record_path, folder) -> str | None:
+    """Why a workbook in ``folder`` may not name ``record_path`` as a record; None when it may.
+
+    A workbook names its records relative to its own folder (SPEC §1); one
+    that reaches outside it (``../../etc/passwd``, ``/proc/self/environ``, a
+    link inside the folder that points elsewhere) would make assess read, and
+    a message about it quote, a file the user never meant to hand over. So
+    the record must lie in ``folder`` or below it once every symbolic link is
+    followed. Nothing is opened here.
+
+    >>> check_record_location("/data/site/records/lg.csv", "/data/site") is None
+    True
+    >>> check_record_location("/data/site/../secret.csv", "/data/site")[:40]
+    "the record file is outside the workbook'"
+    """
+    real = os.path.realpath(record_path)
+    base = os.path.realpath(folder)
+    try:
+        inside = os.path.commonpath([real, base]) == base
+    except ValueError:  # different drives (Windows)
+        inside = False
+    if inside:
+        return None
+    return (f"the record file is outside the workbook's folder {base} (it is {real[:200]}); records are "
+            "read only from that folder and its subfolders, so that a workbook cannot make assess read "
+            "other files of this machine.")
+
+
+def read_record(path, *, min_duration_s: float = 0.0, max_pga_g: float = MAX_PLAUSIBLE_PGA_G,
+                scale: float = 1.0) -> Record:
     """Read an acceleration record (CSV, one column with ``dt_s``, or PEER ``.AT2``).
 
     Parameters
@@ -115,6 +181,9 @@ def read_record(path, *, min_duration_s: float = 0.0, max_pga_g: float = MAX_PLA
     max_pga_g : float, default :data:`MAX_PLAUSIBLE_PGA_G`
         Refuse a record whose peak acceleration exceeds this [g]: such a
         value is almost always a unit mistake (m/s² or cm/s² read as g).
+    scale : float, default 1
+        Factor applied to the record (the workbook's ``scale``); the scaled
+        record must still peak below ``max_pga_g`` and above zero.
 
     Returns
     -------
@@ -138,15 +207,13 @@ def read_record(path, *, min_duration_s: float = 0.0, max_pga_g: float = MAX_PLA
     (0.01, [0.0, 0.1, -0.05])
     """
     path = Path(path)
-    if not path.is_file():
-        raise _problem(path, "the record file does not exist.",
-                       "check the path (relative paths are taken from the workbook's folder).")
-    try:
-        raw = path.read_bytes()
-    except OSError as error:
-        raise _problem(path, f"the record file cannot be read ({error.strerror}).",
-                       "check that the file is readable and not locked by another program.") from None
-    lines = _LINE_END.split(_decode(raw))
+    raw = _read_bounded(path)
+    text = _decode(path, raw)
+    if max(text.count("\n"), text.count("\r")) > MAX_RECORD_SAMPLES + 10_000:
+        raise _problem(path, f"the file has more than {MAX_RECORD_SAMPLES:,} lines; a record may hold at most "
+                       f"{MAX_RECORD_SAMPLES:,} samples.", "give one floor motion per file, resampled to a "
+                       "coarser step if it is sampled more finely than needed (0.005 s is usual).")
+    lines = _LINE_END.split(text)
     if not any(line.strip() for line in lines):
         raise _problem(path, "the file is empty.",
                        "give a header (e.g. time_s,accel_g) and one row per sample.")
@@ -156,20 +223,134 @@ def read_record(path, *, min_duration_s: float = 0.0, max_pga_g: float = MAX_PLA
         samples = _read_csv(path, lines)
     accel_g = samples.values * ACCELERATION_UNITS_TO_G[samples.unit]
     _check_samples(path, samples, accel_g, min_duration_s, max_pga_g)
+    if scale != 1.0:
+        accel_g = _scaled(path, samples, accel_g, scale, max_pga_g)
     return Record(accel_g=accel_g, dt_s=samples.dt_s, name=path.name)
 
 
-def _decode(raw: bytes) -> str:
-    """Text of a file: UTF-16 when it starts with a UTF-16 byte-order mark, else UTF-8 (mark dropped)."""
+#: What an operating-system error opening a record means, and what to do.
+_OPEN_ERRORS = {
+    errno.ENOENT: ("the record file does not exist.",
+                   "check the path (relative paths are taken from the workbook's folder)."),
+    errno.ENOTDIR: ("the record file does not exist (a part of its path is not a folder).",
+                    "check the path (relative paths are taken from the workbook's folder)."),
+    errno.ELOOP: ("the path is a loop of symbolic links: it leads back to itself and names no file.",
+                  "point the record path (or the link) at the record file itself."),
+    errno.ENAMETOOLONG: ("the path is too long for the file system (a file or folder name over 255 "
+                         "characters, or the whole path over 4096).", "check the path; shorten the names."),
+    errno.EACCES: ("the record file cannot be read (permission denied).",
+                   "make the file readable by the user running assess."),
+}
+
+
+def record_file_problem(path) -> str | None:
+    """What is wrong with ``path`` as a record file before it is read (None: it is a regular file).
+
+    Never raises: a loop of links, a name too long for the file system or a
+    missing file is said in words (``Path.is_file`` raises on a name over 255
+    characters; ``Path.resolve`` on a loop). For readers of the workbook,
+    which check the path of every record before anything is read.
+
+    >>> record_file_problem("/nowhere/at/all.csv")
+    'the record file does not exist.'
+    """
+    try:
+        mode = os.stat(path).st_mode
+    except OSError as error:
+        return _OPEN_ERRORS.get(error.errno, (f"the record file cannot be opened ({error.strerror}).",))[0]
+    except ValueError:  # a NUL character in the path
+        return "the path holds a NUL character."
+    if stat.S_ISDIR(mode):
+        return "this is a folder, not a record file."
+    if not stat.S_ISREG(mode):
+        return "this is not a regular file (a device, a pipe or a socket)."
+    return None
+
+
+def _read_bounded(path: Path) -> bytes:
+    """The bytes of the regular file ``path``: at most :data:`MAX_RECORD_BYTES`, else refused.
+
+    Opened without blocking (a FIFO named as a record must not hang the run)
+    and checked to be a regular file on the open descriptor itself.
+    """
+    try:
+        descriptor = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_BINARY", 0))
+    except OSError as error:
+        message, fix = _OPEN_ERRORS.get(error.errno, (
+            f"the record file cannot be opened ({error.strerror}).",
+            "check that the file exists, is readable and not locked by another program."))
+        raise _problem(path, message, fix) from None
+    except ValueError:
+        raise _problem(path, "the path holds a NUL character.", "check the path.") from None
+    try:
+        mode = os.fstat(descriptor).st_mode
+        if stat.S_ISDIR(mode):
+            raise _problem(path, "this is a folder, not a record file.", "name the record file in the folder.")
+        if not stat.S_ISREG(mode):
+            raise _problem(path, "this is not a regular file (a device, a pipe or a socket).",
+                           "save the record as a CSV or .AT2 file and name that file.")
+        with os.fdopen(descriptor, "rb", closefd=False) as stream:
+            raw = stream.read(MAX_RECORD_BYTES + 1)
+    except OSError as error:
+        raise _problem(path, f"the record file cannot be read ({error.strerror}).",
+                       "check that the file is readable and not locked by another program.") from None
+    finally:
+        os.close(descriptor)
+    if len(raw) > MAX_RECORD_BYTES:
+        raise _problem(path, f"the file is larger than {MAX_RECORD_BYTES // 2**20} MB, more than a record of "
+                       f"{MAX_RECORD_SAMPLES:,} samples needs.", "give one floor motion per file, resampled to "
+                       "a coarser step if it is sampled more finely than needed (0.005 s is usual).")
+    return raw
+
+
+def _decode(path: Path, raw: bytes) -> str:
+    """Text of a file: UTF-16 when it starts with a UTF-16 byte-order mark, else UTF-8 (mark dropped).
+
+    A NUL byte elsewhere means binary data (a spreadsheet, an archive, a
+    device dump), not a record: refused, naming the line it is on.
+    """
     if raw.startswith((b"\xff\xfe", b"\xfe\xff")):
         return raw.decode("utf-16", errors="replace")
+    nul = raw.find(b"\x00")
+    if nul >= 0:
+        line = raw.count(b"\n", 0, nul) + 1
+        raise _problem(path, f"the file holds binary data (a NUL byte on line {line}), not the text of a "
+                       "record.", "give the record as a CSV or PEER .AT2 text file (a spreadsheet must be "
+                       "saved as CSV; UTF-16 text needs its byte-order mark).", line=line)
     return raw.decode("utf-8-sig", errors="replace")
+
+
+def _scaled(path, samples: _Samples, accel_g, scale: float, max_pga_g: float):
+    """``accel_g`` times the workbook's ``scale``, refused when the product is no usable motion."""
+    scaled = accel_g * scale
+    pga_g = float(np.max(np.abs(scaled))) if np.isfinite(scale) else float("nan")
+    if not np.isfinite(pga_g) or pga_g > max_pga_g:
+        raise _problem(path, f"the record times its scale {scale:g} peaks at {pga_g:.3g} g, more than "
+                       f"{max_pga_g:g} g.", "check the scale: it multiplies the record as read (in g).")
+    if pga_g < np.finfo(float).tiny:
+        raise _problem(path, f"the record times its scale {scale:g} is zero (its peak "
+                       f"{float(np.max(np.abs(accel_g))):.3g} g times the scale is below the smallest "
+                       "normal floating-point number).", "check the scale: it multiplies the record as read.")
+    return scaled
 
 
 def _check_samples(path, samples: _Samples, accel_g, min_duration_s, max_pga_g):
     """Checks common to every format: enough samples, finite values, a plausible peak, the duration."""
     if accel_g.size < 2:
         raise _problem(path, f"the record has {accel_g.size} sample(s).", "give at least two samples.")
+    if accel_g.size > MAX_RECORD_SAMPLES:
+        raise _problem(path, f"the record has {accel_g.size:,} samples, more than {MAX_RECORD_SAMPLES:,}.",
+                       "give one floor motion per file, resampled to a coarser step if it is sampled more "
+                       "finely than needed (0.005 s is usual).")
+    if not MIN_STEP_S <= samples.dt_s <= MAX_STEP_S:
+        why = (f"a step over {MAX_STEP_S:g} s cannot carry the frequencies (up to 10-25 Hz) of a floor motion"
+               if samples.dt_s > MAX_STEP_S else
+               f"no accelerograph samples finer than {MIN_STEP_S:g} s (10 kHz), and the simulation's cost "
+               "grows with the number of samples")
+        raise _problem(path, f"the time step is {samples.dt_s:g} s ({samples.step_source}); a record's step "
+                       f"must be between {MIN_STEP_S:g} s and {MAX_STEP_S:g} s: {why}.",
+                       "check that the step is in seconds; resample the record to 0.005-0.02 s if needed.",
+                       line=samples.step_line)
     bad = np.flatnonzero(~np.isfinite(accel_g))
     if bad.size:
         line = int(samples.lines[bad[0]])
@@ -190,6 +371,10 @@ def _check_samples(path, samples: _Samples, accel_g, min_duration_s, max_pga_g):
                        f"{samples.dt_s:g} s), less than {min_duration_s:g} s.",
                        "give the whole record; if it is complete, check that the step (dt_s or the "
                        "time column) is in seconds.", line=int(samples.lines[-1]))
+    if not np.any(accel_g):
+        raise _problem(path, f"the acceleration is zero at every one of the {accel_g.size} samples: there is "
+                       "no motion to simulate.", "check that the file is the record meant and that its "
+                       "acceleration column holds the values.")
 
 
 def _unit_fix(samples: _Samples, pga_g: float, max_pga_g: float) -> str:
@@ -225,17 +410,21 @@ def _read_at2(path, lines) -> _Samples:
     for number, line in enumerate(lines[4:], start=5):
         numbers = _numbers_of(line)
         if numbers is None:
-            raise _problem(path, f"line {number} is not a row of numbers: '{line.strip()[:60]}'.",
+            raise _problem(path, f"line {number} is not a row of numbers (it holds other text).",
                            "remove the stray text.", line=number)
         values.extend(numbers)
         where.extend([number] * len(numbers))
+        if len(values) > MAX_RECORD_SAMPLES:
+            raise _problem(path, f"the file holds more than {MAX_RECORD_SAMPLES:,} samples (line {number}).",
+                           "give one floor motion per file.", line=number)
     if len(values) != npts:
         span = "" if not where else f" (line {where[0]})" if where[-1] == where[0] else \
             f" (lines {where[0]} to {where[-1]})"
         raise _problem(path, f"line 4 says NPTS={npts} but {len(values)} values follow{span}.",
                        "the file may be truncated or edited: download it again from the PEER NGA "
                        "database, or correct NPTS on line 4.", line=4)
-    return _Samples(np.array(values, dtype=float), dt, np.array(where), "g", "the .AT2 format (always g)")
+    return _Samples(np.array(values, dtype=float), dt, np.array(where), "g", "the .AT2 format (always g)",
+                    "DT on line 4", 4)
 
 
 def _check_at2_quantity(path, line):
@@ -243,12 +432,12 @@ def _check_at2_quantity(path, line):
     text = line.upper()
     for quantity, kind in (("VELOCITY", ".VT2"), ("DISPLACEMENT", ".DT2")):
         if quantity in text and "ACCELERATION" not in text:
-            raise _problem(path, f"line 3 says this file holds a {quantity.lower()} history "
-                           f"('{line.strip()[:60]}').", f"give the acceleration file (.AT2) of the record, "
+            raise _problem(path, f"line 3 says this file holds a {quantity.lower()} history.",
+                           f"give the acceleration file (.AT2) of the record, "
                            f"not the {kind} one.", line=3)
     unit = re.search(r"UNITS\s+OF\s+([A-Z/0-9*^.]+)", text)
     if unit and unit.group(1).rstrip(".") != "G":
-        raise _problem(path, f"line 3 gives the units as {unit.group(1)}; a .AT2 file is read in g.",
+        raise _problem(path, f"line 3 gives the units as {unit.group(1)[:12]}; a .AT2 file is read in g.",
                        "save the record as a CSV whose header names its unit "
                        "(time_s,accel_cm_s2 or accel_m_s2).", line=3)
 
@@ -260,7 +449,7 @@ def _at2_npts_dt(path, line) -> tuple[int, float]:
     if not (npts and dt):
         old = re.match(rf"\s*(\d+)\s*,?\s+({_NUMBER})\s+NPTS\s*,\s*DT", line, re.I)
         if not old:
-            raise _problem(path, f"line 4 should give NPTS= and DT=, found '{line.strip()}'.",
+            raise _problem(path, "line 4 should give NPTS= and DT= (e.g. NPTS= 7998, DT= .0050 SEC).",
                            "give the file as downloaded from the PEER NGA database.", line=4)
         count, step = int(old.group(1)), float(old.group(2))
     else:
@@ -335,19 +524,27 @@ def _read_csv(path, lines) -> _Samples:
                            line=number)
         if len(cells) != layout.n_columns and all(_is_number(c) for c in cells):
             raise _problem(path, f"line {number} has {len(cells)} value(s) where the header (line "
-                           f"{header_line}) names {layout.n_columns} column(s): '{row[:60]}'.",
+                           f"{header_line}) names {layout.n_columns} column(s).",
                            "give one value per column on every row.", line=number)
+        if len(where) >= MAX_RECORD_SAMPLES:
+            raise _problem(path, f"the file holds more than {MAX_RECORD_SAMPLES:,} samples (line {number}).",
+                           "give one floor motion per file.", line=number)
         try:
             accel.append(float(cells[layout.accel_col]))
             if layout.time_col is not None:
                 times.append(float(cells[layout.time_col]))
         except (ValueError, IndexError):
-            raise _problem(path, f"line {number} is not a row of numbers: '{row[:60]}'.",
+            raise _problem(path, f"line {number} is not a row of numbers (it holds other text).",
                            "remove the stray text or comment it out with #.", line=number) from None
         where.append(number)
     dt = layout.dt_s if layout.time_col is None else _step_of_times(path, times, where, layout.dt_s)
-    source = f"the header '{layout.accel_name}' (line {header_line})"
-    return _Samples(np.array(accel, dtype=float), dt, np.array(where), layout.unit, source)
+    source = f"the header '{layout.accel_name}' (line {header_line})"  # a name the header layout accepted
+    if layout.time_col is None or len(where) < 2:
+        step_source, step_line = f"dt_s in the header, line {header_line}", header_line
+    else:
+        step_source, step_line = f"the time column, lines {where[0]} and {where[1]}", where[1]
+    return _Samples(np.array(accel, dtype=float), dt, np.array(where), layout.unit, source,
+                    step_source, step_line)
 
 
 def _is_number(text) -> bool:
@@ -370,7 +567,7 @@ def _header_layout(path, header, number) -> _Layout:
     if header.lower().startswith(_PYSLAMMER_HEADER):  # pyslammer's comment header
         return _Layout(0, 1, "g", None, 2, "acceleration (g's)")
     if "," not in header and len(re.split(r"[;\t ]+", header.strip())) > 1:
-        raise _problem(path, f"the header '{header.strip()}' has no commas; columns must be separated by "
+        raise _problem(path, f"the header (line {number}) has no commas; columns must be separated by "
                        "commas.", "save the file as CSV (comma-separated), e.g. time_s,accel_g.", line=number)
     cells = _cells(header)
     try:
@@ -395,18 +592,20 @@ def _header_layout(path, header, number) -> _Layout:
         elif name.startswith("accel"):
             unit = re.fullmatch(r"accel(?:eration)?_(g|m_s2|cm_s2|gal)", name)
             if unit is None:
-                raise _problem(path, f"the header '{header.strip()}' does not name the acceleration with its "
-                               f"unit ('{cell}').", _HEADER_FIX, line=number)
+                raise _problem(path, f"the header (line {number}) does not name the acceleration with its "
+                               f"unit ({_named(cell, 'column ' + str(index + 1))}).", _HEADER_FIX, line=number)
             accel_cols.append((index, unit.group(1), name))
         elif name.startswith("time"):
-            raise _problem(path, f"the header names the time '{cell}'; only seconds are read (time_s).",
+            raise _problem(path, f"the header names the time {_named(cell, 'in column ' + str(index + 1))}; "
+                           "only seconds are read (time_s).",
                            "give the times in seconds under the header time_s.", line=number)
     for kind, found in (("time", [columns[i] for i in time_cols]), ("acceleration", [a[2] for a in accel_cols])):
         if len(found) > 1:
-            raise _problem(path, f"the header names the {kind} {len(found)} times ({', '.join(found)}).",
+            raise _problem(path, f"the header names the {kind} {len(found)} times "
+                           f"({', '.join(found)}).",
                            f"keep one {kind} column per file.", line=number)
     if not accel_cols:
-        raise _problem(path, f"the header '{header.strip()}' does not name the acceleration with its unit.",
+        raise _problem(path, f"the header (line {number}) does not name the acceleration with its unit.",
                        _HEADER_FIX, line=number)
     if dt_s is not None and not (np.isfinite(dt_s) and dt_s > 0.0):
         raise _problem(path, f"the header gives dt_s={dt_s:g}; the step must be a positive number of seconds.",

@@ -365,7 +365,7 @@ def _record_path(row: Row, folder: Path, headers: dict[str, Header], report: She
     text = row.values.get("record") or ""
     if not text:
         return ""
-    path = (folder / text).resolve()
+    path = (folder / text).absolute()  # never .resolve(): it raises on a symlink loop
     if not path.is_file():
         report.at(row.number, headers.get("record"),
                   f"the record file '{text}' was not found (looked for {path}).",

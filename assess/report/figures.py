@@ -81,6 +81,20 @@ def edp_median(im, zeta, eta):
 
 
 # --------------------------------------------------------------------------- helpers
+def plain_text(text) -> str:
+    r"""``text`` as matplotlib must draw it, character for character.
+
+    Matplotlib reads text between two ``$`` as mathtext (TeX-like), so an item
+    named ``Freezer $\foo$`` is parsed, and fails, when the figure is drawn.
+    Every ``$`` of user text is escaped (``\$``): with no unescaped ``$`` left
+    the text is not math, and matplotlib draws each ``\$`` as ``$``.
+
+    >>> print(plain_text("Freezer $\\foo$ (5$)"))
+    Freezer \$\foo\$ (5\$)
+    """
+    return str(text).replace("$", r"\$")
+
+
 def _new_figure(height_in: float, width_in: float = FIGURE_WIDTH_IN) -> Figure:
     figure = Figure(figsize=(width_in, height_in), layout="constrained")
     FigureCanvasAgg(figure)  # a renderer for measuring labels
@@ -113,6 +127,7 @@ def _place_labels(axes, points, labels, colours, fontsize=6.5) -> None:
                (14, 0), (-14, 0), (10, 20), (10, -25)]
     placed = []
     for (x, y), label, colour in zip(points, labels, colours):
+        label = plain_text(label)
         chosen = None
         for dx, dy in offsets:
             text = axes.annotate(label, (x, y), xytext=(dx, dy), textcoords="offset points",
@@ -222,7 +237,7 @@ def regression_figure(result, table3: pd.DataFrame | None = None) -> str:
             for equipment, group in table.groupby("equipment", sort=False):
                 axes.scatter(group["im"], group["edp"], s=14, marker=markers.get(equipment, "o"),
                              facecolor="white", edgecolor="#34495e", linewidth=0.8,
-                             zorder=4, label=f"Table 3, {equipment}")
+                             zorder=4, label=plain_text(f"Table 3, {equipment}"))
             if len(items):
                 item_im = items["im"].astype(float).to_numpy()
                 axes.scatter(item_im, zeta * item_im ** eta, s=26, marker="D",
@@ -320,7 +335,7 @@ def _sliding_demand_figure(items: pd.DataFrame, x_top: float) -> str:
             if np.isfinite(c):
                 axes.plot([c, c], [row - 0.36, row + 0.36], color="black", lw=2.0, zorder=5,
                           solid_capstyle="butt")
-        labels = [f"{_short(str(i), 12)}  {_short(str(n), 40)}" for i, n in
+        labels = [plain_text(f"{_short(str(i), 12)}  {_short(str(n), 40)}") for i, n in
                   zip(items["id"], items["name"])]
         axes.set_yticks(rows, labels)
         _left_align_tick_labels(axes)
@@ -362,7 +377,7 @@ def history_figure(history: dict) -> str:
         axes[2].set_xlabel("time [s]")
         title = (f"{history['id']}: {history['mode']}"
                  f"{', overturns' if history['overturned'] else ''}")
-        axes[0].set_title(title, loc="left")
+        axes[0].set_title(plain_text(title), loc="left")
         return _to_svg(figure)
 
 
