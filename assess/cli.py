@@ -24,6 +24,8 @@ EXIT_INTERRUPTED, EXIT_BROKEN_PIPE = 128 + signal.SIGINT, 128 + 13
 EPILOG = ("Exit codes: 0 done; 2 the input is wrong (each problem is named); 1 internal error; "
           "130 interrupted (Ctrl-C).")
 FORMATS = ("html", "pdf")
+#: What the main job writes besides the CSV files: the report and summary.xlsx.
+JOB_FORMATS = ("html", "pdf", "xlsx")
 
 DESCRIPTION = """\
 Assess the freestanding equipment of a building under a design earthquake:
@@ -59,13 +61,17 @@ For a pulse the regression's median sliding (Konstantinidis & Makris 2010,
 eq. 21) is printed beside the simulation."""
 
 
-def _formats(text: str) -> tuple[str, ...]:
+def _formats(text: str, allowed: tuple[str, ...] = FORMATS) -> tuple[str, ...]:
     chosen = tuple(part.strip().lower() for part in text.split(",") if part.strip())
-    unknown = [part for part in chosen if part not in FORMATS]
+    unknown = [part for part in chosen if part not in allowed]
     if unknown or not chosen:
         raise argparse.ArgumentTypeError(
-            f"'{text}' is not a list of report formats; use html, pdf or html,pdf")
+            f"'{text}' is not a list of formats; use {', '.join(allowed)}, comma-separated (e.g. {','.join(allowed)})")
     return chosen
+
+
+def _job_formats(text: str) -> tuple[str, ...]:
+    return _formats(text, JOB_FORMATS)
 
 
 def _number(accept, requirement: str):
@@ -107,9 +113,12 @@ def build_parser() -> argparse.ArgumentParser:
                         help="hazard level as the workbook names it; 2in50, 2%%/50yr and 2475yr are the same level")
     parser.add_argument("--out", metavar="DIR", type=Path,
                         help="output folder (default: reports/<workbook stem>-<LEVEL>/)")
-    parser.add_argument("--format", metavar="FORMATS", type=_formats, default=FORMATS,
-                        help="report formats, comma-separated: html, pdf (default: html,pdf); "
-                             "the CSV files are always written")
+    parser.add_argument("--format", metavar="FORMATS", type=_job_formats, default=JOB_FORMATS,
+                        help="what to write besides the CSV files, comma-separated: html, pdf (the report), "
+                             "xlsx (summary.xlsx, the summary table for a spreadsheet); default: html,pdf,xlsx")
+    parser.add_argument("--units", choices=("si", "us"), default="si",
+                        help="us: summary.xlsx also gives every length in inches, beside the centimetres "
+                             "(default: si)")
     parser.add_argument("--jobs", metavar="N", type=_whole_number(1),
                         help="threads for the time-history simulation (default: all cores); "
                              "the results do not depend on it")
@@ -363,8 +372,9 @@ def _assess(args: argparse.Namespace, say) -> int:
     result = run_assessment(inventory, args.hazard, seed=args.seed, progress=say, oq_hazard=oq_hazard,
                             derive_floors_roof=args.derive_floors, calibration=calibration)
     result = _with_comparison(result, args.compare_with, out_dir / "summary.csv", say)
-    say("rendering " + ", ".join(["summary.csv", "motions.csv"] + [f"report.{f}" for f in args.format]))
-    files = render_outputs(result, args.format)
+    say("rendering " + ", ".join(["summary.csv", "motions.csv"] + [
+        "summary.xlsx" if f == "xlsx" else f"report.{f}" for f in args.format]))
+    files = render_outputs(result, args.format, units=args.units)
     written = _write_uninterrupted(files, out_dir)
     counts = result.risk_counts()
     say(f"{counts['high']} high, {counts['moderate']} moderate, {counts['low']} low risk, "

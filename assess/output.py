@@ -87,12 +87,21 @@ def csv_text(table: pd.DataFrame) -> str:
     return neutralise_formulas(table).to_csv(index=False, float_format="%.6g", lineterminator="\n")
 
 
-def render_outputs(result: AssessmentResult, formats: tuple[str, ...]) -> dict[str, bytes]:
-    """All files of a run, by name, as bytes (nothing is written here)."""
+def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: str = "si") -> dict[str, bytes]:
+    """All files of a run, by name, as bytes (nothing is written here).
+
+    ``formats`` may hold ``html``, ``pdf`` (the report) and ``xlsx``
+    (summary.xlsx, :func:`assess.report.spreadsheet.summary_workbook`, with
+    inches beside centimetres when ``units`` is ``us``).
+    """
     files = {
         "summary.csv": csv_text(result.summary).encode(),
         "motions.csv": csv_text(result.motions).encode(),
     }
+    if "xlsx" in formats:
+        from assess.report.spreadsheet import summary_workbook
+
+        files["summary.xlsx"] = summary_workbook({result.level_label: result.summary}, units=units)
     if result.comparison is not None:
         files["comparison.csv"] = csv_text(result.comparison).encode()
     if "html" in formats or "pdf" in formats:

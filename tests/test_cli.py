@@ -37,11 +37,12 @@ def lab_run(tmp_path_factory):
     return scratch, completed
 
 
-def test_main_job_writes_the_four_files(lab_run):
+def test_main_job_writes_the_five_files(lab_run):
     scratch, completed = lab_run
     assert completed.returncode == 0, completed.stderr
     out = scratch / "reports" / "lab-2in50"
-    assert sorted(p.name for p in out.iterdir()) == ["motions.csv", "report.html", "report.pdf", "summary.csv"]
+    assert sorted(p.name for p in out.iterdir()) == ["motions.csv", "report.html", "report.pdf", "summary.csv",
+                                                     "summary.xlsx"]
     summary = pd.read_csv(out / "summary.csv")
     motions = pd.read_csv(out / "motions.csv")
     assert set(SPEC_SUMMARY) <= set(summary.columns)
@@ -65,6 +66,36 @@ def test_lab_prototypes_on_the_ground_reproduce_table3_im(lab_run):
     corralitos = forma[forma["motion"].str.contains("Corralitos") & (forma["pta_g"] == 0.84)]
     assert len(corralitos) > 0
     assert corralitos["im"].iloc[0] == pytest.approx(5.45, abs=0.005 / 0.13 + 0.005)
+
+
+def test_summary_xlsx_has_the_rows_of_summary_csv(lab_run):
+    """summary.xlsx read back with openpyxl: the same header and the same values as summary.csv, a frozen
+    header, and every text cell plain text (no formula)."""
+    import openpyxl
+
+    from assess.output import restore_text
+
+    scratch, _ = lab_run
+    out = scratch / "reports" / "lab-2in50"
+    csv = restore_text(pd.read_csv(out / "summary.csv", dtype={"id": str}, keep_default_na=False, na_values=[""]))
+    book = openpyxl.load_workbook(out / "summary.xlsx", read_only=False)
+    assert book.sheetnames == ["2in50"]
+    sheet = book["2in50"]
+    assert sheet.freeze_panes == "C2"
+    rows = list(sheet.iter_rows(values_only=True))
+    assert list(rows[0]) == list(csv.columns)
+    assert len(rows) - 1 == len(csv)
+    for values, (_, expected) in zip(rows[1:], csv.iterrows()):
+        for value, column in zip(values, csv.columns):
+            want = expected[column]
+            if isinstance(want, str):
+                text = value[1:] if isinstance(value, str) and value.startswith("'") else value
+                assert text == want, (expected["id"], column)
+            elif pd.isna(want):
+                assert value is None, (expected["id"], column)
+            else:
+                assert value == pytest.approx(float(want), rel=1e-5, abs=1e-9), (expected["id"], column)
+    assert all(cell.data_type != "f" for row in sheet.iter_rows() for cell in row)
 
 
 def test_same_inputs_give_the_same_files(lab_run, tmp_path):
