@@ -421,7 +421,8 @@ def _summarise(equipment: pd.DataFrame, cases: pd.DataFrame, demand: pd.DataFram
     rows, flags = [], []
     for item in equipment.itertuples(index=False):
         row = {"id": item.id, "name": item.name, "room": item.room, "floor": item.floor,
-               "quantity": item.quantity, "mu": item.mu, "clearance_cm": item.clearance_m * 100.0,
+               "quantity": item.quantity, "consequence": str(getattr(item, "consequence", "") or "ordinary"),
+               "mu": item.mu, "clearance_cm": item.clearance_m * 100.0,
                "overturn_fraction": np.nan, "theta_max_over_alpha": np.nan}
         if item.anchored:
             half_width_m = min(item.width_m, item.depth_m) / 2.0
@@ -453,8 +454,44 @@ def _summarise(equipment: pd.DataFrame, cases: pd.DataFrame, demand: pd.DataFram
         row["risk_range"] = _risk_range(row["risk"], bounds)
         row["action"] = recommended_action(row, uplift, settings)
         row["action_kind"] = action_kind(row, uplift)
+        row["priority_score"] = priority_score(row["consequence"], row["p_overturn"], row["p_beyond_clearance"],
+                                               uplift)
         rows.append(row)
-    return pd.DataFrame(rows), flags
+    summary = pd.DataFrame(rows)
+    summary["priority"] = priorities(summary)
+    return summary, flags
+
+
+#: Weight of what an item's failure costs (the workbook's ``consequence``), for the order of action.
+CONSEQUENCE_WEIGHTS = {"life-safety": 5.0, "hazardous": 4.0, "critical": 3.0, "valuable": 2.0, "ordinary": 1.0}
+#: Share of an overturning's cost that sliding past the room carries (it hits, pulls its lines, blocks).
+SLIDING_SEVERITY = 0.5
+#: Stand-in probability of overturning for an item that rocks but did not overturn under its motions.
+UPLIFT_SEVERITY = 0.25
+
+
+def priority_score(consequence: str, p_overturn: float, p_beyond_clearance: float, uplift: bool) -> float:
+    """How urgent an item is: its consequence weight times the worst of its chances, overturning
+    counting fully, sliding past its room by :data:`SLIDING_SEVERITY`, rocking without overturning by
+    :data:`UPLIFT_SEVERITY`.
+
+    >>> priority_score("hazardous", 0.2, 0.0, True), priority_score("ordinary", 0.0, 1.0, False)
+    (1.0, 0.5)
+    """
+    weight = CONSEQUENCE_WEIGHTS.get(str(consequence), 1.0)
+    return weight * max(p_overturn, SLIDING_SEVERITY * p_beyond_clearance, UPLIFT_SEVERITY if uplift else 0.0)
+
+
+def priorities(summary: pd.DataFrame) -> pd.Series:
+    """``priority``: 1 = act first, by ``priority_score`` (ties by id); items that need no action and
+    anchored items come last, in id order."""
+    needs = ~summary["action_kind"].isin(["none", "anchored"])
+    score = summary["priority_score"].where(needs, -1.0).fillna(-1.0)
+    order = pd.DataFrame({"score": -score, "id": summary["id"].astype(str)}).sort_values(
+        ["score", "id"], kind="mergesort").index
+    ranks = pd.Series(0, index=summary.index)
+    ranks.loc[order] = np.arange(1, len(order) + 1)
+    return ranks
 
 
 def classify_risk(p_beyond_clearance: float, p_overturn: float, uplift: bool, settings: dict) -> str:

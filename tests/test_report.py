@@ -173,7 +173,7 @@ def test_every_link_on_page_1_lands_on_its_item_details(html, result):
     targets = set(re.findall(r'href="#(item-[^"]+)"', first))
     assert targets
     for target in targets:
-        block = re.search(rf'<div class="item-detail" id="{re.escape(target)}">\s*<h3><span class="id">([^<]+)</span>',
+        block = re.search(rf'<div class="item-detail" id="{re.escape(target)}">\s*<h3>(?:<span class="muted small">[^<]*</span> )?<span class="id">([^<]+)</span>',
                           html)
         assert block and f"item-{block.group(1)}" == target, target
     freestanding = result.summary[result.summary["risk"] != "anchored"]

@@ -149,8 +149,9 @@ def _integer_text(value) -> str:
 
 # --------------------------------------------------------------------------- context
 def _sorted_summary(summary: pd.DataFrame) -> pd.DataFrame:
-    """Items by urgency: risk class, then the chance of overturning, then rocking before sliding,
-    then the chance of sliding past the clearance, high to low, then id (all from the governing demand)."""
+    """Items by urgency: the pipeline's ``priority`` where there is one (what the failure costs times its
+    chance); otherwise risk class, then the chance of overturning, then rocking before sliding, then the
+    chance of sliding past the clearance, high to low, then id (all from the governing demand)."""
     keys = pd.DataFrame({
         "risk": summary["risk"].astype(str).map(RISK_ORDER).fillna(len(RISK_ORDER)),
         "overturn": -pd.to_numeric(summary["p_overturn"], errors="coerce").fillna(-1.0),
@@ -158,6 +159,10 @@ def _sorted_summary(summary: pd.DataFrame) -> pd.DataFrame:
         "pf": -pd.to_numeric(summary["p_beyond_clearance"], errors="coerce").fillna(-1.0),
         "id": summary["id"].astype(str),
     }, index=summary.index)
+    if "priority" in summary:  # the pipeline's order of action: consequence × chance (1 = act first)
+        keys["priority"] = pd.to_numeric(summary["priority"], errors="coerce").fillna(len(summary) + 1)
+        order = keys.sort_values(["priority", "risk", "id"], kind="mergesort").index
+        return summary.loc[order]
     order = keys.sort_values(["risk", "overturn", "rocks", "pf", "id"], kind="mergesort").index
     return summary.loc[order]
 
@@ -201,6 +206,8 @@ def _item_row(row: pd.Series) -> dict:
         "risk": _text(row.get("risk")),
         "risk_range": _text(row.get("risk_range")),
         "action_kind": _text(row.get("action_kind")),
+        "consequence": _text(row.get("consequence")),
+        "priority": _integer_text(row.get("priority")),
         "action": _text(row.get("action")) or DASH,
         "source": _text(row.get("demand_source")) or DASH,
         "source_note": _text(row.get("demand_note")),
