@@ -94,7 +94,7 @@ class HazardLevel:
     @property
     def description(self) -> str:
         if not self.has_probability:
-            return f"the level '{self.label}' (a label, with no probability of exceedance)"
+            return f"{self.label}, a level named by label (no probability of exceedance given)"
         return (f"{_percent_text(self)}% in {_plain(self.exposure_years, 6)} years "
                 f"(return period {self.return_period_yr:.0f} years)")
 
@@ -120,14 +120,15 @@ def _plain(x: float, digits: int) -> str:
 
 
 def _percent_text(level: HazardLevel) -> str:
-    """The probability in percent with the fewest digits (at least 3) that parse back to the
-    same level and stay below 100 %: ``0.04`` stays ``0.04`` (not ``0``), 2475 yr reads ``2``."""
+    """The probability in percent with the fewest significant digits that parse back to a rate
+    within 0.2 % (well inside :meth:`HazardLevel.same_as`'s 1 %) and stay below 100 %:
+    ``0.04`` stays ``0.04`` (not ``0``), 2475 yr reads ``2`` and 475 yr ``10``."""
     percent = level.probability * 100.0
-    for digits in range(3, 18):
+    for digits in range(1, 18):
         text = _plain(percent, digits)
         value = float(text)
         if 0.0 < value < 100.0 and math.isclose(
-                -math.log1p(-value / 100.0), -math.log1p(-level.probability), rel_tol=1e-3):
+                -math.log1p(-value / 100.0), -math.log1p(-level.probability), rel_tol=2e-3):
             return text
     return _plain(percent, 17)
 
