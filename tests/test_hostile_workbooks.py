@@ -321,3 +321,25 @@ def test_cell_bomb_is_refused_with_the_reason(tmp_path):
                             sheet_xml([header, *rows]))
     assess_refuses(tmp_path, path, "sheet 'equipment'", "more than 500,000 cells",
                    "delete the rows below")
+
+
+def test_shared_strings_bomb_is_refused_before_openpyxl_parses_it(tmp_path):
+    """17 MB of one-letter shared strings (a million of them; 190 MB of them once took 180 s
+    and 1.2 GB to load): refused from the part's inflated size."""
+    path = workbook(tmp_path)
+    strings = (b'<sst xmlns="http://schemas.openxmlformats.org/spreadsheetml/2006/main">',
+               *(b"<si><t>a</t></si>" * 2**16 for _ in range(16)), b"</sst>")
+    replace_member_streamed(path, "xl/sharedStrings.xml", strings)
+    rewrite_member(path, "[Content_Types].xml", lambda xml: xml.replace("</Types>", (
+        '<Override PartName="/xl/sharedStrings.xml" ContentType="application/vnd.openxmlformats-'
+        'officedocument.spreadsheetml.sharedStrings+xml"/></Types>')))
+    assess_refuses(tmp_path, path, "xl/sharedStrings.xml", "inflates to 17 MB",
+                   "a part is read up to 16 MB")
+
+
+def test_element_bomb_is_refused_from_its_tag_count(tmp_path):
+    """4.2 million empty elements (17 MB of XML, 20 kB deflated) beside the sheet's rows."""
+    path = workbook(tmp_path)
+    replace_member_streamed(path, sheet_xml_name(path, "equipment"), sheet_xml(
+        [b"</sheetData><cols>", *(b"<x/>" * 2**16 for _ in range(64)), b"</cols><sheetData>"]))
+    assess_refuses(tmp_path, path, "xl/worksheets/sheet1.xml", "more than 4,000,000 XML tags")

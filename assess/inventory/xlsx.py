@@ -10,7 +10,12 @@ every row × column of that range; this reader does not:
   the file's size, the number of parts, and the size of every part once
   inflated (``ZipInfo.file_size``; :mod:`zipfile` never inflates a part past
   the size its directory declares, so a part that lies about it stops there
-  with a CRC error);
+  with a CRC error); then every XML part is inflated once, in chunks, and its
+  tags counted (a C-speed byte count): parsing costs some microseconds per
+  element, so the tag count bounds the time any parser (openpyxl's at load,
+  this module's per sheet) can take, and a part of millions of tiny elements
+  (a "shared strings bomb": 190 MB of one-letter strings took 180 s and 1.2 GB)
+  is refused in a second;
 * a sheet is streamed row by row (``iterparse`` of defusedxml, which refuses
   entity declarations and external references) and only its non-empty cells
   are kept, as ``{row: {column: value}}``; the number of XML elements and of
@@ -56,10 +61,17 @@ MAX_FILE_BYTES = 100 * 2**20
 MAX_PARTS = 2_000
 #: Largest size of all parts once inflated [bytes]: the XML of 10,000 items is some 20 MB.
 MAX_INFLATED_BYTES = 200 * 2**20
+#: Largest XML part once inflated [bytes]: a worksheet, and any other part (shared strings,
+#: styles: Excel's 64,000 cell formats take some 10 MB).
+MAX_SHEET_PART_BYTES, MAX_OTHER_PART_BYTES = 64 * 2**20, 16 * 2**20
+#: Most tags (``<``) in one XML part: a worksheet of 500,000 cells has some 2 million (a cell
+#: and its value, opened and closed), shared strings of 100,000 texts some 400,000.
+MAX_SHEET_PART_TAGS, MAX_OTHER_PART_TAGS = 4_000_000, 1_000_000
 #: Most XML elements (rows, cells, values, formatting...) parsed in one sheet.
-MAX_ELEMENTS_PER_SHEET = 5_000_000
+MAX_ELEMENTS_PER_SHEET = MAX_SHEET_PART_TAGS // 2
 #: Most cells (empty or not) parsed in one sheet: 10,000 rows of 50 columns.
 MAX_CELLS_PER_SHEET = 500_000
+_XML_SUFFIXES = (".xml", ".rels", ".vml")
 #: Excel's own limits of a sheet.
 MAX_ROW, MAX_COLUMN = 1_048_576, 16_384
 
@@ -183,19 +195,47 @@ def check_file(path: Path) -> None:
         with zipfile.ZipFile(path) as package:
             parts = package.infolist()
             if len(parts) > MAX_PARTS:
-                raise Unreadable(f"the workbook package holds {len(parts)} parts; a workbook has "
-                                 f"at most {MAX_PARTS} (Excel writes some 10 plus 2 per sheet).",
+                raise Unreadable(f"the workbook package holds {len(parts):,} parts; a workbook has "
+                                 f"at most {MAX_PARTS:,} (Excel writes some 10 plus 2 per sheet).",
                                  "if the file is yours, " + RESAVE + " Otherwise do not use it.")
             inflated = sum(part.file_size for part in parts)
+            if inflated > MAX_INFLATED_BYTES:
+                raise _bomb(f"the workbook's {size / 2**20:.1f} MB inflate to "
+                            f"{inflated / 2**20:,.0f} MB of content; a workbook is read up to "
+                            f"{MAX_INFLATED_BYTES // 2**20} MB inflated")
+            for part in parts:
+                if part.filename.lower().endswith(_XML_SUFFIXES):
+                    _check_part(package, part)
     except zipfile.BadZipFile as error:
         raise Unreadable(f"the workbook cannot be read: it looks damaged ({_short(error)}).") from None
-    if inflated > MAX_INFLATED_BYTES:
-        raise Unreadable(f"the workbook's {path.stat().st_size / 2**20:.1f} MB inflate to "
-                         f"{inflated / 2**20:,.0f} MB of content; a workbook is read up to "
-                         f"{MAX_INFLATED_BYTES // 2**20} MB inflated, which holds tens of thousands "
-                         "of items (a file that inflates this much is damaged or built to exhaust "
-                         "memory).", "if the file is yours, delete the unused rows, columns and sheets "
-                         "and save it again. Otherwise do not use it.")
+    except (OSError, EOFError, zipfile.LargeZipFile, NotImplementedError) as error:
+        raise Unreadable(f"the workbook cannot be read: it looks damaged or uses a zip feature "
+                         f"Excel does not write ({_short(error)}).") from None
+
+
+def _check_part(package: zipfile.ZipFile, part: zipfile.ZipInfo) -> None:
+    """Refuse an XML part whose inflated size or tag count passes its bound (see module doc)."""
+    is_sheet = part.filename.lower().startswith("xl/worksheets/")
+    max_bytes = MAX_SHEET_PART_BYTES if is_sheet else MAX_OTHER_PART_BYTES
+    max_tags = MAX_SHEET_PART_TAGS if is_sheet else MAX_OTHER_PART_TAGS
+    name = _short(part.filename)
+    if part.file_size > max_bytes:
+        raise _bomb(f"the part {name} of the workbook inflates to {part.file_size / 2**20:,.0f} MB; "
+                    f"a part is read up to {max_bytes // 2**20} MB")
+    tags = 0
+    with package.open(part) as handle:
+        while chunk := handle.read(2**20):
+            tags += chunk.count(b"<")
+            if tags > max_tags:
+                raise _bomb(f"the part {name} of the workbook holds more than {max_tags:,} XML "
+                            "tags")
+
+
+def _bomb(what: str) -> Unreadable:
+    return Unreadable(f"{what} (a workbook of tens of thousands of items stays far below; a file "
+                      "this big inside is damaged or built to exhaust memory, and was not parsed).",
+                      "if the file is yours, delete the unused rows, columns, sheets and cell "
+                      "formats and save it again. Otherwise do not use it.")
 
 
 def _short(error: BaseException) -> str:
