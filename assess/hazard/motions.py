@@ -26,7 +26,10 @@ def select_level(hazard: pd.DataFrame, level_text: str, workbook_name: str) -> t
     if matching:
         chosen = hazard[hazard["level_label"].isin(matching)].reset_index(drop=True)
         return parse_level(chosen["level_label"].iloc[0]), chosen
-    have = ", ".join(f"'{label}'" for label in labels) or "none"
+    listed = list(labels)
+    have = ", ".join(f"'{label}'" for label in listed[:20]) or "none"
+    if len(listed) > 20:
+        have += f" and {len(listed) - 20} more"
     raise_if_any([Problem(
         file=workbook_name, sheet="hazard", column="level",
         message=f"the workbook has no motions for hazard level '{wanted.label or level_text}' "

@@ -292,15 +292,15 @@ def _classify(spec: SheetSpec, key: str, text: str):
             if suffix in column.dimension.units:
                 return column, suffix, None
             return column, None, (
-                f"'{suffix}' is not an accepted unit for {column.name}.",
+                f"'{clip(suffix, 40)}' is not an accepted unit for {column.name}.",
                 f"convert the values to one of the accepted units and name the column "
                 f"{or_list(column.accepted_headers())}.")
     close = suggest(key, spec.accepted_headers())
-    message = f"unknown column '{text}'" + (f"; did you mean '{close}'?" if close else ".")
+    message = f"unknown column '{clip(text, 60)}'" + (f"; did you mean '{close}'?" if close else ".")
     elsewhere = [other.name for other in (EQUIPMENT, HAZARD, SETTINGS)
                  if other is not spec and key in other.accepted_headers()]
     if elsewhere:
-        message = f"unknown column '{text}' (a column of sheet '{elsewhere[0]}', not of this one)."
+        message = f"unknown column '{clip(text, 60)}' (a column of sheet '{elsewhere[0]}', not of this one)."
     fix = (f"rename it to '{close}' if that is what it holds" if close else
            f"use the columns of sheet '{spec.name}': {_column_list(spec)}")
     fix += f"; a column of remarks may be named {or_list(list(FREE_TEXT_COLUMNS))}."

@@ -305,6 +305,7 @@ def _check_hazard(table: Table, folder: Path, report: SheetReport) -> list[dict]
     headers = table.headers
     first_row_of: dict[tuple, int] = {}
     lacking: dict[str, list[int]] = {"pta": [], "tp": []}  # rows needing an absent column
+    names: dict[str, str] = {}  # a level's name by its key: 'DE' for DE and de
     records = []
     for row in table.rows:
         record_path = _record_path(row, folder, headers, report)
@@ -312,7 +313,7 @@ def _check_hazard(table: Table, folder: Path, report: SheetReport) -> list[dict]
             for name in _require_pulse_measures(row, headers, report):
                 lacking[name].append(row.number)
         _check_duplicate_motion(row, headers, first_row_of, report)
-        records.append(_hazard_record(row, record_path))
+        records.append(_hazard_record(row, record_path, names))
     for name, rows in lacking.items():
         if rows and "record" in headers:  # else the missing column is already reported
             column = HAZARD.column(name)
@@ -399,13 +400,14 @@ def _check_duplicate_motion(row: Row, headers: dict[str, Header], first_row_of: 
               "delete one of the two rows, or correct its level, motion or floor.")
 
 
-def _hazard_record(row: Row, record_path: str) -> dict:
-    """One output row of the hazard frame (canonical names, SI)."""
+def _hazard_record(row: Row, record_path: str, names: dict[str, str]) -> dict:
+    """One output row of the hazard frame (canonical names, SI); ``names`` gives every spelling
+    of a level the name of its first (a label's case as first written)."""
     values = row.values
     level, floor = values.get("level"), values.get("floor")
     label = row.raw["level"]
     return {
-        "level": level.name if level is not None else None,
+        "level": names.setdefault(level.key, level.name) if level is not None else None,
         "level_label": schema.parse_text(label, HAZARD.column("level")) if level else None,
         "motion": values.get("motion"),
         "all_floors": floor == "all",
