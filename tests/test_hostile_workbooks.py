@@ -343,3 +343,18 @@ def test_element_bomb_is_refused_from_its_tag_count(tmp_path):
     replace_member_streamed(path, sheet_xml_name(path, "equipment"), sheet_xml(
         [b"</sheetData><cols>", *(b"<x/>" * 2**16 for _ in range(64)), b"</cols><sheetData>"]))
     assess_refuses(tmp_path, path, "xl/worksheets/sheet1.xml", "more than 4,000,000 XML tags")
+
+
+@pytest.mark.parametrize("bad_cell", ['<c r="ZZZZ2"><v>1</v></c>', '<c r="B9"><v>1</v></c>'])
+def test_a_cell_address_that_does_not_fit_makes_the_sheet_unreadable(tmp_path, bad_cell):
+    """Never a value put in a cell it does not come from: the sheet is refused, located."""
+    path = workbook(tmp_path)
+
+    def break_b2(xml):
+        start = xml.index('<c r="B2"')
+        end = xml.index("</c>", start) + len("</c>")
+        return xml[:start] + bad_cell + xml[end:]
+    rewrite_member(path, sheet_xml_name(path, "equipment"), break_b2)
+    assess_refuses(tmp_path, path, "sheet 'equipment' cannot be read", "damaged near row 2")
+    completed = run(path, "--hazard", "2in50", cwd=tmp_path)
+    assert "ZZZZ" not in completed.stderr and "B9" not in completed.stderr

@@ -47,7 +47,7 @@ from pathlib import Path
 import defusedxml
 import defusedxml.ElementTree
 import openpyxl
-from openpyxl.utils import get_column_letter
+from openpyxl.utils import coordinate_to_tuple, get_column_letter
 from openpyxl.worksheet._read_only import ReadOnlyWorksheet
 from openpyxl.worksheet._reader import (CELL_TAG, FORMULA_TAG, ROW_TAG, WorkSheetParser)
 
@@ -365,22 +365,33 @@ class _CellParser(WorkSheetParser):
             if self.cells_parsed > MAX_CELLS_PER_SHEET:
                 raise self._too_big(f"more than {MAX_CELLS_PER_SHEET:,} cells")
             column, value = self._cell(child)
-            if column is not None and not is_blank(value):
+            if not is_blank(value):
                 kept[column] = value
         return self.row_counter, kept
 
-    def _cell(self, element) -> tuple[int | None, object]:
-        """``(column, value)`` of a cell element; the value may be a marker (see :data:`MARKERS`)."""
+    def _cell(self, element) -> tuple[int, object]:
+        """``(column, value)`` of a cell element; the value may be a marker (see :data:`MARKERS`).
+
+        A cell whose address cannot be read, or lies outside its row or the sheet, makes the
+        sheet unreadable (ValueError): no value is ever put in a cell it does not come from.
+        """
+        reference = element.get("r")
+        if reference is None:
+            row, column = self.row_counter, self.col_counter + 1
+        else:
+            try:
+                row, column = coordinate_to_tuple(reference)
+            except (ValueError, TypeError):
+                raise ValueError("a cell address is not one") from None
+        if row != self.row_counter or not 1 <= column <= MAX_COLUMN:
+            raise ValueError("a cell address lies outside its row or the sheet")
         try:
             cell = self.parse_cell(element)
         except Exception as error:  # noqa: BLE001 - a stored value openpyxl cannot decode
-            column = self.col_counter if self.col_counter else None
+            self.col_counter = column
             reason = ("its shared-text index is not in the file" if element.get("t") == "s"
                       else f"its stored value cannot be decoded ({type(error).__name__})")
             return column, DamagedCell(reason)
-        row, column = cell["row"], cell["column"]
-        if row != self.row_counter or not 1 <= column <= MAX_COLUMN:
-            return self.col_counter or None, DamagedCell("its address does not fit its row")
         value = cell["value"]
         if cell["data_type"] == "e":
             return column, ExcelError(str(value)[:20]) if value is not None else DamagedCell(
