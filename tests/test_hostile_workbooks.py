@@ -358,3 +358,11 @@ def test_a_cell_address_that_does_not_fit_makes_the_sheet_unreadable(tmp_path, b
     assess_refuses(tmp_path, path, "sheet 'equipment' cannot be read", "damaged near row 2")
     completed = run(path, "--hazard", "2in50", cwd=tmp_path)
     assert "ZZZZ" not in completed.stderr and "B9" not in completed.stderr
+
+
+def test_a_record_path_that_is_a_symlink_loop(tmp_path):
+    sheets = with_cell("hazard", 2, "record", "records/loop.csv")
+    path = workbook(tmp_path, sheets)
+    os.symlink("loop.csv", tmp_path / "records" / "loop.csv")
+    assess_refuses(tmp_path, path, "cell H4", "'records/loop.csv' cannot be followed",
+                   "a link that leads back to itself")

@@ -358,7 +358,7 @@ def parse_text(value: object, column: Column) -> str:
     if column.max_chars is not None and len(text) > column.max_chars:
         raise CellError(f"the text is {len(text):,} characters long ({quote(text)}); "
                         f"{column.name} takes at most {column.max_chars}.",
-                        f"shorten it (put remarks in a 'notes' column).")
+                        "shorten it (put remarks in a 'notes' column).")
     return text
 
 

@@ -21,7 +21,7 @@ Messages quote at most 80 characters of a cell and list at most
 """
 from __future__ import annotations
 
-import math
+import errno
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -350,10 +350,12 @@ def _record_path(row: Row, folder: Path, headers: dict[str, Header], report: She
         found = path.is_file()
     except (OSError, RuntimeError, ValueError) as error:  # a symlink loop, a NUL, a bad name
         row.failed.add("record")
-        why = getattr(error, "strerror", None) or type(error).__name__
+        loop = isinstance(error, RuntimeError) or getattr(error, "errno", None) == errno.ELOOP
+        why = ("it is a link that leads back to itself" if loop
+               else getattr(error, "strerror", None) or type(error).__name__)
         report.at(row.number, header, f"the record path {schema.quote(text)} cannot be followed "
                   f"({why}).", "give the path of the record file itself, relative to the "
-                  "workbook's folder (not a link that leads back to itself).")
+                  "workbook's folder.")
         return ""
     if not found:
         report.at(row.number, header,
