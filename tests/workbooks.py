@@ -165,7 +165,7 @@ def replace_member_streamed(path: Path, member: str, pieces) -> None:
                 handle.write(piece)
 
 
-def sheet_xml(rows_xml) -> "Iterator[bytes]":
+def sheet_xml(rows_xml):
     """A worksheet part around ``rows_xml`` (an iterable of ``<row>`` texts, as bytes)."""
     yield (b'<?xml version="1.0" encoding="UTF-8" standalone="yes"?>\n'
            b'<worksheet xmlns="http://schemas.openxmlformats.org/spreadsheetml/2006/main">'
