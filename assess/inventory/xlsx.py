@@ -238,10 +238,10 @@ def _bomb(what: str) -> Unreadable:
                       "formats and save it again. Otherwise do not use it.")
 
 
-def _short(error: BaseException) -> str:
-    """An exception as a short phrase, never more than a line of the file's own text."""
-    text = str(error).splitlines()[0] if str(error) else type(error).__name__
-    return text if len(text) <= 100 else text[:99] + "…"
+def _short(error: object, limit: int = 100) -> str:
+    """An exception (or a name) as a short phrase: its first line, at most ``limit`` characters."""
+    text = str(error).splitlines()[0] if str(error).strip() else type(error).__name__
+    return text if len(text) <= limit else text[:limit - 1] + "…"
 
 
 def unsafe_xml(error: BaseException | None) -> BaseException | None:
@@ -310,7 +310,7 @@ class Book:
             if unsafe is not None:
                 raise _refuse_unsafe(unsafe) from None
             near = f" near row {parser.row_counter}" if parser.row_counter else ""
-            raise Unreadable(f"sheet '{title}' cannot be read: its XML is damaged{near} "
+            raise Unreadable(f"sheet '{_short(title, 40)}' cannot be read: its XML is damaged{near} "
                              f"({_short(error)}).", sheet=title) from None
 
 
@@ -406,7 +406,7 @@ class _CellParser(WorkSheetParser):
     def _too_big(self, what: str) -> Unreadable:
         last = f" (up to row {self.row_counter:,})" if self.row_counter else ""
         return Unreadable(
-            f"sheet '{self.title}' holds {what}{last}; a sheet is read up to "
+            f"sheet '{_short(self.title, 40)}' holds {what}{last}; a sheet is read up to "
             f"{MAX_CELLS_PER_SHEET:,} cells, far more than any inventory or test log needs "
             "(formatting or a stray value far down or to the right can make a sheet this big).",
             "delete the rows below and the columns right of the table (select them, "
