@@ -187,6 +187,8 @@ def with_cell(sheet, index, column, value):
     ("hazard", 2, "record", "records/" + "a" * 300, ("cell H4", "308 characters", "aaaa…")),
     ("hazard", 2, "record", "records/" + "é" * 130 + ".csv", ("cell H4", "a file name has at most 255")),
     ("hazard", 2, "scale", 1e300, ("cell I4", "0.0001 to 100")),
+    ("hazard", 0, "vp_cm_s", 0, ("cell F2", "vp 0 cm/s", "magnitude of 0.001 to 5 m/s",
+                                 "leave vp empty")),
 ])
 def test_numbers_and_cells_out_of_range_are_refused_at_their_cell(tmp_path, sheet, index, column,
                                                                     value, fragments):

@@ -149,8 +149,10 @@ HAZARD = SheetSpec("hazard", (
            default=math.nan, high=5.0, positive=True),
     Column("tp", "number", dimension=PERIOD, spec_suffix="s", unless_record=True,
            default=math.nan, low=0.05, high=20.0, positive=True),
+    # a pulse of PTA > 0 moves the floor: |vp| = 0 has no pulse (1 mm/s is below any record's)
     Column("vp", "number", dimension=VELOCITY, spec_suffix="cm_s", default=math.nan,
-           high=5.0, signed=True),
+           low=0.001, high=5.0, signed=True,
+           hint="correct it, or leave vp empty when the pulse's velocity is not known"),
     Column("pulse", "pulse", default=""),
     Column("record", "path", default="", max_chars=255),
     # a factor beyond 100 or below 1/10,000 (a record in cm/s² read as g is 1/981) is a unit
@@ -516,6 +518,8 @@ def _expected(column: Column) -> str:
     dimension = column.dimension
     unit = f" {units.label(dimension, dimension.canonical)}" if dimension else ""
     low, high = column.low, column.high
+    if column.signed and low is not None:
+        return f"a magnitude of {number_text(low)} to {number_text(high)}{unit}"
     if column.signed:
         return f"a magnitude of at most {number_text(high)}{unit}"
     if low is None and column.positive:
@@ -535,7 +539,7 @@ def _range_fix(column: Column, value: float, suffix: str | None) -> str:
     if column.positive:
         others = [s for s in others if units.to_canonical(value, column.dimension, s) > 0]
     if not others:
-        return "correct the value."
+        return column.hint + "." if column.hint else "correct the value."
     label = units.label
     parts = [f"if the values are in {label(column.dimension, others[0])}, "
              f"name the column {column.header(others[0])}"]
