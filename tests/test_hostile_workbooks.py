@@ -368,3 +368,11 @@ def test_a_record_path_that_is_a_symlink_loop(tmp_path):
     os.symlink("loop.csv", tmp_path / "records" / "loop.csv")
     assess_refuses(tmp_path, path, "cell H4", "'records/loop.csv' cannot be followed",
                    "a link that leads back to itself")
+
+
+def test_calibrate_lists_at_most_50_problems(tmp_path):
+    rows = [["specimen", "motion", "sliding_cm"]] + [["NOPE", "Nowhere", -1]] * 100
+    measured = write_tests_workbook(tmp_path / "measured.xlsx", rows)
+    done = run("calibrate", KM2010, "--measured", measured, "--out", tmp_path / "cal", cwd=tmp_path)
+    assert_refused(done, "and 250 more problems, not listed", max_chars=50 * 400)
+    assert done.stderr.count("  - ") == 51
