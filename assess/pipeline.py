@@ -85,8 +85,9 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     for note in hazard_notes:
         progress(note)
     if oq_hazard is not None:
-        from assess.hazard.motions import scale_to_pga
+        from assess.hazard.motions import require_probability, scale_to_pga
         from assess.hazard.openquake import pga_at_level
+        require_probability(level, level_label, workbook_name, "--oq-hazard")
         pga_g = pga_at_level(oq_hazard, level)
         level_motions, _, note = scale_to_pga(level_motions, pga_g, workbook_name, Path(oq_hazard.path).name)
         hazard_notes.append(note)

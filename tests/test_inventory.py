@@ -303,12 +303,13 @@ def test_partly_filled_row_reports_each_missing_required_cell(make_workbook):
 
 # ---------------------------------------------------------------- hazard cells
 
-def test_unparseable_hazard_level(make_workbook):
+def test_impossible_probability_level(make_workbook):
+    """A probability spelling out of range is refused (any other text is a label)."""
     sheets = good_sheets()
-    sheets["hazard"][1]["level"] = "rare"
+    sheets["hazard"][1]["level"] = "150in50"
     problem = only_problem(make_workbook(sheets))
     assert_mentions(problem, "sheet 'hazard'", "cell A3", "column 'level'",
-                    "'rare' is not a hazard level")
+                    "'150in50'", "between 0 and 100 %")
 
 
 def test_motion_without_pta_and_without_record(make_workbook):
@@ -373,7 +374,7 @@ def test_unknown_settings_key_suggests_the_closest(make_workbook):
 
 @pytest.mark.parametrize("key, value, expected", [
     ("zeta", "abc", "setting 'zeta': 'abc' is not a number"),
-    ("sigma", -0.4, "setting 'sigma' is '-0.4'; it must be greater than 0"),
+    ("sigma", -0.4, "setting 'sigma' is '-0.4'; it lies between 0.01 and 2"),
     ("risk_pf_high", 1.5, "setting 'risk_pf_high' is '1.5'; a probability threshold lies"),
     ("risk_pf_high", 0.15, "risk_pf_moderate '0.2' must be less than risk_pf_high '0.15'"),
     ("im_max", 1.0, "im_min '1.71' must be less than im_max '1'"),
@@ -407,7 +408,7 @@ def test_all_problems_of_the_workbook_are_reported_together(make_workbook):
     sheets = good_sheets()
     sheets["equipment"][0]["mu"] = "low"  # I2
     sheets["equipment"][3]["floor"] = 2.5  # D5
-    sheets["hazard"][0]["level"] = "sometimes"  # A2
+    sheets["hazard"][0]["level"] = "0%/50yr"  # A2
     with pytest.raises(InputError) as caught:
         read_workbook(make_workbook(sheets))
     problems = caught.value.problems
@@ -416,7 +417,7 @@ def test_all_problems_of_the_workbook_are_reported_together(make_workbook):
     text = str(caught.value)
     assert text.startswith("3 problems in the input:")
     assert "'low' is not a number" in text and "'2.5' is not a whole number" in text
-    assert "'sometimes' is not a hazard level" in text
+    assert "hazard level '0%/50yr': the probability must lie between 0 and 100 %" in text
 
 
 def test_zip_that_is_not_a_workbook(tmp_path):

@@ -148,3 +148,37 @@ BILLION_LAUGHS = """<?xml version="1.0" encoding="UTF-8" standalone="yes"?>
 <sheetData><row r="1"><c r="A1" t="inlineStr"><is><t>&lol9;</t></is></c></row></sheetData>
 </worksheet>
 """
+
+
+def replace_member_streamed(path: Path, member: str, pieces) -> None:
+    """Replace zip member ``member`` of ``path`` by the bytes ``pieces`` yields, written piece by
+    piece (a member of hundreds of MB never sits in memory; it deflates to a few hundred kB)."""
+    path = Path(path)
+    with zipfile.ZipFile(path) as source:
+        others = {info.filename: source.read(info.filename) for info in source.infolist()
+                  if info.filename != member}
+    with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED) as target:
+        for name, data in others.items():
+            target.writestr(name, data)
+        with target.open(member, "w", force_zip64=True) as handle:
+            for piece in pieces:
+                handle.write(piece)
+
+
+def sheet_xml(rows_xml):
+    """A worksheet part around ``rows_xml`` (an iterable of ``<row>`` texts, as bytes)."""
+    yield (b'<?xml version="1.0" encoding="UTF-8" standalone="yes"?>\n'
+           b'<worksheet xmlns="http://schemas.openxmlformats.org/spreadsheetml/2006/main">'
+           b'<sheetData>')
+    yield from rows_xml
+    yield b"</sheetData></worksheet>"
+
+
+def write_tests_workbook(path: Path, rows: list[list], sheet: str = "tests") -> Path:
+    """A measured-tests workbook (SPEC §5): ``rows`` of the sheet ``tests``, header first."""
+    book = openpyxl.Workbook()
+    book.active.title = sheet
+    for row in rows:
+        book.active.append(row)
+    book.save(path)
+    return Path(path)

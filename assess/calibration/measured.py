@@ -12,6 +12,10 @@ table test of a cabinet usually plays against its slender side.
 
 Every problem of every row is collected and raised together in one
 :class:`~assess.errors.InputError` (file, sheet, row, cell and a fix each).
+The file is read as the inventory workbook is (:mod:`assess.inventory.xlsx`):
+bounded, streamed, only the cells that hold something, a damaged cell or an
+Excel error reported at its address; messages quote at most 80 characters
+of a cell.
 """
 from __future__ import annotations
 
@@ -36,6 +40,14 @@ DEFAULT_PULSE = "B"
 FREE_TEXT = ("notes", "note", "source", "comment")
 COLUMNS = ["specimen", "motion", "direction", "sliding_m", "theta_max_over_alpha", "overturned", "row"]
 
+#: Largest plausible measured peak sliding [cm]: no shake table or floor travels 100 m.
+SLIDING_MAX_CM = 10_000.0
+#: Largest plausible θmax/α: a block that tips past α overturns, and α of any item on a floor
+#: exceeds 0.01 rad, so θ/α beyond π/2 / 0.01 ≈ 157 is not a rotation (1000 leaves room).
+THETA_MAX_OVER_ALPHA = 1000.0
+#: A cell already reported (an Excel error, a damaged cell), skipped by the checks.
+_UNUSABLE = object()
+
 _YES = {"yes", "y", "true", "1"}
 _NO = {"no", "n", "false", "0"}
 
@@ -53,61 +65,80 @@ def read_measured(path, inventory) -> pd.DataFrame:
     Raises
     ------
     InputError
-        With every problem found (unreadable file, missing sheet or column,
-        unknown specimen or motion, a value that is not a measure, a row
-        without any measure, no test at all).
+        With every problem found (unreadable or damaged file, missing sheet or
+        column, unknown specimen or motion, a value that is not a measure, a
+        row without any measure, no test at all).
     """
-    import openpyxl
+    from assess.inventory import xlsx
 
     path = Path(path)
     name = path.name
     try:
-        book = openpyxl.load_workbook(path, read_only=True, data_only=True)
-    except FileNotFoundError:
-        raise InputError([Problem(name, f"the measured-tests workbook {path} does not exist.",
-                                  "give the path of MEASURED.xlsx.")]) from None
-    except Exception as error:  # openpyxl raises many kinds for a file that is not a workbook
-        raise InputError([Problem(name, f"cannot be read as an Excel workbook ({error}).",
-                                  "open it in Excel or LibreOffice and save it as .xlsx.")]) from None
-    try:
-        if SHEET not in book.sheetnames:
-            raise InputError([Problem(name, f"there is no sheet '{SHEET}' (sheets: {', '.join(book.sheetnames)}).",
-                                      f"name the sheet of the tests '{SHEET}'.")])
-        rows = [list(r) for r in book[SHEET].iter_rows(values_only=True)]
-    finally:
-        book.close()
-    return measured_from_rows(rows, inventory, file=name)
+        with xlsx.Book(path) as book:
+            if SHEET not in book.sheetnames or not book.is_table(SHEET):
+                have = ", ".join(f"'{clip(t, 40)}'" for t in book.sheetnames[:20])
+                raise InputError([Problem(name, f"there is no sheet '{SHEET}' (sheets: {have}).",
+                                          f"name the sheet of the tests '{SHEET}'.")])
+            cells = book.cells(SHEET)
+    except xlsx.Unreadable as error:
+        message = error.message
+        if "does not exist" in message:
+            message = f"the measured-tests workbook {clip(str(path), 200)} does not exist."
+        raise InputError([Problem(name, message, error.fix, sheet=error.sheet)]) from None
+    return measured_from_cells(cells.header, cells.data_rows(), inventory, file=name)
 
 
 def measured_from_rows(rows, inventory, *, file="MEASURED.xlsx") -> pd.DataFrame:
-    """Check the cell values of a ``tests`` sheet (header first) and return the table of :func:`read_measured`."""
+    """The table of :func:`read_measured` from a ``tests`` sheet given as lists of values (header first)."""
+    header = {k + 1: v for k, v in enumerate(rows[0])} if rows else {}
+    numbered = [(number, {k + 1: v for k, v in enumerate(values)})
+                for number, values in enumerate(rows[1:], start=2)]
+    return measured_from_cells(header, numbered, inventory, file=file)
+
+
+def measured_from_cells(header_cells: dict, rows: list, inventory, *, file="MEASURED.xlsx") -> pd.DataFrame:
+    """Check a ``tests`` sheet and return the table of :func:`read_measured`.
+
+    ``header_cells`` holds row 1 by 1-based column; ``rows`` the rows below as
+    ``(row number, {column: value})`` (blank cells may be absent).
+    """
     from openpyxl.utils import get_column_letter
+
+    from assess.inventory import xlsx
 
     problems: list[Problem] = []
 
     def report(message, fix, row=None, column=None, cell=None):
         problems.append(Problem(file, message, fix, sheet=SHEET, row=row, column=column, cell=cell))
 
-    if not rows or all(_blank(v) for v in rows[0]):
+    for number, values in [(1, header_cells), *rows]:  # cells the file could not give a value
+        for k, value in list(values.items()):
+            if isinstance(value, xlsx.MARKERS):
+                report(f"cell {get_column_letter(k)}{number} {_marker_text(value)}",
+                       "retype the cell in Excel or LibreOffice and save the workbook.",
+                       row=number, cell=f"{get_column_letter(k)}{number}")
+                values[k] = _UNUSABLE
+    if all(_blank(v) for v in header_cells.values()):
         report("the sheet is empty.", "put the headers specimen, motion and at least one of "
                "sliding_cm, theta_max_over_alpha, overturned in row 1, and one test per row below.", row=1)
         raise InputError(problems)
     header = {}
-    for k, value in enumerate(rows[0]):
-        if _blank(value):
+    for k in sorted(header_cells):
+        value = header_cells[k]
+        if _blank(value) or value is _UNUSABLE:
             continue
         text = str(value).strip().lower()
         if text in FREE_TEXT:  # as in the workbook: free text, ignored
             continue
         if text in header:
-            report(f"the column '{text}' appears twice.", "keep one of them.", row=1,
-                   cell=f"{get_column_letter(k + 1)}1")
+            report(f"the column '{clip(text, 40)}' appears twice.", "keep one of them.", row=1,
+                   cell=f"{get_column_letter(k)}1")
         elif text not in REQUIRED + MEASURES + OPTIONAL:
             close = difflib.get_close_matches(text, REQUIRED + MEASURES + OPTIONAL, n=1)
-            report(f"unknown column '{value}'.", f"rename it to '{close[0]}'." if close else
+            report(f"unknown column '{clip(value, 40)}'.", f"rename it to '{close[0]}'." if close else
                    f"use only {', '.join(REQUIRED + MEASURES + OPTIONAL)} (and free-text "
                    f"{', '.join(FREE_TEXT)}).", row=1,
-                   cell=f"{get_column_letter(k + 1)}1")
+                   cell=f"{get_column_letter(k)}1")
         else:
             header[text] = k
     for column in REQUIRED:
@@ -116,74 +147,80 @@ def measured_from_rows(rows, inventory, *, file="MEASURED.xlsx") -> pd.DataFrame
     if not any(m in header for m in MEASURES):
         report("no measure column.", "add at least one of sliding_cm, theta_max_over_alpha, overturned.",
                row=1)
-    raise_if_any(problems)
+    raise_if_any(capped(problems, file))
 
     equipment = inventory.equipment.set_index("id", drop=False)
     known_ids = [str(i) for i in equipment["id"]]
     known_motions = list(dict.fromkeys(str(m) for m in inventory.hazard["motion"]))
     workbook = Path(inventory.path).name
     records = []
-    for number, values in enumerate(rows[1:], start=2):
-        if all(_blank(v) for v in values):
+    for number, values in rows:
+        if all(_blank(v) for v in values.values()):
             continue
 
         def cell(column):
             k = header.get(column)
-            return None if k is None or k >= len(values) else values[k]
+            return None if k is None else values.get(k)
 
         def where(column):
-            return dict(row=number, column=column, cell=f"{get_column_letter(header[column] + 1)}{number}")
+            return dict(row=number, column=column, cell=f"{get_column_letter(header[column])}{number}")
 
         specimen = cell("specimen")
-        if _blank(specimen):
+        if specimen is _UNUSABLE:
+            pass
+        elif _blank(specimen):
             report("no specimen.", f"give the id of an item of {workbook}.", **where("specimen"))
         elif str(specimen).strip() not in known_ids:
-            report(f"specimen '{specimen}' is not an equipment id of {workbook}.",
+            report(f"specimen '{clip(specimen)}' is not an equipment id of {workbook}.",
                    _closest(specimen, known_ids,
                             f"use one of the ids of {workbook}'s equipment sheet, or add the item there."),
                    **where("specimen"))
         elif bool(equipment.loc[str(specimen).strip(), "anchored"]):
-            report(f"specimen '{specimen}' is anchored in {workbook}: an anchored item neither slides "
+            report(f"specimen '{clip(specimen)}' is anchored in {workbook}: an anchored item neither slides "
                    f"nor rocks in the model, so its tests cannot calibrate it.",
                    f"set anchored to no in {workbook} for the tested item, or remove the test.",
                    **where("specimen"))
         motion = cell("motion")
-        if _blank(motion):
+        if motion is _UNUSABLE:
+            pass
+        elif _blank(motion):
             report("no motion.", f"give the name of a motion of {workbook}'s hazard sheet.", **where("motion"))
         elif str(motion).strip() not in known_motions:
-            report(f"motion '{motion}' is not a motion of {workbook}'s hazard sheet.",
+            report(f"motion '{clip(motion)}' is not a motion of {workbook}'s hazard sheet.",
                    _closest(motion, known_motions, f"add the motion the table played to {workbook}'s "
                             "hazard sheet (record or PTA and Tp)."),
                    **where("motion"))
 
         direction = 1
-        if "direction" in header and not _blank(cell("direction")):
+        if _given(cell("direction")):
             value = _number(cell("direction"))
             if value not in (1.0, 2.0):
-                report(f"direction '{cell('direction')}' is neither 1 nor 2.",
+                report(f"direction '{clip(cell('direction'))}' is neither 1 nor 2.",
                        "write 1 for shaking along the width, 2 along the depth.", **where("direction"))
             else:
                 direction = int(value)
 
         sliding_m = np.nan
-        if "sliding_cm" in header and not _blank(cell("sliding_cm")):
+        if _given(cell("sliding_cm")):
             value = _number(cell("sliding_cm"))
-            if value is None or not np.isfinite(value) or value < 0.0:
-                report(f"sliding_cm '{cell('sliding_cm')}' is not a peak sliding (a number >= 0, in cm).",
+            if value is None or not 0.0 <= value <= SLIDING_MAX_CM:
+                report(f"sliding_cm '{clip(cell('sliding_cm'))}' is not a peak sliding (a number from 0 "
+                       f"to {SLIDING_MAX_CM:,.0f}, in cm).",
                        "write the measured peak sliding in cm, or leave the cell empty.", **where("sliding_cm"))
             else:
                 sliding_m = value / 100.0
         theta = np.nan
-        if "theta_max_over_alpha" in header and not _blank(cell("theta_max_over_alpha")):
+        if _given(cell("theta_max_over_alpha")):
             value = _number(cell("theta_max_over_alpha"))
-            if value is None or not np.isfinite(value) or value < 0.0:
-                report(f"theta_max_over_alpha '{cell('theta_max_over_alpha')}' is not a number >= 0.",
+            if value is None or not 0.0 <= value <= THETA_MAX_OVER_ALPHA:
+                report(f"theta_max_over_alpha '{clip(cell('theta_max_over_alpha'))}' is not a number "
+                       f"from 0 to {THETA_MAX_OVER_ALPHA:g}.",
                        "write the peak rotation divided by the item's slenderness α, or leave it empty.",
                        **where("theta_max_over_alpha"))
             else:
                 theta = value
         overturned = None
-        if "overturned" in header and not _blank(cell("overturned")):
+        if _given(cell("overturned")):
             value = cell("overturned")
             text = str(value).strip().lower() if not isinstance(value, bool) else str(value).lower()
             if text in _YES:
@@ -191,7 +228,7 @@ def measured_from_rows(rows, inventory, *, file="MEASURED.xlsx") -> pd.DataFrame
             elif text in _NO:
                 overturned = False
             else:
-                report(f"overturned '{value}' is neither yes nor no.", "write yes or no, or leave it empty.",
+                report(f"overturned '{clip(value)}' is neither yes nor no.", "write yes or no, or leave it empty.",
                        **where("overturned"))
         if all(_blank(cell(m)) for m in MEASURES if m in header):
             report("the test has no measure.", "give at least one of sliding_cm, theta_max_over_alpha, "
@@ -202,7 +239,7 @@ def measured_from_rows(rows, inventory, *, file="MEASURED.xlsx") -> pd.DataFrame
                             row=number))
     if not records and not problems:
         report("the sheet has headers but no test.", "add one row per test below the headers.", row=2)
-    raise_if_any(problems)
+    raise_if_any(capped(problems, file))
     return pd.DataFrame(records, columns=COLUMNS)
 
 
@@ -247,6 +284,20 @@ def test_motion(inventory, motion: str) -> Record:
 test_motion.__test__ = False  # not a pytest test despite its name
 
 
+#: Most problems listed; the rest are counted (one wrong column of 1,000 tests is one mistake).
+MAX_PROBLEMS = 50
+
+
+def capped(problems: list[Problem], file: str) -> list[Problem]:
+    """The first :data:`MAX_PROBLEMS` problems, and a last one counting those left out."""
+    if len(problems) <= MAX_PROBLEMS:
+        return problems
+    left = len(problems) - MAX_PROBLEMS
+    return problems[:MAX_PROBLEMS] + [Problem(
+        file, f"and {left:,} more problem{'s' if left != 1 else ''}, not listed.",
+        "correct those above and run again; the rest are often the same mistake.", sheet=SHEET)]
+
+
 def _closest(value, known, otherwise: str) -> str:
     """'did you mean …?' with the closest of ``known``, or ``otherwise``."""
     close = difflib.get_close_matches(str(value).strip(), list(known), n=1)
@@ -257,12 +308,34 @@ def _blank(value) -> bool:
     return value is None or (isinstance(value, str) and not value.strip())
 
 
+def _given(value) -> bool:
+    """A cell that holds a value to check (not blank, not already reported)."""
+    return not _blank(value) and value is not _UNUSABLE
+
+
 def _number(value):
+    """The finite number in a cell, or None (text, a date, NaN, infinity, hundreds of digits)."""
     if isinstance(value, bool):
         return None
-    if isinstance(value, (int, float)):
-        return float(value)
     try:
-        return float(str(value).strip())
-    except ValueError:
+        number = float(value) if isinstance(value, (int, float)) else float(str(value).strip())
+    except (ValueError, OverflowError):
         return None
+    return number if np.isfinite(number) else None
+
+
+def _marker_text(marker) -> str:
+    """What is wrong with a cell the reader could not give a value (see assess.inventory.xlsx)."""
+    from assess.inventory import xlsx
+
+    if isinstance(marker, xlsx.ExcelError):
+        return f"shows the Excel error {marker.code} (a formula that failed)."
+    if isinstance(marker, xlsx.NoCachedValue):
+        return "holds a formula with no computed value (saved by a program that does not calculate)."
+    return f"cannot be read: {marker.reason}; the file is damaged there."
+
+
+def clip(value, limit: int = 80) -> str:
+    """A cell's text on one line, at most ``limit`` characters (never a whole cell of the file)."""
+    text = " ".join(str(value).split())
+    return text if len(text) <= limit else text[:limit - 1] + "…"

@@ -11,26 +11,44 @@ from assess.hazard.levels import HazardLevel, parse_level
 def select_level(hazard: pd.DataFrame, level_text: str, workbook_name: str) -> tuple[HazardLevel, pd.DataFrame]:
     """Rows of the ``hazard`` table for the level ``level_text`` names.
 
-    Any spelling of the same level matches (``2475yr`` finds ``2in50``).
+    Any spelling of the same probability matches (``2475yr`` finds ``2in50``);
+    a label matches the same text, ignoring case (``de`` finds ``DE``).
     Raises :class:`~assess.errors.InputError` listing the workbook's levels
     when it has none that matches.
     """
     try:
         wanted = parse_level(level_text)
     except ValueError as error:
-        raise_if_any([Problem(file="--hazard", message=str(error),
+        raise_if_any([Problem(file="--hazard", message=str(error) + ".",
                               fix="give the level as the workbook's hazard sheet names it, e.g. --hazard 2in50")])
-    labels = hazard.drop_duplicates("level")[["level", "level_label"]]
-    for level, label in labels.itertuples(index=False):
-        if parse_level(level).same_as(wanted):
-            return parse_level(level), hazard[hazard["level"] == level].reset_index(drop=True)
-    have = ", ".join(f"'{label}'" for label in labels["level_label"]) or "none"
+    labels = hazard.drop_duplicates("level_label")["level_label"]
+    matching = [label for label in labels if parse_level(label).same_as(wanted)]
+    if matching:
+        chosen = hazard[hazard["level_label"].isin(matching)].reset_index(drop=True)
+        return parse_level(chosen["level_label"].iloc[0]), chosen
+    listed = list(labels)
+    have = ", ".join(f"'{label}'" for label in listed[:20]) or "none"
+    if len(listed) > 20:
+        have += f" and {len(listed) - 20} more"
     raise_if_any([Problem(
         file=workbook_name, sheet="hazard", column="level",
-        message=f"the workbook has no motions for hazard level '{level_text}' ({wanted.description}); "
-                f"it has: {have}.",
+        message=f"the workbook has no motions for hazard level '{wanted.label or level_text}' "
+                f"({wanted.description}); it has: {have}.",
         fix="run with one of those levels, or add rows for this level to the hazard sheet.")])
     raise AssertionError("unreachable")
+
+
+def require_probability(level: HazardLevel, level_label: str, workbook_name: str, needed_by: str) -> None:
+    """Raise :class:`~assess.errors.InputError` when ``level`` is a label, which ``needed_by``
+    (e.g. ``--oq-hazard``) cannot use: it reads the hazard at a probability of exceedance."""
+    if level.has_probability:
+        return
+    raise_if_any([Problem(
+        file=workbook_name, sheet="hazard", column="level",
+        message=f"{needed_by} reads the site's hazard at the level's probability of exceedance, but "
+                f"the level '{level_label}' is a label with no probability.",
+        fix=f"name the level by its probability in the hazard sheet and in --hazard (e.g. 2in50, "
+            f"10%/50yr or 2475yr), or run without {needed_by}.")])
 
 
 def motions_by_item(equipment: pd.DataFrame, level_motions: pd.DataFrame, level_label: str,

@@ -25,7 +25,9 @@ class Inventory:
         ``row`` (int, the Excel row the item came from).
     hazard : pandas.DataFrame
         One row per motion and floor: ``level`` (canonical name, e.g.
-        ``2in50``), ``level_label`` (as written), ``motion`` (str),
+        ``2in50``, or a label such as ``DE`` as first written: every spelling
+        of one level has one name, see :mod:`assess.hazard.levels`),
+        ``level_label`` (as written), ``motion`` (str),
         ``all_floors`` (bool), ``floor`` (pandas ``Int64``, <NA> when
         ``all_floors``), ``pta_g`` [g], ``tp_s`` [s], ``vp_m_s`` [m/s]
         (NaN where not given), ``pulse`` ("A", "B", "C" or ""),

@@ -12,12 +12,15 @@ from __future__ import annotations
 import difflib
 import math
 import numbers
+import re
 from dataclasses import dataclass
 from typing import Callable
 
 from assess.hazard.levels import HazardLevel, parse_level as parse_hazard_level
 from assess.inventory import units
 from assess.inventory.units import ACCELERATION, LENGTH, MASS, PERIOD, VELOCITY, Dimension
+from assess.inventory.xlsx import EXCEL_ERRORS
+from openpyxl.utils import get_column_letter
 
 #: Columns of free text, allowed in every sheet and ignored.
 FREE_TEXT_COLUMNS = ("notes", "note", "source", "comment")
@@ -59,6 +62,7 @@ class Column:
     documents. ``low``/``high`` bound the plausible value in canonical units
     (``positive``: must be > 0; ``signed``: the bound applies to the magnitude).
     ``unless_record``: required on a row that gives no ``record``.
+    ``max_chars``: the longest text a text column takes (an id, a name, a path).
     """
 
     name: str
@@ -73,6 +77,7 @@ class Column:
     signed: bool = False
     unless_record: bool = False
     hint: str = ""
+    max_chars: int | None = None
 
     def header(self, suffix: str | None = None) -> str:
         """The header for this column with ``suffix`` (default: the documented one)."""
@@ -111,9 +116,9 @@ class SheetSpec:
 
 
 EQUIPMENT = SheetSpec("equipment", (
-    Column("id", "text", required=True),
-    Column("name", "text", required=True),
-    Column("room", "text", default=""),
+    Column("id", "text", required=True, max_chars=100),
+    Column("name", "text", required=True, max_chars=200),
+    Column("room", "text", default="", max_chars=200),
     Column("floor", "integer", required=True, low=-5, high=200, hint=_FLOOR_HINT),
     Column("height", "number", required=True, dimension=LENGTH, spec_suffix="cm",
            low=0.05, high=6.0, positive=True),
@@ -127,28 +132,36 @@ EQUIPMENT = SheetSpec("equipment", (
     Column("mu_static", "number", low=0.01, high=1.5, positive=True, hint=_MU_HINT),
     Column("clearance", "number", required=True, dimension=LENGTH, spec_suffix="cm",
            low=0.0, high=100.0),
-    Column("cg_height", "number", dimension=LENGTH, spec_suffix="cm", positive=True),
+    # 1 cm to 6 m, like the height: below, b/h of any base is unbounded (no real item)
+    Column("cg_height", "number", dimension=LENGTH, spec_suffix="cm",
+           low=0.01, high=6.0, positive=True),
     Column("anchored", "boolean", default=False),
-    Column("quantity", "integer", default=1, low=1),
+    # identical items in one row: a million is beyond any building (a large data centre
+    # holds some 10^4 racks) and keeps every count exact in 64-bit integers and floats
+    Column("quantity", "integer", default=1, low=1, high=1_000_000),
 ), subject="a piece of equipment")
 
 HAZARD = SheetSpec("hazard", (
     Column("level", "level", required=True),
-    Column("motion", "text", required=True),
+    Column("motion", "text", required=True, max_chars=200),
     Column("floor", "floor_or_all", required=True, low=-5, high=200, hint=_FLOOR_HINT),
     Column("pta", "number", dimension=ACCELERATION, spec_suffix="g", unless_record=True,
            default=math.nan, high=5.0, positive=True),
     Column("tp", "number", dimension=PERIOD, spec_suffix="s", unless_record=True,
            default=math.nan, low=0.05, high=20.0, positive=True),
+    # a pulse of PTA > 0 moves the floor: |vp| = 0 has no pulse (1 mm/s is below any record's)
     Column("vp", "number", dimension=VELOCITY, spec_suffix="cm_s", default=math.nan,
-           high=5.0, signed=True),
+           low=0.001, high=5.0, signed=True,
+           hint="correct it, or leave vp empty when the pulse's velocity is not known"),
     Column("pulse", "pulse", default=""),
-    Column("record", "text", default=""),
-    Column("scale", "number", default=1.0, positive=True),
+    Column("record", "path", default="", max_chars=255),
+    # a factor beyond 100 or below 1/10,000 (a record in cm/s² read as g is 1/981) is a unit
+    # mistake, not a scaling of the motion: convert the record instead
+    Column("scale", "number", default=1.0, low=1e-4, high=100.0, positive=True),
 ), subject="a floor motion")
 
 SETTINGS = SheetSpec("settings", (
-    Column("key", "text", required=True),
+    Column("key", "text", required=True, max_chars=100),
     Column("value", "raw"),
 ), subject="a setting", extra_required_headers=("value",))
 
@@ -160,11 +173,26 @@ def number_text(value: float) -> str:
     return f"{value:.10g}"
 
 
+#: Longest cell text quoted in a message; longer text is cut with an ellipsis.
+QUOTE_MAX_CHARS = 80
+
+
+def clip(text: str, limit: int = QUOTE_MAX_CHARS) -> str:
+    """``text`` on one line, at most ``limit`` characters (cut with an ellipsis)."""
+    text = re.sub(r"\s+", " ", str(text)).strip()
+    text = "".join(c if c.isprintable() else "\ufffd" for c in text)
+    return text if len(text) <= limit else text[:limit - 1] + "…"
+
+
 def quote(value: object) -> str:
-    """The offending cell value, quoted, as the user sees it."""
+    """The offending cell value, quoted, as the user sees it; never more than
+    :data:`QUOTE_MAX_CHARS` characters of it."""
     if isinstance(value, float):
         return f"'{number_text(value)}'"
-    return f"'{value}'"
+    if isinstance(value, int) and not isinstance(value, bool) and abs(value) >= 10**15:
+        digits = len(str(abs(value)))
+        return f"'{str(value)[:12]}…' (a {digits}-digit number)"
+    return f"'{clip(value)}'"
 
 
 def suggest(name: str, choices: list[str]) -> str | None:
@@ -180,7 +208,7 @@ class Header:
     """A recognised header: the column it fills and where it is."""
 
     column: Column
-    index: int  # 0-based position in the row
+    index: int  # column number, 1-based as in Excel
     text: str  # as the user wrote it (stripped)
     letter: str  # Excel column letter
     suffix: str | None  # unit suffix for quantities
@@ -189,30 +217,30 @@ class Header:
 Report = Callable[..., None]  # report(message, fix, *, row, column, cell)
 
 
-def map_headers(spec: SheetSpec, grid: list[list], letters: list[str],
-                report: Report) -> dict[str, Header]:
-    """Recognise the header row (``grid[0]``) of a sheet; report every header problem.
+def map_headers(spec: SheetSpec, header_row: dict[int, object],
+                rows: list[tuple[int, dict[int, object]]], report: Report) -> dict[str, Header]:
+    """Recognise the header row (``header_row``: cells of row 1 by 1-based column) of a sheet.
 
-    Returns the recognised headers by column name. Unknown, unit-less,
-    badly-suffixed and duplicated headers, values under no header and missing
-    required columns are reported through ``report``.
+    ``rows`` are the data rows ``(row number, cells by column)``. Returns the
+    recognised headers by column name. Unknown, unit-less, badly-suffixed and
+    duplicated headers, values under no header and missing required columns
+    are reported through ``report``.
     """
     found: dict[str, Header] = {}
     flawed: set[str] = set()  # columns whose header was reported as wrong
-    for index, raw in enumerate(grid[0]):
-        if is_empty(raw):
-            _check_headerless_data(grid, index, letters[index], report)
-            continue
-        if raw is UNUSABLE:
+    for column_number in sorted(header_row):
+        raw = header_row[column_number]
+        letter = get_column_letter(column_number)
+        if is_empty(raw) or raw is UNUSABLE:
             continue
         text = str(raw).strip()
-        cell = f"{letters[index]}1"
+        cell = f"{letter}1"
         key = text.lower()
         if key in FREE_TEXT_COLUMNS:
             continue
         column, suffix, problem = _classify(spec, key, text)
         if problem is not None:
-            report(problem[0], problem[1], row=1, column=text, cell=cell)
+            report(problem[0], problem[1], row=1, column=clip(text), cell=cell)
             if column is not None:
                 flawed.add(column.name)
             continue
@@ -222,16 +250,25 @@ def map_headers(spec: SheetSpec, grid: list[list], letters: list[str],
                    f"{column.name}.", "keep one of the two columns and delete the other.",
                    row=1, column=text, cell=cell)
             continue
-        found[column.name] = Header(column, index, text, letters[index], suffix)
+        found[column.name] = Header(column, column_number, text, letter, suffix)
+    _check_headerless_data(header_row, rows, report)
     _report_missing(spec, found, flawed, report)
     return found
 
 
-def _check_headerless_data(grid: list[list], index: int, letter: str, report: Report) -> None:
-    filled = [n for n, row in enumerate(grid[1:], start=2)
-              if index < len(row) and not is_empty(row[index])]
-    if filled:
-        report(f"column {letter} holds values (e.g. {letter}{filled[0]}) but has no header.",
+def _check_headerless_data(header_row: dict[int, object], rows: list[tuple[int, dict]],
+                           report: Report) -> None:
+    """Columns holding values below an empty header, each reported once at its first value."""
+    first_value: dict[int, int] = {}
+    for number, cells in rows:
+        for column_number, value in cells.items():
+            if column_number not in first_value and is_empty(header_row.get(column_number)) \
+                    and not is_empty(value):
+                first_value[column_number] = number
+    for column_number in sorted(first_value):
+        letter = get_column_letter(column_number)
+        report(f"column {letter} holds values (e.g. {letter}{first_value[column_number]}) but has "
+               "no header.",
                f"write the column's name in {letter}1, "
                "or delete the values if they are not needed.",
                row=1, cell=f"{letter}1")
@@ -257,15 +294,15 @@ def _classify(spec: SheetSpec, key: str, text: str):
             if suffix in column.dimension.units:
                 return column, suffix, None
             return column, None, (
-                f"'{suffix}' is not an accepted unit for {column.name}.",
+                f"'{clip(suffix, 40)}' is not an accepted unit for {column.name}.",
                 f"convert the values to one of the accepted units and name the column "
                 f"{or_list(column.accepted_headers())}.")
     close = suggest(key, spec.accepted_headers())
-    message = f"unknown column '{text}'" + (f"; did you mean '{close}'?" if close else ".")
+    message = f"unknown column '{clip(text, 60)}'" + (f"; did you mean '{close}'?" if close else ".")
     elsewhere = [other.name for other in (EQUIPMENT, HAZARD, SETTINGS)
                  if other is not spec and key in other.accepted_headers()]
     if elsewhere:
-        message = f"unknown column '{text}' (a column of sheet '{elsewhere[0]}', not of this one)."
+        message = f"unknown column '{clip(text, 60)}' (a column of sheet '{elsewhere[0]}', not of this one)."
     fix = (f"rename it to '{close}' if that is what it holds" if close else
            f"use the columns of sheet '{spec.name}': {_column_list(spec)}")
     fix += f"; a column of remarks may be named {or_list(list(FREE_TEXT_COLUMNS))}."
@@ -313,18 +350,49 @@ def is_empty(value: object) -> bool:
 
 
 def parse_text(value: object, column: Column) -> str:
-    if isinstance(value, float) and value.is_integer():
-        return str(int(value))
-    return str(value).strip()
+    if isinstance(value, float) and value.is_integer() and abs(value) < 2**53:
+        text = str(int(value))
+    else:
+        text = str(value).strip()
+    if text in EXCEL_ERRORS:
+        raise CellError(f"the cell shows the Excel error {text}.",
+                        "correct the formula so that it gives a value, or type the value.")
+    if column.max_chars is not None and len(text) > column.max_chars:
+        raise CellError(f"the text is {len(text):,} characters long ({quote(text)}); "
+                        f"{column.name} takes at most {column.max_chars}.",
+                        "shorten it (put remarks in a 'notes' column).")
+    return text
+
+
+def parse_path(value: object, column: Column) -> str:
+    """A file path: text, never a number (a number cell is a value typed in the wrong column)."""
+    if isinstance(value, numbers.Number):
+        raise CellError(f"{quote(value)} is a number, not the path of a record file.",
+                        "write the record file's name (e.g. records/lg.csv, relative to the "
+                        "workbook's folder), or leave the cell empty.")
+    text = str(value).strip()
+    if len(text) > column.max_chars:
+        raise CellError(f"the record path is {len(text):,} characters long ({quote(text)}); a "
+                        f"path is read up to {column.max_chars}.",
+                        "move the record file nearer the workbook (e.g. into a folder 'records' "
+                        "beside it) and give its path relative to the workbook's folder.")
+    text = parse_text(text, column)
+    if any(not c.isprintable() for c in text):
+        raise CellError("the record path holds control characters (line breaks, tabs).",
+                        "write the record file's name on one line.")
+    return text
 
 
 def parse_number(value: object, column: Column) -> float:
     if isinstance(value, bool):
         raise CellError(f"{quote(value)} is not a number.", "type a number.")
     if isinstance(value, numbers.Real):
-        number = float(value)
-    elif isinstance(value, str) and value.strip().startswith("#") and value.strip().isupper():
-        raise CellError(f"the cell shows the Excel error {quote(value)}.",
+        try:
+            number = float(value)
+        except OverflowError:  # an integer of hundreds of digits
+            number = math.inf
+    elif isinstance(value, str) and value.strip() in EXCEL_ERRORS:
+        raise CellError(f"the cell shows the Excel error {quote(value.strip())}.",
                         "correct the formula so that it gives a number, or type the value.")
     elif isinstance(value, str):
         try:
@@ -336,7 +404,8 @@ def parse_number(value: object, column: Column) -> float:
         raise CellError(f"{quote(value)} is not a number (the cell holds a {kind}).",
                         _number_fix(column))
     if not math.isfinite(number):
-        raise CellError(f"{quote(value)} is not a finite number.", _number_fix(column))
+        raise CellError(f"{quote(value)} is not a finite number (it is beyond what a computer "
+                        "represents, about 1.8e308).", _number_fix(column))
     return number
 
 
@@ -392,8 +461,8 @@ def parse_level_cell(value: object, column: Column) -> HazardLevel:
         return parse_hazard_level(parse_text(value, column))
     except ValueError as error:
         raise CellError(str(error).rstrip(".") + ".",
-                        "use one of those spellings (2in50 and 2%/50yr are the same "
-                        "level and may be mixed).") from None
+                        "write a probability (2in50, 2%/50yr and 2475yr are the same level and "
+                        "may be mixed) or a label such as DE, MCE_R or test.") from None
 
 
 def parse_raw(value: object, column: Column) -> object:
@@ -402,6 +471,7 @@ def parse_raw(value: object, column: Column) -> object:
 
 PARSERS = {
     "text": parse_text,
+    "path": parse_path,
     "number": parse_number,
     "integer": parse_integer,
     "boolean": parse_boolean,
@@ -448,6 +518,8 @@ def _expected(column: Column) -> str:
     dimension = column.dimension
     unit = f" {units.label(dimension, dimension.canonical)}" if dimension else ""
     low, high = column.low, column.high
+    if column.signed and low is not None:
+        return f"a magnitude of {number_text(low)} to {number_text(high)}{unit}"
     if column.signed:
         return f"a magnitude of at most {number_text(high)}{unit}"
     if low is None and column.positive:
@@ -467,7 +539,7 @@ def _range_fix(column: Column, value: float, suffix: str | None) -> str:
     if column.positive:
         others = [s for s in others if units.to_canonical(value, column.dimension, s) > 0]
     if not others:
-        return "correct the value."
+        return column.hint + "." if column.hint else "correct the value."
     label = units.label
     parts = [f"if the values are in {label(column.dimension, others[0])}, "
              f"name the column {column.header(others[0])}"]

@@ -9,37 +9,34 @@ reported, never turned into NaN, and no row is dropped except a blank one.
 
 The column table that drives the checks is in :mod:`assess.inventory.schema`.
 
-Safety: openpyxl parses the package XML with defusedxml when it is installed,
-which refuses entity declarations ("billion laughs") and external references;
-this module refuses to load without it. Formula cells are read from the value
-Excel or LibreOffice cached when saving; a formula without one is reported.
+Safety and bounds: the file is read by :mod:`assess.inventory.xlsx`, which
+checks the package's inflated size before parsing, streams each sheet keeping
+only its non-empty cells (a stray cell at row 1,048,576 costs nothing), bounds
+the cells parsed, and parses XML with defusedxml (no entity declarations, no
+external references). Formula cells are read from the value Excel or
+LibreOffice cached when saving; a formula without one, an Excel error value
+(``#DIV/0!``) and a cell the file cannot decode are reported at their cell.
+Messages quote at most 80 characters of a cell and list at most
+:data:`MAX_PROBLEMS` problems.
 """
 from __future__ import annotations
 
-import zipfile
+import errno
 from dataclasses import dataclass, field
 from pathlib import Path
 
-import defusedxml
-import openpyxl
 import pandas as pd
-from openpyxl.utils import get_column_letter
-from openpyxl.worksheet.worksheet import Worksheet
 
 from assess.data import default_settings
 from assess.errors import InputError, Problem
-from assess.inventory import schema
+from assess.inventory import schema, xlsx
 from assess.inventory.model import Inventory
 from assess.inventory.schema import (EQUIPMENT, HAZARD, SETTINGS, UNUSABLE, CellError, Header,
                                      SheetSpec)
 
-if not openpyxl.DEFUSEDXML:  # pragma: no cover - depends on the environment
-    raise ImportError("assess needs openpyxl to parse workbooks with defusedxml (XML-bomb "
-                      "protection): install defusedxml and unset OPENPYXL_DEFUSEDXML")
-
-_ACCEPTED_SUFFIXES = (".xlsx", ".xlsm")
-_OLE_MAGIC = b"\xd0\xcf\x11\xe0\xa1\xb1\x1a\xe1"  # encrypted .xlsx and legacy .xls
-_RESAVE = "open it in Excel or LibreOffice and save it as an Excel workbook (.xlsx)."
+#: Most problems listed for one workbook; the rest are counted (a wrong column of
+#: 10,000 rows is one mistake, not 10,000 lines to read).
+MAX_PROBLEMS = 50
 
 
 @dataclass
@@ -111,15 +108,20 @@ def read_workbook(path: str | Path) -> Inventory:
     path = Path(path)
     problems: list[Problem] = []
     report = SheetReport(given, None, problems)
-    books = _open(path, report)
-    if books is None:
-        raise InputError(problems)
-    formulas, values = books
-    sheets = _find_sheets(formulas, report)
-    reports = {name: SheetReport(given, title, problems) for name, title in sheets.items()}
-    tables = {name: _read_table(spec, sheets[name], formulas, values, reports[name])
-              for name, spec in (("equipment", EQUIPMENT), ("hazard", HAZARD),
-                                 ("settings", SETTINGS)) if name in sheets}
+    try:
+        book = xlsx.Book(path)
+    except xlsx.Unreadable as error:
+        report(error.message, error.fix)
+        raise InputError(problems) from None
+    with book:
+        sheets = _find_sheets(book, report)
+        reports = {name: SheetReport(given, title, problems) for name, title in sheets.items()}
+        tables = {}
+        for name, spec in (("equipment", EQUIPMENT), ("hazard", HAZARD), ("settings", SETTINGS)):
+            if name in sheets:
+                cells = _sheet_cells(book, sheets[name], reports[name])
+                if cells is not None:
+                    tables[name] = _read_table(spec, cells, reports[name])
     equipment = hazard = []
     if "equipment" in tables:
         equipment = _check_equipment(tables["equipment"], reports["equipment"])
@@ -129,143 +131,107 @@ def read_workbook(path: str | Path) -> Inventory:
     if "settings" in tables:
         settings = _read_settings(tables["settings"], settings, reports["settings"])
     if problems:
-        raise InputError(problems)
+        raise InputError(_capped(problems, given))
     return Inventory(path=path, equipment=_frame(equipment, _EQUIPMENT_TYPES),
                      hazard=_frame(hazard, _HAZARD_TYPES), settings=settings)
 
 
+def _capped(problems: list[Problem], file: str) -> list[Problem]:
+    """The first :data:`MAX_PROBLEMS` problems, and a last one counting those left out."""
+    if len(problems) <= MAX_PROBLEMS:
+        return problems
+    left = len(problems) - MAX_PROBLEMS
+    return problems[:MAX_PROBLEMS] + [Problem(
+        file, f"and {left:,} more problem{'s' if left != 1 else ''}, not listed.",
+        "correct those above and run again; the rest are often the same mistake.")]
+
+
 # ---------------------------------------------------------------- the file
 
-def _open(path: Path, report: SheetReport):
-    """Both views of the workbook (formulas, cached values), or None after reporting why not."""
-    if not path.exists():
-        report(f"the file '{path}' does not exist.",
-               "check the path and the file name (including its extension .xlsx).")
-        return None
-    if path.is_dir():
-        report(f"'{path}' is a folder, not a workbook.", "give the path of the .xlsx file.")
-        return None
-    try:
-        with path.open("rb") as handle:
-            head = handle.read(8)
-    except OSError as error:
-        report(f"the file cannot be read ({error.strerror or error}).",
-               "check that you may read it and that no other program locks it.")
-        return None
-    if head == _OLE_MAGIC:
-        report("the file is password-protected (encrypted) or an old-style .xls workbook, "
-               "which cannot be read.",
-               "remove the password (in Excel: File > Info > Protect Workbook > Encrypt with "
-               "Password, empty it), then save it as an Excel workbook (.xlsx).")
-        return None
-    if path.suffix.lower() not in _ACCEPTED_SUFFIXES:
-        report(f"the file is not an Excel workbook: its extension is '{path.suffix}', "
-               f"expected .xlsx.", _RESAVE)
-        return None
-    if not zipfile.is_zipfile(path):
-        report("the file is not a valid .xlsx workbook (it is not a zip package; "
-               "it may be damaged or be another kind of file renamed).", _RESAVE)
-        return None
-    try:
-        formulas = openpyxl.load_workbook(path, data_only=False)
-        values = openpyxl.load_workbook(path, data_only=True)
-    except Exception as error:  # noqa: BLE001 - openpyxl raises many kinds on a damaged package
-        unsafe = _unsafe_xml(error)
-        if unsafe is not None:
-            report(f"the file contains XML that is refused for safety ({type(unsafe).__name__}: "
-                   "entity declarations or external references, as in an 'XML bomb'); "
-                   "it was not read.",
-                   "if the file is yours, " + _RESAVE + " Otherwise do not use it.")
-        else:
-            reason = str(error).splitlines()[0] if str(error) else type(error).__name__
-            report(f"the workbook cannot be read: it looks damaged ({reason}).", _RESAVE)
-        return None
-    return formulas, values
-
-
-def _unsafe_xml(error: BaseException | None) -> defusedxml.DefusedXmlException | None:
-    """The defusedxml refusal behind ``error`` (openpyxl wraps it in a ValueError), if any."""
-    seen = set()
-    while error is not None and id(error) not in seen:
-        if isinstance(error, defusedxml.DefusedXmlException):
-            return error
-        seen.add(id(error))
-        error = error.__cause__ or error.__context__
-    return None
-
-
-def _find_sheets(book, report: SheetReport) -> dict[str, str]:
+def _find_sheets(book: xlsx.Book, report: SheetReport) -> dict[str, str]:
     """Sheet titles by spec name (matched case-insensitively); missing required sheets reported."""
     by_lower = {title.strip().lower(): title for title in book.sheetnames}
     found = {}
     for spec in (EQUIPMENT, HAZARD, SETTINGS):
         title = by_lower.get(spec.name)
-        if title is not None and not isinstance(book[title], Worksheet):
+        if title is not None and not book.is_table(title):
             report(f"sheet '{title}' is a chart, not a table.",
                    f"put the {spec.name} table on a worksheet named '{spec.name}'.")
             continue
         if title is not None:
             found[spec.name] = title
         elif spec is not SETTINGS:
-            have = ", ".join(f"'{t}'" for t in book.sheetnames)
+            have = ", ".join(f"'{schema.clip(t, 40)}'" for t in book.sheetnames[:20])
+            more = f" and {len(book.sheetnames) - 20} more" if len(book.sheetnames) > 20 else ""
             report(f"the required sheet '{spec.name}' is missing; the workbook has the sheets "
-                   f"{have}.",
+                   f"{have}{more}.",
                    f"add a sheet named '{spec.name}' (or rename the sheet that holds its table).")
     return found
 
 
-def _grid(formulas: Worksheet, values: Worksheet, report: SheetReport) -> list[list]:
-    """The sheet's cell values, row by row; a formula without a computed value is reported."""
-    grid = []
-    for formula_row, value_row in zip(formulas.iter_rows(), values.iter_rows()):
-        cells = []
-        for formula_cell, value_cell in zip(formula_row, value_row):
-            value = value_cell.value
-            if formula_cell.data_type == "f" and value is None:
-                text = getattr(formula_cell.value, "text", formula_cell.value)
-                header = values.cell(row=1, column=formula_cell.column).value
-                report(f"cell {formula_cell.coordinate} holds the formula {text} with no computed "
-                       "value (the file was saved by a program that does not calculate formulas).",
-                       "open and save the workbook in Excel or LibreOffice, or type the value.",
-                       row=formula_cell.row, cell=formula_cell.coordinate,
-                       column=None if formula_cell.row == 1 or schema.is_empty(header)
-                       else str(header).strip())
-                value = UNUSABLE
-            cells.append(value)
-        grid.append(cells)
-    return grid
+def _sheet_cells(book: xlsx.Book, title: str, report: SheetReport) -> xlsx.SheetCells | None:
+    """The sheet's non-empty cells, each cell that is a problem reported and made UNUSABLE;
+    None after reporting a sheet that cannot be read."""
+    try:
+        cells = book.cells(title)
+    except xlsx.Unreadable as error:
+        report(error.message, error.fix, row=error.row)
+        return None
+    header = cells.header
+    for number, row in cells.rows.items():
+        for column, value in row.items():
+            if not isinstance(value, xlsx.MARKERS):
+                continue
+            message, fix = _marker_problem(value)
+            name = header.get(column)
+            report(f"cell {xlsx.address(number, column)} {message}", fix, row=number,
+                   cell=xlsx.address(number, column),
+                   column=None if number == 1 or schema.is_empty(name) or name is UNUSABLE
+                   or isinstance(name, xlsx.MARKERS) else schema.clip(name, 40))
+            row[column] = UNUSABLE
+    return cells
+
+
+def _marker_problem(marker) -> tuple[str, str]:
+    """What is wrong with a cell the reader marked, and the fix."""
+    if isinstance(marker, xlsx.NoCachedValue):
+        return (f"holds the formula {schema.clip(marker.formula, 60)} with no computed value (the "
+                "file was saved by a program that does not calculate formulas).",
+                "open and save the workbook in Excel or LibreOffice, or type the value.")
+    if isinstance(marker, xlsx.ExcelError):
+        return (f"shows the Excel error {marker.code} (a formula that failed).",
+                "correct the formula so that it gives a value, or type the value.")
+    return (f"cannot be read: {marker.reason}; the file is damaged there.",
+            "retype the cell in Excel or LibreOffice and save the workbook.")
 
 
 # ---------------------------------------------------------------- rows
 
-def _read_table(spec: SheetSpec, title: str, formulas, values, report: SheetReport) -> Table:
+def _read_table(spec: SheetSpec, cells: xlsx.SheetCells, report: SheetReport) -> Table:
     """Headers recognised and every non-blank row parsed cell by cell."""
-    grid = _grid(formulas[title], values[title], report)
-    if not grid or (len(grid) == 1 and all(schema.is_empty(v) for v in grid[0])):
-        report(f"sheet '{title}' is empty.",
+    title = cells.title
+    rows = [(number, row) for number, row in cells.data_rows()
+            if not all(schema.is_empty(v) for v in row.values())]
+    header_row = cells.header
+    if all(schema.is_empty(v) for v in header_row.values()) and not rows:
+        report(f"sheet '{schema.clip(title, 40)}' is empty.",
                f"write the column headers in row 1: {', '.join(c.header() for c in spec.columns)}.",
                row=1)
         return Table(title, {}, [])
-    width = max(len(row) for row in grid)
-    letters = [get_column_letter(i + 1) for i in range(width)]
-    headers = schema.map_headers(spec, grid, letters, report)
-    rows = []
-    for number, cells in enumerate(grid[1:], start=2):
-        if all(schema.is_empty(v) for v in cells):
-            continue
-        rows.append(_read_row(spec, headers, number, cells, report))
-    if not rows and spec is not SETTINGS:
-        report(f"sheet '{title}' has no data rows below its headers.",
+    headers = schema.map_headers(spec, header_row, rows, report)
+    parsed = [_read_row(spec, headers, number, row, report) for number, row in rows]
+    if not parsed and spec is not SETTINGS:
+        report(f"sheet '{schema.clip(title, 40)}' has no data rows below its headers.",
                f"add one row per {spec.subject.split(' ', 1)[1]}.", row=2)
-    return Table(title, headers, rows)
+    return Table(title, headers, parsed)
 
 
-def _read_row(spec: SheetSpec, headers: dict[str, Header], number: int, cells: list,
+def _read_row(spec: SheetSpec, headers: dict[str, Header], number: int, cells: dict[int, object],
               report: SheetReport) -> Row:
     row = Row(number)
     for column in spec.columns:
         header = headers.get(column.name)
-        value = cells[header.index] if header is not None and header.index < len(cells) else None
+        value = cells.get(header.index) if header is not None else None
         row.raw[column.name] = value
         if value is UNUSABLE:
             row.failed.add(column.name)
@@ -339,6 +305,7 @@ def _check_hazard(table: Table, folder: Path, report: SheetReport) -> list[dict]
     headers = table.headers
     first_row_of: dict[tuple, int] = {}
     lacking: dict[str, list[int]] = {"pta": [], "tp": []}  # rows needing an absent column
+    names: dict[str, str] = {}  # a level's name by its key: 'DE' for DE and de
     records = []
     for row in table.rows:
         record_path = _record_path(row, folder, headers, report)
@@ -346,7 +313,7 @@ def _check_hazard(table: Table, folder: Path, report: SheetReport) -> list[dict]
             for name in _require_pulse_measures(row, headers, report):
                 lacking[name].append(row.number)
         _check_duplicate_motion(row, headers, first_row_of, report)
-        records.append(_hazard_record(row, record_path))
+        records.append(_hazard_record(row, record_path, names))
     for name, rows in lacking.items():
         if rows and "record" in headers:  # else the missing column is already reported
             column = HAZARD.column(name)
@@ -360,15 +327,40 @@ def _check_hazard(table: Table, folder: Path, report: SheetReport) -> list[dict]
     return records
 
 
+#: Longest file name (one path component) most file systems take [bytes].
+_NAME_MAX_BYTES = 255
+
+
 def _record_path(row: Row, folder: Path, headers: dict[str, Header], report: SheetReport) -> str:
-    """The absolute path of the row's record ("" when none); a missing file is reported."""
+    """The absolute path of the row's record ("" when none); a path that cannot name a file,
+    or a file that is not there, is reported at the row's record cell."""
     text = row.values.get("record") or ""
     if not text:
         return ""
-    path = (folder / text).absolute()  # never .resolve(): it raises on a symlink loop
-    if not path.is_file():
-        report.at(row.number, headers.get("record"),
-                  f"the record file '{text}' was not found (looked for {path}).",
+    header = headers.get("record")
+    too_long = [part for part in Path(text).parts if len(part.encode("utf-8", "replace")) > _NAME_MAX_BYTES]
+    if too_long:
+        row.failed.add("record")
+        report.at(row.number, header, f"the record path {schema.quote(text)} has a name of "
+                  f"{len(too_long[0]):,} characters; a file name has at most {_NAME_MAX_BYTES}.",
+                  "give the record file's real name, relative to the workbook's folder.")
+        return ""
+    try:
+        path = (folder / text).resolve()
+        found = path.is_file()
+    except (OSError, RuntimeError, ValueError) as error:  # a symlink loop, a NUL, a bad name
+        row.failed.add("record")
+        loop = isinstance(error, RuntimeError) or getattr(error, "errno", None) == errno.ELOOP
+        why = ("it is a link that leads back to itself" if loop
+               else getattr(error, "strerror", None) or type(error).__name__)
+        report.at(row.number, header, f"the record path {schema.quote(text)} cannot be followed "
+                  f"({why}).", "give the path of the record file itself, relative to the "
+                  "workbook's folder.")
+        return ""
+    if not found:
+        report.at(row.number, header,
+                  f"the record file {schema.quote(text)} was not found (looked for "
+                  f"{schema.clip(str(path), 200)}).",
                   "put the record file there, or correct its path (relative to the "
                   "workbook's folder).")
     return str(path)
@@ -400,23 +392,24 @@ def _check_duplicate_motion(row: Row, headers: dict[str, Header], first_row_of: 
     if not row.ok("level", "motion", "floor") or level is None:
         return
     motion, floor = row.values["motion"], row.values["floor"]
-    key = (level.name, str(motion).casefold(), floor)
+    key = (level.key, str(motion).casefold(), floor)
     if key not in first_row_of:
         first_row_of[key] = row.number
         return
     report.at(row.number, headers.get("motion"),
-              f"motion '{motion}' at level {level.name}, floor {floor} is given twice: in row "
+              f"motion '{motion}' at level {row.raw['level']}, floor {floor} is given twice: in row "
               f"{first_row_of[key]} and in row {row.number}.",
               "delete one of the two rows, or correct its level, motion or floor.")
 
 
-def _hazard_record(row: Row, record_path: str) -> dict:
-    """One output row of the hazard frame (canonical names, SI)."""
+def _hazard_record(row: Row, record_path: str, names: dict[str, str]) -> dict:
+    """One output row of the hazard frame (canonical names, SI); ``names`` gives every spelling
+    of a level the name of its first (a label's case as first written)."""
     values = row.values
     level, floor = values.get("level"), values.get("floor")
     label = row.raw["level"]
     return {
-        "level": level.name if level is not None else None,
+        "level": names.setdefault(level.key, level.name) if level is not None else None,
         "level_label": schema.parse_text(label, HAZARD.column("level")) if level else None,
         "motion": values.get("motion"),
         "all_floors": floor == "all",
@@ -429,7 +422,29 @@ def _hazard_record(row: Row, record_path: str) -> dict:
 
 # ---------------------------------------------------------------- settings
 
-_POSITIVE_SETTINGS = ("zeta", "eta", "sigma")
+_IM_WHY = ("IM = PTA/(mu g) - 1 lies between 0 (the onset of sliding) and 499 (PTA 5 g on "
+           "mu 0.01, the equipment and hazard sheets' bounds)")
+#: Bounds of the numeric settings, (low, high, why), Konstantinidis & Makris (2010) eqs. 8-11:
+#: a value outside makes the regression Pi = zeta IM^eta Z say nothing about a real block.
+SETTING_BOUNDS = {
+    # the median of Pi = Umax wp^2/PTA at IM = 1: Newmark's rectangular pulse of duration Tp,
+    # the most damaging pulse of its period, gives Pi = 2 pi^2 IM, about 20 at IM = 1
+    "zeta": (1e-3, 100.0, "zeta is the median of Pi = Umax wp^2/PTA at IM = 1, which is 0.5 to "
+             "2.8 in the paper's simulations (Table 3) and about 20 for Newmark's rectangular "
+             "pulse, the most damaging pulse of its period"),
+    # the power of IM: exactly 1 for Newmark's rectangular pulse, 0.953 in the paper
+    "eta": (0.1, 3.0, "eta is the power of IM in the median sliding: 1 for Newmark's "
+            "rectangular pulse, 0.953 in the paper; beyond 3 the median sliding at IM = 10 would "
+            "be a thousand times the pulse's own displacement"),
+    # the log-standard deviation of Pi given IM: at 2 the 84th percentile is 7.4 medians
+    "sigma": (0.01, 2.0, "sigma is the log-standard deviation of the sliding given IM: 0.445 in "
+              "the paper, 0.3 to 1 for record-to-record scatter; at 2 the 84th percentile is "
+              "already 7.4 times the median"),
+    "im_min": (0.0, 500.0, _IM_WHY),
+    "im_max": (0.0, 500.0, _IM_WHY),
+}
+#: Longest text of a text setting (facility, site): it heads the report.
+SETTING_TEXT_MAX_CHARS = 200
 _ORDERED_SETTINGS = (("risk_pf_moderate", "risk_pf_high"), ("im_min", "im_max"))
 
 
@@ -462,7 +477,13 @@ def _setting_value(key: str, row: Row, default: object, header: Header, report: 
     """The value of one settings row (float for numeric keys), or None after reporting."""
     raw = row.values["value"]
     if not isinstance(default, (int, float)) or isinstance(default, bool):
-        return "" if schema.is_empty(raw) else schema.parse_text(raw, SETTINGS.column("value"))
+        text = "" if schema.is_empty(raw) else schema.parse_text(raw, SETTINGS.column("value"))
+        if len(text) > SETTING_TEXT_MAX_CHARS:
+            report.at(row.number, header, f"setting '{key}' is {len(text):,} characters long "
+                      f"({schema.quote(text)}); it takes at most {SETTING_TEXT_MAX_CHARS}.",
+                      "shorten it.")
+            return None
+        return text
     if schema.is_empty(raw):
         report.at(row.number, header, f"setting '{key}' has no value.",
                   f"type a number, or delete the row to use the default {default}.")
@@ -477,12 +498,14 @@ def _setting_value(key: str, row: Row, default: object, header: Header, report: 
 
 def _check_settings(merged: dict, user: dict, header: Header | None, report: SheetReport) -> None:
     bad = set()
-    for key in _POSITIVE_SETTINGS:
-        if key in user and merged[key] <= 0:
+    defaults = default_settings()
+    for key, (low, high, why) in SETTING_BOUNDS.items():
+        if key in user and not low <= merged[key] <= high:
             bad.add(key)
-            report.at(user[key][1], header, f"setting '{key}' is "
-                      f"{schema.quote(merged[key])}; it must be greater than 0.",
-                      "correct it, or delete the row to use the paper's value.")
+            report.at(user[key][1], header, f"setting '{key}' is {schema.quote(merged[key])}; "
+                      f"it lies between {low:g} and {high:g}: {why}.",
+                      f"correct it, or delete the row to use the default {defaults[key]:g} "
+                      "(Konstantinidis & Makris 2010).")
     for key in _ORDERED_SETTINGS[0]:
         if key in user and not 0 < merged[key] < 1:
             bad.add(key)
