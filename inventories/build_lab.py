@@ -40,6 +40,15 @@ CG_LOW = "cg_height: assumed below mid-height (compressor/batteries/drive in the
 CG_HIGH = "cg_height: assumed above mid-height (heavy part carried high on a light stand or top shelves loaded)"
 
 
+#: What a failure costs, by the kind of item (the id's prefix): gases, cryogens, solvents and biohazards are
+#: hazardous; loaded shelving and racks can fall on people or block an exit (life-safety); freezers,
+#: incubators and servers hold the samples and data the labs run on (critical); the rest is valuable or ordinary.
+CONSEQUENCE_BY_PREFIX = {"GAS": "hazardous", "LN2": "hazardous", "CAB": "hazardous", "BSC": "hazardous",
+                         "FLM": "hazardous", "SHF": "life-safety", "ULT": "critical", "FRZ": "critical",
+                         "INC": "critical", "SRV": "critical", "REF": "valuable", "CEN": "valuable",
+                         "ACL": "valuable", "SHK": "ordinary"}
+
+
 def item(id, name, room, floor, h, w, d, kg, mu, clearance, notes, source,
          mu_static=None, cg=None, anchored=False, qty=1):
     """One row of the `equipment` sheet, in cm and kg (SPEC.md section 1)."""
@@ -47,6 +56,7 @@ def item(id, name, room, floor, h, w, d, kg, mu, clearance, notes, source,
                 depth_cm=d, mass_kg=kg, mu=mu, mu_static=mu_static,
                 clearance_cm=clearance, cg_height_cm=cg,
                 anchored="yes" if anchored else "no", quantity=qty,
+                consequence=CONSEQUENCE_BY_PREFIX.get(id.split("-")[0], "ordinary"),
                 notes=notes, source=source)
 
 

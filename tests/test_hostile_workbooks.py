@@ -376,3 +376,18 @@ def test_calibrate_lists_at_most_50_problems(tmp_path):
     done = run("calibrate", KM2010, "--measured", measured, "--out", tmp_path / "cal", cwd=tmp_path)
     assert_refused(done, "and 250 more problems, not listed", max_chars=50 * 400)
     assert done.stderr.count("  - ") == 51
+
+
+def test_consequence_column_is_read_and_a_wrong_value_is_located(tmp_path):
+    """consequence (SPEC §1): any case, space or underscore for the hyphen, ordinary when empty; anything else
+    exit 2 at its cell."""
+    sheets = good_sheets()
+    for row in sheets["equipment"]:
+        row["consequence"] = ""
+    sheets["equipment"][0]["consequence"] = "Life Safety"
+    path = workbook(tmp_path, sheets)
+    consequences = read_workbook(path).equipment["consequence"]
+    assert consequences.iloc[0] == "life-safety" and consequences.iloc[-1] == "ordinary"
+    sheets["equipment"][0]["consequence"] = "catastrophic"
+    bad = workbook(tmp_path, sheets, name="bad.xlsx")
+    assess_refuses(tmp_path, bad, "'catastrophic' is not a consequence", "consequence")

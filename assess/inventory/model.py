@@ -21,7 +21,8 @@ class Inventory:
         ``floor`` (int), ``height_m``, ``width_m``, ``depth_m``,
         ``mass_kg``, ``mu``, ``mu_static`` (= ``mu`` when not given),
         ``clearance_m``, ``cg_height_m`` (= ``height_m / 2`` when not given),
-        ``anchored`` (bool), ``quantity`` (int, 1 when not given),
+        ``anchored`` (bool), ``quantity`` (int, 1 when not given), ``consequence`` (str, one of
+        :data:`~assess.inventory.schema.CONSEQUENCES`, ``ordinary`` when not given),
         ``row`` (int, the Excel row the item came from).
     hazard : pandas.DataFrame
         One row per motion and floor: ``level`` (canonical name, e.g.

@@ -139,6 +139,7 @@ EQUIPMENT = SheetSpec("equipment", (
     # identical items in one row: a million is beyond any building (a large data centre
     # holds some 10^4 racks) and keeps every count exact in 64-bit integers and floats
     Column("quantity", "integer", default=1, low=1, high=1_000_000),
+    Column("consequence", "consequence", default="ordinary"),
 ), subject="a piece of equipment")
 
 HAZARD = SheetSpec("hazard", (
@@ -456,6 +457,24 @@ def parse_pulse(value: object, column: Column) -> str:
     return text
 
 
+#: What an item's failure may cost (SPEC §1, ``consequence``), most severe first.
+CONSEQUENCES = ("life-safety", "hazardous", "critical", "valuable", "ordinary")
+
+
+def parse_consequence(value: object, column: Column) -> str:
+    """One of :data:`CONSEQUENCES`, written in any case, with a space or an underscore for the hyphen.
+
+    >>> parse_consequence(" Life Safety ", None), parse_consequence("HAZARDOUS", None)
+    ('life-safety', 'hazardous')
+    """
+    text = str(value).strip().lower().replace("_", "-").replace(" ", "-")
+    if text not in CONSEQUENCES:
+        raise CellError(f"{quote(value)} is not a consequence.",
+                        "write one of " + ", ".join(CONSEQUENCES) + " (what a failure of the item costs), "
+                        "or leave the cell empty for ordinary.")
+    return text
+
+
 def parse_level_cell(value: object, column: Column) -> HazardLevel:
     try:
         return parse_hazard_level(parse_text(value, column))
@@ -477,6 +496,7 @@ PARSERS = {
     "boolean": parse_boolean,
     "floor_or_all": parse_floor_or_all,
     "pulse": parse_pulse,
+    "consequence": parse_consequence,
     "level": parse_level_cell,
     "raw": parse_raw,
 }
