@@ -29,7 +29,7 @@ from assess.hazard.records import MIN_DURATION_S, Record, pulse_record, read_rec
 from assess.inventory import Inventory
 from assess.mechanics.block import Block
 from assess.mechanics.engine import DEFAULT_TAIL_S, simulate, simulate_cases
-from assess.mechanics.geometry import frequency_parameter, inertia_ratio, slenderness
+from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2, frequency_parameter, inertia_ratio, slenderness
 from assess.mechanics.modes import MODE_SEVERITY, ROCK, SLIDE, SLIDE_ROCK, initial_mode
 from assess.result import MOTION_COLUMNS, SUMMARY_COLUMNS, AssessmentResult, Flag
 
@@ -455,12 +455,69 @@ def _summarise(equipment: pd.DataFrame, cases: pd.DataFrame, demand: pd.DataFram
         row["risk_range"] = _risk_range(row["risk"], bounds)
         row["action"] = recommended_action(row, uplift, settings)
         row["action_kind"] = action_kind(row, uplift)
+        row.update(anchorage_demand(item, row, settings))
+        row["what_if"] = what_if(row, settings)
         row["priority_score"] = priority_score(row["consequence"], row["p_overturn"], row["p_beyond_clearance"],
                                                uplift)
         rows.append(row)
     summary = pd.DataFrame(rows)
     summary["priority"] = priorities(summary)
     return summary, flags
+
+
+def what_if(row: dict, settings: dict) -> str:
+    """The item's risk if the action is taken, in one sentence from its own numbers (its governing demand).
+
+    >>> what_if({"action_kind": "room", "demand_room_cm": 54.2, "clearance_cm": 20.0, "p_overturn": 0.0},
+    ...         {"risk_pf_moderate": 0.1})
+    'Anchored or restrained, it would neither slide nor overturn. Given 55 cm of room (it has 20 cm), its chance of sliding past it would be 10%: low risk.'
+    """
+    kind = row.get("action_kind")
+    if kind not in ("anchor", "restrain", "room"):
+        return ""
+    anchored = "Anchored or restrained, it would neither slide nor overturn."
+    if kind == "anchor":
+        return anchored + (" Giving it room does not help: it overturns or rocks where it stands.")
+    room = float(np.ceil(row["demand_room_cm"]))
+    return (f"{anchored} Given {room:.0f} cm of room (it has {np.floor(row['clearance_cm']):.0f} cm), its chance of "
+            f"sliding past it would be {float(settings['risk_pf_moderate']):.0%}: low risk.")
+
+
+def anchorage_demand(item, row: dict, settings: dict) -> dict:
+    """For an item to anchor or restrain: the ASCE 7-16 §13.3.1 design force and what it does at the base
+    (:mod:`assess.fragility.anchorage`), about the base edge of the more slender direction.
+
+    ``anchor_force_kn`` (F_p, per unit), ``anchor_moment_knm``, ``anchor_tension_kn`` and
+    ``anchor_basis`` (the factors used, in words); NaN and a sentence saying what is missing where
+    ``sds_g`` is not in the settings.
+    """
+    from assess.fragility.anchorage import (
+        COMPONENT_AMPLIFICATION, COMPONENT_RESPONSE_MODIFICATION, base_overturning, component_design_force,
+        importance_factor,
+    )
+
+    empty = {"anchor_force_kn": np.nan, "anchor_moment_knm": np.nan, "anchor_tension_kn": np.nan,
+             "anchor_basis": ""}
+    if row.get("action_kind") not in ("anchor", "restrain"):
+        return empty
+    sds_g = float(settings.get("sds_g", np.nan))
+    if not np.isfinite(sds_g):
+        return {**empty, "anchor_basis": "add sds_g (and roof_floor) to the settings for the ASCE 7-16 design force"}
+    roof = float(settings.get("roof_floor", np.nan))
+    z_over_h = min(max(float(item.floor) / roof, 0.0), 1.0) if np.isfinite(roof) else 1.0
+    importance = importance_factor(row.get("consequence", "ordinary"))
+    weight_n = float(item.mass_kg) * STANDARD_GRAVITY_M_S2
+    force_n = float(component_design_force(weight_n, sds_g, z_over_h, importance))
+    half_width_m = min(float(item.width_m), float(item.depth_m)) / 2.0
+    moment_nm, tension_n = (float(x) for x in base_overturning(force_n, float(item.cg_height_m), weight_n,
+                                                               half_width_m, sds_g))
+    basis = (f"ASCE 7-16 eqs. 13.3-1 to 13.3-3: a_p {COMPONENT_AMPLIFICATION:g}, R_p "
+             f"{COMPONENT_RESPONSE_MODIFICATION:g} (Table 13.5-1), I_p {importance:g} (§13.1.3), S_DS {sds_g:g} g, "
+             f"z/h {z_over_h:.2f}{'' if np.isfinite(roof) else ' (roof_floor not given: z/h = 1)'}; W_p "
+             f"{weight_n / 1000:.2f} kN per unit; tension from 0.9D - 1.0E with E_v = 0.2 S_DS D, "
+             "without the overstrength factor for anchors in concrete (§13.4.2)")
+    return {"anchor_force_kn": force_n / 1000.0, "anchor_moment_knm": moment_nm / 1000.0,
+            "anchor_tension_kn": tension_n / 1000.0, "anchor_basis": basis}
 
 
 #: Weight of what an item's failure costs (the workbook's ``consequence``), for the order of action.

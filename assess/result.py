@@ -18,7 +18,7 @@ SUMMARY_COLUMNS = [
     "demand_room_cm", "demand_median_low_cm", "demand_median_high_cm", "demand_p84_low_cm", "demand_p84_high_cm",
     "p_beyond_clearance_low", "p_beyond_clearance_high", "p_overturn_low", "p_overturn_high",
     "risk_range", "suite_motions", "suite_histories", "demand_note", "action_kind", "priority", "consequence",
-    "priority_score",
+    "priority_score", "anchor_force_kn", "anchor_moment_knm", "anchor_tension_kn", "anchor_basis", "what_if",
 ]
 
 #: Columns of ``motions.csv`` in order (SPEC §3 first, then extras).

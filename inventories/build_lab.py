@@ -248,9 +248,13 @@ SETTINGS = [
     ("facility", f"Sample research laboratory building (after the UC Science Building, {K10})"),
     ("site", "Berkeley, California (sample)"),
     ("zeta", 0.370), ("eta", 0.953), ("sigma", 0.445),
+    ("sds_g", 1.2), ("roof_floor", 7),
 ]
 
 SOURCES = [
+    ("settings: sds_g, roof_floor", "S_DS 1.2 g: a typical ASCE 7-16 value for a Berkeley site of class D (an "
+                                    "assumption for the sample, not a site-specific value); the roof is above "
+                                    "floor 6, so roof_floor = 7 for z/h in ASCE 7-16 eq. 13.3-1."),
     ("disclaimer", "A SAMPLE building. Rooms, items, depths, masses, clearances and most friction coefficients are "
                    "invented but typical; only the numbers attributed to the paper below are from it."),
     ("paper", f"{K10}, Experimental and analytical studies on the response of 1/4-scale models of freestanding "

@@ -273,7 +273,7 @@ def test_every_item_is_in_one_action_group_and_no_advice_contradicts_its_numbers
              _item("RACK", 200.0, 40.0, 60.0, 0.6, 20.0), _item("BOX", 60.0, 80.0, 80.0, 0.9, 10.0),
              {**_item("ANCH", 200.0, 40.0, 60.0, 0.6, 20.0), "anchored": True}]
     inventory = _inventory(tmp_path, items, motions)
-    inventory.settings["simulate_motions"] = "pulse"
+    inventory.settings.update(simulate_motions="pulse", sds_g=1.0, roof_floor=4.0)
     result = run_assessment(inventory, "2in50")
     summary = result.summary.set_index("id")
     groups = _action_groups(report_context(result)["rows"])
@@ -293,6 +293,14 @@ def test_every_item_is_in_one_action_group_and_no_advice_contradicts_its_numbers
     assert {"TIGHT": "restrain", "ROOMY": "none", "RACK": "anchor", "BOX": "none"} == \
         {i: summary.loc[i, "action_kind"] for i in ("TIGHT", "ROOMY", "RACK", "BOX")}
     assert sum(result.risk_counts().values()) == len(summary)
+    # ASCE 7-16 by hand for the rack on the ground floor (z/h = 0, I_p = 1): 0.4·1·1.0·W/2.5 = 0.16 W is below
+    # the floor of eq. 13.3-3, 0.3·S_DS·W; W = 200 kg · g. Tension: (F·h_cg − 0.7·W·b) / 2b, b = 0.2, h_cg = 1.0.
+    weight_kn = 200 * 9.80665 / 1000
+    rack = summary.loc["RACK"]
+    assert rack["anchor_force_kn"] == pytest.approx(0.3 * weight_kn, rel=1e-12)
+    assert rack["anchor_tension_kn"] == pytest.approx((0.3 * weight_kn * 1.0 - 0.7 * weight_kn * 0.2) / 0.4, rel=1e-12)
+    assert np.isnan(summary.loc["ROOMY", "anchor_force_kn"])  # no action, no force
+    assert "low risk" in summary.loc["TIGHT", "what_if"] and summary.loc["RACK", "what_if"].startswith("Anchored")
     assert "What to do first" in render_html(result)
 
 

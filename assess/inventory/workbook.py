@@ -442,6 +442,9 @@ SETTING_BOUNDS = {
               "already 7.4 times the median"),
     "im_min": (0.0, 500.0, _IM_WHY),
     "im_max": (0.0, 500.0, _IM_WHY),
+    "sds_g": (0.01, 5.0, "sds_g is S_DS of ASCE 7-16 §11.4.5, the design spectral acceleration at short "
+              "periods, 0.01 to about 2.5 g on any mapped site"),
+    "roof_floor": (1.0, 200.0, "roof_floor is the roof's floor number, for z/h in ASCE 7-16 eq. 13.3-1"),
 }
 #: Longest text of a text setting (facility, site): it heads the report.
 SETTING_TEXT_MAX_CHARS = 200
