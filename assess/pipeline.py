@@ -500,11 +500,11 @@ def anchorage_demand(item, row: dict, settings: dict) -> dict:
              "anchor_basis": ""}
     if row.get("action_kind") not in ("anchor", "restrain"):
         return empty
-    sds_g = float(settings.get("sds_g", np.nan))
-    if not np.isfinite(sds_g):
+    sds_g = float(settings.get("sds_g", 0.0))
+    if not sds_g > 0.0:
         return {**empty, "anchor_basis": "add sds_g (and roof_floor) to the settings for the ASCE 7-16 design force"}
-    roof = float(settings.get("roof_floor", np.nan))
-    z_over_h = min(max(float(item.floor) / roof, 0.0), 1.0) if np.isfinite(roof) else 1.0
+    roof = float(settings.get("roof_floor", 0.0))
+    z_over_h = min(max(float(item.floor) / roof, 0.0), 1.0) if roof > 0.0 else 1.0
     importance = importance_factor(row.get("consequence", "ordinary"))
     weight_n = float(item.mass_kg) * STANDARD_GRAVITY_M_S2
     force_n = float(component_design_force(weight_n, sds_g, z_over_h, importance))
@@ -513,7 +513,7 @@ def anchorage_demand(item, row: dict, settings: dict) -> dict:
                                                                half_width_m, sds_g))
     basis = (f"ASCE 7-16 eqs. 13.3-1 to 13.3-3: a_p {COMPONENT_AMPLIFICATION:g}, R_p "
              f"{COMPONENT_RESPONSE_MODIFICATION:g} (Table 13.5-1), I_p {importance:g} (§13.1.3), S_DS {sds_g:g} g, "
-             f"z/h {z_over_h:.2f}{'' if np.isfinite(roof) else ' (roof_floor not given: z/h = 1)'}; W_p "
+             f"z/h {z_over_h:.2f}{'' if roof > 0.0 else ' (roof_floor not given: z/h = 1)'}; W_p "
              f"{weight_n / 1000:.2f} kN per unit; tension from 0.9D - 1.0E with E_v = 0.2 S_DS D, "
              "without the overstrength factor for anchors in concrete (§13.4.2)")
     return {"anchor_force_kn": force_n / 1000.0, "anchor_moment_knm": moment_nm / 1000.0,

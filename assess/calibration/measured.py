@@ -147,7 +147,7 @@ def measured_from_cells(header_cells: dict, rows: list, inventory, *, file="MEAS
     if not any(m in header for m in MEASURES):
         report("no measure column.", "add at least one of sliding_cm, theta_max_over_alpha, overturned.",
                row=1)
-    raise_if_any(capped(problems, file))
+    raise_if_any(problems)  # assess.errors lists the first 50 and counts the rest
 
     equipment = inventory.equipment.set_index("id", drop=False)
     known_ids = [str(i) for i in equipment["id"]]
@@ -239,7 +239,7 @@ def measured_from_cells(header_cells: dict, rows: list, inventory, *, file="MEAS
                             row=number))
     if not records and not problems:
         report("the sheet has headers but no test.", "add one row per test below the headers.", row=2)
-    raise_if_any(capped(problems, file))
+    raise_if_any(problems)  # assess.errors lists the first 50 and counts the rest
     return pd.DataFrame(records, columns=COLUMNS)
 
 
@@ -284,18 +284,7 @@ def test_motion(inventory, motion: str) -> Record:
 test_motion.__test__ = False  # not a pytest test despite its name
 
 
-#: Most problems listed; the rest are counted (one wrong column of 1,000 tests is one mistake).
-MAX_PROBLEMS = 50
 
-
-def capped(problems: list[Problem], file: str) -> list[Problem]:
-    """The first :data:`MAX_PROBLEMS` problems, and a last one counting those left out."""
-    if len(problems) <= MAX_PROBLEMS:
-        return problems
-    left = len(problems) - MAX_PROBLEMS
-    return problems[:MAX_PROBLEMS] + [Problem(
-        file, f"and {left:,} more problem{'s' if left != 1 else ''}, not listed.",
-        "correct those above and run again; the rest are often the same mistake.", sheet=SHEET)]
 
 
 def _closest(value, known, otherwise: str) -> str:

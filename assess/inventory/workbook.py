@@ -17,7 +17,7 @@ external references). Formula cells are read from the value Excel or
 LibreOffice cached when saving; a formula without one, an Excel error value
 (``#DIV/0!``) and a cell the file cannot decode are reported at their cell.
 Messages quote at most 80 characters of a cell and list at most
-:data:`MAX_PROBLEMS` problems.
+:data:`assess.errors.MAX_PROBLEMS_SHOWN` problems (the rest are counted).
 """
 from __future__ import annotations
 
@@ -34,9 +34,6 @@ from assess.inventory.model import Inventory
 from assess.inventory.schema import (EQUIPMENT, HAZARD, SETTINGS, UNUSABLE, CellError, Header,
                                      SheetSpec)
 
-#: Most problems listed for one workbook; the rest are counted (a wrong column of
-#: 10,000 rows is one mistake, not 10,000 lines to read).
-MAX_PROBLEMS = 50
 
 
 @dataclass
@@ -131,19 +128,9 @@ def read_workbook(path: str | Path) -> Inventory:
     if "settings" in tables:
         settings = _read_settings(tables["settings"], settings, reports["settings"])
     if problems:
-        raise InputError(_capped(problems, given))
+        raise InputError(problems)  # assess.errors lists the first 50 and counts the rest
     return Inventory(path=path, equipment=_frame(equipment, _EQUIPMENT_TYPES),
                      hazard=_frame(hazard, _HAZARD_TYPES), settings=settings)
-
-
-def _capped(problems: list[Problem], file: str) -> list[Problem]:
-    """The first :data:`MAX_PROBLEMS` problems, and a last one counting those left out."""
-    if len(problems) <= MAX_PROBLEMS:
-        return problems
-    left = len(problems) - MAX_PROBLEMS
-    return problems[:MAX_PROBLEMS] + [Problem(
-        file, f"and {left:,} more problem{'s' if left != 1 else ''}, not listed.",
-        "correct those above and run again; the rest are often the same mistake.")]
 
 
 # ---------------------------------------------------------------- the file
