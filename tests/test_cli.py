@@ -93,6 +93,8 @@ def test_summary_xlsx_has_the_rows_of_summary_csv(lab_run):
                 assert text == want, (expected["id"], column)
             elif pd.isna(want):
                 assert value is None, (expected["id"], column)
+            elif np.isinf(want):
+                assert value == "unbounded", (expected["id"], column)
             else:
                 assert value == pytest.approx(float(want), rel=1e-5, abs=1e-9), (expected["id"], column)
     assert all(cell.data_type != "f" for row in sheet.iter_rows() for cell in row)

@@ -96,11 +96,14 @@ def summary_workbook(tables: dict[str, pd.DataFrame], units: str = "si") -> byte
 
 
 def _cell(value):
-    """A value openpyxl writes as it is: NaN as an empty cell, numpy scalars as Python numbers."""
+    """A value openpyxl writes as it is: NaN as an empty cell, infinity (an interval the suite cannot bound)
+    as "unbounded", numpy scalars as Python numbers."""
     if value is None or (isinstance(value, float) and np.isnan(value)) or value is pd.NA:
         return None
     if isinstance(value, np.generic):
         value = value.item()
         if isinstance(value, float) and np.isnan(value):
             return None
+    if isinstance(value, float) and np.isinf(value):  # a spreadsheet has no infinity: say it in words
+        return "unbounded" if value > 0 else "-unbounded"
     return value
