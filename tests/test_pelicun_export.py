@@ -228,7 +228,7 @@ REPEATS = 8000  # rows per PFA value; a probability's sampling sd is at most 0.0
 def _pelicun_damage_probabilities(csv_path, component_ids, tmp_path):
     """Run pelicun's damage model on the exported file: P(DS = k) per component and PFA value."""
     pelicun_assessment = pytest.importorskip(
-        "pelicun.assessment", reason="pelicun is not installed (pip install -e '.[test]' adds it)")
+        "pelicun.assessment", reason="pelicun is not installed (pip install -e '.[test,pelicun]' adds it)")
     n = PFA_VALUES_G.size * REPEATS
     pfa = np.tile(PFA_VALUES_G, REPEATS)  # interleaved, so any ordering of the sample mixes them
     demand_csv = tmp_path / "demand_sample.csv"

@@ -17,8 +17,8 @@ import re
 import numpy as np
 import pandas as pd
 
-#: Inches per centimetre.
-IN_PER_CM = 1.0 / 2.54
+#: Centimetres per inch (exact).
+CM_PER_IN = 2.54
 _FORBIDDEN_IN_SHEET_NAMES = re.compile(r"[\[\]:*?/\\]")
 
 
@@ -42,7 +42,7 @@ def with_us_units(summary: pd.DataFrame) -> pd.DataFrame:
     for column in summary.columns:
         columns[column] = summary[column]
         if column.endswith("_cm"):
-            columns[column[:-3] + "_in"] = pd.to_numeric(summary[column], errors="coerce") * IN_PER_CM
+            columns[column[:-3] + "_in"] = pd.to_numeric(summary[column], errors="coerce") / CM_PER_IN
     return pd.DataFrame(columns, index=summary.index)
 
 
