@@ -232,24 +232,22 @@ def simulate(block: Block, floor_accel_g, dt_s, *, tail_s=DEFAULT_TAIL_S, return
 
 def _sliding(block, accel, dt_s, tail_s, return_history):
     result = sliding_response(accel, dt_s, block.mu, block.mu_static, return_history=return_history)
-    onset = _onset_time_s(accel, dt_s, block.mu_static)
-    sequence = ((0.0, REST),) + (((float(onset), SLIDE),) if result.slide_time_s > 0.0 else ())
-    history = {}
-    if return_history:
-        n_tail = int(np.ceil(tail_s / dt_s))
-        time_s = np.arange(accel.size + n_tail) * dt_s
-        # the run-out after the record is solved exactly but not sampled: the tail shows
-        # the residual (reached within the run-out time |u̇|/(μg) of the last sample)
-        sliding_m = np.concatenate([result.sliding_m, np.full(n_tail, result.sliding_residual_m)])
-        history = dict(time_s=time_s, sliding_m=sliding_m, theta_rad=np.zeros(time_s.size))
-    return BlockResponse(sliding_max_m=result.sliding_max_m, sliding_residual_m=result.sliding_residual_m,
-                         theta_max_over_alpha=0.0, uplift=False, overturned=False, overturn_time_s=np.nan,
-                         mode_sequence=sequence, solver=SLIDING_KERNEL, **history)
+    return _pure_sliding_response(result, block, accel, dt_s, tail_s, return_history, SLIDING_KERNEL)
 
 
 def _on_interface(block, accel, dt_s, tail_s, return_history):
     """A block that cannot uplift, sliding on its :class:`SlidingInterface` (run-out included)."""
     result = block.interface.response(block, accel, dt_s, return_history=return_history)
+    return _pure_sliding_response(result, block, accel, dt_s, tail_s, return_history, block.interface.solver)
+
+
+def _pure_sliding_response(result, block, accel, dt_s, tail_s, return_history, solver) -> BlockResponse:
+    """A sliding kernel's result as the engine's response: modes rest then slide, no rotation.
+
+    The run-out after the record is solved exactly but not sampled: the tail of
+    the history shows the residual (reached within the run-out time |u̇|/(μg)
+    of the last sample).
+    """
     onset = _onset_time_s(accel, dt_s, block.mu_static)
     slid = result.slide_time_s > 0.0
     sequence = ((0.0, REST),) + (((float(onset) if np.isfinite(onset) else 0.0, SLIDE),) if slid else ())
@@ -262,7 +260,7 @@ def _on_interface(block, accel, dt_s, tail_s, return_history):
     return BlockResponse(sliding_max_m=float(result.sliding_max_m),
                          sliding_residual_m=float(result.sliding_residual_m), theta_max_over_alpha=0.0,
                          uplift=False, overturned=False, overturn_time_s=np.nan, mode_sequence=sequence,
-                         solver=block.interface.solver, **history)
+                         solver=solver, **history)
 
 
 def _general(block, accel, dt_s, tail_s, return_history):
