@@ -121,29 +121,28 @@ def _freestanding(result) -> pd.DataFrame:
 
 
 def _place_labels(axes, points, labels, colours, fontsize=6.5) -> None:
-    """Label points by id, trying a few offsets so that labels do not overlap."""
+    """Label points by id where a label fits: offsets on rings of growing radius around the point (a thin
+    leader line beyond the first ring), never over another label or outside the axes; a point whose
+    label fits nowhere stays unlabelled (every item is in the report's tables)."""
     renderer = axes.figure.canvas.get_renderer()
-    offsets = [(5, 4), (5, -9), (-5, 4), (-5, -9), (6, 12), (6, -17), (-6, 12), (-6, -17),
-               (14, 0), (-14, 0), (10, 20), (10, -25)]
+    frame = axes.get_window_extent(renderer)
+    near = [(5, 4), (5, -9), (-5, 4), (-5, -9)]
+    rings = [(r * np.cos(a), r * np.sin(a)) for r in (16, 26, 38, 52)
+             for a in np.deg2rad([30, -30, 150, -150, 90, -90, 0, 180, 60, -60, 120, -120])]
     placed = []
     for (x, y), label, colour in zip(points, labels, colours):
         label = plain_text(label)
-        chosen = None
-        for dx, dy in offsets:
+        for k, (dx, dy) in enumerate(near + rings):
+            leader = {"arrowstyle": "-", "color": colour, "lw": 0.4} if k >= len(near) else None
             text = axes.annotate(label, (x, y), xytext=(dx, dy), textcoords="offset points",
-                                 fontsize=fontsize, color=colour,
-                                 ha="left" if dx >= 0 else "right", va="bottom")
+                                 fontsize=fontsize, color=colour, ha="left" if dx >= 0 else "right",
+                                 va="bottom" if dy >= 0 else "top", arrowprops=leader)
             box = text.get_window_extent(renderer).expanded(1.05, 1.1)
-            if not any(box.overlaps(other) for other in placed):
-                chosen = (text, box)
+            inside = frame.x0 <= box.x0 and box.x1 <= frame.x1 and frame.y0 <= box.y0 and box.y1 <= frame.y1
+            if inside and not any(box.overlaps(other) for other in placed):
+                placed.append(box)
                 break
             text.remove()
-        if chosen is None:  # crowded: keep the first offset, with a thin leader line
-            text = axes.annotate(label, (x, y), xytext=offsets[0], textcoords="offset points",
-                                 fontsize=fontsize, color=colour,
-                                 arrowprops={"arrowstyle": "-", "color": colour, "lw": 0.4})
-            chosen = (text, text.get_window_extent(renderer))
-        placed.append(chosen[1])
 
 
 def plain_log_ticks(*axes_axis) -> None:
