@@ -16,7 +16,7 @@ import pandas as pd
 
 from dataclasses import replace
 
-from assess.errors import InputError, Problem, raise_if_any
+from assess.errors import InputError
 from assess.fragility.governing import (
     PULSE, RECORD, SYNTHETIC, add_pulse_share, governing_demand, motion_sources, suite_runs,
 )
@@ -28,7 +28,7 @@ from assess.hazard.motions import motions_by_item, select_level
 from assess.hazard.records import MIN_DURATION_S, Record, pulse_record, read_record
 from assess.inventory import Inventory
 from assess.mechanics.block import Block
-from assess.mechanics.engine import DEFAULT_TAIL_S, simulate, simulate_cases
+from assess.mechanics.engine import simulate, simulate_cases
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2, frequency_parameter, inertia_ratio, slenderness
 from assess.mechanics.modes import MODE_SEVERITY, ROCK, SLIDE, SLIDE_ROCK, initial_mode
 from assess.result import MOTION_COLUMNS, SUMMARY_COLUMNS, AssessmentResult, Flag
@@ -39,8 +39,6 @@ SLIDING_MODES = (SLIDE, SLIDE_ROCK)
 DIRECTIONS = {1: "width_m", 2: "depth_m"}
 #: Pulse simulated for a motion given by PTA and Tp without a pulse type.
 DEFAULT_PULSE = "B"
-#: How many items the report shows the time histories of (Fig. 7 of the paper).
-HISTORY_ITEMS = 3
 
 
 def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
@@ -314,7 +312,7 @@ def _add_simulation(cases: pd.DataFrame, motions: dict[int, list[tuple[Record, s
 def _worst_histories(cases: pd.DataFrame, runs: pd.DataFrame, summary: pd.DataFrame,
                      motions: dict[int, list[tuple[Record, str]]]) -> list[dict]:
     """Time histories of every item's worst run, worst items first (the report draws the first
-    :data:`HISTORY_ITEMS` as Fig. 7 of the paper, and every one small in the item's details).
+    :data:`assess.report.render.HISTORY_FIGURES` as Fig. 7 of the paper, and every one small in the item's details).
 
     Worst: overturned first, then the largest θmax/α, then the largest
     simulated sliding over clearance; for each item, its worst run.
