@@ -28,7 +28,8 @@ from assess.hazard.motions import motions_by_item, select_level
 from assess.hazard.records import MIN_DURATION_S, Record, pulse_record, read_record
 from assess.inventory import Inventory
 from assess.mechanics.block import Block
-from assess.mechanics.engine import simulate, simulate_cases
+from assess.mechanics.engine import simulate
+from assess.mechanics.runner import LocalRunner
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2, frequency_parameter, inertia_ratio, slenderness
 from assess.mechanics.modes import MODE_SEVERITY, ROCK, SLIDE, SLIDE_ROCK, initial_mode
 from assess.result import MOTION_COLUMNS, SUMMARY_COLUMNS, AssessmentResult, Flag
@@ -43,7 +44,7 @@ DEFAULT_PULSE = "B"
 
 def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
                    progress: Progress = lambda message: None, oq_hazard=None,
-                   derive_floors_roof: int | None = None, calibration=None) -> AssessmentResult:
+                   derive_floors_roof: int | None = None, calibration=None, runner=None) -> AssessmentResult:
     """Assess every item of ``inventory`` under the motions of hazard level ``level_text``.
 
     ``oq_hazard`` (an :class:`~assess.hazard.openquake.OpenQuakeHazard`)
@@ -58,21 +59,26 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
     assessment then runs twice, as declared and with it, and each affected
     item's result both ways is flagged (:func:`~assess.calibration.apply.with_declared`).
 
+    ``runner`` runs the engine's cases (:mod:`assess.mechanics.runner`; default: this machine's threads).
+
     Raises :class:`~assess.errors.InputError` when the level is missing, a
     floor has no motion, or a motion cannot be described by PTA and Tp.
     """
+    runner = runner if runner is not None else LocalRunner()
     # --- calibration (assess.calibration.apply): run twice, as declared and with the effect
     if calibration is not None:
         from assess.calibration.apply import check_applies, with_declared
         check_applies(calibration, inventory.equipment)
-        declared = _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, None)
+        declared = _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, None, runner)
         progress(f"again with the calibration {calibration.file}")
-        calibrated = _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, calibration)
+        calibrated = _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, calibration,
+                             runner)
         return with_declared(calibrated, declared, calibration)
-    return _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, None)
+    return _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, None, runner)
 
 
-def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, calibration) -> AssessmentResult:
+def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, calibration,
+            runner) -> AssessmentResult:
     """:func:`run_assessment` with ``calibration`` applied (None: as declared)."""
     workbook_name = inventory.path.name
     settings = inventory.settings
@@ -118,7 +124,7 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     cases = _item_motion_direction_cases(freestanding, pairs)
     progress("preparing the motions to simulate")
     simulated_motions, simulated_as = _simulated_motions(level_motions, workbook_name, settings, seed)
-    cases, runs = _add_simulation(cases, simulated_motions, progress, calibration)
+    cases, runs = _add_simulation(cases, simulated_motions, progress, runner, calibration)
     cases = add_pulse_share(_add_demand(cases, constants))
     cases["demand_source"] = motion_sources(cases, simulated_as, constants)
     demand = governing_demand(cases, runs, constants, room_quantile=1.0 - float(settings["risk_pf_moderate"]))
@@ -249,7 +255,7 @@ def _majority_mode(modes: pd.Series) -> str:
 
 
 def _add_simulation(cases: pd.DataFrame, motions: dict[int, list[tuple[Record, str]]],
-                    progress: Progress, calibration=None) -> tuple[pd.DataFrame, pd.DataFrame]:
+                    progress: Progress, runner, calibration=None) -> tuple[pd.DataFrame, pd.DataFrame]:
     """Simulate every case under every history of its motion: ``sim_*`` columns, and the runs.
 
     A case's ``sim_*`` values summarise its runs (one per history): the
@@ -276,7 +282,7 @@ def _add_simulation(cases: pd.DataFrame, motions: dict[int, list[tuple[Record, s
             last[0] = done
             progress(f"simulated {done} of {total} runs ({len(cases)} cases)")
 
-    peaks = simulate_cases([blocks_by_case[k] for k in run_case],
+    peaks = runner.simulate_cases([blocks_by_case[k] for k in run_case],
                            [motions[n][r][0].accel_g for n, r in histories],
                            [motions[n][r][0].dt_s for n, r in histories], np.asarray(run_history),
                            progress=report)
