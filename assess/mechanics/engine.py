@@ -44,7 +44,7 @@ import numpy as np
 
 from .block import Block, BlockResponse
 from .modes import REST, ROCK, SLIDE
-from .rocking import rocking_peaks_batch, rocking_response
+from .rocking import rocking_case_peaks, rocking_response
 from .sliding import sliding_peaks_batch, sliding_response
 
 SLIDING_KERNEL = "sliding kernel"
@@ -292,20 +292,27 @@ class CasePeaks:
     solver: np.ndarray
 
 
+#: Cases per call of the parallel kernels (about a second each on two cores); ``progress`` is told after each.
+ROCKING_CASES_PER_CALL = 32768
+GENERAL_CASES_PER_CALL = 4096
+
+
 def simulate_cases(blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_s: Sequence[float],
                    record_index, *, tail_s=DEFAULT_TAIL_S,
                    progress: Optional[Callable[[int, int], None]] = None) -> CasePeaks:
     """Simulate case k = block ``blocks[k]`` under record ``records_g[record_index[k]]``.
 
-    Cases are grouped by record and by the solver proved for them, and each
-    group runs in the parallel batch kernels; rocking runs whose pivot would
-    have slipped or lifted are re-run, as a batch per record, by the general
-    solver. Blocks on a :class:`SlidingInterface` that cannot uplift run its
-    kernel one by one. Same results as :func:`simulate` case by case, peaks only.
+    Cases are grouped by the solver proved for them and run in the parallel
+    kernels: those that cannot uplift in the sliding kernel, a record at a
+    time; the others in the rocking kernel, which stops a run as soon as its
+    pivot would slip or lift; those runs are re-run from the start by the
+    general solver. Blocks on a :class:`SlidingInterface` that cannot uplift
+    run its kernel one by one. Same results as :func:`simulate` case by case,
+    peaks only.
 
-    ``progress(done, total)`` is called after each record's group.
+    ``progress(done, total)`` is called as groups of cases finish.
     """
-    from .timestepping import time_stepping_peaks_batch
+    from .timestepping import time_stepping_case_peaks
 
     n = len(blocks)
     record_index = np.asarray(record_index, dtype=np.int64)
@@ -316,52 +323,71 @@ def simulate_cases(blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_
     uplift, overturned = np.zeros(n, dtype=bool), np.zeros(n, dtype=bool)
     mode = np.full(n, REST, dtype=object)
     solver = np.full(n, "", dtype=object)
-    mu = np.array([b.mu for b in blocks])
-    mu_static = np.array([b.mu_static for b in blocks])
-    sliding_set = pure_sliding_proved(mu_static, np.array([b.b_over_h for b in blocks]))
+    mu = np.array([b.mu for b in blocks], dtype=float)
+    mu_static = np.array([b.mu_static for b in blocks], dtype=float)
+    sliding_set = pure_sliding_proved(mu_static, np.array([b.b_over_h for b in blocks], dtype=float))
     on_interface = np.array([getattr(b, "interface", None) is not None for b in blocks], dtype=bool)
     done = 0
+
+    def advance(count):
+        nonlocal done
+        done += int(count)
+        if progress is not None and count:
+            progress(done, n)
+
+    # 1. cannot uplift (mu_s < b/h): the exact sliding kernel, a record at a time
     for j, record in enumerate(records_g):
-        in_record = record_index == j
+        in_record = (record_index == j) & sliding_set
+        if not in_record.any():
+            continue
         accel = np.asarray(record, dtype=float)
-        for i in np.flatnonzero(in_record & sliding_set & on_interface):
+        for i in np.flatnonzero(in_record & on_interface):
             response = _on_interface(blocks[i], accel, dt_s[j], tail_s, False)
             sliding_max[i], residual[i] = response.sliding_max_m, response.sliding_residual_m
             mode[i], solver[i] = response.mode, response.solver
-        idx = np.flatnonzero(in_record & sliding_set & ~on_interface)
+        idx = np.flatnonzero(in_record & ~on_interface)
         if idx.size:
             peak, res = sliding_peaks_batch([accel], dt_s[j], mu[idx], mu_static[idx])
             sliding_max[idx], residual[idx] = peak[:, 0], res[:, 0]
             mode[idx] = np.where(peak[:, 0] > 0.0, SLIDE, REST)
             solver[idx] = SLIDING_KERNEL
-        idx = np.flatnonzero(in_record & ~sliding_set)
-        if idx.size:
-            rock = rocking_peaks_batch(
-                accel, dt_s[j], [blocks[i].alpha_rad for i in idx],
-                [blocks[i].p_rad_s for i in idx], [blocks[i].restitution_effective for i in idx],
-                [blocks[i].inertia_ratio for i in idx], tail_s=tail_s)
-            held = pure_rocking_held(rock.friction_demand_max[:, 0],
-                                     rock.normal_force_min_over_weight[:, 0], mu_static[idx])
-            kept = idx[held]
-            theta_max[kept] = rock.theta_max_over_alpha[held, 0]
-            uplift[kept] = rock.uplift[held, 0]
-            overturned[kept] = rock.overturned[held, 0]
-            mode[kept] = np.where(rock.uplift[held, 0], ROCK, REST)
-            solver[kept] = ROCKING_KERNEL
-            general = idx[~held]
-            if general.size:
-                peaks = time_stepping_peaks_batch([blocks[i] for i in general], [accel], dt_s[j],
-                                                  tail_s=tail_s)
-                sliding_max[general] = peaks.sliding_max_m[:, 0]
-                residual[general] = peaks.sliding_residual_m[:, 0]
-                theta_max[general] = peaks.theta_max_over_alpha[:, 0]
-                uplift[general] = peaks.uplift[:, 0]
-                overturned[general] = peaks.overturned[:, 0]
-                mode[general] = peaks.mode[:, 0]
-                solver[general] = GENERAL
-        done += int(np.count_nonzero(in_record))
-        if progress is not None:
-            progress(done, n)
+        advance(np.count_nonzero(in_record))
+    # 2. may uplift: pure rocking, kept where its pivot never slipped nor lifted
+    general = []
+    for idx in _calls(np.flatnonzero(~sliding_set), ROCKING_CASES_PER_CALL):
+        records, dts, index = _records_of(records_g, dt_s, record_index[idx])
+        rock = rocking_case_peaks(records, dts, index, [blocks[i].alpha_rad for i in idx],
+                                  [blocks[i].p_rad_s for i in idx], [blocks[i].restitution_effective for i in idx],
+                                  [blocks[i].inertia_ratio for i in idx], tail_s=tail_s, mu_static=mu_static[idx])
+        held = pure_rocking_held(rock.friction_demand_max, rock.normal_force_min_over_weight, mu_static[idx])
+        kept = idx[held]
+        theta_max[kept] = rock.theta_max_over_alpha[held]
+        uplift[kept] = rock.uplift[held]
+        overturned[kept] = rock.overturned[held]
+        mode[kept] = np.where(rock.uplift[held], ROCK, REST)
+        solver[kept] = ROCKING_KERNEL
+        general.append(idx[~held])
+        advance(kept.size)
+    # 3. the others slide and rock (or fly): the general solver
+    for idx in _calls(np.concatenate(general) if general else np.zeros(0, dtype=np.int64), GENERAL_CASES_PER_CALL):
+        records, dts, index = _records_of(records_g, dt_s, record_index[idx])
+        peaks = time_stepping_case_peaks([blocks[i] for i in idx], records, dts, index, tail_s=tail_s)
+        sliding_max[idx], residual[idx] = peaks.sliding_max_m, peaks.sliding_residual_m
+        theta_max[idx], uplift[idx], overturned[idx] = peaks.theta_max_over_alpha, peaks.uplift, peaks.overturned
+        mode[idx] = peaks.mode
+        solver[idx] = GENERAL
+        advance(idx.size)
     return CasePeaks(sliding_max_m=sliding_max, sliding_residual_m=residual,
                      theta_max_over_alpha=theta_max, uplift=uplift, overturned=overturned,
                      mode=mode.astype(str), solver=solver.astype(str))
+
+
+def _calls(cases, size):
+    """``cases`` in consecutive groups of at most ``size``."""
+    return [cases[start:start + size] for start in range(0, cases.size, size)]
+
+
+def _records_of(records_g, dt_s, record_index):
+    """The records that ``record_index`` names, their intervals, and the index into them."""
+    used, index = np.unique(record_index, return_inverse=True)
+    return [records_g[j] for j in used], [float(dt_s[j]) for j in used], index.astype(np.int64)

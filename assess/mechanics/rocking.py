@@ -94,7 +94,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit, prange
+from numba import njit, parallel_chunksize, prange
 
 from .geometry import housner_restitution
 
@@ -211,14 +211,16 @@ def _hermite_extremum(th0, w0, th1, w1, h):
 
 @njit(cache=True)
 def _simulate(accel_g, dt_s, n_tail, alpha, p, e, kappa, theta_init, theta_dot_init,
-              hist_theta, hist_theta_dot, impact_t, impact_w, peak_t, peak_theta, counts, forces):
+              hist_theta, hist_theta_dot, impact_t, impact_w, peak_t, peak_theta, counts, forces, friction_stop):
     """Integrate one block over one record and ``n_tail`` intervals of floor at rest after it.
 
     The floor is linear between the record's samples and zero from the last
     sample on (a step there, never a ramp into the tail). History arrays of
     size 0 are not written (otherwise of size n + n_tail). Returns
     (theta_max_rad, uplift, overturned, overturn_time_s, impacts); ``forces``
-    receives (max |F|/N, min N/(mg)) over the rocking phases.
+    receives (max |F|/N, min N/(mg)) over the rocking phases. The run stops
+    (without history) as soon as max |F|/N exceeds ``friction_stop`` or N
+    reaches zero: pure rocking is then disproved (``inf``: never stops).
     """
     n_record = accel_g.size
     n = n_record + n_tail
@@ -241,6 +243,7 @@ def _simulate(accel_g, dt_s, n_tail, alpha, p, e, kappa, theta_init, theta_dot_i
     overturn_time = np.nan
     theta_max = abs(theta)
     impacts = 0
+    disproved, stopping = False, friction_stop < np.inf
     forces[0] = 0.0
     forces[1] = 1.0
     if record:
@@ -263,6 +266,9 @@ def _simulate(accel_g, dt_s, n_tail, alpha, p, e, kappa, theta_init, theta_dot_i
         s = 0.0
         guard = 0
         while dtau - s > 1e-12 * dtau:
+            if stopping and (forces[0] > friction_stop or not forces[1] > 0.0):
+                disproved = True
+                break
             guard += 1
             if guard > _MAX_EVENTS_PER_INTERVAL:
                 resting, theta, w = True, 0.0, 0.0
@@ -347,6 +353,8 @@ def _simulate(accel_g, dt_s, n_tail, alpha, p, e, kappa, theta_init, theta_dot_i
             theta_max = max(theta_max, abs(theta))
             s = s_end if full else s + h
             _track_pivot_forces(forces, theta, w, side, a0 + slope * s, alpha, kappa)
+        if disproved:
+            break
         if overturned:
             if record:
                 hist_theta[k + 1:] = np.nan
@@ -359,25 +367,23 @@ def _simulate(accel_g, dt_s, n_tail, alpha, p, e, kappa, theta_init, theta_dot_i
 
 
 @njit(cache=True, parallel=True)
-def _batch(accel_flat, offsets, dts, tails, alpha, p, e, kappa, theta_max, uplift, overturned, overturn_time,
-           impacts, friction_demand, normal_min):
-    n_blocks = alpha.size
-    n_records = dts.size
+def _cases(accel_flat, offsets, dts, tails, record_index, alpha, p, e, kappa, friction_stop, theta_max, uplift,
+           overturned, overturn_time, impacts, friction_demand, normal_min):
+    """Case i: block (alpha[i], p[i], e[i], kappa[i]) from rest under record ``record_index[i]``."""
     empty = np.empty(0)
-    for job in prange(n_blocks * n_records):
-        j = job // n_blocks
-        i = job % n_blocks
+    for i in prange(alpha.size):
+        j = record_index[i]
         counts = np.zeros(2, dtype=np.int64)
         forces = np.empty(2)
         out = _simulate(accel_flat[offsets[j]:offsets[j + 1]], dts[j], tails[j], alpha[i], p[i], e[i], kappa[i],
-                        0.0, 0.0, empty, empty, empty, empty, empty, empty, counts, forces)
-        theta_max[i, j] = out[0] / alpha[i]
-        uplift[i, j] = out[1]
-        overturned[i, j] = out[2]
-        overturn_time[i, j] = out[3]
-        impacts[i, j] = out[4]
-        friction_demand[i, j] = forces[0]
-        normal_min[i, j] = forces[1]
+                        0.0, 0.0, empty, empty, empty, empty, empty, empty, counts, forces, friction_stop[i])
+        theta_max[i] = out[0] / alpha[i]
+        uplift[i] = out[1]
+        overturned[i] = out[2]
+        overturn_time[i] = out[3]
+        impacts[i] = out[4]
+        friction_demand[i] = forces[0]
+        normal_min[i] = forces[1]
 
 
 # --------------------------------------------------------------------------- API
@@ -434,9 +440,10 @@ class RockingResult:
 
 @dataclass(frozen=True)
 class RockingPeaks:
-    """Peak responses of many blocks to many records (:func:`rocking_peaks_batch`).
+    """Peak responses of many blocks to many records.
 
-    Every field has shape (n_blocks, n_records); meanings and units as in
+    Every field has shape (n_blocks, n_records) from :func:`rocking_peaks_batch`,
+    (n_cases,) from :func:`rocking_case_peaks`; meanings and units as in
     :class:`RockingResult`.
     """
 
@@ -564,7 +571,7 @@ def rocking_response(floor_accel_g, dt_s, alpha_rad, p_rad_s, restitution=None, 
     forces = np.empty(2)
     theta_max, uplift, overturned, overturn_time, impacts = _simulate(
         accel, dt, n_tail, alpha[0], p[0], e[0], kappa[0], float(initial_theta_rad), float(initial_theta_dot_rad_s),
-        hist_theta, hist_theta_dot, impact_t, impact_w, peak_t, peak_theta, counts, forces)
+        hist_theta, hist_theta_dot, impact_t, impact_w, peak_t, peak_theta, counts, forces, np.inf)
     extra = {}
     if return_history:
         n_imp, n_peak = min(counts[0], impact_t.size), min(counts[1], peak_t.size)
@@ -610,25 +617,95 @@ def rocking_peaks_batch(records_g, dt_s, alpha_rad, p_rad_s, restitution=None,
     >>> peaks.uplift[:, 0].tolist()
     [True, False]
     """
+    records, dts = _records(records_g, dt_s)
+    alpha, p, e, kappa = _check_block(alpha_rad, p_rad_s, restitution, inertia_ratio_value)
+    shape = (alpha.size, dts.size)
+    block_index = np.repeat(np.arange(alpha.size), dts.size)
+    record_index = np.tile(np.arange(dts.size), alpha.size)
+    peaks = _run_cases(records, dts, record_index, alpha[block_index], p[block_index], e[block_index],
+                       kappa[block_index], tail_s, np.full(block_index.size, np.inf))
+    return RockingPeaks(**{name: value.reshape(shape) for name, value in vars(peaks).items()})
+
+
+def rocking_case_peaks(records_g, dt_s, record_index, alpha_rad, p_rad_s, restitution=None,
+                       inertia_ratio_value=4.0 / 3.0, tail_s=0.0, mu_static=None) -> RockingPeaks:
+    """Peak rocking responses of many cases, case i a block under record ``record_index[i]``, in parallel.
+
+    As :func:`rocking_peaks_batch`, for a list of (block, record) cases rather
+    than every block under every record; the cases are spread over the threads
+    a few at a time, so that long and short runs balance.
+
+    Parameters
+    ----------
+    records_g : sequence of array-like
+        Floor acceleration records [g], of any lengths.
+    dt_s : float or sequence of float
+        Sample interval [s], one for all records or one per record.
+    record_index : array-like of int, shape (n_cases,)
+        The record of each case.
+    alpha_rad, p_rad_s, restitution, inertia_ratio_value : float or array-like (n_cases,)
+        As in :func:`rocking_peaks_batch`, one per case (or one for all).
+    tail_s : float
+        Seconds followed after each record's last sample with the floor at rest.
+    mu_static : float or array-like (n_cases,), optional
+        Static friction coefficient of each case. With it, a run stops as soon as
+        its pivot's friction demand |F|/N exceeds μ_s or its normal force
+        reaches zero: pure rocking is then not the block's motion, which
+        ``friction_demand_max > mu_static`` or ``normal_force_min_over_weight <= 0``
+        says, and its other peaks are those up to that instant only.
+
+    Returns
+    -------
+    RockingPeaks
+        Fields of shape (n_cases,).
+
+    Examples
+    --------
+    Two blocks under 0.3 g for 0.5 s: the slender one rocks, unless its
+    friction cannot hold the pivot (μ_s = 0.05):
+
+    >>> peaks = rocking_case_peaks([[0.3] * 51], 0.01, [0, 0, 0], [0.16, 0.4, 0.16], 1.25, tail_s=5.0,
+    ...                            mu_static=[0.7, 0.7, 0.05])
+    >>> peaks.uplift.tolist(), (peaks.friction_demand_max <= [0.7, 0.7, 0.05]).tolist()
+    ([True, False, True], [True, True, False])
+    """
+    records, dts = _records(records_g, dt_s)
+    index = np.ascontiguousarray(np.asarray(record_index, dtype=np.int64))
+    if index.ndim != 1 or (index.size and (index.min() < 0 or index.max() >= dts.size)):
+        raise ValueError("record_index must be a 1-D array of indices into records_g")
+    alpha, p, e, kappa = _check_block(alpha_rad, p_rad_s, restitution, inertia_ratio_value)
+    stop = np.full(index.size, np.inf) if mu_static is None else np.asarray(mu_static, dtype=float)
+    alpha, p, e, kappa, stop = (np.ascontiguousarray(np.broadcast_to(x, index.shape), dtype=float)
+                                for x in (alpha, p, e, kappa, stop))
+    return _run_cases(records, dts, index, alpha, p, e, kappa, tail_s, stop)
+
+
+#: Cases a thread takes at a time in the parallel kernels (small: run times differ by orders of magnitude).
+CASES_PER_CHUNK = 4
+
+
+def _records(records_g, dt_s):
+    """Checked records (contiguous float arrays) and their sample intervals."""
     first = np.asarray(records_g[0]) if len(records_g) else np.asarray([])
     records = [records_g] if first.ndim == 0 else list(records_g)
     dts = np.broadcast_to(np.asarray(dt_s, dtype=float), (len(records),))
     checked = [_check_record(r, d) for r, d in zip(records, dts)]
-    accel_flat = np.ascontiguousarray(np.concatenate([c[0] for c in checked]))
-    offsets = np.zeros(len(checked) + 1, dtype=np.int64)
-    offsets[1:] = np.cumsum([c[0].size for c in checked])
-    dts = np.array([c[1] for c in checked])
+    return [c[0] for c in checked], np.array([c[1] for c in checked])
+
+
+def _run_cases(records, dts, record_index, alpha, p, e, kappa, tail_s, friction_stop) -> RockingPeaks:
+    accel_flat = np.ascontiguousarray(np.concatenate(records))
+    offsets = np.zeros(len(records) + 1, dtype=np.int64)
+    offsets[1:] = np.cumsum([r.size for r in records])
     tails = np.array([tail_intervals(tail_s, d) for d in dts], dtype=np.int64)
-    alpha, p, e, kappa = _check_block(alpha_rad, p_rad_s, restitution, inertia_ratio_value)
-    shape = (alpha.size, dts.size)
-    theta_max = np.empty(shape)
-    uplift = np.zeros(shape, dtype=np.bool_)
-    overturned = np.zeros(shape, dtype=np.bool_)
-    overturn_time = np.empty(shape)
-    impacts = np.zeros(shape, dtype=np.int64)
-    friction_demand, normal_min = np.empty(shape), np.empty(shape)
-    _batch(accel_flat, offsets, dts, tails, alpha, p, e, kappa, theta_max, uplift, overturned, overturn_time,
-           impacts, friction_demand, normal_min)
+    n = record_index.size
+    theta_max, overturn_time = np.empty(n), np.empty(n)
+    uplift, overturned = np.zeros(n, dtype=np.bool_), np.zeros(n, dtype=np.bool_)
+    impacts = np.zeros(n, dtype=np.int64)
+    friction_demand, normal_min = np.empty(n), np.empty(n)
+    with parallel_chunksize(CASES_PER_CHUNK):
+        _cases(accel_flat, offsets, dts, tails, record_index, alpha, p, e, kappa, friction_stop, theta_max, uplift,
+               overturned, overturn_time, impacts, friction_demand, normal_min)
     return RockingPeaks(theta_max_over_alpha=theta_max, uplift=uplift, overturned=overturned,
                         overturn_time_s=overturn_time, impacts=impacts,
                         friction_demand_max=friction_demand, normal_force_min_over_weight=normal_min)

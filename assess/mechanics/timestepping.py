@@ -165,7 +165,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit, prange
+from numba import njit, parallel_chunksize, prange
 
 from .block import MODES, Block, BlockResponse, summary_mode
 from .geometry import STANDARD_GRAVITY_M_S2
@@ -632,8 +632,24 @@ def _simulate(accel_g, dt_s, n_sub, tail_steps, b, hcg, inv_j, mu, mu_s, gravity
     if keep_modes:
         mode_t[0], mode_c[0] = 0.0, mode
         n_modes = 1
-    for step in range((n - 1) * n_sub + tail_steps):
+    # a block at rest at a sample stays so over every following interval whose two samples are within the
+    # bound (the floor is linear between them); the margin covers the round-off of the per-step interpolation
+    hold_whole = hold * (1.0 - 1e-12)
+    n_steps = (n - 1) * n_sub + tail_steps
+    step = 0
+    while step < n_steps:
         k = step // n_sub
+        if resting and step % n_sub == 0 and k < n - 1:
+            k_rest = k
+            while k_rest < n - 1 and abs(accel_g[k_rest]) < hold_whole and abs(accel_g[k_rest + 1]) < hold_whole:
+                k_rest += 1
+            if k_rest > k:  # skipped at once, as the steps would leave it: unmoved
+                while keep_hist and k < k_rest and n_hist < hist_u.size:
+                    hist_u[n_hist], hist_theta[n_hist] = u, q[2]
+                    n_hist += 1
+                    k += 1
+                step = k_rest * n_sub
+                continue
         if k < n - 1:
             a0 = accel_g[k] + (accel_g[k + 1] - accel_g[k]) * (step - k * n_sub) / n_sub
             a1 = accel_g[k] + (accel_g[k + 1] - accel_g[k]) * (step - k * n_sub + 1) / n_sub
@@ -685,21 +701,22 @@ def _simulate(accel_g, dt_s, n_sub, tail_steps, b, hcg, inv_j, mu, mu_s, gravity
         if keep_hist and (step + 1) % n_sub == 0 and n_hist < hist_u.size:
             hist_u[n_hist], hist_theta[n_hist] = u, q[2]
             n_hist += 1
+        step += 1
     return u_max, u, theta_max, uplift, overturned, t_over, visited, n_hist, mode_t, mode_c, n_modes
 
 
 @njit(cache=True, parallel=True)
-def _batch(accel_flat, offsets, dts, n_sub, tail_steps, b, hcg, inv_j, mu, mu_s, gravity, e_override,
+def _cases(accel_flat, offsets, dts, record_index, n_sub, tail_steps, b, hcg, inv_j, mu, mu_s, gravity, e_override,
            u_max, u_res, theta_max, uplift, overturned, t_over, visited):
-    n_blocks, n_records = b.size, dts.size
+    """Case i: block i (its constants at index i) from rest under record ``record_index[i]``."""
     empty, empty_c = np.empty(0), np.empty(0, dtype=np.int64)
-    for job in prange(n_blocks * n_records):
-        i, j = job // n_records, job % n_records
-        out = _simulate(accel_flat[offsets[j]:offsets[j + 1]], dts[j], n_sub[i, j], tail_steps[i, j], b[i],
+    for i in prange(b.size):
+        j = record_index[i]
+        out = _simulate(accel_flat[offsets[j]:offsets[j + 1]], dts[j], n_sub[i], tail_steps[i], b[i],
                         hcg[i], inv_j[i], mu[i], mu_s[i], gravity, e_override[i], 0.0, empty, empty, empty,
                         empty_c)
-        u_max[i, j], u_res[i, j], theta_max[i, j] = out[0], out[1], out[2]
-        uplift[i, j], overturned[i, j], t_over[i, j], visited[i, j] = out[3], out[4], out[5], out[6]
+        u_max[i], u_res[i], theta_max[i] = out[0], out[1], out[2]
+        uplift[i], overturned[i], t_over[i], visited[i] = out[3], out[4], out[5], out[6]
 
 
 # --------------------------------------------------------------------------- API
@@ -813,9 +830,10 @@ def simulate_time_stepping(block: Block, floor_accel_g, dt_s, *, time_step_s=Non
 
 @dataclass(frozen=True)
 class TimeSteppingPeaks:
-    """Peak responses of many blocks to many records (:func:`time_stepping_peaks_batch`).
+    """Peak responses of many blocks to many records.
 
-    Every field has shape (n_blocks, n_records), meanings and units as in
+    Every field has shape (n_blocks, n_records) from :func:`time_stepping_peaks_batch`,
+    (n_cases,) from :func:`time_stepping_case_peaks`; meanings and units as in
     :class:`assess.mechanics.block.BlockResponse`; ``mode`` is the run's
     :func:`assess.mechanics.block.summary_mode`.
     """
@@ -859,29 +877,79 @@ def time_stepping_peaks_batch(blocks, records_g, dt_s, *, time_step_s=None, tail
     >>> peaks.mode[:, 0].tolist(), peaks.uplift[:, 0].tolist(), peaks.overturned[:, 0].tolist()
     (['slide', 'rock'], [False, True], [False, False])
     """
-    first = np.asarray(records_g[0]) if len(records_g) else np.asarray([])
-    records = [records_g] if first.ndim == 0 else list(records_g)
-    dts = np.broadcast_to(np.asarray(dt_s, dtype=float), (len(records),))
-    checked = [_check_record(r, d) for r, d in zip(records, dts)]
-    accel_flat = np.ascontiguousarray(np.concatenate([c[0] for c in checked]))
-    offsets = np.concatenate(([0], np.cumsum([c[0].size for c in checked]))).astype(np.int64)
-    dts = np.array([c[1] for c in checked])
+    records, dts = _records(records_g, dt_s)
     blocks = list(blocks)
     if not blocks:
         raise ValueError("blocks is empty")
     shape = (len(blocks), dts.size)
-    steps = np.array([[_steps(blk, d, time_step_s, float(tail_s)) for d in dts] for blk in blocks],
-                     dtype=np.int64).reshape(shape + (2,))
-    b, hcg, inv_j, mu, mu_s, e = (np.array(col, dtype=float) for col in zip(*map(_block_constants, blocks)))
-    u_max, u_res, theta_max, t_over = (np.empty(shape) for _ in range(4))
-    uplift, overturned = np.zeros(shape, dtype=np.bool_), np.zeros(shape, dtype=np.bool_)
-    visited = np.zeros(shape, dtype=np.int64)
-    _batch(accel_flat, offsets, dts, np.ascontiguousarray(steps[..., 0]), np.ascontiguousarray(steps[..., 1]),
-           b, hcg, inv_j, mu, mu_s, STANDARD_GRAVITY_M_S2, e, u_max, u_res, theta_max, uplift, overturned,
-           t_over, visited)
-    alpha = np.array([blk.alpha_rad for blk in blocks])
-    mode = np.array([[summary_mode(m for bit, m in enumerate(MODES) if mask >> bit & 1) for mask in row]
-                     for row in visited], dtype=object)
-    return TimeSteppingPeaks(sliding_max_m=u_max, sliding_residual_m=u_res,
-                             theta_max_over_alpha=theta_max / alpha[:, None], uplift=uplift,
-                             overturned=overturned, overturn_time_s=t_over, mode=mode)
+    peaks = _run_cases([blk for blk in blocks for _ in range(dts.size)], records, dts,
+                       np.tile(np.arange(dts.size), len(blocks)), time_step_s, tail_s)
+    return TimeSteppingPeaks(**{name: value.reshape(shape) for name, value in vars(peaks).items()})
+
+
+def time_stepping_case_peaks(blocks, records_g, dt_s, record_index, *, time_step_s=None,
+                             tail_s=10.0) -> TimeSteppingPeaks:
+    """Peaks of many cases, case i ``blocks[i]`` under record ``record_index[i]``, in parallel.
+
+    As :func:`time_stepping_peaks_batch`, for a list of (block, record) cases
+    rather than every block under every record; the cases are spread over the
+    threads a few at a time, so that long and short runs balance.
+
+    Returns
+    -------
+    TimeSteppingPeaks
+        Fields of shape (n_cases,).
+
+    Examples
+    --------
+    >>> squat = Block(half_width_m=0.5, cg_height_m=1.0, height_m=2.0, mu=0.25)
+    >>> slender = Block.uniform(0.16, 1.25, mu=0.7)
+    >>> peaks = time_stepping_case_peaks([squat, slender, squat], [[0.3] * 51, [0.1] * 51], 0.01, [0, 0, 1])
+    >>> peaks.mode.tolist(), peaks.uplift.tolist()
+    (['slide', 'rock', 'rest'], [False, True, False])
+    """
+    records, dts = _records(records_g, dt_s)
+    blocks = list(blocks)
+    index = np.ascontiguousarray(np.asarray(record_index, dtype=np.int64))
+    if index.shape != (len(blocks),) or (index.size and (index.min() < 0 or index.max() >= dts.size)):
+        raise ValueError("record_index must give one index into records_g per block")
+    return _run_cases(blocks, records, dts, index, time_step_s, tail_s)
+
+
+#: Cases a thread takes at a time in the parallel kernel (small: run times differ by orders of magnitude).
+CASES_PER_CHUNK = 4
+
+
+def _records(records_g, dt_s):
+    """Checked records (contiguous float arrays) and their sample intervals."""
+    first = np.asarray(records_g[0]) if len(records_g) else np.asarray([])
+    records = [records_g] if first.ndim == 0 else list(records_g)
+    dts = np.broadcast_to(np.asarray(dt_s, dtype=float), (len(records),))
+    checked = [_check_record(r, d) for r, d in zip(records, dts)]
+    return [c[0] for c in checked], np.array([c[1] for c in checked])
+
+
+def _run_cases(blocks, records, dts, record_index, time_step_s, tail_s) -> TimeSteppingPeaks:
+    n = len(blocks)
+    accel_flat = np.ascontiguousarray(np.concatenate(records)) if records else np.empty(0)
+    offsets = np.concatenate(([0], np.cumsum([r.size for r in records]))).astype(np.int64)
+    steps = np.array([_steps(blk, dts[j], time_step_s, float(tail_s)) for blk, j in zip(blocks, record_index)],
+                     dtype=np.int64).reshape(n, 2)
+    b, hcg, inv_j, mu, mu_s, e = (np.array(col, dtype=float).reshape(n)
+                                  for col in (zip(*map(_block_constants, blocks)) if n else [()] * 6))
+    u_max, u_res, theta_max, t_over = (np.empty(n) for _ in range(4))
+    uplift, overturned = np.zeros(n, dtype=np.bool_), np.zeros(n, dtype=np.bool_)
+    visited = np.zeros(n, dtype=np.int64)
+    with parallel_chunksize(CASES_PER_CHUNK):
+        _cases(accel_flat, offsets, dts, record_index, np.ascontiguousarray(steps[:, 0]),
+               np.ascontiguousarray(steps[:, 1]), b, hcg, inv_j, mu, mu_s, STANDARD_GRAVITY_M_S2, e, u_max, u_res,
+               theta_max, uplift, overturned, t_over, visited)
+    alpha = np.array([blk.alpha_rad for blk in blocks], dtype=float)
+    mode = np.array([_summary_of(mask) for mask in visited.tolist()], dtype=object)
+    return TimeSteppingPeaks(sliding_max_m=u_max, sliding_residual_m=u_res, theta_max_over_alpha=theta_max / alpha,
+                             uplift=uplift, overturned=overturned, overturn_time_s=t_over, mode=mode)
+
+
+def _summary_of(mask):
+    """The run's summary mode from the bit mask of the step modes it visited."""
+    return summary_mode(m for bit, m in enumerate(MODES) if mask >> bit & 1)
