@@ -142,6 +142,10 @@ def build_parser() -> argparse.ArgumentParser:
                         help="a previous run's summary.csv: also write comparison.csv and a report section "
                              "on which items changed risk class and why (default: the summary.csv already "
                              "in --out, if any)")
+    parser.add_argument("--scheduler", metavar="ADDRESS",
+                        help="run the simulations on the Dask distributed cluster whose scheduler is at ADDRESS "
+                             "(e.g. tcp://10.0.0.5:8786); the numbers do not depend on where they ran "
+                             "(default: this machine's cores)")
     _add_allow_records_outside(parser)
     parser.add_argument("--quiet", action="store_true", help="do not print progress")
     parser.add_argument("--version", action="version", version=f"assess {__version__}")
@@ -369,8 +373,17 @@ def _assess(args: argparse.Namespace, say) -> int:
     if args.calibration is not None:
         from assess.calibration.apply import read_calibration
         calibration = read_calibration(args.calibration)
-    result = run_assessment(inventory, args.hazard, seed=args.seed, progress=say, oq_hazard=oq_hazard,
-                            derive_floors_roof=args.derive_floors, calibration=calibration)
+    runner = None
+    if args.scheduler is not None:
+        from assess.mechanics.distributed import DaskRunner
+        say(f"connecting to the Dask scheduler at {args.scheduler}")
+        runner = DaskRunner.connect(args.scheduler)
+    try:
+        result = run_assessment(inventory, args.hazard, seed=args.seed, progress=say, oq_hazard=oq_hazard,
+                                derive_floors_roof=args.derive_floors, calibration=calibration, runner=runner)
+    finally:
+        if runner is not None:
+            runner.close()
     result = _with_comparison(result, args.compare_with, out_dir / "summary.csv", say)
     say("rendering " + ", ".join(["summary.csv", "motions.csv"] + [
         "summary.xlsx" if f == "xlsx" else f"report.{f}" for f in args.format]))
