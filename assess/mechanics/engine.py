@@ -299,7 +299,8 @@ GENERAL_CASES_PER_CALL = 4096
 
 def simulate_cases(blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_s: Sequence[float],
                    record_index, *, tail_s=DEFAULT_TAIL_S,
-                   progress: Optional[Callable[[int, int], None]] = None) -> CasePeaks:
+                   progress: Optional[Callable[[int, int], None]] = None,
+                   seconds_by_solver: Optional[dict] = None) -> CasePeaks:
     """Simulate case k = block ``blocks[k]`` under record ``records_g[record_index[k]]``.
 
     Cases are grouped by the solver proved for them and run in the parallel
@@ -310,8 +311,12 @@ def simulate_cases(blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_
     run its kernel one by one. Same results as :func:`simulate` case by case,
     peaks only.
 
-    ``progress(done, total)`` is called as groups of cases finish.
+    ``progress(done, total)`` is called as groups of cases finish. If
+    ``seconds_by_solver`` is given, the seconds spent in each solver, as
+    (wall, CPU of all threads), are added to it under the solver's name (the
+    rocking kernel's include the runs it hands on to the general solver).
     """
+    from time import perf_counter, process_time
     from .timestepping import time_stepping_case_peaks
 
     n = len(blocks)
@@ -328,6 +333,15 @@ def simulate_cases(blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_
     sliding_set = pure_sliding_proved(mu_static, np.array([b.b_over_h for b in blocks], dtype=float))
     on_interface = np.array([getattr(b, "interface", None) is not None for b in blocks], dtype=bool)
     done = 0
+    clock = {"solver": None, "start": (0.0, 0.0)}
+
+    def timing(name):
+        """Charge the time since the last call to the solver then running, and start ``name``'s."""
+        now = (perf_counter(), process_time())
+        if seconds_by_solver is not None and clock["solver"] is not None:
+            wall, cpu = seconds_by_solver.get(clock["solver"], (0.0, 0.0))
+            seconds_by_solver[clock["solver"]] = (wall + now[0] - clock["start"][0], cpu + now[1] - clock["start"][1])
+        clock["solver"], clock["start"] = name, now
 
     def advance(count):
         nonlocal done
@@ -336,6 +350,7 @@ def simulate_cases(blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_
             progress(done, n)
 
     # 1. cannot uplift (mu_s < b/h): the exact sliding kernel, a record at a time
+    timing(SLIDING_KERNEL)
     for j, record in enumerate(records_g):
         in_record = (record_index == j) & sliding_set
         if not in_record.any():
@@ -354,11 +369,11 @@ def simulate_cases(blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_
         advance(np.count_nonzero(in_record))
     # 2. may uplift: pure rocking, kept where its pivot never slipped nor lifted
     general = []
+    timing(ROCKING_KERNEL)
     for idx in _calls(np.flatnonzero(~sliding_set), ROCKING_CASES_PER_CALL):
         records, dts, index = _records_of(records_g, dt_s, record_index[idx])
-        rock = rocking_case_peaks(records, dts, index, [blocks[i].alpha_rad for i in idx],
-                                  [blocks[i].p_rad_s for i in idx], [blocks[i].restitution_effective for i in idx],
-                                  [blocks[i].inertia_ratio for i in idx], tail_s=tail_s, mu_static=mu_static[idx])
+        alpha, p, e, kappa = _rocking_constants(blocks, idx)
+        rock = rocking_case_peaks(records, dts, index, alpha, p, e, kappa, tail_s=tail_s, mu_static=mu_static[idx])
         held = pure_rocking_held(rock.friction_demand_max, rock.normal_force_min_over_weight, mu_static[idx])
         kept = idx[held]
         theta_max[kept] = rock.theta_max_over_alpha[held]
@@ -369,6 +384,7 @@ def simulate_cases(blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_
         general.append(idx[~held])
         advance(kept.size)
     # 3. the others slide and rock (or fly): the general solver
+    timing(GENERAL)
     for idx in _calls(np.concatenate(general) if general else np.zeros(0, dtype=np.int64), GENERAL_CASES_PER_CALL):
         records, dts, index = _records_of(records_g, dt_s, record_index[idx])
         peaks = time_stepping_case_peaks([blocks[i] for i in idx], records, dts, index, tail_s=tail_s)
@@ -377,9 +393,30 @@ def simulate_cases(blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_
         mode[idx] = peaks.mode
         solver[idx] = GENERAL
         advance(idx.size)
+    timing(None)
     return CasePeaks(sliding_max_m=sliding_max, sliding_residual_m=residual,
                      theta_max_over_alpha=theta_max, uplift=uplift, overturned=overturned,
                      mode=mode.astype(str), solver=solver.astype(str))
+
+
+def _rocking_constants(blocks, idx):
+    """Arrays of α, p, e and κ of ``blocks[i]`` for i in ``idx``, worked out once per distinct block
+    (the blocks of an assessment repeat over its motions; a block is a frozen dataclass, so equal
+    blocks hash alike)."""
+    memo = {}
+    rows = []
+    for i in idx:
+        block = blocks[i]
+        try:
+            row = memo.get(block)
+        except TypeError:  # an unhashable Block subclass
+            row, block = None, None
+        if row is None:
+            row = (blocks[i].alpha_rad, blocks[i].p_rad_s, blocks[i].restitution_effective, blocks[i].inertia_ratio)
+            if block is not None:
+                memo[block] = row
+        rows.append(row)
+    return np.array(rows, dtype=float).reshape(-1, 4).T
 
 
 def _calls(cases, size):

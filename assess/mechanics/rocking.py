@@ -249,7 +249,21 @@ def _simulate(accel_g, dt_s, n_tail, alpha, p, e, kappa, theta_init, theta_dot_i
     if record:
         hist_theta[0] = theta
         hist_theta_dot[0] = w * p
-    for k in range(n - 1):
+    k = 0
+    while k < n - 1:
+        if resting and k < n_record - 1:
+            # at rest at a sample: every following interval whose two samples are within g tan(alpha)
+            # leaves it so (the floor is linear between them), skipped at once
+            k_rest = k
+            while k_rest < n_record - 1 and abs(accel_g[k_rest]) <= tan_alpha and abs(
+                    accel_g[k_rest + 1]) <= tan_alpha:
+                k_rest += 1
+            if k_rest > k:
+                if record:
+                    hist_theta[k + 1:k_rest + 1] = 0.0
+                    hist_theta_dot[k + 1:k_rest + 1] = 0.0
+                k = k_rest
+                continue
         if k < n_record - 1:
             a0 = accel_g[k]
             a1 = accel_g[k + 1]
@@ -363,6 +377,7 @@ def _simulate(accel_g, dt_s, n_tail, alpha, p, e, kappa, theta_init, theta_dot_i
         if record:
             hist_theta[k + 1] = theta
             hist_theta_dot[k + 1] = w * p
+        k += 1
     return theta_max, uplift, overturned, overturn_time, impacts
 
 
