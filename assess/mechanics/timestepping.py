@@ -193,10 +193,11 @@ MAX_REFINEMENT = 16
 _OPEN, _STICK, _SLIP_POS, _SLIP_NEG = 0, 1, 2, 3
 _REST, _SLIDE, _ROCK, _SLIDE_ROCK, _FLIGHT = 0, 1, 2, 3, 4
 #: Candidate states (minus corner, plus corner) with both corners active, in order of preference.
-_PAIR_MINUS = np.array([1, 0, 1, 2, 3, 0, 0, 2, 3, 0], dtype=np.int64)
-_PAIR_PLUS = np.array([1, 1, 0, 2, 3, 2, 3, 0, 0, 0], dtype=np.int64)
+#: (Tuples, not arrays: the compiled code reads them without reference counting.)
+_PAIR_MINUS = (1, 0, 1, 2, 3, 0, 0, 2, 3, 0)
+_PAIR_PLUS = (1, 1, 0, 2, 3, 2, 3, 0, 0, 0)
 #: States of a single active corner, in order of preference.
-_SINGLE = np.array([1, 2, 3, 0], dtype=np.int64)
+_SINGLE = (1, 2, 3, 0)
 _HALF_PI = 0.5 * np.pi
 
 
@@ -272,7 +273,7 @@ def _both_stick(vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu_s):
     return violation, pnm, ptm, pnp, t
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _candidate(st_m, st_p, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s):
     """Velocity and impulses for assumed corner states; returns (violation, v⁺, P_N−, P_T−, P_N+, P_T+)."""
     if act_m and act_p and st_m == _STICK and st_p == _STICK:
@@ -334,7 +335,7 @@ def _candidate(st_m, st_p, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, 
     return violation, v, pnm, ptm, pnp, ptp
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _solve_contacts(prev_m, prev_p, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s, tol):
     """Exact solution of the two-corner contact problem by enumeration of states.
 
@@ -343,7 +344,7 @@ def _solve_contacts(prev_m, prev_p, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, in
     kept, else the least inconsistent. Returns (state−, state+, v⁺, P_N−, P_N+).
     """
     best = (np.inf, 0, 0, vf, 0.0, 0.0)
-    n_cand = _PAIR_MINUS.size if (act_m and act_p) else _SINGLE.size
+    n_cand = len(_PAIR_MINUS) if (act_m and act_p) else len(_SINGLE)
     for level in range(3):
         for i in range(n_cand):
             if act_m and act_p:
@@ -364,7 +365,7 @@ def _solve_contacts(prev_m, prev_p, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, in
     return best[1], best[2], best[3], best[4], best[5]
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _project(y, theta, fix_m, fix_p, b, hcg, inv_j, gap_tol):
     """Put the fixed corners back on the floor: both along M⁻¹∇g by Newton iteration (y and θ
     move), a single one by a vertical shift (θ, the rocking coordinate, is left as integrated)."""
@@ -385,7 +386,7 @@ def _project(y, theta, fix_m, fix_p, b, hcg, inv_j, gap_tol):
     return y, theta
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _mode_of_step(st_m, st_p, v, rn_m, rt_m, rn_p, rt_p, g_m, g_p, radius, gravity):
     """Mode code of a step from the contact states, the gaps at its end and a velocity in it."""
     gap_tol, v_tol = UPLIFT_GAP_RATIO * radius, VELOCITY_RATIO * np.sqrt(gravity * radius)
@@ -401,7 +402,7 @@ def _mode_of_step(st_m, st_p, v, rn_m, rt_m, rn_p, rt_p, g_m, g_p, radius, gravi
 
 
 # --------------------------------------------------------------------------- time loop
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _event_fraction(pm, pp, relocate, v, vf, g0_m, g0_p, vx, vy, w, h, rn_m, rt_m, rn_p, rt_p, act_m, act_p, inv_j,
                     mu, mu_s, tol):
     """Fraction of the step at which a corner arrives or a slip reverses (1 if neither).
@@ -442,7 +443,7 @@ def _event_fraction(pm, pp, relocate, v, vf, g0_m, g0_p, vx, vy, w, h, rn_m, rt_
     return frac, vc, carry, arrived
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _cone_margin(pm, pp, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s):
     """μs P_N − |P_T| of the sticking pivot of a block on one corner (pm, pp: stick and open)."""
     _, _, pnm, ptm, pnp, ptp = _candidate(pm, pp, True, True, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s)
