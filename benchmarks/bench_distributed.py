@@ -1,7 +1,7 @@
 """The engine on a Dask cluster against this machine: throughput, memory per worker, same numbers.
 
 Run: python benchmarks/bench_distributed.py [--items 1000] [--workers 2] [--scheduler ADDRESS]
-                                            [--cold-cache]
+                                            [--cases-per-task N] [--cold-cache]
 
 The cases are those of ``bench_assessment.py`` (N items x pyslammer's 18
 records x 2 directions). They run once serially on this machine
@@ -66,15 +66,18 @@ def cpu_s():
     return usage.ru_utime + usage.ru_stime
 
 
-def timed(run, label, cpu=lambda: cpu_s()):
-    """(peaks, wall seconds, CPU seconds) of the second of two runs; ``cpu()`` reads the CPU clock."""
+def timed(run, label, cpu=None):
+    """(peaks, wall seconds, CPU seconds) of the second of two runs; ``cpu()`` reads the workers' CPU clock."""
     seconds = []
     for attempt in range(2):
-        start, start_cpu = time.perf_counter(), cpu()
+        start, start_cpu, start_here = time.perf_counter(), cpu() if cpu else 0.0, cpu_s()
         peaks = run()
         seconds.append(time.perf_counter() - start)
-    used = cpu() - start_cpu
-    print(f"{label}: first run {seconds[0]:.1f} s, second run {seconds[1]:.1f} s ({used:.1f} CPU s)")
+    here = cpu_s() - start_here
+    used = (cpu() - start_cpu) if cpu else here
+    where = f"{used:.1f} CPU s in the workers, {here:.1f} CPU s here (client and scheduler)" if cpu \
+        else f"{used:.1f} CPU s"
+    print(f"{label}: first run {seconds[0]:.1f} s, second run {seconds[1]:.1f} s ({where})")
     return peaks, seconds[1], used
 
 
@@ -89,6 +92,7 @@ def main():
     parser.add_argument("--items", type=int, default=1000)
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--scheduler", metavar="ADDRESS", help="an existing cluster (default: a loopback one)")
+    parser.add_argument("--cases-per-task", type=int, help="default: DaskRunner's")
     parser.add_argument("--cold-cache", action="store_true",
                         help="the loopback workers compile the kernels into an empty numba cache")
     args = parser.parse_args()
@@ -109,7 +113,8 @@ def main():
         cluster = LocalCluster(n_workers=args.workers, threads_per_worker=1, processes=True, host="127.0.0.1",
                                dashboard_address=None, env=env, silence_logs=40)
         address = cluster.scheduler_address
-    runner = DaskRunner.connect(address)
+    runner = DaskRunner.connect(address) if args.cases_per_task is None else DaskRunner.connect(
+        address, cases_per_task=args.cases_per_task)
     try:
         workers = runner.client.scheduler_info()["workers"]
         numba_setup = set(runner.client.run(numba_config).values())
