@@ -328,3 +328,25 @@ def test_friction_demand_at_onset_is_shenton_requirement():
     assert result.uplift
     assert result.friction_demand_max == pytest.approx(shenton, rel=1e-4)
     assert result.friction_demand_max == pytest.approx(friction_required_to_rock(accel_g, np.tan(alpha)), rel=1e-4)
+
+
+def test_stopping_when_pure_rocking_fails_keeps_the_held_runs_and_the_verdict():
+    """``rocking_case_peaks(mu_static=)`` stops a run once |F|/N > μs or N ≤ 0: the runs that held
+    are those of the full kernel, bit for bit, and every stopped run is one the full run rejects
+    (μs from 0.2 to 1.2 under synthetic records of 0.25, 0.4 and 0.7 g)."""
+    from assess.mechanics.rocking import rocking_case_peaks
+
+    records = [synthetic_record(seed, pga) for seed, pga in ((1, 0.25), (2, 0.4), (3, 0.7))]
+    mu_static = np.repeat(np.linspace(0.2, 1.2, 11), len(records))
+    index = np.tile(np.arange(len(records)), 11)
+    full = rocking_case_peaks(records, 0.01, index, ALPHA, P, tail_s=5.0)
+    stopped = rocking_case_peaks(records, 0.01, index, ALPHA, P, tail_s=5.0, mu_static=mu_static)
+    held_full = (full.friction_demand_max <= mu_static) & (full.normal_force_min_over_weight > 0.0)
+    held_stopped = (stopped.friction_demand_max <= mu_static) & (stopped.normal_force_min_over_weight > 0.0)
+    assert held_full.any() and (~held_full).any()
+    np.testing.assert_array_equal(held_stopped, held_full)
+    for field in ("theta_max_over_alpha", "uplift", "overturned", "impacts", "friction_demand_max"):
+        np.testing.assert_array_equal(getattr(stopped, field)[held_full], getattr(full, field)[held_full])
+    # and the case kernel is the block-by-record kernel, case by case
+    batch = rocking_peaks_batch(records, 0.01, ALPHA, P, tail_s=5.0)
+    np.testing.assert_array_equal(full.theta_max_over_alpha[:3], batch.theta_max_over_alpha[0])
