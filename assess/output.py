@@ -102,6 +102,10 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: st
         from assess.report.spreadsheet import summary_workbook
 
         files["summary.xlsx"] = summary_workbook({result.level_label: result.summary}, units=units)
+    if result.curve_risk is not None:
+        from assess.fragility.stripes import fragility_files
+
+        files.update(fragility_files(result.curve_risk, result.summary))
     if result.comparison is not None:
         files["comparison.csv"] = csv_text(result.comparison).encode()
     if "html" in formats or "pdf" in formats:
