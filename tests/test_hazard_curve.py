@@ -218,3 +218,42 @@ def test_the_command_writes_the_fragility_folder_with_a_curve(tmp_path):
     html = (tmp_path / "out" / "report.html").read_text()
     assert "Over the building&#39;s life" in html or "Over the building's life" in html
     assert "in 50 years" in html
+
+
+def test_pelicun_loads_the_exported_fragility_of_a_run_into_its_damage_model(two_pulse_run, tmp_path):
+    """The fragility an assessment exports, read by pelicun (a test-only peer) into a damage model:
+    its damage-state probabilities at given floor accelerations are the fitted lognormal's."""
+    pelicun_assessment = pytest.importorskip(
+        "pelicun.assessment", reason="pelicun is not installed (pip install -e '.[test,pelicun]' adds it)")
+    from assess.fragility.stripes import fragility_files
+
+    result, _ = two_pulse_run
+    folder = tmp_path / "fragility"
+    folder.mkdir()
+    for name, content in fragility_files(result.curve_risk, result.summary).items():
+        (tmp_path / name).write_bytes(content)
+    fit = result.curve_risk.fits[("S1", "beyond_clearance")]
+    pfa_g = np.array([0.5 * fit.median_g, fit.median_g, 1.5 * fit.median_g])
+    repeats = 4000
+    sample = np.tile(pfa_g, repeats)
+    demand_csv = tmp_path / "demand.csv"
+    with demand_csv.open("w", encoding="utf-8") as handle:
+        handle.write(",1-PFA-0-1,1-PFA-1-1\nUnits,g,g\n")
+        for i, a in enumerate(sample):
+            handle.write(f"{i},{a},{a}\n")
+    asmnt = pelicun_assessment.Assessment({"PrintLog": False, "Seed": 3})
+    asmnt.stories = 1
+    asmnt.demand.load_sample(str(demand_csv))
+    marginals = pd.DataFrame({"Units": "ea", "Location": "1", "Direction": "1", "Theta_0": 1.0, "Blocks": 1},
+                             index=["S1"])
+    asmnt.asset.load_cmp_model({"marginals": marginals})
+    asmnt.asset.generate_cmp_sample(len(sample))
+    asmnt.damage.load_model_parameters([str(folder / "fragility.csv")], {"S1"})
+    asmnt.damage.calculate()
+    assert asmnt.damage.missing_components == []
+    states = asmnt.damage.ds_model.sample.xs("S1", axis=1, level="cmp").T.groupby(level="ds").sum().T
+    damaged = states.drop(columns="0", errors="ignore").sum(axis=1).to_numpy()
+    observed = np.array([damaged[sample == a].mean() for a in pfa_g])
+    expected = stats.norm.cdf(np.log(pfa_g / fit.median_g) / fit.beta)
+    print("pelicun P(DS>=1)", observed.round(4), "fitted lognormal", expected.round(4))
+    np.testing.assert_allclose(observed, expected, atol=0.03)  # > 4 sampling sd of 4000 draws
