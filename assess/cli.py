@@ -384,7 +384,8 @@ def _assess(args: argparse.Namespace, say) -> int:
         say(f"rendering {result.level_label}: " + ", ".join(["summary.csv", "motions.csv"] + [
             "summary.xlsx" if f == "xlsx" else f"report.{f}" for f in args.format]
             + (["fragility/"] if result.curve_risk is not None else [])))
-        files = render_outputs(result, args.format, units=args.units)
+        others = tuple(other for other in results if other is not result)
+        files = render_outputs(result, args.format, units=args.units, other_levels=others)
         written = _write_uninterrupted(files, out_dir)
         counts = result.risk_counts()
         say(f"{result.level_label}: {counts['high']} high, {counts['moderate']} moderate, {counts['low']} low risk, "

@@ -196,6 +196,9 @@ def test_several_levels_in_one_run_write_one_folder_each(tmp_path):
     two = pd.read_csv(tmp_path / "out" / "2in50" / "summary.csv")
     ten = pd.read_csv(tmp_path / "out" / "10in50" / "summary.csv")
     assert two.loc[0, "pta_g"] == pytest.approx(0.6) and ten.loc[0, "pta_g"] == pytest.approx(0.35)
+    import openpyxl
+    book = openpyxl.load_workbook(tmp_path / "out" / "10in50" / "summary.xlsx", read_only=True)
+    assert book.sheetnames[:2] == ["10in50", "2in50"]  # its own level first, then the others
     again = _cli([str(path), "--hazard", "2in50,2%/50yr", "--out", str(tmp_path / "again")], tmp_path)
     assert again.returncode == 2 and "again" in again.stderr and "Traceback" not in again.stderr
     assert not (tmp_path / "again").exists()
