@@ -260,3 +260,16 @@ def test_pelicun_loads_the_exported_fragility_of_a_run_into_its_damage_model(two
     expected = stats.norm.cdf(np.log(pfa_g / fit.median_g) / fit.beta)
     print("pelicun P(DS>=1)", observed.round(4), "fitted lognormal", expected.round(4))
     np.testing.assert_allclose(observed, expected, atol=0.03)  # > 4 sampling sd of 4000 draws
+
+
+def test_a_curve_with_nothing_to_integrate_exits_2_naming_it(tmp_path):
+    path = _workbook(tmp_path, [
+        {"id": "S1", "name": "low friction", "floor": 0, "mu": 0.15, "clearance_cm": 10, **SQUAT},
+    ], [{"level": "2in50", "motion": "p2", "floor": 0, "pta_g": 0.6, "tp_s": 0.5, "pulse": "A"}], {})
+    flat = tmp_path / "hazard_curve-mean-PGA_1.csv"
+    flat.write_text("#,,,,\"kind='mean', investigation_time=50.0, imt='PGA'\"\n"
+                    "lon,lat,depth,poe-0.1000000,poe-0.2000000\n0.0,0.0,0.0,1.000000E+00,1.000000E+00\n")
+    done = _cli([str(path), "--hazard", "2in50", "--oq-hazard", str(flat), "--out", str(tmp_path / "out")], tmp_path)
+    assert done.returncode == 2, done.stderr
+    assert "hazard_curve-mean-PGA_1.csv" in done.stderr and "Traceback" not in done.stderr
+    assert not (tmp_path / "out").exists()

@@ -306,6 +306,12 @@ def curve_risk(cases: pd.DataFrame, motions: dict, level_motions: pd.DataFrame, 
     if hazard.kind != "curve":
         raise ValueError("a hazard map has no curve to integrate")
     levels_g, rates_per_yr = curve_rates_per_yr(hazard)
+    if levels_g.size < 2 or not rates_per_yr[0] > rates_per_yr[-1]:
+        from assess.errors import InputError, Problem
+        raise InputError([Problem(file=_file_name(hazard.path), message=(
+            "the hazard curve has fewer than two levels with a probability of exceedance between 0 and 1, "
+            "or does not fall with the level: there is no curve to integrate the fragilities over."),
+            fix="export the site's mean PGA hazard curve from OpenQuake with levels spanning 0.005 to 3 g.")])
     suite_pta_g = {int(f): group["pta_g"].to_numpy(dtype=float)
                    for f, group in level_motions.groupby("floor")}
     floors = {}
