@@ -173,10 +173,11 @@ def test_the_curve_leaves_the_level_answer_alone(two_pulse_run, tmp_path):
 
 def test_stripes_run_through_the_runner(rect_run):
     result, _, runner = rect_run
-    from assess.fragility.stripes import N_STRIPES
-    # 2 freestanding items x 2 directions x 1 history x N stripes, besides the level's runs
+    from assess.fragility.stripes import N_STRIPES, REFINE_STRIPES
+    # the level: 2 freestanding items x 2 directions x 1 history; the stripes: as many x N stripes,
+    # and each item's step (one history: its outcomes are a step) looked into with REFINE_STRIPES more
     assert runner.cases_simulated - result.curve_risk.runs == 2 * 2 * 1
-    assert result.curve_risk.runs == 2 * 2 * N_STRIPES
+    assert result.curve_risk.runs == 2 * 2 * N_STRIPES + 2 * 2 * REFINE_STRIPES
 
 
 def _cli(args, cwd):

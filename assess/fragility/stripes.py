@@ -16,7 +16,10 @@ at every floor acceleration a. Multiple-stripe analysis ([1]) gives it:
    directions (the engine, as at the level). A history is one trial; it is a
    failure ``beyond_clearance`` when the peak sliding exceeds the clearance
    in either direction, ``overturn`` when the item overturns in either.
-3. **Fit.** Per item and failure mode, a lognormal fragility in PFA by
+3. **Fit.** Where an item's outcomes jump from none to all failing between two
+   stripes (a floor whose suite varies little), :data:`REFINE_STRIPES` more
+   stripes inside that step are run for that item (:func:`refinement_plan`).
+   Per item and failure mode, a lognormal fragility in PFA by
    maximum likelihood on the binomial outcomes, with its standard error
    (:func:`assess.fragility.msa.fit_lognormal_fragilities`); where the
    outcomes admit no finite fit (nothing failed, everything failed, the
@@ -26,7 +29,7 @@ at every floor acceleration a. Multiple-stripe analysis ([1]) gives it:
    ratio (:func:`floor_pfa_per_pga`), integrated over the curve
    (:func:`assess.hazard.risk_integral.openquake_failure_rate`); the
    probability in 50 years follows (Poisson). Without a fit, the rate is
-   bounded where the outcomes allow (:func:`rate_bound_note`).
+   bounded where the outcomes allow (:func:`item_rates`).
 
 The risk class and the advice stay those of the level (the design
 earthquake the facility plans for); the annual rates answer the owner's other
@@ -167,31 +170,35 @@ def floor_pfa_per_pga(floor: int, suite_pta_g: dict, settings: dict) -> tuple[fl
                  "roof_floor in the settings, or the ground motions at the level)")
 
 
-def stripe_runs(cases: pd.DataFrame, motions: dict, stripes_by_floor: dict, runner,
+def stripe_runs(cases: pd.DataFrame, motions: dict, plan, runner,
                 progress: Callable[[int, int], None] | None = None) -> pd.DataFrame:
-    """Simulate every item of ``cases`` under its floor's suite scaled to each stripe; one row per run.
+    """Simulate items under their floor's suite scaled to stripes; one row per run.
 
     ``cases`` are the level's item x motion x direction cases (with their
-    ``block``); ``motions`` the level's histories per ``motion_key``;
-    ``stripes_by_floor`` the stripes' PFA [g] per floor. Returns ``id``,
-    ``direction``, ``pfa_g``, ``history`` (per floor), ``sliding_max_cm``,
-    ``overturned``.
+    ``block``); ``motions`` the level's histories per ``motion_key``; ``plan``
+    a list of ``(floor, pfa_g, ids)``: the floor's histories scaled to
+    ``pfa_g`` [g], run by the items ``ids`` of that floor (None: all of them).
+    Returns ``id``, ``direction``, ``pfa_g``, ``history`` (per floor),
+    ``sliding_max_cm``, ``overturned``.
     """
     blocks, records, dts, index, rows = [], [], [], [], []
     per_item = cases.drop_duplicates(["id", "direction"])
-    for floor, levels_g in stripes_by_floor.items():
-        keys = sorted(set(cases.loc[cases["floor"] == floor, "motion_key"]))
-        histories = [record for key in keys for record, _ in motions[key]]
+    histories_of = {}
+    for floor, pfa_g, ids in plan:
+        if floor not in histories_of:
+            keys = sorted(set(cases.loc[cases["floor"] == floor, "motion_key"]))
+            histories_of[floor] = [record for key in keys for record, _ in motions[key]]
         on_floor = per_item[per_item["floor"] == floor]
-        for pfa_g in levels_g:
-            for h, record in enumerate(histories):
-                peak_g = float(np.max(np.abs(record.accel_g)))
-                records.append(record.accel_g * (pfa_g / peak_g))
-                dts.append(record.dt_s)
-                for case in on_floor.itertuples(index=False):
-                    blocks.append(case.block)
-                    index.append(len(records) - 1)
-                    rows.append((case.id, int(case.direction), float(pfa_g), h))
+        if ids is not None:
+            on_floor = on_floor[on_floor["id"].isin(ids)]
+        for h, record in enumerate(histories_of[floor]):
+            peak_g = float(np.max(np.abs(record.accel_g)))
+            records.append(record.accel_g * (pfa_g / peak_g))
+            dts.append(record.dt_s)
+            for case in on_floor.itertuples(index=False):
+                blocks.append(case.block)
+                index.append(len(records) - 1)
+                rows.append((case.id, int(case.direction), float(pfa_g), h))
     if not blocks:
         return pd.DataFrame(columns=["id", "direction", "pfa_g", "history", "sliding_max_cm", "overturned"])
     peaks = runner.simulate_cases(blocks, records, dts, np.asarray(index), progress=progress)
@@ -199,6 +206,32 @@ def stripe_runs(cases: pd.DataFrame, motions: dict, stripes_by_floor: dict, runn
     runs["sliding_max_cm"] = peaks.sliding_max_m * 100.0
     runs["overturned"] = peaks.overturned
     return runs
+
+
+#: Stripes added inside a step (outcomes separated between two stripes) to find where it rises.
+REFINE_STRIPES = 4
+
+
+def refinement_plan(fits: dict, stripes_by_floor: dict, floor_of) -> list:
+    """Stripes to add where an item's outcomes are a step (``separated``): :data:`REFINE_STRIPES`
+    levels evenly in ln PFA strictly between the stripes on either side of the step, so that a
+    failure mode that rises within one stripe spacing gets outcomes on its slope.
+    """
+    extra = {}
+    for (item_id, _mode), fit in fits.items():
+        if fit.status != "separated":
+            continue
+        floor = int(floor_of[item_id])
+        levels = np.asarray(stripes_by_floor[floor])
+        survived_g, failed_g = fit.separation_g
+        below = levels[levels < survived_g * (1 - 1e-9)]
+        above = levels[levels > failed_g * (1 + 1e-9)]
+        low = survived_g if survived_g < failed_g else (below[-1] if below.size else survived_g / 1.5)
+        high = failed_g if survived_g < failed_g else (above[0] if above.size else failed_g * 1.5)
+        new = np.exp(np.linspace(math.log(low), math.log(high), REFINE_STRIPES + 2)[1:-1])
+        extra.setdefault((floor, item_id), set()).update(float(x) for x in new)
+    return [(floor, pfa_g, [item_id]) for (floor, item_id), levels in sorted(extra.items())
+            for pfa_g in sorted(levels)]
 
 
 def stripe_outcomes(runs: pd.DataFrame, clearance_cm: pd.Series) -> pd.DataFrame:
@@ -331,11 +364,17 @@ def curve_risk(cases: pd.DataFrame, motions: dict, level_motions: pd.DataFrame, 
             last[0] = done
             progress(f"stripes: simulated {done} of {total_runs} runs")
 
-    runs = stripe_runs(cases, motions, stripes_by_floor, runner, progress=report)
+    plan = [(floor, float(x), None) for floor, levels in stripes_by_floor.items() for x in levels]
+    runs = stripe_runs(cases, motions, plan, runner, progress=report)
     clearance_cm = cases.drop_duplicates("id").set_index("id")["clearance_m"] * 100.0
-    fits, stripes = fit_items(stripe_outcomes(runs, clearance_cm))
-    rows = []
     floor_of = cases.drop_duplicates("id").set_index("id")["floor"]
+    fits, stripes = fit_items(stripe_outcomes(runs, clearance_cm))
+    refine = refinement_plan(fits, stripes_by_floor, floor_of)
+    if refine:  # steps between two stripes: look inside them
+        progress(f"stripes: {len(refine)} more inside the steps of {len({p[2][0] for p in refine})} items")
+        runs = pd.concat([runs, stripe_runs(cases, motions, refine, runner)], ignore_index=True)
+        fits, stripes = fit_items(stripe_outcomes(runs, clearance_cm))
+    rows = []
     for item_id in dict.fromkeys(cases["id"]):
         ratio = floors[int(floor_of[item_id])]["pfa_per_pga"]
         row = {"id": item_id, "pfa_per_pga": ratio}
