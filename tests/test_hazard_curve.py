@@ -274,3 +274,57 @@ def test_a_curve_with_nothing_to_integrate_exits_2_naming_it(tmp_path):
     assert done.returncode == 2, done.stderr
     assert "hazard_curve-mean-PGA_1.csv" in done.stderr and "Traceback" not in done.stderr
     assert not (tmp_path / "out").exists()
+
+
+def test_a_suite_of_two_kinds_of_motion_is_no_lognormal_and_its_rate_comes_from_the_outcomes(tmp_path):
+    """Three short and three long rectangular pulses: half the suite needs far more acceleration than
+    the other half, so the fragility rises in two groups of steps with a plateau between, which no
+    lognormal describes. Its rate has a closed form, the mean over the motions of λ(a*) at each one's
+    closed-form threshold."""
+    durations = (0.06, 0.07, 0.08, 1.6, 1.8, 2.0)
+    path = _workbook(tmp_path, [
+        {"id": "S1", "name": "low friction", "floor": 0, "mu": 0.15, "clearance_cm": 10, **SQUAT},
+    ], [{"level": "2in50", "motion": f"rect {d} s", "floor": 0, "record": f"records/r{k}.csv"}
+        for k, d in enumerate(durations)],
+        {f"records/r{k}.csv": _rect_record(d) for k, d in enumerate(durations)})
+    hazard = read_openquake_hazard(CURVE)
+    result = run_assessment(read_workbook(path), "2in50", hazard_curve=hazard)
+    row = result.summary.set_index("id").loc["S1"]
+    thresholds = [rect_threshold_g(0.15, 0.10, d) for d in durations]
+    exact = float(np.mean([_curve_rate(hazard, a) for a in thresholds]))
+    fit = result.curve_risk.fits[("S1", "beyond_clearance")]
+    from assess.hazard.risk_integral import openquake_failure_rate
+    lognormal = openquake_failure_rate(hazard, fit.median_g, fit.beta).annual_rate
+    print("thresholds", np.round(thresholds, 3), "exact", exact, "reported", row["annual_rate_beyond_clearance"],
+          row["annual_rate_beyond_clearance_low"], row["annual_rate_beyond_clearance_high"], "lognormal", lognormal)
+    # the steep rises were refined, and the fitted lognormal's rate, with its interval, holds the closed form
+    assert len(result.curve_risk.stripes.query("id == 'S1' and mode == 'beyond_clearance'")) > 10
+    assert row["annual_rate_beyond_clearance_low"] <= exact <= row["annual_rate_beyond_clearance_high"]
+    assert row["annual_rate_beyond_clearance"] == pytest.approx(exact, rel=0.25)
+
+
+def test_where_no_lognormal_fits_the_rate_is_the_outcomes_own():
+    """Many trials on a fine grid of stripes, half the histories failing from a1 and half from a2:
+    the deviance rejects the lognormal, and the rate integrated from the outcomes is the closed form
+    of the two steps, ½ λ(a1) + ½ λ(a2); the lognormal's is not."""
+    from assess.fragility.msa import fit_lognormal_fragility
+    from assess.fragility.stripes import curve_rates_per_yr, item_rates
+
+    hazard = read_openquake_hazard(CURVE)
+    levels_g, rates = curve_rates_per_yr(hazard)
+    x = np.geomspace(0.05, 2.0, 60)
+    a1, a2 = x[15], x[45]  # on stripes, so the steps are seen exactly
+    n = np.full(x.size, 200)
+    z = (100 * (x >= a1) + 100 * (x >= a2)).astype(int)
+    fit = fit_lognormal_fragility(x, n, z)
+    assert fit.status == "fitted"
+    outcomes = pd.DataFrame({"pfa_g": x, "trials": n, "failures": z})
+    rates_out = item_rates(fit, "beyond_clearance", hazard, levels_g, rates, 1.0, x, outcomes, onset_g=0.0)
+    exact = 0.5 * _curve_rate(hazard, a1) + 0.5 * _curve_rate(hazard, a2)
+    from assess.hazard.risk_integral import openquake_failure_rate
+    lognormal = openquake_failure_rate(hazard, fit.median_g, fit.beta).annual_rate
+    print("exact", exact, "outcomes", rates_out["annual_rate_beyond_clearance"], "lognormal", lognormal)
+    assert "does not fit the outcomes" in rates_out["note"]
+    # a step seen at one stripe is spread over the gap below it (linear in ln a): within 25 %
+    assert rates_out["annual_rate_beyond_clearance"] == pytest.approx(exact, rel=0.25)
+    assert abs(math.log(rates_out["annual_rate_beyond_clearance"] / exact)) < abs(math.log(lognormal / exact))

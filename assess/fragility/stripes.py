@@ -7,18 +7,22 @@ at every floor acceleration a. Multiple-stripe analysis ([1]) gives it:
 1. **Stripes.** For each floor, the histories of the floor's suite at the
    level (records, synthetic histories or pulses, as the level simulates
    them) are each scaled to a peak floor acceleration (PFA) x_j, for
-   :data:`N_STRIPES` values spaced evenly in ln x between the floor's PFA at
-   the annual rates :data:`STRIPE_RATES_PER_YR` of the hazard curve
-   (:func:`stripe_levels_g`). Scaling a history to the stripe fixes the
-   intensity exactly; the suite's shapes carry the record-to-record
-   variability.
+   :data:`N_STRIPES` values spaced evenly in ln x over the floor's PFA for a
+   ground acceleration of :data:`STRIPE_PGA_G` (:func:`stripe_levels_g`).
+   Scaling a history to the stripe fixes the intensity exactly; the suite's
+   shapes carry the record-to-record variability. The stripes do not depend
+   on the hazard curve, so a new curve re-integrates the same fragilities
+   without a simulation (a portfolio's cache keeps them); where the curve's
+   rarest shaking lies beyond the top stripe, the note says the fragility is
+   extrapolated there.
 2. **Outcomes.** Every item runs under every scaled history in both base
    directions (the engine, as at the level). A history is one trial; it is a
    failure ``beyond_clearance`` when the peak sliding exceeds the clearance
    in either direction, ``overturn`` when the item overturns in either.
-3. **Fit.** Where an item's outcomes jump from none to all failing between two
-   stripes (a floor whose suite varies little), :data:`REFINE_STRIPES` more
-   stripes inside that step are run for that item (:func:`refinement_plan`).
+3. **Fit.** Where an item's failure share jumps between two stripes (by
+   :data:`REFINE_JUMP` or more: a floor whose suite varies little fails all at
+   once), :data:`REFINE_STRIPES` more stripes inside that gap are run for that
+   item (:func:`refinement_plan`).
    Per item and failure mode, a lognormal fragility in PFA by
    maximum likelihood on the binomial outcomes, with its standard error
    (:func:`assess.fragility.msa.fit_lognormal_fragilities`); where the
@@ -52,6 +56,7 @@ from typing import Callable
 
 import numpy as np
 import pandas as pd
+from scipy import stats
 
 from assess.fragility.msa import FITTED, FragilityFit, fit_lognormal_fragilities
 from assess.hazard.openquake import OpenQuakeHazard
@@ -59,8 +64,11 @@ from assess.hazard.risk_integral import annual_rates_of_curve, openquake_failure
 
 #: Number of stripes of floor acceleration.
 N_STRIPES = 10
-#: Annual rates of exceedance [1/yr] of the curve's PGA at the lowest and highest stripe (5 to 10,000 years).
-STRIPE_RATES_PER_YR = (1.0 / 5.0, 1.0 / 10_000.0)
+#: Ground accelerations [g] of the lowest and highest stripe: from shaking that moves little to the
+#: strongest recorded (the floor's stripes are these times its PFA/PGA ratio).
+STRIPE_PGA_G = (0.05, 2.0)
+#: The curve's rarest shaking the report checks the stripes reach: the 10,000-year PGA.
+RAREST_RATE_PER_YR = 1.0 / 10_000.0
 MODES = ("beyond_clearance", "overturn")
 
 #: Columns the hazard curve adds to ``summary.csv`` (SPEC §6), then the fragilities they rest on.
@@ -93,6 +101,10 @@ class CurveRisk:
         The curve's file name and site, for the report.
     runs : int
         Simulations run for the stripes.
+    notes : list of str
+        About the curve as a whole (e.g. shaking beyond the top stripe).
+    fit_p : dict
+        ``{(id, mode): p}``: the p-value of each fitted lognormal's deviance (:func:`lognormal_fit_p`).
     """
 
     table: pd.DataFrame
@@ -102,6 +114,7 @@ class CurveRisk:
     curve: str
     runs: int
     notes: list = field(default_factory=list)
+    fit_p: dict = field(default_factory=dict)
 
 
 def curve_rates_per_yr(hazard: OpenQuakeHazard) -> tuple[np.ndarray, np.ndarray]:
@@ -124,18 +137,14 @@ def pga_at_rate_g(levels_g, rates_per_yr, rate_per_yr: float) -> float:
     return float(np.exp(np.interp(math.log(rate_per_yr), rates[::-1], levels[::-1])))
 
 
-def stripe_levels_g(levels_g, rates_per_yr, pfa_per_pga: float, n_stripes: int = N_STRIPES,
-                    rates=STRIPE_RATES_PER_YR) -> np.ndarray:
-    """The stripes' peak floor accelerations [g]: evenly spaced in ln PFA between the floor's PFA at the
-    curve's annual ``rates`` (PGA at those rates times ``pfa_per_pga``).
+def stripe_levels_g(pfa_per_pga: float, n_stripes: int = N_STRIPES, pga_g=STRIPE_PGA_G) -> np.ndarray:
+    """The stripes' peak floor accelerations [g]: evenly spaced in ln PFA over ``pga_g`` times the floor's
+    PFA/PGA ratio.
 
-    >>> stripe_levels_g([0.1, 0.4], [1e-2, 1e-4], 1.5, n_stripes=3).round(4).tolist()
+    >>> stripe_levels_g(1.5, n_stripes=3, pga_g=(0.1, 0.4)).round(4).tolist()
     [0.15, 0.3, 0.6]
     """
-    low = pga_at_rate_g(levels_g, rates_per_yr, rates[0]) * pfa_per_pga
-    high = pga_at_rate_g(levels_g, rates_per_yr, rates[1]) * pfa_per_pga
-    if not high > low:
-        raise ValueError("the curve does not span the stripes' rates")
+    low, high = pga_g[0] * pfa_per_pga, pga_g[1] * pfa_per_pga
     return np.exp(np.linspace(math.log(low), math.log(high), n_stripes))
 
 
@@ -208,28 +217,29 @@ def stripe_runs(cases: pd.DataFrame, motions: dict, plan, runner,
     return runs
 
 
-#: Stripes added inside a step (outcomes separated between two stripes) to find where it rises.
-REFINE_STRIPES = 4
+#: Stripes added inside a gap between two stripes where the failure share jumps.
+REFINE_STRIPES = 3
 
 
-def refinement_plan(fits: dict, stripes_by_floor: dict, floor_of) -> list:
-    """Stripes to add where an item's outcomes are a step (``separated``): :data:`REFINE_STRIPES`
-    levels evenly in ln PFA strictly between the stripes on either side of the step, so that a
-    failure mode that rises within one stripe spacing gets outcomes on its slope.
+#: A failure share that changes by this much or more between two neighbouring stripes is refined.
+REFINE_JUMP = 0.25
+
+
+def refinement_plan(stripes: pd.DataFrame, floor_of) -> list:
+    """Stripes to add where an item's failure share rises steeply: between two neighbouring stripes
+    whose shares differ by :data:`REFINE_JUMP` or more, :data:`REFINE_STRIPES` levels evenly in ln PFA
+    strictly between them. On a hazard curve whose rate falls as a⁻³ to a⁻⁴, one stripe spacing
+    (a factor 1.5) is a factor 3 to 5 in rate: where the fragility rises within it, where it rises
+    matters, and a lognormal fitted across the gap cannot tell.
     """
     extra = {}
-    for (item_id, _mode), fit in fits.items():
-        if fit.status != "separated":
-            continue
-        floor = int(floor_of[item_id])
-        levels = np.asarray(stripes_by_floor[floor])
-        survived_g, failed_g = fit.separation_g
-        below = levels[levels < survived_g * (1 - 1e-9)]
-        above = levels[levels > failed_g * (1 + 1e-9)]
-        low = survived_g if survived_g < failed_g else (below[-1] if below.size else survived_g / 1.5)
-        high = failed_g if survived_g < failed_g else (above[0] if above.size else failed_g * 1.5)
-        new = np.exp(np.linspace(math.log(low), math.log(high), REFINE_STRIPES + 2)[1:-1])
-        extra.setdefault((floor, item_id), set()).update(float(x) for x in new)
+    for (item_id, _mode), group in stripes.groupby(["id", "mode"], sort=False):
+        group = group[group["trials"] > 0].sort_values("pfa_g")
+        x = group["pfa_g"].to_numpy(dtype=float)
+        share = (group["failures"] / group["trials"]).to_numpy(dtype=float)
+        for k in np.flatnonzero(np.abs(np.diff(share)) >= REFINE_JUMP):
+            new = np.exp(np.linspace(math.log(x[k]), math.log(x[k + 1]), REFINE_STRIPES + 2)[1:-1])
+            extra.setdefault((int(floor_of[item_id]), item_id), set()).update(float(v) for v in new)
     return [(floor, pfa_g, [item_id]) for (floor, item_id), levels in sorted(extra.items())
             for pfa_g in sorted(levels)]
 
@@ -268,12 +278,91 @@ def fit_items(outcomes: pd.DataFrame) -> tuple[dict, pd.DataFrame]:
 Z_90 = 1.6448536269514722
 
 
+#: Below this p-value of the fit's deviance the lognormal is said not to fit the outcomes.
+MISFIT_P = 0.01
+
+
+def lognormal_fit_p(fit: FragilityFit, pfa_g, trials, failures) -> float:
+    """p-value of the fitted lognormal's deviance against the stripes' own failure shares.
+
+    The deviance :math:`D = 2\\sum_j [z_j \\ln(z_j/(n_j p_j)) + (n_j - z_j)\\ln((n_j - z_j)/(n_j (1 - p_j)))]`
+    is χ² with (stripes − 2) degrees of freedom when the lognormal is the true fragility
+    (McCullagh & Nelder 1989, binary data). NaN without a fit or without a spare degree of freedom.
+
+    >>> from assess.fragility.msa import fit_lognormal_fragility
+    >>> x, n = [0.2, 0.4, 0.8, 1.6], [40, 40, 40, 40]
+    >>> round(lognormal_fit_p(fit_lognormal_fragility(x, n, [4, 20, 36, 40]), x, n, [4, 20, 36, 40]), 2) > 0.01
+    True
+    >>> lognormal_fit_p(fit_lognormal_fragility(x, n, [0, 20, 20, 22]), x, n, [0, 20, 20, 22]) < 0.01  # a plateau
+    True
+    """
+    x, n, z = (np.asarray(v, dtype=float) for v in (pfa_g, trials, failures))
+    used = n > 0
+    x, n, z = x[used], n[used], z[used]
+    if fit.status != FITTED or x.size < 3:
+        return math.nan
+    p = np.clip(fit.probability(x), 1e-300, 1.0 - 1e-16)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        terms = np.where(z > 0, z * np.log(z / (n * p)), 0.0) + np.where(
+            n - z > 0, (n - z) * np.log((n - z) / (n * (1.0 - p))), 0.0)
+    return float(stats.chi2.sf(2.0 * terms.sum(), x.size - 2))
+
+
+def outcome_rates(pfa_g, trials, failures, levels_g, rates_per_yr, pfa_per_pga: float,
+                  onset_g: float = 0.0) -> tuple[float, float, float]:
+    """Annual rate [1/yr] of the outcomes' own fragility, with its 90 % interval: the failure share of
+    each stripe, linear in ln PFA between stripes, held at the top stripe's above it and at the lowest
+    stripe's below, integrated over the curve; the interval integrates each stripe's exact binomial
+    bounds the same way. Below ``onset_g`` [g] of floor acceleration the item stays at rest (it can
+    neither slide, below μ_s g, nor uplift, below g b/h): there every bound is 0. Used where no
+    lognormal fits the outcomes.
+
+    >>> levels, rates = [0.1, 1.0], [1e-2, 1e-4]
+    >>> round(outcome_rates([0.3], [10], [10], levels, rates, 1.0)[0] / 1e-2, 6)  # always fails: λ(lowest level)
+    1.0
+    >>> # at rest below 0.2 g; the upper bound rises from 0 there to 1 at 0.3 g (all 10 failed): on
+    >>> # λ = 1e-2 (a/0.1)^-2, ∫ p dλ by quadrature gives 0.001706
+    >>> round(outcome_rates([0.05, 0.3], [10, 10], [0, 10], levels, rates, 1.0, onset_g=0.2)[2], 5)
+    0.00171
+    """
+    from assess.fragility.suite import binomial_interval
+
+    x, n, z = (np.asarray(v, dtype=float) for v in (pfa_g, trials, failures))
+    order = np.argsort(x)
+    x, n, z = x[order], n[order], z[order]
+    shares = z / n
+    bounds = np.array([binomial_interval(share, count) for share, count in zip(shares, n)])
+    at_rest = x < onset_g
+    bounds[at_rest] = 0.0
+    if at_rest.any():  # from rest, the first stripe that can move it: start from 0 at the onset itself
+        x, n = np.concatenate([[onset_g], x[~at_rest]]), np.concatenate([[1.0], n[~at_rest]])
+        shares = np.concatenate([[0.0], shares[~at_rest]])
+        bounds = np.vstack([[0.0, 0.0], bounds[~at_rest]])
+    ln_pga = np.log(x / pfa_per_pga)
+    ln_lo = min(math.log(levels_g[0]), ln_pga[0])
+    ln_hi = max(math.log(levels_g[-1]), ln_pga[-1]) + 1.0
+    grid = np.linspace(ln_lo, ln_hi, 4001)
+    rate = np.array([_rate_at_pga(levels_g, rates_per_yr, math.exp(y)) for y in grid])
+    below_first = rates_per_yr[0] - _rate_at_pga(levels_g, rates_per_yr, math.exp(ln_lo)) \
+        if ln_lo < math.log(levels_g[0]) else 0.0  # the curve starts at its first level
+    mid = 0.5 * (grid[1:] + grid[:-1])
+
+    def integral(p):
+        share = np.interp(mid, ln_pga, p, left=p[0], right=p[-1])
+        return float(np.sum(share * -np.diff(rate)) + p[-1] * rate[-1] + p[0] * max(below_first, 0.0))
+
+    return integral(shares), integral(bounds[:, 0]), integral(bounds[:, 1])
+
+
 def item_rates(fit: FragilityFit, mode: str, hazard: OpenQuakeHazard, levels_g, rates_per_yr,
-               pfa_per_pga: float, stripes_g) -> dict:
+               pfa_per_pga: float, stripes_g, outcomes: pd.DataFrame, onset_g: float = 0.0) -> dict:
     """Annual rate of one failure mode, its 90 % interval and probability in 50 years, and a sentence.
 
     * fitted: the fragility integrated over the curve; the interval moves θ by ±1.645 standard errors
-      of ln θ (β held);
+      of ln θ (β held). Where the lognormal does not fit the outcomes (deviance p-value below
+      :data:`MISFIT_P`: e.g. some motions of the suite fail at half the acceleration others need), the
+      rate is integrated from the outcomes themselves (:func:`outcome_rates`), which governs, and the
+      note gives the lognormal's rate beside it;
     * separated (every failure above every survival, so the fragility is a step somewhere between the
       highest survival x_s and the lowest failure x_f): a step at θ has the rate of the curve at θ, so
       the rate lies between λ(x_f) and λ(x_s); the value given is λ at their geometric mean;
@@ -286,7 +375,7 @@ def item_rates(fit: FragilityFit, mode: str, hazard: OpenQuakeHazard, levels_g, 
         return _rate_at_pga(levels_g, rates_per_yr, pfa_g / pfa_per_pga)
 
     words = {"beyond_clearance": "slid past its clearance", "overturn": "overturned"}[mode]
-    central = low = high = math.nan
+    central = low = high = fit_p = math.nan
     if fit.status == FITTED:
         rate = openquake_failure_rate(hazard, fit.median_g, fit.beta, pfa_per_pga=pfa_per_pga)
         central = rate.annual_rate
@@ -296,6 +385,14 @@ def item_rates(fit: FragilityFit, mode: str, hazard: OpenQuakeHazard, levels_g, 
             high = openquake_failure_rate(hazard, fit.median_g / shift, fit.beta, pfa_per_pga=pfa_per_pga).annual_rate
         note = f"{mode}: median {fit.median_g:.2g} g, beta {fit.beta:.2f}"
         note += "".join(f"; {text}" for text in rate.notes)
+        fit_p = lognormal_fit_p(fit, outcomes["pfa_g"], outcomes["trials"], outcomes["failures"])
+        if fit_p < MISFIT_P:
+            lognormal_rate = central
+            central, low, high = outcome_rates(outcomes["pfa_g"], outcomes["trials"], outcomes["failures"],
+                                               levels_g, rates_per_yr, pfa_per_pga, onset_g)
+            note += (f"; the lognormal does not fit the outcomes (deviance p = {fit_p:.2g}): the rate is integrated "
+                     f"from the outcomes themselves ({central:.2g} per year; the lognormal would give "
+                     f"{lognormal_rate:.2g})")
     elif fit.status == "separated":
         survived_g, failed_g = fit.separation_g
         central, low, high = rate_at(math.sqrt(survived_g * failed_g)), rate_at(failed_g), rate_at(survived_g)
@@ -317,7 +414,7 @@ def item_rates(fit: FragilityFit, mode: str, hazard: OpenQuakeHazard, levels_g, 
     return {f"annual_rate_{mode}": central, f"annual_rate_{mode}_low": low, f"annual_rate_{mode}_high": high,
             f"p50yr_{mode}": probability_in_years(central, 50.0),
             f"p50yr_{mode}_low": probability_in_years(low, 50.0),
-            f"p50yr_{mode}_high": probability_in_years(high, 50.0), "note": note}
+            f"p50yr_{mode}_high": probability_in_years(high, 50.0), "note": note, "fit_p": fit_p}
 
 
 def _rate_at_pga(levels_g, rates_per_yr, pga_g: float) -> float:
@@ -352,11 +449,15 @@ def curve_risk(cases: pd.DataFrame, motions: dict, level_motions: pd.DataFrame, 
     for floor in sorted(set(int(f) for f in cases["floor"])):
         ratio, basis = floor_pfa_per_pga(floor, suite_pta_g, settings)
         floors[floor] = {"pfa_per_pga": ratio, "basis": basis}
-        stripes_by_floor[floor] = stripe_levels_g(levels_g, rates_per_yr, ratio)
+        stripes_by_floor[floor] = stripe_levels_g(ratio)
     total = sum(len(v) for v in stripes_by_floor.values())
     progress(f"fragilities over the hazard curve: {total} stripes of floor acceleration "
-             f"({N_STRIPES} per floor, from the {1 / STRIPE_RATES_PER_YR[0]:.0f}- to the "
-             f"{1 / STRIPE_RATES_PER_YR[1]:,.0f}-year shaking)")
+             f"({N_STRIPES} per floor, for ground accelerations of {STRIPE_PGA_G[0]:g} to {STRIPE_PGA_G[1]:g} g)")
+    curve_notes = []
+    rarest_g = pga_at_rate_g(levels_g, rates_per_yr, RAREST_RATE_PER_YR)
+    if rarest_g > STRIPE_PGA_G[1]:
+        curve_notes.append(f"the curve's 10,000-year ground acceleration, {rarest_g:.2f} g, lies above the top stripe "
+                     f"({STRIPE_PGA_G[1]:g} g): the fragilities are extrapolated there")
     last = [-1]
 
     def report(done, total_runs):
@@ -369,12 +470,15 @@ def curve_risk(cases: pd.DataFrame, motions: dict, level_motions: pd.DataFrame, 
     clearance_cm = cases.drop_duplicates("id").set_index("id")["clearance_m"] * 100.0
     floor_of = cases.drop_duplicates("id").set_index("id")["floor"]
     fits, stripes = fit_items(stripe_outcomes(runs, clearance_cm))
-    refine = refinement_plan(fits, stripes_by_floor, floor_of)
-    if refine:  # steps between two stripes: look inside them
-        progress(f"stripes: {len(refine)} more inside the steps of {len({p[2][0] for p in refine})} items")
+    # floor acceleration [g] below which the item stays at rest: it slides from μ_s g, uplifts from g b/h
+    onset_g = cases.assign(onset=np.minimum(cases["mu_static"], cases["b_over_h"])).groupby("id")["onset"].min()
+    refine = refinement_plan(stripes, floor_of)
+    if refine:  # steep rises between two stripes: look inside them
+        progress(f"stripes: {len(refine)} more where the failures of {len({p[2][0] for p in refine})} items "
+                 "rise steeply")
         runs = pd.concat([runs, stripe_runs(cases, motions, refine, runner)], ignore_index=True)
         fits, stripes = fit_items(stripe_outcomes(runs, clearance_cm))
-    rows = []
+    rows, fit_p = [], {}
     for item_id in dict.fromkeys(cases["id"]):
         ratio = floors[int(floor_of[item_id])]["pfa_per_pga"]
         row = {"id": item_id, "pfa_per_pga": ratio}
@@ -385,14 +489,17 @@ def curve_risk(cases: pd.DataFrame, motions: dict, level_motions: pd.DataFrame, 
             row[f"fragility_{mode}_beta"] = fit.beta
             row[f"fragility_{mode}_se_ln_median"] = fit.se_ln_median
             rates = item_rates(fit, mode, hazard, levels_g, rates_per_yr, ratio,
-                               stripes_by_floor[int(floor_of[item_id])])
+                               stripes_by_floor[int(floor_of[item_id])],
+                               stripes[(stripes["id"] == item_id) & (stripes["mode"] == mode)],
+                               onset_g=float(onset_g[item_id]))
             notes.append(rates.pop("note"))
+            fit_p[(item_id, mode)] = rates.pop("fit_p")
             row.update(rates)
         row["curve_note"] = "; ".join(notes)
         rows.append(row)
     name = f"{_file_name(hazard.path)}, site {hazard.site.label()}"
     return CurveRisk(table=pd.DataFrame(rows)[["id"] + CURVE_COLUMNS], fits=fits, stripes=stripes,
-                     floors=floors, curve=name, runs=len(runs))
+                     floors=floors, curve=name, runs=len(runs), notes=curve_notes, fit_p=fit_p)
 
 
 def _file_name(path) -> str:
@@ -411,7 +518,15 @@ def export_items(curve: CurveRisk, summary: pd.DataFrame) -> list:
     for row in summary.itertuples(index=False):
         if (row.id, MODES[0]) not in curve.fits:
             continue  # anchored: not a freestanding component
-        states = [LimitStateFragility.from_fit(curve.fits[(row.id, mode)]) for mode in MODES]
+        states = []
+        for mode in MODES:
+            state = LimitStateFragility.from_fit(curve.fits[(row.id, mode)])
+            p = curve.fit_p.get((row.id, mode), math.nan)
+            if p < MISFIT_P:  # say so where the numbers are read
+                state = LimitStateFragility(state.median_g, state.beta, state.note + (
+                    f" The lognormal does not fit the simulated outcomes (deviance p = {p:.2g}): assess "
+                    "integrates the outcomes themselves for the annual rate (its summary.csv, curve_note)."))
+            states.append(state)
         items.append(ItemFragilities(component_id=pelicun_component_id(row.id),
                                      description=f"{row.name} ({row.id}), floor {row.floor}", beyond_clearance=states[0],
                                      overturn=states[1]))

@@ -58,7 +58,7 @@ def curve_context(result) -> dict | None:
     notable = {mode: [str(i) for i in free.loc[_at_least(free, mode), "id"]] for mode in MODE_WORDS}
     return {"curve": curve.curve, "rows": rows, "lead": lead_sentence(notable, len(free)),
             "floors": [f["basis"] for _, f in sorted(curve.floors.items())], "runs": curve.runs,
-            "stripes": _stripes_sentence(curve)}
+            "stripes": _stripes_sentence(curve), "notes": list(curve.notes)}
 
 
 def _at_least(free: pd.DataFrame, mode: str) -> pd.Series:
