@@ -341,6 +341,9 @@ def _write_pack(folder: Path, keys: np.ndarray, values: dict) -> str:
                                 **{f: np.asarray(values[f], dtype=str) for f in _TEXTS})
             stream.flush()
             os.fsync(stream.fileno())
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(temporary, 0o666 & ~umask)  # as any file this user writes, not mkstemp's 0600
         os.replace(temporary, folder / name)
         temporary = None
     finally:
