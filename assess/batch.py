@@ -94,6 +94,15 @@ class Building:
     level: str | None = None
     oq_hazard: Path | None = None
     source: str = ""
+    portfolio: str = ""
+    sheet: str | None = None
+    row: int | None = None
+
+    def problem(self, message: str, fix: str, column: str | None = None) -> Problem:
+        """A problem located at this building's row of the portfolio (its workbook for a folder portfolio)."""
+        if self.row is None:
+            return Problem(file=str(self.workbook), message=message, fix=fix)
+        return Problem(file=self.portfolio, sheet=self.sheet, row=self.row, column=column, message=message, fix=fix)
 
 
 # ---------------------------------------------------------------- reading the portfolio
@@ -167,7 +176,8 @@ def read_portfolio(path, *, allow_outside: bool = False) -> list[Building]:
             level = str(row.raw["level"]).strip()
         if workbook is not None and (curve is not None or not row.values.get("oq_hazard")):
             buildings.append(Building(name, workbook, level, curve,
-                                      source=f"{given}, sheet '{title}', row {row.number}"))
+                                      source=f"{given}, sheet '{title}', row {row.number}",
+                                      portfolio=given, sheet=title, row=row.number))
     raise_if_any(problems)
     return buildings
 
@@ -306,14 +316,19 @@ def prepare_buildings(buildings: list[Building], *, level: str | None = None, oq
             if chosen is None:
                 levels = list(dict.fromkeys(inventory.hazard["level_label"]))
                 if len(levels) != 1:
-                    raise InputError([Problem(
-                        file=building.source or str(building.workbook),
-                        message=f"the building '{building.name}' has no level, and its workbook "
-                                f"{building.workbook.name} defines {len(levels)} ("
-                                + ", ".join(f"'{schema.clip(v, 40)}'" for v in levels[:10]) + ").",
-                        fix="give the level in the portfolio's 'level' column, or run with --hazard LEVEL.")])
+                    raise InputError([building.problem(
+                        f"the building '{building.name}' has no level, and its workbook "
+                        f"{building.workbook.name} defines {len(levels)} ("
+                        + ", ".join(f"'{schema.clip(v, 40)}'" for v in levels[:10]) + ").",
+                        "give the level in the portfolio's 'level' column, or run with --hazard LEVEL.", "level")])
                 chosen = str(levels[0])
-            select_level(inventory.hazard, chosen, building.workbook.name)
+            try:
+                select_level(inventory.hazard, chosen, building.workbook.name)
+            except InputError as error:  # said at the building's row, where the level was chosen
+                raise InputError([building.problem(
+                    f"building '{building.name}': {p.message}", p.fix or "",
+                    "level" if building.level else None) if building.row is not None or building.level is None
+                    else p for p in error.problems]) from None
             curve_path = building.oq_hazard or (Path(oq_hazard) if oq_hazard is not None else None)
             curve = curve_of(curve_path) if curve_path is not None else None
         except InputError as error:
@@ -713,7 +728,7 @@ def changes_between(previous: dict[str, bytes], current: dict[str, bytes], names
         for item_id in old.index.difference(new.index, sort=False):
             rows.append(dict(building=building, id=item_id, name=old.at[item_id, "name"] if "name" in old else "",
                              change="item removed"))
-    return pd.DataFrame(rows, columns=CHANGE_COLUMNS).fillna("")
+    return pd.DataFrame([{**dict.fromkeys(CHANGE_COLUMNS, ""), **row} for row in rows], columns=CHANGE_COLUMNS)
 
 
 def portfolio_html(staged: StagedPortfolio, compared: bool) -> str:
