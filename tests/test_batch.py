@@ -324,3 +324,24 @@ def test_batch_help_describes_the_portfolio():
     text = cli.build_batch_parser().format_help()
     for option in ("--out", "--hazard", "--oq-hazard", "--scheduler", "--allow-files-outside", "buildings"):
         assert option in text
+
+
+def test_ctrl_c_exits_130_and_leaves_the_previous_output(first_run, monkeypatch, capsys):
+    portfolio, out = first_run
+    before = {p: p.read_bytes() for p in out.rglob("*") if p.is_file() and ".cache" not in p.parts}
+    _write_building(portfolio.parent, "beta", [(i, h, w, d, mu + 0.01, c) for i, h, w, d, mu, c in ITEMS["beta"]])
+    import assess.pipeline
+    real = assess.pipeline.run_assessment
+    calls = []
+
+    def interrupted(*args, **kwargs):
+        calls.append(1)
+        if len(calls) == 1:
+            raise KeyboardInterrupt
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(assess.pipeline, "run_assessment", interrupted)
+    assert _batch(portfolio, "--out", out) == 130
+    assert "interrupted; nothing was written" in capsys.readouterr().err
+    assert {p: p.read_bytes() for p in out.rglob("*") if p.is_file() and ".cache" not in p.parts} == before
+    assert not [p for p in out.parent.iterdir() if p.name.startswith(".out-")]

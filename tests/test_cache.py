@@ -215,3 +215,15 @@ def test_block_fingerprint_is_exact():
     b = Block(half_width_m=0.3, cg_height_m=1.0, height_m=2.0, mu=0.2)
     assert a.half_width_m != b.half_width_m and block_fingerprint(a) != block_fingerprint(b)
     assert "0.30000000000000004" in block_fingerprint(a)
+
+
+def test_two_runners_on_one_folder_lose_nothing(tmp_path):
+    blocks = _blocks()
+    first, second = CachingRunner(Recording(), tmp_path), CachingRunner(Recording(), tmp_path)
+    first.simulate_cases(*_batch(blocks[:2]), tail_s=TAIL_S)  # both started before either wrote
+    second.simulate_cases(*_batch(blocks[2:]), tail_s=TAIL_S)
+    second.simulate_cases(*_batch(blocks[:2]), tail_s=TAIL_S)  # sees what the first one stored
+    assert second.inner.blocks == _batch(blocks[2:])[0]
+    third = Recording()
+    CachingRunner(third, tmp_path).simulate_cases(*_batch(), tail_s=TAIL_S)
+    assert third.blocks == []
