@@ -110,10 +110,12 @@ def build_parser() -> argparse.ArgumentParser:
         prog="assess", description=DESCRIPTION, formatter_class=argparse.RawDescriptionHelpFormatter,
         epilog=EPILOG)
     parser.add_argument("workbook", metavar="WORKBOOK", type=Path, help="the inventory workbook (.xlsx)")
-    parser.add_argument("--hazard", metavar="LEVEL", required=True,
-                        help="hazard level as the workbook names it; 2in50, 2%%/50yr and 2475yr are the same level")
+    parser.add_argument("--hazard", metavar="LEVEL[,LEVEL...]", required=True,
+                        help="hazard level(s) as the workbook names them, comma-separated; 2in50, 2%%/50yr and "
+                             "2475yr are the same level")
     parser.add_argument("--out", metavar="DIR", type=Path,
-                        help="output folder (default: reports/<workbook stem>-<LEVEL>/)")
+                        help="output folder (default: reports/<workbook stem>-<LEVEL>/); with several levels, "
+                             "one folder per level: DIR/<LEVEL>/ (default reports/<workbook stem>-<LEVEL>/)")
     parser.add_argument("--format", metavar="FORMATS", type=_job_formats, default=JOB_FORMATS,
                         help="what to write besides the CSV files, comma-separated: html, pdf (the report), "
                              "xlsx (summary.xlsx, the summary table for a spreadsheet); default: html,pdf,xlsx")
@@ -127,7 +129,8 @@ def build_parser() -> argparse.ArgumentParser:
                         help="seed of every random draw; the same inputs and seed give the same numbers (default 0)")
     parser.add_argument("--oq-hazard", metavar="CSV", type=Path,
                         help="OpenQuake hazard-curve or hazard-map CSV for the site: the level's motions "
-                             "are scaled so that their ground motions match its PGA at LEVEL")
+                             "are scaled so that their ground motions match its PGA at LEVEL; a curve also "
+                             "gives each item's fragilities (fragility/) and annual rates of failure")
     parser.add_argument("--oq-site", metavar="SITE",
                         help="which site of a multi-site OpenQuake file: a row number (0 = first), a "
                              "custom_site_id, or lon,lat (write --oq-site=-122.5,38.1 when lon is negative)")
@@ -393,20 +396,17 @@ def _main(argv: list[str] | None) -> int:
 
 
 def _assess(args: argparse.Namespace, say) -> int:
-    from assess.hazard.levels import parse_level
     from assess.inventory import read_workbook
     from assess.output import check_output_folder, render_outputs
     from assess.pipeline import run_assessment
 
-    try:
-        level_name = parse_level(args.hazard).name
-    except ValueError as error:
-        raise InputError([Problem(file="--hazard", message=str(error))]) from None
+    levels = _levels(args.hazard)
     if args.jobs is not None:
         import numba
         numba.set_num_threads(min(args.jobs, numba.config.NUMBA_NUM_THREADS))
-    out_dir = args.out or Path("reports") / f"{args.workbook.stem}-{level_name}"
-    check_output_folder(out_dir)
+    out_dirs = [_level_out_dir(args.out, args.workbook, name, several=len(levels) > 1) for name, _ in levels]
+    for out_dir in out_dirs:
+        check_output_folder(out_dir)
     say(f"reading {args.workbook}")
     inventory = read_workbook(args.workbook)
     raise_if_any(_hazard_problems(inventory, args.allow_records_outside))
@@ -414,23 +414,59 @@ def _assess(args: argparse.Namespace, say) -> int:
     if args.oq_hazard is not None:
         from assess.hazard.openquake import read_openquake_hazard
         oq_hazard = read_openquake_hazard(args.oq_hazard, site=_oq_site(args.oq_site))
+        if oq_hazard.kind != "curve":
+            say(f"{args.oq_hazard.name} is a hazard map: the motions are scaled to it; annual rates need a "
+                "hazard curve")
     calibration = None
     if args.calibration is not None:
         from assess.calibration.apply import read_calibration
         calibration = read_calibration(args.calibration)
-    result = run_assessment(inventory, args.hazard, seed=args.seed, progress=say, oq_hazard=oq_hazard,
-                            derive_floors_roof=args.derive_floors, calibration=calibration)
-    result = _with_comparison(result, args.compare_with, out_dir / "summary.csv", say)
-    say("rendering " + ", ".join(["summary.csv", "motions.csv"] + [
-        "summary.xlsx" if f == "xlsx" else f"report.{f}" for f in args.format]))
-    files = render_outputs(result, args.format, units=args.units)
-    written = _write_uninterrupted(files, out_dir)
-    counts = result.risk_counts()
-    say(f"{counts['high']} high, {counts['moderate']} moderate, {counts['low']} low risk, "
-        f"{counts['anchored']} anchored")
-    for path in written:
-        print(path)
+    runner = None  # this machine's threads
+    results = []
+    for (_, text), out_dir in zip(levels, out_dirs):  # every level computed before any is written
+        result = run_assessment(inventory, text, seed=args.seed, progress=say, oq_hazard=oq_hazard,
+                                derive_floors_roof=args.derive_floors, calibration=calibration, runner=runner,
+                                hazard_curve=oq_hazard if oq_hazard is not None and oq_hazard.kind == "curve"
+                                else None)
+        results.append(_with_comparison(result, args.compare_with, out_dir / "summary.csv", say))
+    for result, out_dir in zip(results, out_dirs):
+        say(f"rendering {result.level_label}: " + ", ".join(["summary.csv", "motions.csv"] + [
+            "summary.xlsx" if f == "xlsx" else f"report.{f}" for f in args.format]
+            + (["fragility/"] if result.curve_risk is not None else [])))
+        others = tuple(other for other in results if other is not result)
+        files = render_outputs(result, args.format, units=args.units, other_levels=others)
+        written = _write_uninterrupted(files, out_dir)
+        counts = result.risk_counts()
+        say(f"{result.level_label}: {counts['high']} high, {counts['moderate']} moderate, {counts['low']} low risk, "
+            f"{counts['anchored']} anchored")
+        for path in written:
+            print(path)
     return EXIT_OK
+
+
+def _levels(text: str) -> list[tuple[str, str]]:
+    """``--hazard`` as (folder name, text) per level, in order; a level given twice is refused."""
+    from assess.hazard.levels import parse_level
+
+    levels, seen = [], {}
+    for part in [p.strip() for p in str(text).split(",")]:
+        try:
+            name = parse_level(part).name
+        except ValueError as error:
+            raise InputError([Problem(file="--hazard", message=str(error))]) from None
+        if name in seen:
+            raise InputError([Problem(file="--hazard", message=f"'{part}' is the level '{seen[name]}' again.",
+                                      fix="give each level once.")])
+        seen[name] = part
+        levels.append((name, part))
+    return levels
+
+
+def _level_out_dir(out: Path | None, workbook: Path, level_name: str, several: bool) -> Path:
+    """Where a level's files go: ``--out`` (one level), ``--out/<LEVEL>`` (several), else the default."""
+    if out is None:
+        return Path("reports") / f"{workbook.stem}-{level_name}"
+    return out / level_name if several else out
 
 
 def _calibrate(args: argparse.Namespace, say) -> int:

@@ -44,7 +44,8 @@ DEFAULT_PULSE = "B"
 
 def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
                    progress: Progress = lambda message: None, oq_hazard=None,
-                   derive_floors_roof: int | None = None, calibration=None, runner=None) -> AssessmentResult:
+                   derive_floors_roof: int | None = None, calibration=None, runner=None,
+                   hazard_curve=None) -> AssessmentResult:
     """Assess every item of ``inventory`` under the motions of hazard level ``level_text``.
 
     ``oq_hazard`` (an :class:`~assess.hazard.openquake.OpenQuakeHazard`)
@@ -61,24 +62,29 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
 
     ``runner`` runs the engine's cases (:mod:`assess.mechanics.runner`; default: this machine's threads).
 
+    ``hazard_curve`` (an OpenQuake hazard *curve*) adds each item's fragilities over stripes of floor
+    acceleration and their annual rates over the curve (:mod:`assess.fragility.stripes`); it does not
+    change the level's motions (``oq_hazard`` does).
+
     Raises :class:`~assess.errors.InputError` when the level is missing, a
     floor has no motion, or a motion cannot be described by PTA and Tp.
     """
     runner = runner if runner is not None else LocalRunner()
+    step = functools.partial(_assess, inventory, level_text, seed, progress, oq_hazard, derive_floors_roof,
+                             runner=runner, hazard_curve=hazard_curve)
     # --- calibration (assess.calibration.apply): run twice, as declared and with the effect
     if calibration is not None:
         from assess.calibration.apply import check_applies, with_declared
         check_applies(calibration, inventory.equipment)
-        declared = _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, None, runner)
+        declared = step(calibration=None)
         progress(f"again with the calibration {calibration.file}")
-        calibrated = _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, calibration,
-                             runner)
+        calibrated = step(calibration=calibration)
         return with_declared(calibrated, declared, calibration)
-    return _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, None, runner)
+    return step(calibration=None)
 
 
 def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, calibration,
-            runner) -> AssessmentResult:
+            runner, hazard_curve) -> AssessmentResult:
     """:func:`run_assessment` with ``calibration`` applied (None: as declared)."""
     workbook_name = inventory.path.name
     settings = inventory.settings
@@ -129,6 +135,13 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     cases["demand_source"] = motion_sources(cases, simulated_as, constants)
     demand = governing_demand(cases, runs, constants, room_quantile=1.0 - float(settings["risk_pf_moderate"]))
     summary, flags = _summarise(equipment, cases, demand, constants, settings)
+    curve = None
+    summary_columns = SUMMARY_COLUMNS
+    if hazard_curve is not None:  # the whole curve: fragilities over stripes, annual rates
+        from assess.fragility.stripes import CURVE_COLUMNS, curve_risk
+        curve = curve_risk(cases, simulated_motions, level_motions, hazard_curve, settings, runner, progress)
+        summary = summary.merge(curve.table, on="id", how="left")
+        summary_columns = SUMMARY_COLUMNS + CURVE_COLUMNS
     histories = _worst_histories(cases, runs, summary, simulated_motions)
     regression = {"zeta": constants.zeta, "eta": constants.eta, "sigma": constants.sigma,
                   "im_min": constants.im_min, "im_max": constants.im_max,
@@ -136,10 +149,10 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     return AssessmentResult(
         workbook=inventory.path, facility=str(settings.get("facility", "")),
         site=str(settings.get("site", "")), level=level, level_label=level_label,
-        summary=summary[SUMMARY_COLUMNS], motions=_motion_table(cases), flags=flags,
+        summary=summary[summary_columns], motions=_motion_table(cases), flags=flags,
         regression=regression, settings=dict(settings), simulated=True, seed=seed,
         histories=histories, hazard_notes=hazard_notes, suite_runs=suite_runs(cases, runs),
-        solver_runs={str(k): int(v) for k, v in runs["solver"].value_counts().items()},
+        solver_runs={str(k): int(v) for k, v in runs["solver"].value_counts().items()}, curve_risk=curve,
     )
 
 

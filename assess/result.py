@@ -89,6 +89,9 @@ class AssessmentResult:
     comparison : DataFrame or None
         Against a previous run (:func:`assess.comparison.compare_summaries`):
         which items changed risk class and why; written as comparison.csv.
+    curve_risk : CurveRisk or None
+        With a hazard curve: each item's fragilities over stripes of floor acceleration and their
+        annual rates (:class:`assess.fragility.stripes.CurveRisk`); its columns are also in ``summary``.
     """
 
     workbook: Path
@@ -108,6 +111,7 @@ class AssessmentResult:
     comparison: pd.DataFrame | None = None
     suite_runs: pd.DataFrame | None = None
     solver_runs: dict | None = None
+    curve_risk: object | None = None
 
     def risk_counts(self) -> dict[str, int]:
         """Number of items (rows, not quantity) in each risk class."""

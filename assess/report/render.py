@@ -26,6 +26,7 @@ from markupsafe import Markup
 
 import assess
 from assess.report import figures
+from assess.report.curve import curve_context
 
 TEMPLATE_NAME = "report.html.j2"
 STYLESHEET_NAME = "report.css"
@@ -453,6 +454,7 @@ def report_context(result) -> dict:
         "simulation": _simulation_counts(result),
         "hazard_notes": list(getattr(result, "hazard_notes", [])),
         "changes": _changes(getattr(result, "comparison", None)),
+        "curve": curve_context(result),
         "stylesheet": Markup(template_text(STYLESHEET_NAME)),  # our own file, not user text
     }
 
