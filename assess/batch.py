@@ -331,6 +331,12 @@ def prepare_buildings(buildings: list[Building], *, level: str | None = None, oq
                     else p for p in error.problems]) from None
             curve_path = building.oq_hazard or (Path(oq_hazard) if oq_hazard is not None else None)
             curve = curve_of(curve_path) if curve_path is not None else None
+            if curve is not None and curve.kind != "curve":
+                raise InputError([building.problem(
+                    f"{curve_path.name} is an OpenQuake hazard map; a portfolio integrates the items' "
+                    "fragilities over a hazard curve (the map's values at a few probabilities cannot be "
+                    "integrated).", "give the site's hazard curve (hazard_curve-mean-PGA.csv), or no curve.",
+                    "oq_hazard" if building.oq_hazard else None)])
         except InputError as error:
             problems.extend(error.problems)
             continue

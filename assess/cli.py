@@ -529,7 +529,13 @@ def _batch(args: argparse.Namespace, say) -> int:
         hazard_problems=lambda inventory: _hazard_problems(inventory, args.allow_files_outside), say=say)
     runner = CachingRunner(_engine_runner(args.scheduler), Path(out_dir) / batch.CACHE_FOLDER)
     say(f"{len(prepared)} buildings; results are reused from {Path(out_dir) / batch.CACHE_FOLDER}")
-    staged = batch.run_portfolio(prepared, out_dir, runner=runner, seed=args.seed, formats=args.format, say=say)
+    try:
+        staged = batch.run_portfolio(prepared, out_dir, runner=runner, seed=args.seed, formats=args.format,
+                                     say=say)
+    finally:
+        close = getattr(runner.inner, "close", None)  # a cluster's client
+        if close is not None:
+            close()
     try:
         _Interrupt.stop_if_received()
         _Interrupt.deferred = True
@@ -553,14 +559,15 @@ def _batch(args: argparse.Namespace, say) -> int:
 
 def _engine_runner(scheduler):
     """What simulates the cases the cache does not hold: this machine's threads, or a Dask cluster."""
-    from assess.mechanics import runner as runners
+    from assess.mechanics.runner import LocalRunner
     if scheduler is None:
-        return runners.LocalRunner()
-    dask_runner = getattr(runners, "DaskRunner", None)
-    if dask_runner is None:
-        raise InputError([Problem(file="--scheduler", message="this version of assess cannot run on a Dask "
-                                  "cluster.", fix="leave out --scheduler to run on this machine.")])
-    return dask_runner(scheduler)
+        return LocalRunner()
+    try:
+        from assess.mechanics.distributed import DaskRunner
+    except ImportError:
+        raise InputError([Problem(file="--scheduler", message="this installation of assess cannot run on a Dask "
+                                  "cluster.", fix="leave out --scheduler to run on this machine.")]) from None
+    return DaskRunner.connect(scheduler)
 
 
 def _with_comparison(result, explicit: Path | None, in_out_dir: Path, say):
