@@ -73,8 +73,8 @@ _BUILDING_NAME = re.compile(r"[\w][\w .()+-]*")
 MAX_PREVIOUS_BYTES = 200 * 2**20
 #: Columns of summary.csv the change report follows, besides the hazard-curve ones.
 CHANGE_FIELDS = ("risk", "action_kind", "action", "priority", "p_beyond_clearance", "p_overturn")
-#: Prefixes of the hazard-curve columns of summary.csv (SPEC §6), followed when present.
-CURVE_PREFIXES = ("annual_rate_", "p50yr_")
+#: The hazard-curve columns of summary.csv (SPEC §6), followed when present (their intervals are not).
+CURVE_FIELDS = ("annual_rate_beyond_clearance", "annual_rate_overturn", "p50yr_beyond_clearance", "p50yr_overturn")
 CHANGE_COLUMNS = ["building", "id", "name", "change", "field", "old", "new"]
 RISKS = ("high", "moderate", "low", "anchored")
 ACTIONS = ("anchor", "restrain", "room", "none", "anchored")
@@ -610,9 +610,11 @@ def _unchanged_folder(folder: Path, entry: dict | None, key: str) -> dict[str, b
     if entry is None or entry["key"] != key or not folder.is_dir() or folder.is_symlink():
         return None
     try:
-        present = sorted(p.name for p in folder.iterdir() if p.name not in _BROWSER_FILES)
-        if present != sorted(entry["files"]) or any(
-                (folder / name).is_symlink() or not (folder / name).is_file() for name in present):
+        paths = [p for p in folder.rglob("*") if p.name not in _BROWSER_FILES]
+        if any(p.is_symlink() or not (p.is_file() or p.is_dir()) for p in paths):
+            return None
+        present = sorted(p.relative_to(folder).as_posix() for p in paths if p.is_file())
+        if present != sorted(entry["files"]):
             return None
         files = {name: (folder / name).read_bytes() for name in present}
     except OSError:
@@ -668,7 +670,7 @@ def _read_summary_csv(data: bytes) -> pd.DataFrame:
 
 
 def _curve_columns(summary: pd.DataFrame) -> list[str]:
-    return [c for c in summary.columns if c.startswith(CURVE_PREFIXES)]
+    return [c for c in CURVE_FIELDS if c in summary.columns]
 
 
 def _building_row(item: PreparedBuilding, level_label: str, summary: pd.DataFrame, simulated: int,
@@ -742,7 +744,7 @@ def portfolio_html(staged: StagedPortfolio, compared: bool) -> str:
     e = html.escape
     summary, changes = staged.summary, staged.changes
     head = ["building", "level", "items", *[f"risk_{r}" for r in RISKS], *[f"action_{a}" for a in ACTIONS],
-            *[c for c in summary.columns if c.startswith(CURVE_PREFIXES)], "cases_simulated", "cases_reused"]
+            *[c for c in summary.columns if c.startswith(CURVE_FIELDS)], "cases_simulated", "cases_reused"]
     head = [c for c in head if c in summary.columns]
     lines = ["<!doctype html>", "<html lang='en'><head><meta charset='utf-8'><title>Portfolio</title>",
              "<style>body{font-family:sans-serif;margin:2em}table{border-collapse:collapse}"
