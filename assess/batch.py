@@ -19,7 +19,8 @@ writes (:func:`run_portfolio`, :meth:`StagedPortfolio.commit`)::
 
 A building whose inputs (workbook, records, hazard curve, level, seed,
 formats, code) are those of the previous run keeps its folder; the others
-are assessed again, their unchanged cases answered by the cache.
+are assessed again, their unchanged cases answered by the cache. The tables
+and the page across buildings are made in :mod:`assess.batch_report`.
 
 Everything is written into a folder beside ``<out>`` that takes its place in
 one rename once every building is done, so a run that fails or is
@@ -30,20 +31,19 @@ from __future__ import annotations
 
 import contextlib
 import hashlib
-import html
-import inspect
 import json
 import os
 import re
 import shutil
 import tempfile
 import time
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
 import pandas as pd
 
+from assess.batch_report import building_row, changes_between, portfolio_html
 from assess.errors import InputError, Problem, raise_if_any
 from assess.inventory import schema, xlsx
 from assess.inventory.schema import Column, SheetSpec
@@ -71,13 +71,6 @@ MAX_BUILDINGS = 2_000
 _BUILDING_NAME = re.compile(r"[\w][\w .()+-]*")
 #: Largest previous summary.csv read for the change report [bytes].
 MAX_PREVIOUS_BYTES = 200 * 2**20
-#: Columns of summary.csv the change report follows, besides the hazard-curve ones.
-CHANGE_FIELDS = ("risk", "action_kind", "action", "priority", "p_beyond_clearance", "p_overturn")
-#: The hazard-curve columns of summary.csv (SPEC §6), followed when present (their intervals are not).
-CURVE_FIELDS = ("annual_rate_beyond_clearance", "annual_rate_overturn", "p50yr_beyond_clearance", "p50yr_overturn")
-CHANGE_COLUMNS = ["building", "id", "name", "change", "field", "old", "new"]
-RISKS = ("high", "moderate", "low", "anchored")
-ACTIONS = ("anchor", "restrain", "room", "none", "anchored")
 
 
 @dataclass(frozen=True)
@@ -443,15 +436,6 @@ def default_out_dir(portfolio: Path) -> Path:
 
 # ---------------------------------------------------------------- running
 
-def hazard_curve_options(run_assessment, curve) -> dict:
-    """The keyword that hands the building's hazard curve to ``run_assessment`` (``hazard_curve``),
-    when it takes one; {} otherwise. The curve integrates the fragilities into annual rates; it does not
-    rescale the level's motions (that is the main command's ``--oq-hazard``)."""
-    if "hazard_curve" in inspect.signature(run_assessment).parameters:
-        return {"hazard_curve": curve}
-    return {}
-
-
 def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, seed: int = 0,
                   formats: tuple[str, ...] = ("html", "pdf", "xlsx"), units: str = "si",
                   say: Callable[[str], None] = lambda message: None) -> StagedPortfolio:
@@ -499,13 +483,11 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
                     f"its folder is kept, {reused} cases reused")
             else:
                 before = (runner.cases_simulated, runner.cases_reused)
-                options = hazard_curve_options(run_assessment, item.curve)
-                if item.curve is not None and not options:
-                    staged.notes.append(f"{building.name}: this version of assess does not integrate hazard "
-                                        f"curves; {Path(item.curve.path).name} was not used.")
-                    say(staged.notes[-1])
+                # the curve integrates the fragilities into annual rates; it does not rescale the motions
+                # (that is the main command's --oq-hazard), so the level's simulations never depend on it
                 result = run_assessment(item.inventory, item.level, seed=seed, runner=runner,
-                                        progress=lambda message, tag=tag: say(f"{tag}: {message}"), **options)
+                                        hazard_curve=item.curve,
+                                        progress=lambda message, tag=tag: say(f"{tag}: {message}"))
                 files = render_outputs(result, formats, units=units)
                 _write_files(staging / building.name, files)
                 simulated, reused = runner.cases_simulated - before[0], runner.cases_reused - before[1]
@@ -515,7 +497,9 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
                 kept = files
             manifest[building.name] = entry
             current[building.name] = kept["summary.csv"]
-            rows.append(_building_row(item, level_label, summary, simulated, reused))
+            rows.append(building_row(building.name, building.workbook.name, level_label,
+                                     Path(item.curve.path).name if item.curve is not None else "", summary,
+                                     simulated, reused))
             counts = summary["risk"].value_counts()
             say(f"{tag}: {simulated} cases simulated, {reused} reused, {time.perf_counter() - started:.1f} s; "
                 f"{counts.get('high', 0)} high, {counts.get('moderate', 0)} moderate, {counts.get('low', 0)} low risk")
@@ -661,128 +645,3 @@ def _previous_summaries(out_dir: Path) -> dict[str, tuple[str, bytes]]:
             if summary.stat().st_size <= MAX_PREVIOUS_BYTES:
                 found[entry.name.lower()] = (entry.name, summary.read_bytes())
     return found
-
-
-def _read_summary_csv(data: bytes) -> pd.DataFrame:
-    """A summary.csv as written, every cell as its text ("" when empty)."""
-    import io
-    return pd.read_csv(io.BytesIO(data), dtype=str, keep_default_na=False)
-
-
-def _curve_columns(summary: pd.DataFrame) -> list[str]:
-    return [c for c in CURVE_FIELDS if c in summary.columns]
-
-
-def _building_row(item: PreparedBuilding, level_label: str, summary: pd.DataFrame, simulated: int,
-                  reused: int) -> dict:
-    """One row of portfolio.csv: the building's items by risk class and by action kind, and its cases."""
-    row = {"building": item.building.name, "workbook": item.building.workbook.name, "level": level_label,
-           "hazard_curve": Path(item.curve.path).name if item.curve is not None else "",
-           "items": len(summary), "units": int(summary["quantity"].sum())}
-    risks = summary["risk"].value_counts()
-    row.update({f"risk_{risk}": int(risks.get(risk, 0)) for risk in RISKS})
-    actions = summary["action_kind"].value_counts()
-    row.update({f"action_{kind}": int(actions.get(kind, 0)) for kind in ACTIONS})
-    for column in _curve_columns(summary):
-        values = pd.to_numeric(summary[column], errors="coerce")
-        if column.startswith("annual_rate_"):  # expected number of units failing so, per year
-            row[f"{column}_units_total"] = float((values * summary["quantity"]).sum(min_count=1))
-        else:
-            row[f"{column}_max"] = float(values.max()) if values.notna().any() else float("nan")
-    row.update({"cases_simulated": simulated, "cases_reused": reused})
-    return row
-
-
-# ---------------------------------------------------------------- the change report
-
-def changes_between(previous: dict[str, bytes], current: dict[str, bytes], names: dict[str, str]) -> pd.DataFrame:
-    """What changed from the previous run's summaries to this run's, building by building.
-
-    ``previous`` and ``current`` map a building (lower-case name) to its
-    summary.csv bytes; ``names`` gives each its name as written. Values are
-    compared as summary.csv writes them (6 significant digits), so a change
-    is one a reader of the two files would see. Rows: ``building added`` /
-    ``building removed`` (one row each), ``item added`` / ``item removed``,
-    and ``changed`` with the ``field`` (:data:`CHANGE_FIELDS` and the
-    hazard-curve columns) and its ``old`` and ``new`` values.
-    """
-    rows = []
-    for key in sorted(set(previous) | set(current), key=lambda k: names.get(k, k)):
-        building = names.get(key, key)
-        if key not in previous:
-            rows.append(dict(building=building, change="building added"))
-            continue
-        if key not in current:
-            rows.append(dict(building=building, change="building removed"))
-            continue
-        old, new = _read_summary_csv(previous[key]), _read_summary_csv(current[key])
-        if "id" not in old or "id" not in new:
-            rows.append(dict(building=building, change="not compared",
-                             old="the previous summary.csv has no id column"))
-            continue
-        old, new = old.drop_duplicates("id").set_index("id"), new.drop_duplicates("id").set_index("id")
-        fields = list(CHANGE_FIELDS) + [c for c in dict.fromkeys(_curve_columns(old) + _curve_columns(new))]
-        for item_id in new.index:
-            name = new.at[item_id, "name"] if "name" in new else ""
-            if item_id not in old.index:
-                rows.append(dict(building=building, id=item_id, name=name, change="item added"))
-                continue
-            for column in fields:
-                before = old.at[item_id, column] if column in old else ""
-                after = new.at[item_id, column] if column in new else ""
-                if before != after:
-                    rows.append(dict(building=building, id=item_id, name=name, change="changed", field=column,
-                                     old=before, new=after))
-        for item_id in old.index.difference(new.index, sort=False):
-            rows.append(dict(building=building, id=item_id, name=old.at[item_id, "name"] if "name" in old else "",
-                             change="item removed"))
-    return pd.DataFrame([{**dict.fromkeys(CHANGE_COLUMNS, ""), **row} for row in rows], columns=CHANGE_COLUMNS)
-
-
-def portfolio_html(staged: StagedPortfolio, compared: bool) -> str:
-    """A short page: the buildings' items by risk and action, the cases simulated and reused, the changes."""
-    e = html.escape
-    summary, changes = staged.summary, staged.changes
-    head = ["building", "level", "items", *[f"risk_{r}" for r in RISKS], *[f"action_{a}" for a in ACTIONS],
-            *[c for c in summary.columns if c.startswith(CURVE_FIELDS)], "cases_simulated", "cases_reused"]
-    head = [c for c in head if c in summary.columns]
-    lines = ["<!doctype html>", "<html lang='en'><head><meta charset='utf-8'><title>Portfolio</title>",
-             "<style>body{font-family:sans-serif;margin:2em}table{border-collapse:collapse}"
-             "td,th{border:1px solid #bbb;padding:3px 8px;text-align:right}td:first-child,th{text-align:left}"
-             "</style></head><body>",
-             f"<h1>Portfolio: {len(summary)} building{'s' if len(summary) != 1 else ''}</h1>",
-             f"<p>{staged.cases_simulated:,} cases simulated, {staged.cases_reused:,} reused from earlier runs "
-             "(a case is reused when its item, its motion and the engine are unchanged).</p>",
-             "<h2>Items by risk and by action, per building</h2>", "<table><tr>"
-             + "".join(f"<th>{e(c)}</th>" for c in head) + "</tr>"]
-    for row in summary.to_dict("records"):
-        cells = []
-        for c in head:
-            value = row[c]
-            text = f"{value:.3g}" if isinstance(value, float) else str(value)
-            if c == "building":
-                text = f"<a href='{e(str(value))}/report.html'>{e(str(value))}</a>"
-            else:
-                text = e(text)
-            cells.append(f"<td>{text}</td>")
-        lines.append("<tr>" + "".join(cells) + "</tr>")
-    lines.append("</table>")
-    for note in staged.notes:
-        lines.append(f"<p>{e(note)}</p>")
-    lines.append("<h2>Changes since the previous run</h2>")
-    if not compared:
-        lines.append("<p>No previous run in this folder: nothing to compare with.</p>")
-    elif changes.empty:
-        lines.append("<p>Nothing changed.</p>")
-    else:
-        kinds = changes["change"].value_counts()
-        lines.append("<p>" + e(", ".join(f"{n} {kind}" for kind, n in kinds.items())) + ".</p>")
-        lines.append("<table><tr>" + "".join(f"<th>{c}</th>" for c in CHANGE_COLUMNS) + "</tr>")
-        for row in changes.head(500).to_dict("records"):
-            lines.append("<tr>" + "".join(f"<td>{e(schema.clip(str(row[c]), 200))}</td>" for c in CHANGE_COLUMNS)
-                         + "</tr>")
-        lines.append("</table>")
-        if len(changes) > 500:
-            lines.append(f"<p>… and {len(changes) - 500} more rows in changes.csv.</p>")
-    lines.append("</body></html>")
-    return "\n".join(lines) + "\n"

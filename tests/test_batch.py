@@ -13,7 +13,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from assess import batch, cli
+from assess import batch_report, cli
 from workbooks import write_workbook
 
 #: A 4 s record: 2 s of a 1.5 Hz sine of 0.6 g, then rest (every item below slides).
@@ -77,9 +77,9 @@ def test_first_run_writes_each_building_and_counts_its_cases(first_run):
         assert row["cases_simulated"] == len(items) * DIRECTIONS and row["cases_reused"] == 0
         summary = pd.read_csv(out / row["building"] / "summary.csv")
         assert sorted(summary["id"]) == sorted(i[0] for i in items)
-        for risk in batch.RISKS:
+        for risk in batch_report.RISKS:
             assert row[f"risk_{risk}"] == int((summary["risk"] == risk).sum())
-        for kind in batch.ACTIONS:
+        for kind in batch_report.ACTIONS:
             assert row[f"action_{kind}"] == int((summary["action_kind"] == kind).sum())
         assert row["units"] == sum(2 if i[0].endswith("1") else 1 for i in items)
     changes = _csv(out / "changes.csv")
@@ -124,7 +124,7 @@ def test_an_edited_item_reruns_only_its_cases_and_the_change_report_names_it(fir
     assert table.at["beta", "cases_simulated"] == 0
     new = _csv(out / "alpha" / "summary.csv").set_index("id")
     # the change report holds exactly the differences between the two summaries, in the fields it follows
-    expected = {(i, f, old.at[i, f], new.at[i, f]) for i in new.index for f in batch.CHANGE_FIELDS
+    expected = {(i, f, old.at[i, f], new.at[i, f]) for i in new.index for f in batch_report.CHANGE_FIELDS
                 if old.at[i, f] != new.at[i, f]}
     changes = _csv(out / "changes.csv")
     got = {(r["id"], r["field"], r["old"], r["new"]) for r in changes.to_dict("records")}
@@ -313,7 +313,7 @@ def test_the_hazard_curve_reaches_the_assessment_and_its_rates_the_portfolio(tmp
 def test_changes_between_follows_the_curve_columns():
     old = b"id,name,risk,priority,annual_rate_overturn\nX,fridge,low,2,1e-05\nY,rack,high,1,0.002\n"
     new = b"id,name,risk,priority,annual_rate_overturn\nX,fridge,low,2,2e-05\nZ,shelf,moderate,1,0\n"
-    table = batch.changes_between({"b": old}, {"b": new}, {"b": "B"})
+    table = batch_report.changes_between({"b": old}, {"b": new}, {"b": "B"})
     rows = {tuple(r.values()) for r in table.to_dict("records")}
     assert rows == {("B", "X", "fridge", "changed", "annual_rate_overturn", "1e-05", "2e-05"),
                     ("B", "Z", "shelf", "item added", "", "", ""),

@@ -188,7 +188,7 @@ def test_a_damaged_pack_is_a_miss_not_an_error(tmp_path):
 
 def test_packs_are_merged_and_the_folder_is_bounded(tmp_path, monkeypatch):
     monkeypatch.setattr(cache, "MAX_PACKS", 2)
-    blocks, records = _blocks(), _records()
+    blocks = _blocks()
     runner = CachingRunner(Recording(), tmp_path)
     for block in blocks:  # four calls, four packs: merged when past two
         runner.simulate_cases(*_batch([block]), tail_s=TAIL_S)
