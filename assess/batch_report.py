@@ -113,7 +113,7 @@ def portfolio_html(staged, compared: bool) -> str:
         cells = []
         for c in head:
             value = row[c]
-            text = f"{value:.3g}" if isinstance(value, float) else str(value)
+            text = ("–" if value != value else f"{value:.3g}") if isinstance(value, float) else str(value)
             if c == "building":
                 text = f"<a href='{e(str(value))}/report.html'>{e(str(value))}</a>"
             else:
