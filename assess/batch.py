@@ -552,7 +552,9 @@ def building_key(item: PreparedBuilding, *, seed: int, formats, units: str, vers
     digest = hashlib.blake2b(digest_size=16)
     digest.update(f"{version}|{item.level}|{seed}|{sorted(formats)}|{units}|".encode())
     digest.update(_file_digest(item.building.workbook).encode())
-    records = sorted({str(p) for p in item.inventory.hazard.get("record_path", []) if p})
+    hazard = item.inventory.hazard
+    records = sorted({str(p) for column in hazard.columns if column.endswith("_path")  # record_path, and
+                      for p in hazard[column] if isinstance(p, str) and p})           # any other record column
     for record in records:
         digest.update(f"|{record}|{_file_digest(Path(record))}".encode())
     if item.curve is not None:

@@ -395,3 +395,18 @@ def test_a_curve_update_reintegrates_without_simulating(tmp_path):
     table = pd.read_csv(out / "portfolio.csv").set_index("building")
     assert table.at["alpha", "cases_simulated"] == 0
     assert (_csv(out / "changes.csv")["field"] == "annual_rate_beyond_clearance").any()
+
+
+def test_an_edited_record_reassesses_its_building(first_run):
+    portfolio, out = first_run
+    record = portfolio.parent / "records" / "m1.csv"
+    lines = record.read_text().splitlines()
+    lines[20] = lines[20].split(",")[0] + ",0.65"  # one sample of the record
+    record.write_text("\n".join(lines) + "\n")
+    import assess.pipeline
+    assess.pipeline._read_scaled.cache_clear()  # it keeps a record by path for the process's life
+    assert _batch(portfolio, "--out", out) == 0
+    table = pd.read_csv(out / "portfolio.csv").set_index("building")
+    # both buildings read this record: every case of each runs again
+    assert table.at["alpha", "cases_simulated"] == len(ITEMS["alpha"]) * DIRECTIONS
+    assert table.at["beta", "cases_simulated"] == len(ITEMS["beta"]) * DIRECTIONS
