@@ -293,11 +293,23 @@ def prepare_buildings(buildings: list[Building], *, level: str | None = None, oq
     curves: dict[Path, object] = {}
 
     def curve_of(path: Path):
+        """The curve at ``path``, read once; its problems raised once, for the first building naming it."""
         if path not in curves:
-            curves[path] = read_openquake_hazard(path)
+            try:
+                curves[path] = read_openquake_hazard(path)
+            except InputError:
+                curves[path] = None
+                raise
+        if curves[path] is None:
+            raise InputError([])
         return curves[path]
 
     prepared = []
+    if oq_hazard is not None:  # named on the command line: read even if every row names its own
+        try:
+            curve_of(Path(oq_hazard))
+        except InputError as error:
+            problems.extend(error.problems)
     for building in buildings:
         say(f"checking {building.name} ({building.workbook.name})")
         try:

@@ -410,3 +410,10 @@ def test_an_edited_record_reassesses_its_building(first_run):
     # both buildings read this record: every case of each runs again
     assert table.at["alpha", "cases_simulated"] == len(ITEMS["alpha"]) * DIRECTIONS
     assert table.at["beta", "cases_simulated"] == len(ITEMS["beta"]) * DIRECTIONS
+
+
+def test_a_missing_oq_hazard_file_is_refused_once(tmp_path, capsys):
+    portfolio = _portfolio(tmp_path / "site")
+    assert _batch(portfolio, "--out", tmp_path / "out", "--oq-hazard", tmp_path / "nothere.csv") == 2
+    err = capsys.readouterr().err
+    assert err.count("nothere.csv") == 1 and "1 problem" in err
