@@ -13,7 +13,10 @@ would (``python -m assess batch portfolio.xlsx --out out``):
 
 For each: wall-clock seconds, cases simulated and reused (portfolio.csv), rows
 of changes.csv. Wall-clock time depends on the machine and its load; the case
-counts do not. Not a test.
+counts do not. ``--overhead`` instead times the cache itself on the issue's
+large assessment (10,000 items x 18 records x 2 directions = 360,000 cases;
+the engine replaced by a runner that returns zeros): keying, looking up and
+storing every case, all misses then all hits. Not a test.
 """
 from __future__ import annotations
 
@@ -68,11 +71,45 @@ def report(step: str, seconds: float, folder: Path) -> dict:
     return row
 
 
+def cache_overhead(n_items: int = 10_000, n_records: int = 18, samples: int = 4000) -> None:
+    import numpy as np
+
+    from assess.cache import CachingRunner
+    from assess.mechanics.block import Block
+    from assess.mechanics.engine import CasePeaks
+
+    class Zeros:  # no engine: what is timed is the cache alone
+        def simulate_cases(self, blocks, records_g, dt_s, record_index, *, tail_s, progress=None):
+            n = len(blocks)
+            return CasePeaks(np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n, bool), np.zeros(n, bool),
+                             np.full(n, "slide"), np.full(n, "sliding kernel"))
+
+    rng = np.random.default_rng(2010)
+    blocks = [Block(half_width_m=rng.uniform(0.2, 0.6), cg_height_m=1.0, height_m=2.0, mu=rng.uniform(0.1, 0.7))
+              for _ in range(2 * n_items)]  # an item in each of its two directions
+    records = [rng.normal(size=samples) * 0.1 for _ in range(n_records)]
+    cases = [b for _ in records for b in blocks]
+    index = np.repeat(np.arange(n_records), len(blocks))
+    with tempfile.TemporaryDirectory() as folder:
+        for label in ("all misses", "all hits"):
+            runner = CachingRunner(Zeros(), folder)
+            started = time.perf_counter()
+            runner.simulate_cases(cases, records, [0.01] * n_records, index, tail_s=10.0)
+            print(f"{label}: {len(cases):,} cases in {time.perf_counter() - started:.2f} s "
+                  f"(simulated {runner.cases_simulated:,}, reused {runner.cases_reused:,})")
+        size = sum(p.stat().st_size for p in Path(folder).glob("*.npz"))
+        print(f"cache folder: {size / 1e6:.1f} MB")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--format", default="html,pdf,xlsx")
     parser.add_argument("--keep", type=Path, help="keep the scratch folder here")
+    parser.add_argument("--overhead", action="store_true", help="time the cache alone on 360,000 cases")
     args = parser.parse_args()
+    if args.overhead:
+        cache_overhead()
+        return
     scratch = Path(tempfile.mkdtemp(prefix="bench-batch-"))
     folder = scratch / "portfolio"
     shutil.copytree(SAMPLE, folder, ignore=shutil.ignore_patterns("build_portfolio.py"))
