@@ -243,8 +243,8 @@ def build_batch_parser() -> argparse.ArgumentParser:
                              "workbook); 2in50, 2%%/50yr and 2475yr are the same level")
     parser.add_argument("--oq-hazard", metavar="CSV", type=Path,
                         help="OpenQuake hazard curve for the buildings whose row gives no oq_hazard: the "
-                             "items' fragilities are integrated over it into annual rates (it does not "
-                             "rescale the motions, so a new curve needs no new simulation)")
+                             "items' fragilities are integrated over it into annual rates (unlike the main "
+                             "command's --oq-hazard, it does not rescale the level's motions)")
     parser.add_argument("--scheduler", metavar="ADDRESS",
                         help="run the simulations on the Dask distributed cluster at ADDRESS "
                              "(default: this machine's cores); the numbers do not depend on it")
