@@ -38,7 +38,8 @@ motions.csv, report.html and report.pdf into --out.
 
 Other commands:
   assess simulate ...   one item under one record or pulse (assess simulate --help)
-  assess calibrate ...  find what the model lacks from measured tests (assess calibrate --help)"""
+  assess calibrate ...  find what the model lacks from measured tests (assess calibrate --help)
+  assess batch ...      a portfolio of buildings, re-running only what changed (assess batch --help)"""
 
 CALIBRATE_DESCRIPTION = """\
 Simulate every measured test (MEASURED.xlsx, sheet tests: specimen, motion and
@@ -215,6 +216,52 @@ def build_calibrate_parser() -> argparse.ArgumentParser:
     return parser
 
 
+BATCH_DESCRIPTION = """\
+Assess a portfolio of buildings, each with its own workbook, and report what
+changed since the previous run. PORTFOLIO is a workbook with a sheet
+'buildings' (columns building, workbook, and optionally oq_hazard and level;
+paths relative to the portfolio) or a folder of workbooks (each one a building
+named by its file name). A building's level is its row's level, else --hazard,
+else the one level its workbook defines. Writes into --out one folder per
+building (what assess WORKBOOK --hazard LEVEL writes), portfolio.csv and
+portfolio.html (items by risk and action per building, cases simulated and
+reused) and changes.csv (what changed since the previous run in --out).
+Simulations already run for the same item, motion and engine are reused
+from --out/.cache, so an edited workbook re-simulates only what it changed."""
+
+
+def build_batch_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="assess batch", description=BATCH_DESCRIPTION, formatter_class=argparse.RawDescriptionHelpFormatter,
+        epilog=EPILOG)
+    parser.add_argument("portfolio", metavar="PORTFOLIO", type=Path,
+                        help="portfolio workbook (.xlsx, sheet buildings) or a folder of workbooks")
+    parser.add_argument("--out", metavar="DIR", type=Path,
+                        help="output folder (default: reports/<portfolio stem>/)")
+    parser.add_argument("--hazard", metavar="LEVEL",
+                        help="level of the buildings whose row gives none (default: the one level of each "
+                             "workbook); 2in50, 2%%/50yr and 2475yr are the same level")
+    parser.add_argument("--oq-hazard", metavar="CSV", type=Path,
+                        help="OpenQuake hazard curve for the buildings whose row gives no oq_hazard: the "
+                             "items' fragilities are integrated over it into annual rates (unlike the main "
+                             "command's --oq-hazard, it does not rescale the level's motions)")
+    parser.add_argument("--scheduler", metavar="ADDRESS",
+                        help="run the simulations on the Dask distributed cluster at ADDRESS "
+                             "(default: this machine's cores); the numbers do not depend on it")
+    parser.add_argument("--format", metavar="FORMATS", type=_job_formats, default=JOB_FORMATS,
+                        help="what to write into each building's folder besides the CSV files: html, pdf, "
+                             "xlsx (default: html,pdf,xlsx)")
+    parser.add_argument("--seed", metavar="N", type=_whole_number(0), default=0,
+                        help="seed of every random draw (default 0)")
+    parser.add_argument("--jobs", metavar="N", type=_whole_number(1),
+                        help="threads for the time-history simulation (default: all cores)")
+    parser.add_argument("--allow-files-outside", action="store_true",
+                        help="read workbooks and hazard curves outside the portfolio's folder, and records "
+                             "outside their workbook's folder (default: refused)")
+    parser.add_argument("--quiet", action="store_true", help="do not print progress")
+    return parser
+
+
 class _Interrupt:
     """Ctrl-C as the run sees it: whether it came, and whether it may stop the run now.
 
@@ -318,6 +365,8 @@ def _main(argv: list[str] | None) -> int:
         args, command = build_simulate_parser().parse_args(argv[1:]), _simulate
     elif argv and argv[0] == "calibrate":
         args, command = build_calibrate_parser().parse_args(argv[1:]), _calibrate
+    elif argv and argv[0] == "batch":
+        args, command = build_batch_parser().parse_args(argv[1:]), _batch
     else:
         args = build_parser().parse_args(argv)  # argparse exits with 2 on a wrong option
         command = _assess
@@ -456,6 +505,69 @@ def _calibrate(args: argparse.Namespace, say) -> int:
     for path in written:
         print(path)
     return EXIT_OK
+
+
+def _batch(args: argparse.Namespace, say) -> int:
+    from assess import batch
+    from assess.cache import CachingRunner
+    from assess.hazard.levels import parse_level
+
+    if args.hazard is not None:
+        try:
+            parse_level(args.hazard)
+        except ValueError as error:
+            raise InputError([Problem(file="--hazard", message=str(error))]) from None
+    if args.jobs is not None:
+        import numba
+        numba.set_num_threads(min(args.jobs, numba.config.NUMBA_NUM_THREADS))
+    out_dir = args.out or batch.default_out_dir(args.portfolio)
+    batch.check_portfolio_folder(out_dir)
+    say(f"reading {args.portfolio}")
+    buildings = batch.read_portfolio(args.portfolio, allow_outside=args.allow_files_outside)
+    prepared = batch.prepare_buildings(
+        buildings, level=args.hazard, oq_hazard=args.oq_hazard,
+        hazard_problems=lambda inventory: _hazard_problems(inventory, args.allow_files_outside), say=say)
+    runner = CachingRunner(_engine_runner(args.scheduler), Path(out_dir) / batch.CACHE_FOLDER)
+    say(f"{len(prepared)} buildings; results are reused from {Path(out_dir) / batch.CACHE_FOLDER}")
+    try:
+        staged = batch.run_portfolio(prepared, out_dir, runner=runner, seed=args.seed, formats=args.format,
+                                     say=say)
+    finally:
+        close = getattr(runner.inner, "close", None)  # a cluster's client
+        if close is not None:
+            close()
+    try:
+        _Interrupt.stop_if_received()
+        _Interrupt.deferred = True
+        try:
+            staged.commit()
+            _Interrupt.written_to = Path(out_dir)
+        finally:
+            _Interrupt.deferred = False
+    finally:
+        staged.discard()
+    _Interrupt.stop_if_received()
+    for message in runner.write_errors[:3]:
+        say(f"could not store results in the cache ({message}); they will be simulated again next time")
+    changed = staged.changes["change"].value_counts()
+    say(f"{staged.cases_simulated} cases simulated, {staged.cases_reused} reused; changes since the previous "
+        f"run: " + (", ".join(f"{n} {kind}" for kind, n in changed.items()) or "none"))
+    for name in staged.files:
+        print(Path(out_dir) / name)
+    return EXIT_OK
+
+
+def _engine_runner(scheduler):
+    """What simulates the cases the cache does not hold: this machine's threads, or a Dask cluster."""
+    from assess.mechanics.runner import LocalRunner
+    if scheduler is None:
+        return LocalRunner()
+    try:
+        from assess.mechanics.distributed import DaskRunner
+    except ImportError:
+        raise InputError([Problem(file="--scheduler", message="this installation of assess cannot run on a Dask "
+                                  "cluster.", fix="leave out --scheduler to run on this machine.")]) from None
+    return DaskRunner.connect(scheduler)
 
 
 def _with_comparison(result, explicit: Path | None, in_out_dir: Path, say):
