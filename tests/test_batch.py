@@ -378,9 +378,6 @@ def test_a_buildings_curve_gives_annual_rates_and_an_unchanged_rerun_keeps_its_f
     assert {p: p.read_bytes() for p in (out / "alpha").rglob("*") if p.is_file()} == before
 
 
-@pytest.mark.xfail(strict=True, reason="the stripes are placed at the curve's PGA at fixed annual rates "
-                   "(assess.fragility.stripes.stripe_levels_g), so a new curve scales the histories to new "
-                   "stripes and every stripe case misses the cache")
 def test_a_curve_update_reintegrates_without_simulating(tmp_path):
     portfolio = _curve_portfolio(tmp_path)
     out = tmp_path / "out"
