@@ -53,9 +53,9 @@ import pandas as pd
 from assess.mechanics.engine import pure_sliding_proved
 
 #: Intervals a side of the nominal μ for an item that cannot uplift anywhere in its range.
-NODES_PER_SIDE_SLIDING = 2
+NODES_PER_SIDE_SLIDING = 4
 #: Intervals a side for an item that may uplift inside its range (the response is not monotone in μ).
-NODES_PER_SIDE_UPLIFT = 4
+NODES_PER_SIDE_UPLIFT = 8
 #: Columns :func:`expand_cases` adds to the cases.
 NODE_COLUMNS = ("mu_node", "mu_weight", "mu_nominal", "mu_end")
 

@@ -147,7 +147,7 @@ def suite_runs(cases: pd.DataFrame, runs: pd.DataFrame, planar: pd.DataFrame | N
 
 def _per_history(cases: pd.DataFrame, runs: pd.DataFrame, planar: pd.DataFrame | None = None) -> dict:
     """Per item: :func:`suite_runs` indexed by (motion_key, mu_node, realization)."""
-    table = suite_runs(cases, runs, planar).set_index(["motion_key", "mu_node", "realization"])
+    table = suite_runs(cases, runs, planar).set_index(["motion_key", "mu_node", "realization"]).sort_index()
     return {item_id: frame.drop(columns="id") for item_id, frame in table.groupby("id", sort=False)}
 
 

@@ -583,12 +583,12 @@ _EQUIPMENT_TYPES = {"id": "str", "name": "str", "room": "str", "floor": "int64",
                     "height_m": "float64", "width_m": "float64", "depth_m": "float64",
                     "mass_kg": "float64", "mu": "float64", "mu_static": "float64",
                     "clearance_m": "float64", "cg_height_m": "float64", "anchored": "bool",
-                    "quantity": "int64", "consequence": "str", "row": "int64",
-                    "mu_low": "float64", "mu_high": "float64"}
+                    "quantity": "int64", "consequence": "str", "mu_low": "float64", "mu_high": "float64",
+                    "row": "int64"}
 _HAZARD_TYPES = {"level": "str", "level_label": "str", "motion": "str", "all_floors": "bool",
                  "floor": "Int64", "pta_g": "float64", "tp_s": "float64", "vp_m_s": "float64",
-                 "pulse": "str", "record_path": "str", "scale": "float64", "row": "int64",
-                 "record_2_path": "str", "azimuth_deg": "float64"}
+                 "pulse": "str", "record_path": "str", "scale": "float64", "record_2_path": "str",
+                 "azimuth_deg": "float64", "row": "int64"}
 
 
 def _frame(records: list[dict], types: dict[str, str]) -> pd.DataFrame:
