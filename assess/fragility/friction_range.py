@@ -248,8 +248,9 @@ def method_text(summary: pd.DataFrame) -> str:
     changing = items_whose_class_changes(summary)
     text = (f"{count} item{'s give' if count != 1 else ' gives'} a range for the friction coefficient (mu_low to "
             "mu_high). There mu is taken as a triangular distribution over the range with its mode at the "
-            "item's mu, carried by a few values that include both ends and mu (more where the item can uplift "
-            "inside the range, where the response is not monotone in mu); every case runs at each value, mu_s "
+            "item's mu, carried by several values that include both ends and mu (the response is not monotone "
+            "in mu, so none is skipped: 9 values a range where the item cannot uplift, 17 where it can, fewer "
+            "where mu is at an end); every case runs at each value, mu_s "
             "scaled with mu, and the governing demand weighs each run by its motion's weight times its mu "
             "value's weight. The risk class is also computed with every run at mu_low and at mu_high: ")
     if changing:

@@ -88,3 +88,20 @@ def with_planar_peaks(cases: pd.DataFrame, planar: pd.DataFrame) -> pd.DataFrame
     peaks = planar[planar["realization"] == 0][keys + ["sliding_cm"]]
     found = cases.assign(mu_node=node)[keys].merge(peaks, on=keys, how="left")["sliding_cm"]
     return cases.assign(planar_sliding_cm=found.to_numpy(dtype=float))
+
+
+def method_text(summary: pd.DataFrame) -> str:
+    """The report's method paragraph on sliding in the plane ("" when no item's demand used it)."""
+    if "demand_planar" not in summary:
+        return ""
+    planar = summary["demand_planar"].fillna(False).astype(bool)
+    if not planar.any():
+        return ""
+    ids = summary.loc[planar, "id"].astype(str).tolist()
+    return (f"Where a motion gives both horizontal components (record and record_2), an item that cannot uplift "
+            f"(mu_s < b/h in both directions) slides on the floor under both at once, friction mu m g opposing "
+            f"its velocity (isotropic Coulomb friction); its sliding under that motion is the largest distance "
+            f"from where it stood, compared with its clearance, in place of the larger of the two one-way "
+            f"answers (each direction under its component alone, still listed per direction in motions.csv). "
+            f"This applies to {len(ids)} item{'s' if len(ids) != 1 else ''} ({', '.join(ids)}). Items that "
+            f"can uplift run each direction under its own component.")
