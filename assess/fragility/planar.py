@@ -94,7 +94,7 @@ def method_text(summary: pd.DataFrame) -> str:
     """The report's method paragraph on sliding in the plane ("" when no item's demand used it)."""
     if "demand_planar" not in summary:
         return ""
-    planar = summary["demand_planar"].fillna(False).astype(bool)
+    planar = summary["demand_planar"].eq(True)
     if not planar.any():
         return ""
     ids = summary.loc[planar, "id"].astype(str).tolist()
