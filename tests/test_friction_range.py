@@ -121,6 +121,11 @@ def test_every_run_at_each_mu_node_is_newmarks_closed_form_and_the_probability_w
     beyond = newmark_sliding_m(nodes) > 0.60
     assert 0.0 < beyond.mean() < 1.0
     assert row["p_beyond_clearance"] == pytest.approx(weights[beyond].sum(), rel=1e-12)
+    # the μ values are a quadrature, not draws: the interval still counts one history (one record)
+    from assess.fragility.suite import binomial_interval
+    assert row["suite_histories"] == 1
+    assert (row["p_beyond_clearance_low"], row["p_beyond_clearance_high"]) == pytest.approx(
+        binomial_interval(weights[beyond].sum(), 1))
     # the ends: every run at mu_low slides past 60 cm (92 cm), none at mu_high (41 cm)
     assert row["p_beyond_clearance_mu_low"] == 1.0 and row["p_beyond_clearance_mu_high"] == 0.0
     assert (row["risk_mu_low"], row["risk_mu_high"]) == ("high", "low")

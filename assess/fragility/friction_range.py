@@ -138,24 +138,24 @@ def expand_cases(cases: pd.DataFrame) -> pd.DataFrame:
     nominal = cases.assign(mu_node=0, mu_weight=1.0, mu_nominal=True, mu_end="", mu_range_nodes=1)
     if not ranged.any():
         return nominal
-    extra = []
     slender = cases.groupby("id")["b_over_h"].transform("min")
-    for index in cases.index[ranged]:
-        case = cases.loc[index]
-        mu, ratio = float(case["mu"]), float(case["mu_static"]) / float(case["mu"])
-        high_static = float(case["mu_high"]) * ratio
-        per_side = (NODES_PER_SIDE_SLIDING if bool(pure_sliding_proved(high_static, float(slender[index])))
-                    else NODES_PER_SIDE_UPLIFT)
-        nodes, weights = friction_nodes(float(case["mu_low"]), mu, float(case["mu_high"]), per_side)
+    extra = []
+    # the cases of one item share its range and its b/h: its nodes are computed once
+    for _, rows in cases[ranged].groupby("id", sort=False):
+        first = rows.iloc[0]
+        mu, ratio = float(first["mu"]), float(first["mu_static"]) / float(first["mu"])
+        proved = bool(pure_sliding_proved(float(first["mu_high"]) * ratio, float(slender[rows.index[0]])))
+        nodes, weights = friction_nodes(float(first["mu_low"]), mu, float(first["mu_high"]),
+                                        NODES_PER_SIDE_SLIDING if proved else NODES_PER_SIDE_UPLIFT)
+        ends = ["low"] + [""] * (nodes.size - 2) + ["high"]
         for node, (value, weight) in enumerate(zip(nodes, weights)):
-            end = "low" if node == 0 else ("high" if node == nodes.size - 1 else "")
-            fields = dict(mu_node=node, mu_weight=float(weight), mu_end=end, mu_range_nodes=nodes.size)
+            fields = {"mu_node": node, "mu_weight": float(weight), "mu_end": ends[node], "mu_range_nodes": nodes.size}
             if np.isclose(value, mu, rtol=0.0, atol=1e-12):
-                nominal.loc[index, list(fields)] = list(fields.values())
+                for column, field in fields.items():
+                    nominal.loc[rows.index, column] = field
                 continue
-            extra.append({**case.to_dict(), **fields, "mu": float(value), "mu_static": float(value) * ratio,
-                          "mu_nominal": False})
-    out = pd.concat([nominal, pd.DataFrame(extra, columns=nominal.columns)], ignore_index=True)
+            extra.append(rows.assign(**fields, mu=float(value), mu_static=float(value) * ratio, mu_nominal=False))
+    out = pd.concat([nominal, *extra], ignore_index=True)
     return out.astype({"mu_node": "int64", "mu_weight": "float64", "mu_nominal": "bool",
                        "mu_range_nodes": "int64"})
 

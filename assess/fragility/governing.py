@@ -173,8 +173,8 @@ def _item_demand(item_cases: pd.DataFrame, histories: pd.DataFrame | None, regre
             item_cases["motion_key"].drop_duplicates())
     n_motions = len(source_of)
     values, weights = [], []
-    # per history (motion, realization): its weight, and the μ-weighted share of its runs beyond / overturned
-    history_weight, history_beyond, history_overturn, history_mass = {}, {}, {}, {}
+    # per run of a simulated motion: its history (motion, realization), that history's share, its μ weight
+    history_parts = []
     exact_beyond, exact_weight = 0.0, 0.0
     theta = 0.0
     planar_motions, uplift = set(), False
@@ -203,15 +203,19 @@ def _item_demand(item_cases: pd.DataFrame, histories: pd.DataFrame | None, regre
         uplift = uplift or bool((runs["uplift"] & (runs["mu_weight"] > 0.0)).any())
         values.extend(runs["sliding_cm"].to_numpy())
         weights.extend(np.full(len(runs), share * mu_weight))
-        for realization, run in runs.iterrows():
-            h = (key, realization)
-            history_weight[h] = share
-            history_mass[h] = history_mass.get(h, 0.0) + mu_weight
-            history_beyond[h] = history_beyond.get(h, 0.0) + mu_weight * float(run["sliding_cm"] > clearance_cm)
-            history_overturn[h] = history_overturn.get(h, 0.0) + mu_weight * float(run["overturned"])
-    sampled_weights = [history_weight[h] * history_mass[h] for h in history_weight]
-    sampled_beyond = [history_beyond[h] / history_mass[h] for h in history_weight]
-    sampled_overturn = [history_overturn[h] / history_mass[h] for h in history_weight]
+        history_parts.append(pd.DataFrame({
+            "motion_key": key, "realization": runs.index.to_numpy(), "share": share, "mass": mu_weight,
+            "beyond": mu_weight * (runs["sliding_cm"].to_numpy() > clearance_cm),
+            "overturn": mu_weight * runs["overturned"].to_numpy(dtype=float)}))
+    # per history: its weight (share × the μ weight of its simulated runs), and the μ-weighted share of its
+    # runs beyond the clearance / overturned; the intervals count histories, not μ values
+    sampled_weights, sampled_beyond, sampled_overturn = [], [], []
+    if history_parts:
+        per_history = pd.concat(history_parts).groupby(["motion_key", "realization"], sort=False).agg(
+            share=("share", "first"), mass=("mass", "sum"), beyond=("beyond", "sum"), overturn=("overturn", "sum"))
+        sampled_weights = (per_history["share"] * per_history["mass"]).tolist()
+        sampled_beyond = (per_history["beyond"] / per_history["mass"]).tolist()
+        sampled_overturn = (per_history["overturn"] / per_history["mass"]).tolist()
     p_beyond, p_beyond_interval = _probability(exact_beyond, exact_weight, sampled_beyond, sampled_weights)
     p_overturn, p_overturn_interval = _probability(0.0, exact_weight, sampled_overturn, sampled_weights)
     intervals = _quantile_intervals(values, weights, sampled_weights, exact_weight)
