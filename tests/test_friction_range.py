@@ -152,3 +152,42 @@ def test_a_class_that_does_not_change_says_so(tmp_path):
     row = run_assessment(rect_inventory(tmp_path, (0.2, 0.3), clearance_cm=200.0), "test").summary.iloc[0]
     assert row["risk_mu_low"] == row["risk_mu_high"] == row["risk"] == "low"
     assert row["mu_range_note"] == "Its risk class is low wherever mu lies in 0.20-0.30."
+
+
+# ----------------------------------------------------------------------------- units of the step
+def cases_frame(mu, mu_static, mu_low, mu_high, b_over_h):
+    return pd.DataFrame({"id": ["A", "A"], "direction": [1, 2], "mu": mu, "mu_static": mu_static,
+                         "mu_low": mu_low, "mu_high": mu_high, "b_over_h": [b_over_h, 2 * b_over_h]})
+
+
+def test_items_that_may_uplift_get_more_mu_values_and_mu_static_keeps_its_ratio():
+    from assess.fragility.friction_range import NODES_PER_SIDE_SLIDING, NODES_PER_SIDE_UPLIFT, expand_cases
+
+    sliding = expand_cases(cases_frame(0.2, 0.24, 0.15, 0.25, b_over_h=0.5))  # μs at mu_high 0.30 < 0.5
+    rocking = expand_cases(cases_frame(0.2, 0.24, 0.15, 0.25, b_over_h=0.28))  # 0.30 > 0.28: may uplift
+    assert sliding["mu_node"].nunique() == 2 * NODES_PER_SIDE_SLIDING + 1
+    assert rocking["mu_node"].nunique() == 2 * NODES_PER_SIDE_UPLIFT + 1
+    np.testing.assert_allclose(rocking["mu_static"] / rocking["mu"], 1.2, rtol=1e-12)
+    nominal = rocking[rocking["mu_nominal"]]
+    assert len(nominal) == 2 and (nominal["mu"] == 0.2).all()  # the first rows: the cases as given
+    assert rocking.groupby("direction")["mu_weight"].sum().tolist() == pytest.approx([1.0, 1.0], rel=1e-12)
+
+
+def test_the_method_text_names_exactly_the_items_whose_class_changes():
+    from assess.fragility.friction_range import method_text
+
+    summary = pd.DataFrame({"id": ["A", "B", "C", "D"], "mu_low": [0.1, 0.2, np.nan, 0.3],
+                            "risk_mu_low": ["high", "low", "", "moderate"],
+                            "risk_mu_high": ["low", "low", "", "high"]})
+    assert items_whose_class_changes(summary) == ["A", "D"]
+    text = method_text(summary)
+    assert "3 items give a range" in text and "changes for 2 items (A, D)" in text
+    assert method_text(summary.assign(mu_low=np.nan)) == ""
+
+
+def test_an_overturning_share_weighted_over_mu_is_not_read_as_a_count_of_motions():
+    from assess.pipeline import _suite_share_text
+
+    assert _suite_share_text(1 / 3, {"suite_motions": 3, "suite_histories": 3}) == "1 of its 3 motions"
+    assert _suite_share_text(0.1, {"suite_motions": 3, "suite_histories": 3}) == \
+        "a weighted 10% of its 3 motions over its range of mu"

@@ -165,3 +165,19 @@ def test_a_pair_in_a_workbook_runs_end_to_end(tmp_path):
     assert completed.returncode == 0, completed.stderr[-2000:]
     summary = pd.read_csv(tmp_path / "out" / "summary.csv")
     assert "demand_planar" in summary and "planar_sliding_cm" in pd.read_csv(tmp_path / "out" / "motions.csv")
+
+
+def test_an_item_with_a_mu_range_slides_in_the_plane_at_each_mu_value(tmp_path):
+    """The 2-D peaks at each μ value of SLIDER's range (0.15-0.25), pair along one line: the one-way
+    exact kernel under the resultant at that μ."""
+    first = component(0.5, 0.9, 0.3)
+    inventory = pair_inventory(tmp_path, first, 0.75 * first)
+    equipment = inventory.equipment.copy()
+    equipment.loc[equipment["id"] == "SLIDER", ["mu_low", "mu_high"]] = [0.15, 0.25]
+    result = run_assessment(Inventory(path=inventory.path, equipment=equipment, hazard=inventory.hazard,
+                                      settings=inventory.settings), "test")
+    runs = result.suite_runs[result.suite_runs["id"] == "SLIDER"]
+    assert runs["planar"].all() and runs["mu"].nunique() == 9
+    for run in runs.itertuples():
+        expected_cm = sliding_response(1.25 * first, DT_S, run.mu).sliding_max_m * 100
+        assert run.sliding_cm == pytest.approx(expected_cm, rel=1e-9), run.mu
