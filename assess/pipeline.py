@@ -274,7 +274,11 @@ def _record_pairs(level_motions: pd.DataFrame, motions: dict, workbook_name: str
             continue
         k = int(row.motion_key)
         first = _motion_record(row.record_path, row.scale, row.motion, row.row, workbook_name)
-        second = _motion_record(second_path, row.scale, row.motion, row.row, workbook_name)
+        try:
+            second = _motion_record(second_path, row.scale, row.motion, row.row, workbook_name)
+        except InputError as error:  # say which of the two components it is
+            raise InputError([replace(problem, message=f"record_2: {problem.message}")
+                              for problem in error.problems]) from None
         width, depth, note = item_axes_pair(first, second, float(row.azimuth_deg), row.motion, row.row,
                                             workbook_name)
         if note:

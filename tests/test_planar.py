@@ -181,3 +181,11 @@ def test_an_item_with_a_mu_range_slides_in_the_plane_at_each_mu_value(tmp_path):
     for run in runs.itertuples():
         expected_cm = sliding_response(1.25 * first, DT_S, run.mu).sliding_max_m * 100
         assert run.sliding_cm == pytest.approx(expected_cm, rel=1e-9), run.mu
+
+
+def test_a_second_component_that_is_not_a_record_is_refused_naming_record_2(tmp_path):
+    path = workbook(tmp_path, hazard_with(record_2="records/bad.csv"))
+    (tmp_path / "records" / "bad.csv").write_text("time_s,accel_g\n0,0\n0.01,nan\n0.02,0\n")
+    completed = run(path, "--hazard", "10in50", "--out", tmp_path / "out", cwd=tmp_path)
+    assert_refused(completed, "bad.csv", "record_2:", "row 4")
+    assert not (tmp_path / "out").exists()
