@@ -613,14 +613,15 @@ def _hazard_problems(inventory, allow_records_outside: bool) -> list[Problem]:
     workbook = Path(inventory.path)
     problems = []
     for row in inventory.hazard.itertuples(index=False):
-        record_path = str(getattr(row, "record_path", "") or "")
-        why = check_record_location(record_path, workbook.parent) if record_path else None
-        if why and not allow_records_outside:
-            problems.append(Problem(file=workbook.name, sheet="hazard", row=int(row.row), column="record",
-                                    message=f"motion '{row.motion}': {why}",
-                                    fix="copy the record into the workbook's folder (or a subfolder) and "
-                                        "give its path relative to the workbook, or run with "
-                                        "--allow-records-outside if you trust this workbook."))
+        for column in ("record", "record_2"):
+            record_path = str(getattr(row, f"{column}_path", "") or "")
+            why = check_record_location(record_path, workbook.parent) if record_path else None
+            if why and not allow_records_outside:
+                problems.append(Problem(file=workbook.name, sheet="hazard", row=int(row.row), column=column,
+                                        message=f"motion '{row.motion}': {why}",
+                                        fix="copy the record into the workbook's folder (or a subfolder) and "
+                                            "give its path relative to the workbook, or run with "
+                                            "--allow-records-outside if you trust this workbook."))
         vp = float(row.vp_m_s)
         if not math.isnan(vp) and vp == 0.0:
             problems.append(Problem(file=workbook.name, sheet="hazard", row=int(row.row), column="vp_cm_s",
