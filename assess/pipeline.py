@@ -147,7 +147,7 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     if hazard_curve is not None:  # the whole curve: fragilities over stripes, annual rates (at the nominal mu)
         from assess.fragility.stripes import CURVE_COLUMNS, curve_risk
         curve = curve_risk(cases[nominal], simulated_motions, level_motions, hazard_curve, settings, runner,
-                           progress)
+                           progress, record_pairs=record_pairs)
         summary = summary.merge(curve.table, on="id", how="left")
         summary_columns = SUMMARY_COLUMNS + CURVE_COLUMNS
     histories = _worst_histories(cases, runs[nominal[runs["case"].to_numpy()]], summary, simulated_motions,

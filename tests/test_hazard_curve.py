@@ -328,3 +328,34 @@ def test_where_no_lognormal_fits_the_rate_is_the_outcomes_own():
     # a step seen at one stripe is spread over the gap below it (linear in ln a): within 25 %
     assert rates_out["annual_rate_beyond_clearance"] == pytest.approx(exact, rel=0.25)
     assert abs(math.log(rates_out["annual_rate_beyond_clearance"] / exact)) < abs(math.log(lognormal / exact))
+
+
+def test_a_record_pair_runs_each_direction_under_its_own_component_in_the_stripes(tmp_path):
+    """Direction 1 under the width component, direction 2 under the depth one: a pair whose depth
+    component is the width one at a tenth scaled together moves the block in direction 2 by what the
+    one-way kernel gives under that smaller component (Newmark closed form of a rectangle)."""
+    path = _workbook(tmp_path, [
+        {"id": "S1", "name": "low friction", "floor": 0, "mu": 0.15, "clearance_cm": 10, **SQUAT},
+    ], [{"level": "2in50", "motion": "pair", "floor": 0, "record": "records/w.csv", "record_2": "records/d.csv"}],
+        {"records/w.csv": _rect_record(0.5, 0.5), "records/d.csv": _rect_record(0.5, 0.05)})
+    captured = []
+    from assess.fragility import stripes as module
+
+    original = module.stripe_runs
+
+    def spy(*args, **kwargs):
+        runs = original(*args, **kwargs)
+        captured.append(runs)
+        return runs
+
+    module.stripe_runs = spy
+    try:
+        run_assessment(read_workbook(path), "2in50", hazard_curve=read_openquake_hazard(CURVE))
+    finally:
+        module.stripe_runs = original
+    runs = captured[0]
+    top = runs[runs["pfa_g"] == runs["pfa_g"].max()].set_index("direction")["sliding_max_cm"]
+    a_g, mu, t = runs["pfa_g"].max(), 0.15, PULSE_S
+    newmark_cm = lambda amp: 100 * max(amp - mu, 0.0) * amp * G * t * t / (2 * mu)  # noqa: E731
+    assert top[1] == pytest.approx(newmark_cm(a_g), rel=0.01)
+    assert top[2] == pytest.approx(newmark_cm(a_g / 10), rel=0.02)  # 0.2 g: it slides, much less

@@ -180,33 +180,45 @@ def floor_pfa_per_pga(floor: int, suite_pta_g: dict, settings: dict) -> tuple[fl
 
 
 def stripe_runs(cases: pd.DataFrame, motions: dict, plan, runner,
-                progress: Callable[[int, int], None] | None = None) -> pd.DataFrame:
+                progress: Callable[[int, int], None] | None = None, record_pairs: dict | None = None) -> pd.DataFrame:
     """Simulate items under their floor's suite scaled to stripes; one row per run.
 
     ``cases`` are the level's item x motion x direction cases (with their
     ``block``); ``motions`` the level's histories per ``motion_key``; ``plan``
     a list of ``(floor, pfa_g, ids)``: the floor's histories scaled to
     ``pfa_g`` [g], run by the items ``ids`` of that floor (None: all of them).
-    Returns ``id``, ``direction``, ``pfa_g``, ``history`` (per floor),
-    ``sliding_max_cm``, ``overturned``.
+    A motion of ``record_pairs`` (``motion_key`` -> its components along the
+    items' width and depth) runs direction 1 under the first and direction 2
+    under the second, both scaled by one factor that brings the larger peak
+    to the stripe. Returns ``id``, ``direction``, ``pfa_g``, ``history`` (per
+    floor), ``sliding_max_cm``, ``overturned``.
     """
+    record_pairs = record_pairs or {}
     blocks, records, dts, index, rows = [], [], [], [], []
     per_item = cases.drop_duplicates(["id", "direction"])
     histories_of = {}
     for floor, pfa_g, ids in plan:
         if floor not in histories_of:
             keys = sorted(set(cases.loc[cases["floor"] == floor, "motion_key"]))
-            histories_of[floor] = [record for key in keys for record, _ in motions[key]]
+            histories_of[floor] = [record_pairs[key] if key in record_pairs else (record, record)
+                                   for key in keys for record, _ in motions[key]]
         on_floor = per_item[per_item["floor"] == floor]
         if ids is not None:
             on_floor = on_floor[on_floor["id"].isin(ids)]
-        for h, record in enumerate(histories_of[floor]):
-            peak_g = float(np.max(np.abs(record.accel_g)))
-            records.append(record.accel_g * (pfa_g / peak_g))
-            dts.append(record.dt_s)
+        for h, (first, second) in enumerate(histories_of[floor]):
+            factor = pfa_g / max(float(np.max(np.abs(first.accel_g))), float(np.max(np.abs(second.accel_g))))
+            slot = {1: len(records)}
+            records.append(first.accel_g * factor)
+            dts.append(first.dt_s)
+            if second is first:
+                slot[2] = slot[1]
+            else:
+                slot[2] = len(records)
+                records.append(second.accel_g * factor)
+                dts.append(second.dt_s)
             for case in on_floor.itertuples(index=False):
                 blocks.append(case.block)
-                index.append(len(records) - 1)
+                index.append(slot[int(case.direction)])
                 rows.append((case.id, int(case.direction), float(pfa_g), h))
     if not blocks:
         return pd.DataFrame(columns=["id", "direction", "pfa_g", "history", "sliding_max_cm", "overturned"])
@@ -431,7 +443,7 @@ def _rate_at_pga(levels_g, rates_per_yr, pga_g: float) -> float:
 
 
 def curve_risk(cases: pd.DataFrame, motions: dict, level_motions: pd.DataFrame, hazard: OpenQuakeHazard,
-               settings: dict, runner, progress=lambda message: None) -> CurveRisk:
+               settings: dict, runner, progress=lambda message: None, record_pairs: dict | None = None) -> CurveRisk:
     """Fragility per item and failure mode over stripes, integrated over ``hazard`` (module docstring)."""
     if hazard.kind != "curve":
         raise ValueError("a hazard map has no curve to integrate")
@@ -466,7 +478,7 @@ def curve_risk(cases: pd.DataFrame, motions: dict, level_motions: pd.DataFrame, 
             progress(f"stripes: simulated {done} of {total_runs} runs")
 
     plan = [(floor, float(x), None) for floor, levels in stripes_by_floor.items() for x in levels]
-    runs = stripe_runs(cases, motions, plan, runner, progress=report)
+    runs = stripe_runs(cases, motions, plan, runner, progress=report, record_pairs=record_pairs)
     clearance_cm = cases.drop_duplicates("id").set_index("id")["clearance_m"] * 100.0
     floor_of = cases.drop_duplicates("id").set_index("id")["floor"]
     fits, stripes = fit_items(stripe_outcomes(runs, clearance_cm))
@@ -476,7 +488,8 @@ def curve_risk(cases: pd.DataFrame, motions: dict, level_motions: pd.DataFrame, 
     if refine:  # steep rises between two stripes: look inside them
         progress(f"stripes: {len(refine)} more where the failures of {len({p[2][0] for p in refine})} items "
                  "rise steeply")
-        runs = pd.concat([runs, stripe_runs(cases, motions, refine, runner)], ignore_index=True)
+        runs = pd.concat([runs, stripe_runs(cases, motions, refine, runner, record_pairs=record_pairs)],
+                         ignore_index=True)
         fits, stripes = fit_items(stripe_outcomes(runs, clearance_cm))
     rows, fit_p = [], {}
     for item_id in dict.fromkeys(cases["id"]):
