@@ -38,7 +38,8 @@ motions.csv, report.html and report.pdf into --out.
 
 Other commands:
   assess simulate ...   one item under one record or pulse (assess simulate --help)
-  assess calibrate ...  find what the model lacks from measured tests (assess calibrate --help)"""
+  assess calibrate ...  find what the model lacks from measured tests (assess calibrate --help)
+  assess batch ...      a portfolio of buildings, re-running only what changed (assess batch --help)"""
 
 CALIBRATE_DESCRIPTION = """\
 Simulate every measured test (MEASURED.xlsx, sheet tests: specimen, motion and
@@ -109,10 +110,12 @@ def build_parser() -> argparse.ArgumentParser:
         prog="assess", description=DESCRIPTION, formatter_class=argparse.RawDescriptionHelpFormatter,
         epilog=EPILOG)
     parser.add_argument("workbook", metavar="WORKBOOK", type=Path, help="the inventory workbook (.xlsx)")
-    parser.add_argument("--hazard", metavar="LEVEL", required=True,
-                        help="hazard level as the workbook names it; 2in50, 2%%/50yr and 2475yr are the same level")
+    parser.add_argument("--hazard", metavar="LEVEL[,LEVEL...]", required=True,
+                        help="hazard level(s) as the workbook names them, comma-separated; 2in50, 2%%/50yr and "
+                             "2475yr are the same level")
     parser.add_argument("--out", metavar="DIR", type=Path,
-                        help="output folder (default: reports/<workbook stem>-<LEVEL>/)")
+                        help="output folder (default: reports/<workbook stem>-<LEVEL>/); with several levels, "
+                             "one folder per level: DIR/<LEVEL>/ (default reports/<workbook stem>-<LEVEL>/)")
     parser.add_argument("--format", metavar="FORMATS", type=_job_formats, default=JOB_FORMATS,
                         help="what to write besides the CSV files, comma-separated: html, pdf (the report), "
                              "xlsx (summary.xlsx, the summary table for a spreadsheet); default: html,pdf,xlsx")
@@ -126,7 +129,8 @@ def build_parser() -> argparse.ArgumentParser:
                         help="seed of every random draw; the same inputs and seed give the same numbers (default 0)")
     parser.add_argument("--oq-hazard", metavar="CSV", type=Path,
                         help="OpenQuake hazard-curve or hazard-map CSV for the site: the level's motions "
-                             "are scaled so that their ground motions match its PGA at LEVEL")
+                             "are scaled so that their ground motions match its PGA at LEVEL; a curve also "
+                             "gives each item's fragilities (fragility/) and annual rates of failure")
     parser.add_argument("--oq-site", metavar="SITE",
                         help="which site of a multi-site OpenQuake file: a row number (0 = first), a "
                              "custom_site_id, or lon,lat (write --oq-site=-122.5,38.1 when lon is negative)")
@@ -212,6 +216,52 @@ def build_calibrate_parser() -> argparse.ArgumentParser:
     parser.add_argument("--format", metavar="FORMATS", type=_formats, default=FORMATS,
                         help="report formats, comma-separated: html, pdf (default: html,pdf)")
     _add_allow_records_outside(parser)
+    parser.add_argument("--quiet", action="store_true", help="do not print progress")
+    return parser
+
+
+BATCH_DESCRIPTION = """\
+Assess a portfolio of buildings, each with its own workbook, and report what
+changed since the previous run. PORTFOLIO is a workbook with a sheet
+'buildings' (columns building, workbook, and optionally oq_hazard and level;
+paths relative to the portfolio) or a folder of workbooks (each one a building
+named by its file name). A building's level is its row's level, else --hazard,
+else the one level its workbook defines. Writes into --out one folder per
+building (what assess WORKBOOK --hazard LEVEL writes), portfolio.csv and
+portfolio.html (items by risk and action per building, cases simulated and
+reused) and changes.csv (what changed since the previous run in --out).
+Simulations already run for the same item, motion and engine are reused
+from --out/.cache, so an edited workbook re-simulates only what it changed."""
+
+
+def build_batch_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="assess batch", description=BATCH_DESCRIPTION, formatter_class=argparse.RawDescriptionHelpFormatter,
+        epilog=EPILOG)
+    parser.add_argument("portfolio", metavar="PORTFOLIO", type=Path,
+                        help="portfolio workbook (.xlsx, sheet buildings) or a folder of workbooks")
+    parser.add_argument("--out", metavar="DIR", type=Path,
+                        help="output folder (default: reports/<portfolio stem>/)")
+    parser.add_argument("--hazard", metavar="LEVEL",
+                        help="level of the buildings whose row gives none (default: the one level of each "
+                             "workbook); 2in50, 2%%/50yr and 2475yr are the same level")
+    parser.add_argument("--oq-hazard", metavar="CSV", type=Path,
+                        help="OpenQuake hazard curve for the buildings whose row gives no oq_hazard: the "
+                             "items' fragilities are integrated over it into annual rates (unlike the main "
+                             "command's --oq-hazard, it does not rescale the level's motions)")
+    parser.add_argument("--scheduler", metavar="ADDRESS",
+                        help="run the simulations on the Dask distributed cluster at ADDRESS "
+                             "(default: this machine's cores); the numbers do not depend on it")
+    parser.add_argument("--format", metavar="FORMATS", type=_job_formats, default=JOB_FORMATS,
+                        help="what to write into each building's folder besides the CSV files: html, pdf, "
+                             "xlsx (default: html,pdf,xlsx)")
+    parser.add_argument("--seed", metavar="N", type=_whole_number(0), default=0,
+                        help="seed of every random draw (default 0)")
+    parser.add_argument("--jobs", metavar="N", type=_whole_number(1),
+                        help="threads for the time-history simulation (default: all cores)")
+    parser.add_argument("--allow-files-outside", action="store_true",
+                        help="read workbooks and hazard curves outside the portfolio's folder, and records "
+                             "outside their workbook's folder (default: refused)")
     parser.add_argument("--quiet", action="store_true", help="do not print progress")
     return parser
 
@@ -319,6 +369,8 @@ def _main(argv: list[str] | None) -> int:
         args, command = build_simulate_parser().parse_args(argv[1:]), _simulate
     elif argv and argv[0] == "calibrate":
         args, command = build_calibrate_parser().parse_args(argv[1:]), _calibrate
+    elif argv and argv[0] == "batch":
+        args, command = build_batch_parser().parse_args(argv[1:]), _batch
     else:
         args = build_parser().parse_args(argv)  # argparse exits with 2 on a wrong option
         command = _assess
@@ -348,20 +400,17 @@ def _main(argv: list[str] | None) -> int:
 
 
 def _assess(args: argparse.Namespace, say) -> int:
-    from assess.hazard.levels import parse_level
     from assess.inventory import read_workbook
     from assess.output import check_output_folder, render_outputs
     from assess.pipeline import run_assessment
 
-    try:
-        level_name = parse_level(args.hazard).name
-    except ValueError as error:
-        raise InputError([Problem(file="--hazard", message=str(error))]) from None
+    levels = _levels(args.hazard)
     if args.jobs is not None:
         import numba
         numba.set_num_threads(min(args.jobs, numba.config.NUMBA_NUM_THREADS))
-    out_dir = args.out or Path("reports") / f"{args.workbook.stem}-{level_name}"
-    check_output_folder(out_dir)
+    out_dirs = [_level_out_dir(args.out, args.workbook, name, several=len(levels) > 1) for name, _ in levels]
+    for out_dir in out_dirs:
+        check_output_folder(out_dir)
     say(f"reading {args.workbook}")
     inventory = read_workbook(args.workbook)
     raise_if_any(_hazard_problems(inventory, args.allow_records_outside))
@@ -369,32 +418,66 @@ def _assess(args: argparse.Namespace, say) -> int:
     if args.oq_hazard is not None:
         from assess.hazard.openquake import read_openquake_hazard
         oq_hazard = read_openquake_hazard(args.oq_hazard, site=_oq_site(args.oq_site))
+        if oq_hazard.kind != "curve":
+            say(f"{args.oq_hazard.name} is a hazard map: the motions are scaled to it; annual rates need a "
+                "hazard curve")
     calibration = None
     if args.calibration is not None:
         from assess.calibration.apply import read_calibration
         calibration = read_calibration(args.calibration)
-    runner = None
     if args.scheduler is not None:
-        from assess.mechanics.distributed import DaskRunner
         say(f"connecting to the Dask scheduler at {args.scheduler}")
-        runner = DaskRunner.connect(args.scheduler)
+    runner = _engine_runner(args.scheduler)  # this machine's threads, or a Dask cluster
+    results = []
     try:
-        result = run_assessment(inventory, args.hazard, seed=args.seed, progress=say, oq_hazard=oq_hazard,
-                                derive_floors_roof=args.derive_floors, calibration=calibration, runner=runner)
+        for (_, text), out_dir in zip(levels, out_dirs):  # every level computed before any is written
+            result = run_assessment(inventory, text, seed=args.seed, progress=say, oq_hazard=oq_hazard,
+                                    derive_floors_roof=args.derive_floors, calibration=calibration, runner=runner,
+                                    hazard_curve=oq_hazard if oq_hazard is not None and oq_hazard.kind == "curve"
+                                    else None)
+            results.append(_with_comparison(result, args.compare_with, out_dir / "summary.csv", say))
     finally:
-        if runner is not None:
-            runner.close()
-    result = _with_comparison(result, args.compare_with, out_dir / "summary.csv", say)
-    say("rendering " + ", ".join(["summary.csv", "motions.csv"] + [
-        "summary.xlsx" if f == "xlsx" else f"report.{f}" for f in args.format]))
-    files = render_outputs(result, args.format, units=args.units)
-    written = _write_uninterrupted(files, out_dir)
-    counts = result.risk_counts()
-    say(f"{counts['high']} high, {counts['moderate']} moderate, {counts['low']} low risk, "
-        f"{counts['anchored']} anchored")
-    for path in written:
-        print(path)
+        close = getattr(runner, "close", None)  # a cluster's client
+        if close is not None:
+            close()
+    for result, out_dir in zip(results, out_dirs):
+        say(f"rendering {result.level_label}: " + ", ".join(["summary.csv", "motions.csv"] + [
+            "summary.xlsx" if f == "xlsx" else f"report.{f}" for f in args.format]
+            + (["fragility/"] if result.curve_risk is not None else [])))
+        others = tuple(other for other in results if other is not result)
+        files = render_outputs(result, args.format, units=args.units, other_levels=others)
+        written = _write_uninterrupted(files, out_dir)
+        counts = result.risk_counts()
+        say(f"{result.level_label}: {counts['high']} high, {counts['moderate']} moderate, {counts['low']} low risk, "
+            f"{counts['anchored']} anchored")
+        for path in written:
+            print(path)
     return EXIT_OK
+
+
+def _levels(text: str) -> list[tuple[str, str]]:
+    """``--hazard`` as (folder name, text) per level, in order; a level given twice is refused."""
+    from assess.hazard.levels import parse_level
+
+    levels, seen = [], {}
+    for part in [p.strip() for p in str(text).split(",")]:
+        try:
+            name = parse_level(part).name
+        except ValueError as error:
+            raise InputError([Problem(file="--hazard", message=str(error))]) from None
+        if name in seen:
+            raise InputError([Problem(file="--hazard", message=f"'{part}' is the level '{seen[name]}' again.",
+                                      fix="give each level once.")])
+        seen[name] = part
+        levels.append((name, part))
+    return levels
+
+
+def _level_out_dir(out: Path | None, workbook: Path, level_name: str, several: bool) -> Path:
+    """Where a level's files go: ``--out`` (one level), ``--out/<LEVEL>`` (several), else the default."""
+    if out is None:
+        return Path("reports") / f"{workbook.stem}-{level_name}"
+    return out / level_name if several else out
 
 
 def _calibrate(args: argparse.Namespace, say) -> int:
@@ -433,6 +516,69 @@ def _calibrate(args: argparse.Namespace, say) -> int:
     for path in written:
         print(path)
     return EXIT_OK
+
+
+def _batch(args: argparse.Namespace, say) -> int:
+    from assess import batch
+    from assess.cache import CachingRunner
+    from assess.hazard.levels import parse_level
+
+    if args.hazard is not None:
+        try:
+            parse_level(args.hazard)
+        except ValueError as error:
+            raise InputError([Problem(file="--hazard", message=str(error))]) from None
+    if args.jobs is not None:
+        import numba
+        numba.set_num_threads(min(args.jobs, numba.config.NUMBA_NUM_THREADS))
+    out_dir = args.out or batch.default_out_dir(args.portfolio)
+    batch.check_portfolio_folder(out_dir)
+    say(f"reading {args.portfolio}")
+    buildings = batch.read_portfolio(args.portfolio, allow_outside=args.allow_files_outside)
+    prepared = batch.prepare_buildings(
+        buildings, level=args.hazard, oq_hazard=args.oq_hazard,
+        hazard_problems=lambda inventory: _hazard_problems(inventory, args.allow_files_outside), say=say)
+    runner = CachingRunner(_engine_runner(args.scheduler), Path(out_dir) / batch.CACHE_FOLDER)
+    say(f"{len(prepared)} buildings; results are reused from {Path(out_dir) / batch.CACHE_FOLDER}")
+    try:
+        staged = batch.run_portfolio(prepared, out_dir, runner=runner, seed=args.seed, formats=args.format,
+                                     say=say)
+    finally:
+        close = getattr(runner.inner, "close", None)  # a cluster's client
+        if close is not None:
+            close()
+    try:
+        _Interrupt.stop_if_received()
+        _Interrupt.deferred = True
+        try:
+            staged.commit()
+            _Interrupt.written_to = Path(out_dir)
+        finally:
+            _Interrupt.deferred = False
+    finally:
+        staged.discard()
+    _Interrupt.stop_if_received()
+    for message in runner.write_errors[:3]:
+        say(f"could not store results in the cache ({message}); they will be simulated again next time")
+    changed = staged.changes["change"].value_counts()
+    say(f"{staged.cases_simulated} cases simulated, {staged.cases_reused} reused; changes since the previous "
+        f"run: " + (", ".join(f"{n} {kind}" for kind, n in changed.items()) or "none"))
+    for name in staged.files:
+        print(Path(out_dir) / name)
+    return EXIT_OK
+
+
+def _engine_runner(scheduler):
+    """What simulates the cases the cache does not hold: this machine's threads, or a Dask cluster."""
+    from assess.mechanics.runner import LocalRunner
+    if scheduler is None:
+        return LocalRunner()
+    try:
+        from assess.mechanics.distributed import DaskRunner
+    except ImportError:
+        raise InputError([Problem(file="--scheduler", message="this installation of assess cannot run on a Dask "
+                                  "cluster.", fix="leave out --scheduler to run on this machine.")]) from None
+    return DaskRunner.connect(scheduler)
 
 
 def _with_comparison(result, explicit: Path | None, in_out_dir: Path, say):
@@ -478,14 +624,15 @@ def _hazard_problems(inventory, allow_records_outside: bool) -> list[Problem]:
     workbook = Path(inventory.path)
     problems = []
     for row in inventory.hazard.itertuples(index=False):
-        record_path = str(getattr(row, "record_path", "") or "")
-        why = check_record_location(record_path, workbook.parent) if record_path else None
-        if why and not allow_records_outside:
-            problems.append(Problem(file=workbook.name, sheet="hazard", row=int(row.row), column="record",
-                                    message=f"motion '{row.motion}': {why}",
-                                    fix="copy the record into the workbook's folder (or a subfolder) and "
-                                        "give its path relative to the workbook, or run with "
-                                        "--allow-records-outside if you trust this workbook."))
+        for column in ("record", "record_2"):
+            record_path = str(getattr(row, f"{column}_path", "") or "")
+            why = check_record_location(record_path, workbook.parent) if record_path else None
+            if why and not allow_records_outside:
+                problems.append(Problem(file=workbook.name, sheet="hazard", row=int(row.row), column=column,
+                                        message=f"motion '{row.motion}': {why}",
+                                        fix="copy the record into the workbook's folder (or a subfolder) and "
+                                            "give its path relative to the workbook, or run with "
+                                            "--allow-records-outside if you trust this workbook."))
         vp = float(row.vp_m_s)
         if not math.isnan(vp) and vp == 0.0:
             problems.append(Problem(file=workbook.name, sheet="hazard", row=int(row.row), column="vp_cm_s",

@@ -87,12 +87,15 @@ def csv_text(table: pd.DataFrame) -> str:
     return neutralise_formulas(table).to_csv(index=False, float_format="%.6g", lineterminator="\n")
 
 
-def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: str = "si") -> dict[str, bytes]:
+def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: str = "si",
+                   other_levels: tuple[AssessmentResult, ...] = ()) -> dict[str, bytes]:
     """All files of a run, by name, as bytes (nothing is written here).
 
     ``formats`` may hold ``html``, ``pdf`` (the report) and ``xlsx``
     (summary.xlsx, :func:`assess.report.spreadsheet.summary_workbook`, with
-    inches beside centimetres when ``units`` is ``us``).
+    inches beside centimetres when ``units`` is ``us``). ``other_levels``, the
+    results of the other levels of the same run, add their sheets to summary.xlsx
+    after this level's.
     """
     files = {
         "summary.csv": csv_text(result.summary).encode(),
@@ -101,7 +104,13 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: st
     if "xlsx" in formats:
         from assess.report.spreadsheet import summary_workbook
 
-        files["summary.xlsx"] = summary_workbook({result.level_label: result.summary}, units=units)
+        sheets = {result.level_label: result.summary}
+        sheets.update({other.level_label: other.summary for other in other_levels})
+        files["summary.xlsx"] = summary_workbook(sheets, units=units)
+    if result.curve_risk is not None:
+        from assess.fragility.stripes import fragility_files
+
+        files.update(fragility_files(result.curve_risk, result.summary))
     if result.comparison is not None:
         files["comparison.csv"] = csv_text(result.comparison).encode()
     if "html" in formats or "pdf" in formats:

@@ -26,6 +26,8 @@ from assess.fragility import (
 )
 from assess.hazard.motions import motions_by_item, select_level
 from assess.hazard.records import MIN_DURATION_S, Record, pulse_record, read_record
+from assess.fragility.friction_range import expand_cases, with_mu_range
+from assess.fragility.planar import planar_runs, with_planar_peaks
 from assess.inventory import Inventory
 from assess.mechanics.block import Block
 from assess.mechanics.engine import simulate
@@ -44,7 +46,8 @@ DEFAULT_PULSE = "B"
 
 def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
                    progress: Progress = lambda message: None, oq_hazard=None,
-                   derive_floors_roof: int | None = None, calibration=None, runner=None) -> AssessmentResult:
+                   derive_floors_roof: int | None = None, calibration=None, runner=None,
+                   hazard_curve=None) -> AssessmentResult:
     """Assess every item of ``inventory`` under the motions of hazard level ``level_text``.
 
     ``oq_hazard`` (an :class:`~assess.hazard.openquake.OpenQuakeHazard`)
@@ -61,24 +64,29 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
 
     ``runner`` runs the engine's cases (:mod:`assess.mechanics.runner`; default: this machine's threads).
 
+    ``hazard_curve`` (an OpenQuake hazard *curve*) adds each item's fragilities over stripes of floor
+    acceleration and their annual rates over the curve (:mod:`assess.fragility.stripes`); it does not
+    change the level's motions (``oq_hazard`` does).
+
     Raises :class:`~assess.errors.InputError` when the level is missing, a
     floor has no motion, or a motion cannot be described by PTA and Tp.
     """
     runner = runner if runner is not None else LocalRunner()
+    step = functools.partial(_assess, inventory, level_text, seed, progress, oq_hazard, derive_floors_roof,
+                             runner=runner, hazard_curve=hazard_curve)
     # --- calibration (assess.calibration.apply): run twice, as declared and with the effect
     if calibration is not None:
         from assess.calibration.apply import check_applies, with_declared
         check_applies(calibration, inventory.equipment)
-        declared = _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, None, runner)
+        declared = step(calibration=None)
         progress(f"again with the calibration {calibration.file}")
-        calibrated = _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, calibration,
-                             runner)
+        calibrated = step(calibration=calibration)
         return with_declared(calibrated, declared, calibration)
-    return _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, None, runner)
+    return step(calibration=None)
 
 
 def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, calibration,
-            runner) -> AssessmentResult:
+            runner, hazard_curve) -> AssessmentResult:
     """:func:`run_assessment` with ``calibration`` applied (None: as declared)."""
     workbook_name = inventory.path.name
     settings = inventory.settings
@@ -124,22 +132,37 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     cases = _item_motion_direction_cases(freestanding, pairs)
     progress("preparing the motions to simulate")
     simulated_motions, simulated_as = _simulated_motions(level_motions, workbook_name, settings, seed)
-    cases, runs = _add_simulation(cases, simulated_motions, progress, runner, calibration)
+    record_pairs = _record_pairs(level_motions, simulated_motions, workbook_name, hazard_notes, progress)
+    cases, runs = _add_simulation(cases, simulated_motions, progress, runner, calibration, record_pairs)
     cases = add_pulse_share(_add_demand(cases, constants))
     cases["demand_source"] = motion_sources(cases, simulated_as, constants)
-    demand = governing_demand(cases, runs, constants, room_quantile=1.0 - float(settings["risk_pf_moderate"]))
-    summary, flags = _summarise(equipment, cases, demand, constants, settings)
-    histories = _worst_histories(cases, runs, summary, simulated_motions)
+    planar = planar_runs(cases, record_pairs)  # items that cannot uplift, under both components at once
+    room_quantile = 1.0 - float(settings["risk_pf_moderate"])
+    demand = governing_demand(cases, runs, constants, room_quantile=room_quantile, planar=planar)
+    nominal = cases["mu_nominal"].to_numpy()
+    summary, flags = _summarise(equipment, cases[nominal], demand, constants, settings)
+    summary = with_mu_range(summary, cases, runs, planar, constants, settings, room_quantile, classify_risk)
+    curve = None
+    summary_columns = SUMMARY_COLUMNS
+    if hazard_curve is not None:  # the whole curve: fragilities over stripes, annual rates (at the nominal mu)
+        from assess.fragility.stripes import CURVE_COLUMNS, curve_risk
+        curve = curve_risk(cases[nominal], simulated_motions, level_motions, hazard_curve, settings, runner,
+                           progress, record_pairs=record_pairs)
+        summary = summary.merge(curve.table, on="id", how="left")
+        summary_columns = SUMMARY_COLUMNS + CURVE_COLUMNS
+    histories = _worst_histories(cases, runs[nominal[runs["case"].to_numpy()]], summary, simulated_motions,
+                                 record_pairs)
     regression = {"zeta": constants.zeta, "eta": constants.eta, "sigma": constants.sigma,
                   "im_min": constants.im_min, "im_max": constants.im_max,
                   "source": _regression_source(settings)}
     return AssessmentResult(
         workbook=inventory.path, facility=str(settings.get("facility", "")),
         site=str(settings.get("site", "")), level=level, level_label=level_label,
-        summary=summary[SUMMARY_COLUMNS], motions=_motion_table(cases), flags=flags,
+        summary=summary[summary_columns], motions=_motion_table(with_planar_peaks(cases[nominal], planar)),
+        flags=flags,
         regression=regression, settings=dict(settings), simulated=True, seed=seed,
-        histories=histories, hazard_notes=hazard_notes, suite_runs=suite_runs(cases, runs),
-        solver_runs={str(k): int(v) for k, v in runs["solver"].value_counts().items()},
+        histories=histories, hazard_notes=hazard_notes, suite_runs=suite_runs(cases, runs, planar),
+        solver_runs={str(k): int(v) for k, v in runs["solver"].value_counts().items()}, curve_risk=curve,
     )
 
 
@@ -238,6 +261,35 @@ def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str, settings
     return motions, kinds
 
 
+def _record_pairs(level_motions: pd.DataFrame, motions: dict, workbook_name: str, notes: list,
+                  progress: Progress) -> dict[int, tuple[Record, Record]]:
+    """Per motion with ``record_2``: its accelerations along the items' width and depth
+    (:func:`assess.hazard.record_pairs.item_axes_pair`); ``motions`` then holds the width one."""
+    from assess.hazard.record_pairs import item_axes_pair
+
+    pairs = {}
+    for row in level_motions.itertuples(index=False):
+        second_path = str(getattr(row, "record_2_path", "") or "")
+        if not second_path or not row.record_path:
+            continue
+        k = int(row.motion_key)
+        first = _motion_record(row.record_path, row.scale, row.motion, row.row, workbook_name)
+        try:
+            second = _motion_record(second_path, row.scale, row.motion, row.row, workbook_name)
+        except InputError as error:  # say which of the two components it is
+            raise InputError([replace(problem, message=f"record_2: {problem.message}")
+                              for problem in error.problems]) from None
+        width, depth, note = item_axes_pair(first, second, float(row.azimuth_deg), row.motion, row.row,
+                                            workbook_name)
+        if note:
+            notes.append(note)
+            progress(note)
+        pairs[k] = (width, depth)
+        motions[k] = [(width, f"records {first.name} + {second.name} x {float(row.scale):g}"
+                       + (f", turned {float(row.azimuth_deg):g} deg" if float(row.azimuth_deg) else ""))]
+    return pairs
+
+
 def _case_block(case, calibration=None) -> Block:
     block = Block(half_width_m=float(case.half_width_m), cg_height_m=float(case.cg_height_m),
                   height_m=float(case.height_m), mu=float(case.mu), mu_static=float(case.mu_static))
@@ -255,21 +307,26 @@ def _majority_mode(modes: pd.Series) -> str:
 
 
 def _add_simulation(cases: pd.DataFrame, motions: dict[int, list[tuple[Record, str]]],
-                    progress: Progress, runner, calibration=None) -> tuple[pd.DataFrame, pd.DataFrame]:
+                    progress: Progress, runner, calibration=None,
+                    record_pairs: dict | None = None) -> tuple[pd.DataFrame, pd.DataFrame]:
     """Simulate every case under every history of its motion: ``sim_*`` columns, and the runs.
 
     A case's ``sim_*`` values summarise its runs (one per history): the
     median peak sliding, residual and θmax/α, the share of runs that overturn
     (``sim_overturn_share``; ``sim_overturned`` when at least half do), uplift
     in any run, the most frequent mode. The second table holds every run.
+    A motion in ``record_pairs`` runs direction 2 under its component along the items' depth.
     """
-    histories = [(name, r) for name in motions for r in range(len(motions[name]))]
+    record_pairs = record_pairs or {}
+    histories = [(name, r, 1) for name in motions for r in range(len(motions[name]))] + [
+        (name, 0, 2) for name in record_pairs]
     index_of = {key: j for j, key in enumerate(histories)}
     run_case, run_history = [], []
     for k, case in enumerate(cases.itertuples(index=False)):
+        axis = 2 if case.motion_key in record_pairs and case.direction == 2 else 1
         for r in range(len(motions[case.motion_key])):
             run_case.append(k)
-            run_history.append(index_of[(case.motion_key, r)])
+            run_history.append(index_of[(case.motion_key, r, axis)])
     run_case = np.asarray(run_case)
     blocks_by_case = [_case_block(case, calibration) for case in cases.itertuples(index=False)]
     cases = cases.assign(block=blocks_by_case)  # built once: the histories re-run these blocks
@@ -282,9 +339,10 @@ def _add_simulation(cases: pd.DataFrame, motions: dict[int, list[tuple[Record, s
             last[0] = done
             progress(f"simulated {done} of {total} runs ({len(cases)} cases)")
 
+    records = [motions[n][r][0] if axis == 1 else record_pairs[n][1] for n, r, axis in histories]
     peaks = runner.simulate_cases([blocks_by_case[k] for k in run_case],
-                           [motions[n][r][0].accel_g for n, r in histories],
-                           [motions[n][r][0].dt_s for n, r in histories], np.asarray(run_history),
+                           [record.accel_g for record in records],
+                           [record.dt_s for record in records], np.asarray(run_history),
                            progress=report)
     theta_max_over_alpha = peaks.theta_max_over_alpha
     if calibration is not None:  # over α of the declared box, feet or not (SPEC §5)
@@ -316,7 +374,7 @@ def _add_simulation(cases: pd.DataFrame, motions: dict[int, list[tuple[Record, s
 
 
 def _worst_histories(cases: pd.DataFrame, runs: pd.DataFrame, summary: pd.DataFrame,
-                     motions: dict[int, list[tuple[Record, str]]]) -> list[dict]:
+                     motions: dict[int, list[tuple[Record, str]]], record_pairs: dict | None = None) -> list[dict]:
     """Time histories of every item's worst run, worst items first (the report draws the first
     :data:`assess.report.render.HISTORY_FIGURES` as Fig. 7 of the paper, and every one small in the item's details).
 
@@ -334,6 +392,8 @@ def _worst_histories(cases: pd.DataFrame, runs: pd.DataFrame, summary: pd.DataFr
     for run in worst.itertuples(index=False):
         case = cases.iloc[int(run.case)]
         record, description = motions[case.motion_key][int(run.realization)]
+        if record_pairs and case.motion_key in record_pairs and int(case.direction) == 2:
+            record = record_pairs[case.motion_key][1]
         response = simulate(case["block"], record.accel_g, record.dt_s, return_history=True)
         floor = np.zeros(response.time_s.size)
         floor[:min(record.accel_g.size, floor.size)] = record.accel_g[:floor.size]
@@ -351,7 +411,7 @@ def _worst_histories(cases: pd.DataFrame, runs: pd.DataFrame, summary: pd.DataFr
 def _item_motion_direction_cases(items: pd.DataFrame, pairs: pd.DataFrame) -> pd.DataFrame:
     """One row per item x motion x direction with the block's geometry in that direction."""
     item_columns = ["id", "floor", "height_m", "width_m", "depth_m", "cg_height_m", "mu",
-                    "mu_static", "clearance_m"]
+                    "mu_static", "clearance_m"] + [c for c in ("mu_low", "mu_high") if c in items]
     motion_columns = ["id", "motion", "motion_key", "pta_g", "tp_s", "vp_m_s", "pulse_source"] + (
         ["derived"] if "derived" in pairs else [])
     base = pairs[motion_columns].assign(pair_index=range(len(pairs))) \
@@ -365,7 +425,7 @@ def _item_motion_direction_cases(items: pd.DataFrame, pairs: pd.DataFrame) -> pd
     cases["alpha_rad"] = slenderness(cases["half_width_m"], cases["cg_height_m"])
     cases["p_rad_s"] = frequency_parameter(cases["half_width_m"], cases["cg_height_m"], cases["height_m"])
     cases["inertia_ratio"] = inertia_ratio(cases["half_width_m"], cases["cg_height_m"], cases["height_m"])
-    return cases
+    return expand_cases(cases)  # an item with a μ range: its cases at its μ values (friction_range)
 
 
 def _add_demand(cases: pd.DataFrame, constants: RegressionConstants) -> pd.DataFrame:
@@ -449,7 +509,7 @@ def _summarise(equipment: pd.DataFrame, cases: pd.DataFrame, demand: pd.DataFram
         row["governing_motion"] = case["motion"]
         row.update(demand.loc[item.id].to_dict())
         row["overturn_fraction"] = row["p_overturn"]
-        uplift = bool(item_cases["sim_uplift"].any())
+        uplift = bool(item_cases["sim_uplift"].any()) or bool(row.get("demand_uplift", False))
         item_flags = _item_flags(item, item_cases, constants)
         flags.extend(item_flags)
         row["flags"] = "; ".join(flag.code for flag in item_flags)
@@ -589,8 +649,10 @@ def _suite_share_text(probability: float, row: dict) -> str:
     """"2 of its 3 motions" for records, "12 % of its 30 synthetic histories" otherwise."""
     motions, histories = int(row["suite_motions"]), int(row["suite_histories"])
     if histories == motions:
-        count = int(round(probability * motions))
-        return f"{count} of its {motions} motion{'s' if motions != 1 else ''}"
+        count = probability * motions
+        if abs(count - round(count)) > 1e-9:  # runs weighted over a range of mu
+            return f"a weighted {probability:.0%} of its {motions} motion{'s' if motions != 1 else ''} over its range of mu"
+        return f"{int(round(count))} of its {motions} motion{'s' if motions != 1 else ''}"
     return f"{probability:.0%} of its {histories} simulated histories ({motions} motion{'s' if motions != 1 else ''})"
 
 

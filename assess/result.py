@@ -19,6 +19,8 @@ SUMMARY_COLUMNS = [
     "p_beyond_clearance_low", "p_beyond_clearance_high", "p_overturn_low", "p_overturn_high",
     "risk_range", "suite_motions", "suite_histories", "demand_note", "action_kind", "priority", "consequence",
     "priority_score", "anchor_force_kn", "anchor_moment_knm", "anchor_tension_kn", "anchor_basis", "what_if",
+    "demand_planar", "mu_low", "mu_high", "risk_mu_low", "risk_mu_high", "p_beyond_clearance_mu_low",
+    "p_beyond_clearance_mu_high", "mu_range_note",
 ]
 
 #: Columns of ``motions.csv`` in order (SPEC §3 first, then extras).
@@ -28,6 +30,7 @@ MOTION_COLUMNS = [
     "floor", "vp_cm_s", "b_over_h", "alpha_rad", "mode", "sliding_p84_cm", "capacity_edp",
     "flags", "mode_from_rest", "sim_sliding_residual_cm", "sim_uplift", "sim_motion", "sim_solver",
     "sim_realizations", "sim_overturn_share", "pulse_source", "pulse_share", "demand_source",
+    "planar_sliding_cm",
 ]
 
 RISK_CLASSES = ("high", "moderate", "low", "anchored")
@@ -89,6 +92,9 @@ class AssessmentResult:
     comparison : DataFrame or None
         Against a previous run (:func:`assess.comparison.compare_summaries`):
         which items changed risk class and why; written as comparison.csv.
+    curve_risk : CurveRisk or None
+        With a hazard curve: each item's fragilities over stripes of floor acceleration and their
+        annual rates (:class:`assess.fragility.stripes.CurveRisk`); its columns are also in ``summary``.
     """
 
     workbook: Path
@@ -108,6 +114,7 @@ class AssessmentResult:
     comparison: pd.DataFrame | None = None
     suite_runs: pd.DataFrame | None = None
     solver_runs: dict | None = None
+    curve_risk: object | None = None
 
     def risk_counts(self) -> dict[str, int]:
         """Number of items (rows, not quantity) in each risk class."""

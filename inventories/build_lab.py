@@ -50,10 +50,10 @@ CONSEQUENCE_BY_PREFIX = {"GAS": "hazardous", "LN2": "hazardous", "CAB": "hazardo
 
 
 def item(id, name, room, floor, h, w, d, kg, mu, clearance, notes, source,
-         mu_static=None, cg=None, anchored=False, qty=1):
+         mu_static=None, cg=None, anchored=False, qty=1, mu_range=(None, None)):
     """One row of the `equipment` sheet, in cm and kg (SPEC.md section 1)."""
     return dict(id=id, name=name, room=room, floor=floor, height_cm=h, width_cm=w,
-                depth_cm=d, mass_kg=kg, mu=mu, mu_static=mu_static,
+                depth_cm=d, mass_kg=kg, mu=mu, mu_static=mu_static, mu_low=mu_range[0], mu_high=mu_range[1],
                 clearance_cm=clearance, cg_height_cm=cg,
                 anchored="yes" if anchored else "no", quantity=qty,
                 consequence=CONSEQUENCE_BY_PREFIX.get(id.split("-")[0], "ordinary"),
@@ -61,26 +61,28 @@ def item(id, name, room, floor, h, w, d, kg, mu, clearance, notes, source,
 
 
 # The paper's three prototypes, Table 1 height and width exactly, best-fit mu of
-# Table 3 (left column). Depth > width so that the Table 1 width governs.
+# Table 3 (left column). Depth > width so that the Table 1 width governs. mu_low
+# to mu_high: the best-fit to the slow-pull value of Table 3 (the two values the
+# paper gives for each prototype; the shake table matched the lower).
 def forma(id, room, floor, clearance, notes, qty=1):
     return item(id, "FORMA CO2 incubator, stacked pair (K&M prototype)", room, floor,
                 228.6, 62.2, 84.0, 330, 0.13, clearance, notes,
-                f"height, width: {T1}; mu 0.13: best fit, {T3} (slow pull 0.23); "
-                f"{PCAT} (stacked water-jacketed CO2 incubators on stand)", qty=qty)
+                f"height, width: {T1}; mu 0.13: best fit, {T3}; mu_low-mu_high 0.13-0.23: best fit to slow pull, "
+                f"{T3}; {PCAT} (stacked water-jacketed CO2 incubators on stand)", qty=qty, mu_range=(0.13, 0.23))
 
 
 def kelvinator(id, room, floor, clearance, notes):
     return item(id, "KELVINATOR refrigerator (K&M prototype)", room, floor,
                 213.4, 66.0, 81.0, 230, 0.17, clearance, notes,
-                f"height, width: {T1}; mu 0.17: best fit, {T3} (slow pull 0.28); "
-                f"{PCAT} (upright laboratory refrigerator, loaded)")
+                f"height, width: {T1}; mu 0.17: best fit, {T3}; mu_low-mu_high 0.17-0.28: best fit to slow pull, "
+                f"{T3}; {PCAT} (upright laboratory refrigerator, loaded)", mu_range=(0.17, 0.28))
 
 
 def asp(id, room, floor, clearance, notes):
     return item(id, "ASP refrigerator (K&M prototype)", room, floor,
                 180.3, 58.4, 74.0, 140, 0.20, clearance, notes,
-                f"height, width: {T1}; mu 0.20: best fit, {T3} (slow pull 0.31); "
-                f"{PCAT} (upright laboratory refrigerator, loaded)")
+                f"height, width: {T1}; mu 0.20: best fit, {T3}; mu_low-mu_high 0.20-0.31: best fit to slow pull, "
+                f"{T3}; {PCAT} (upright laboratory refrigerator, loaded)", mu_range=(0.20, 0.31))
 
 
 ULT = "−80 °C upright ultra-low freezer, loaded"
@@ -261,7 +263,7 @@ SOURCES = [
               "laboratory equipment subjected to strong earthquake shaking, Bull. Earthquake Eng. 8:1457-1477."),
     ("equipment: prototypes", f"FORMA 228.6 × 62.2 cm, KELVINATOR 213.4 × 66.0 cm, ASP 180.3 × 58.4 cm "
                               f"(height × width): {T1}. mu 0.13 / 0.17 / 0.20: best-fit values, {T3} left "
-                              "column (slow-pull values 0.23 / 0.28 / 0.31 given in `source` only). Depth and "
+                              "column; mu_low-mu_high from that best-fit value to the slow-pull value 0.23 / 0.28 / 0.31 of the same table. Depth and "
                               "mass: typical catalogue values, not measured; depth > width so that the Table 1 "
                               "width governs. Placed on floor 0 and floor 6, where the paper's motions act."),
     ("equipment: other items", "height, width, depth, mass: typical manufacturer-catalogue values for the class, "

@@ -41,7 +41,8 @@ def test_good_workbook_reads_to_documented_si_columns(make_workbook):
     equipment = inventory.equipment
     assert list(equipment.columns) == [
         "id", "name", "room", "floor", "height_m", "width_m", "depth_m", "mass_kg", "mu",
-        "mu_static", "clearance_m", "cg_height_m", "anchored", "quantity", "consequence", "row"]
+        "mu_static", "clearance_m", "cg_height_m", "anchored", "quantity", "consequence", "mu_low", "mu_high",
+        "row"]
     assert list(equipment["id"]) == ["INC-1", "FRZ-2", "BSC-3"]
     assert list(equipment["row"]) == [2, 3, 5]  # blank row 4 skipped
     first = equipment.iloc[0]
@@ -69,7 +70,7 @@ def test_good_workbook_reads_to_documented_si_columns(make_workbook):
     hazard = inventory.hazard
     assert list(hazard.columns) == [
         "level", "level_label", "motion", "all_floors", "floor", "pta_g", "tp_s", "vp_m_s",
-        "pulse", "record_path", "scale", "row"]
+        "pulse", "record_path", "scale", "record_2_path", "azimuth_deg", "row"]
     assert list(hazard["level"]) == ["2in50", "2in50", "10in50"]
     assert list(hazard["level_label"]) == ["2%/50yr", "2in50", "10in50"]
     assert inventory.levels == ["2in50", "10in50"]

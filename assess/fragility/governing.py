@@ -14,7 +14,16 @@ contributes the distribution of the model that governs for it:
   PTA and Tp alone lies outside the regression's domain (no vp to synthesise from).
 
 Per motion and history the sliding is the larger of the two base directions
-and the item overturns if it does in either. Over the suite:
+and the item overturns if it does in either; where the motion gives both
+horizontal components (``record`` and ``record_2``) and the item cannot
+uplift, it is instead the peak distance from rest of the block sliding in the
+plane under both at once (``planar``, :mod:`assess.fragility.planar`): the
+physical answer where it applies, the one-way answers being each component
+alone. An item with a μ range (:mod:`assess.fragility.friction_range`) runs
+at several μ values: each run weighs its motion's weight × its history's
+share × its μ value's weight, and the intervals count histories, not μ
+values (the μ values are a quadrature of a known distribution, not draws).
+Over the suite:
 ``demand_median_cm`` and ``demand_p84_cm`` are quantiles of the mixture,
 ``p_beyond_clearance`` and ``p_overturn`` its probabilities, with exact
 binomial intervals (:func:`~assess.fragility.suite.binomial_interval`) for
@@ -27,6 +36,7 @@ import numpy as np
 import pandas as pd
 from scipy import stats
 
+from assess.fragility.planar import planar_note
 from assess.fragility.regression import RegressionConstants, probability_of_exceedance, capacity_edp, sliding_quantile
 from assess.fragility.suite import (
     PULSE_SHARE_MIN, binomial_interval, effective_count, pulse_acceleration_share, quantile_interval,
@@ -41,8 +51,15 @@ DEMAND_COLUMNS = [
     "demand_source", "demand_median_cm", "demand_p84_cm", "demand_median_low_cm", "demand_median_high_cm",
     "demand_p84_low_cm", "demand_p84_high_cm", "demand_room_cm", "p_beyond_clearance", "p_beyond_clearance_low",
     "p_beyond_clearance_high", "p_overturn", "p_overturn_low", "p_overturn_high", "suite_motions",
-    "suite_histories", "theta_max_over_alpha", "demand_note",
+    "suite_histories", "theta_max_over_alpha", "demand_note", "demand_planar", "demand_uplift",
 ]
+
+
+def _node_columns(cases: pd.DataFrame) -> pd.DataFrame:
+    """``cases`` with ``mu_node`` and ``mu_weight`` (one node of weight 1 where no μ range was expanded)."""
+    if "mu_node" in cases and "mu_weight" in cases:
+        return cases
+    return cases.assign(mu_node=0, mu_weight=1.0)
 
 
 def motion_sources(cases: pd.DataFrame, simulated_as: dict, constants: RegressionConstants) -> pd.Series:
@@ -54,10 +71,12 @@ def motion_sources(cases: pd.DataFrame, simulated_as: dict, constants: Regressio
     both directions; ``cases`` needs ``pulse_share``, ``im`` and ``sim_uplift``.
     """
     kind = cases["motion_key"].map(simulated_as)
-    uplift = cases.groupby(["id", "motion_key"])["sim_uplift"].transform("any")
+    node = _node_columns(cases)["mu_node"]
+    keys = [cases["id"], cases["motion_key"], node]
+    uplift = cases["sim_uplift"].groupby(keys).transform("any")
     applies = regression_applies(cases["pulse_share"].fillna(1.0), cases["im"], constants.im_min,
                                  constants.im_max, uplift)
-    applies = pd.Series(applies, index=cases.index).groupby([cases["id"], cases["motion_key"]]).transform("all")
+    applies = pd.Series(applies, index=cases.index).groupby(keys).transform("all")
     return pd.Series(np.where(kind == RECORD, RECORD, np.where(applies, REGRESSION, kind)), index=cases.index)
 
 
@@ -68,7 +87,7 @@ def add_pulse_share(cases: pd.DataFrame) -> pd.DataFrame:
 
 
 def governing_demand(cases: pd.DataFrame, runs: pd.DataFrame, constants: RegressionConstants,
-                     room_quantile: float = 0.9) -> pd.DataFrame:
+                     room_quantile: float = 0.9, planar: pd.DataFrame | None = None) -> pd.DataFrame:
     """One row per item (index ``id``): :data:`DEMAND_COLUMNS`.
 
     ``demand_room_cm`` is the ``room_quantile`` quantile of the suite's
@@ -83,8 +102,16 @@ def governing_demand(cases: pd.DataFrame, runs: pd.DataFrame, constants: Regress
     runs : DataFrame
         One row per case × history: ``case`` (row of ``cases``),
         ``realization``, ``sliding_max_cm``, ``overturned``, ``theta_max_over_alpha``.
+    planar : DataFrame, optional
+        2-D peaks (:func:`assess.fragility.planar.planar_runs`): ``id``,
+        ``motion_key``, ``mu_node``, ``realization``, ``sliding_cm``; they take
+        the place of the larger one-way sliding of those runs.
+
+    ``cases`` may carry ``mu_node`` and ``mu_weight``
+    (:func:`assess.fragility.friction_range.expand_cases`).
     """
-    per_history = _per_history(cases, runs)
+    cases = _node_columns(cases)
+    per_history = _per_history(cases, runs, planar)
     regression = _regression_by_motion(cases, constants)
     rows = {}
     for item_id, item_cases in cases.groupby("id", sort=False):
@@ -93,20 +120,34 @@ def governing_demand(cases: pd.DataFrame, runs: pd.DataFrame, constants: Regress
     return pd.DataFrame.from_dict(rows, orient="index")[DEMAND_COLUMNS]
 
 
-def suite_runs(cases: pd.DataFrame, runs: pd.DataFrame) -> pd.DataFrame:
-    """One row per item × motion × history: ``id``, ``motion_key``, ``motion``, ``realization``, the larger
-    sliding of the two directions (``sliding_cm``), ``overturned`` in either, the larger ``theta`` (θmax/α)."""
+def suite_runs(cases: pd.DataFrame, runs: pd.DataFrame, planar: pd.DataFrame | None = None) -> pd.DataFrame:
+    """One row per item × motion × μ value × history: ``id``, ``motion_key``, ``mu_node``, ``motion``,
+    ``realization``, the larger sliding of the two directions (``sliding_cm``; the 2-D peak distance from
+    rest where ``planar`` gives it, then ``planar`` is True), ``overturned`` in either, the larger
+    ``theta`` (θmax/α), ``mu`` and ``mu_weight`` (the μ value and its weight; 1 without a μ range)."""
+    cases = _node_columns(cases)
     case = runs["case"].to_numpy()
-    table = runs.assign(id=cases["id"].to_numpy()[case], motion_key=cases["motion_key"].to_numpy()[case],
-                        motion=cases["motion"].to_numpy()[case])
-    return table.groupby(["id", "motion_key", "realization"], sort=False).agg(
+    table = runs if "uplift" in runs else runs.assign(uplift=False)
+    table = table.assign(id=cases["id"].to_numpy()[case], motion_key=cases["motion_key"].to_numpy()[case],
+                        motion=cases["motion"].to_numpy()[case], mu_node=cases["mu_node"].to_numpy()[case],
+                        mu=(cases["mu"].to_numpy()[case] if "mu" in cases else np.nan), mu_weight=cases["mu_weight"].to_numpy()[case])
+    keys = ["id", "motion_key", "mu_node", "realization"]
+    out = table.groupby(keys, sort=False).agg(
         motion=("motion", "first"), sliding_cm=("sliding_max_cm", "max"), overturned=("overturned", "any"),
-        theta=("theta_max_over_alpha", "max")).reset_index()
+        theta=("theta_max_over_alpha", "max"), mu=("mu", "first"), mu_weight=("mu_weight", "first"),
+        uplift=("uplift", "any")).reset_index()
+    out["planar"] = False
+    if planar is not None and len(planar):
+        in_plane = out[keys].merge(planar[keys + ["sliding_cm"]], on=keys, how="left")["sliding_cm"].to_numpy()
+        found = np.isfinite(in_plane)
+        out.loc[found, "sliding_cm"] = in_plane[found]
+        out.loc[found, "planar"] = True
+    return out
 
 
-def _per_history(cases: pd.DataFrame, runs: pd.DataFrame) -> dict:
-    """Per item: :func:`suite_runs` indexed by (motion_key, realization)."""
-    table = suite_runs(cases, runs).set_index(["motion_key", "realization"])
+def _per_history(cases: pd.DataFrame, runs: pd.DataFrame, planar: pd.DataFrame | None = None) -> dict:
+    """Per item: :func:`suite_runs` indexed by (motion_key, mu_node, realization)."""
+    table = suite_runs(cases, runs, planar).set_index(["motion_key", "mu_node", "realization"]).sort_index()
     return {item_id: frame.drop(columns="id") for item_id, frame in table.groupby("id", sort=False)}
 
 
@@ -117,47 +158,68 @@ def _regression_by_motion(cases: pd.DataFrame, constants: RegressionConstants) -
     median_cm = np.asarray(sliding_quantile(im, cases["pta_g"], cases["tp_s"], constants, 0.5)) * 100.0
     pf = np.asarray(probability_of_exceedance(im, capacity_edp(cases["clearance_m"], cases["pta_g"], cases["tp_s"]),
                                               constants.zeta, constants.eta, constants.sigma))
-    table = pd.DataFrame({"id": cases["id"], "motion_key": cases["motion_key"], "median_cm": median_cm, "pf": pf})
-    grouped = table.groupby(["id", "motion_key"], sort=False).max()
+    table = pd.DataFrame({"id": cases["id"], "motion_key": cases["motion_key"], "mu_node": cases["mu_node"],
+                          "median_cm": median_cm, "pf": pf})
+    grouped = table.groupby(["id", "motion_key", "mu_node"], sort=False).max()
     return {item_id: frame.reset_index(level=0, drop=True) for item_id, frame in grouped.groupby(level=0)}
 
 
 def _item_demand(item_cases: pd.DataFrame, histories: pd.DataFrame | None, regression: pd.DataFrame | None,
                  constants: RegressionConstants, room_quantile: float) -> dict:
     clearance_cm = float(item_cases["clearance_m"].iloc[0]) * 100.0
-    source_of = item_cases.drop_duplicates("motion_key").set_index("motion_key")["demand_source"]
+    units = item_cases.drop_duplicates(["motion_key", "mu_node"]).set_index(["motion_key", "mu_node"])
+    source_of = item_cases.sort_values("mu_weight", ascending=False, kind="stable") \
+        .drop_duplicates("motion_key").set_index("motion_key")["demand_source"].reindex(
+            item_cases["motion_key"].drop_duplicates())
     n_motions = len(source_of)
     values, weights = [], []
-    sampled_beyond, sampled_overturn, sampled_weights = [], [], []
+    # per run of a simulated motion: its history (motion, realization), that history's share, its μ weight
+    history_parts = []
     exact_beyond, exact_weight = 0.0, 0.0
     theta = 0.0
-    for key, source in source_of.items():
-        if histories is not None and key in histories.index.get_level_values(0):
-            runs = histories.loc[key]
+    planar_motions, uplift = set(), False
+    simulated = set(histories.index.droplevel(2)) if histories is not None else set()
+    for (key, node), unit in units.iterrows():
+        source, mu_weight = unit["demand_source"], float(unit["mu_weight"])
+        runs = None
+        if (key, node) in simulated:
+            runs = histories.loc[(key, node)]
             theta = max(theta, float(runs["theta"].max()))
-        else:
-            runs = None
         if source == REGRESSION:
-            median_cm, pf = regression.loc[key, ["median_cm", "pf"]]
+            weight = mu_weight / n_motions
+            median_cm, pf = regression.loc[(key, node), ["median_cm", "pf"]]
             if median_cm > 0.0:
                 quantiles = (np.arange(_LOGNORMAL_POINTS) + 0.5) / _LOGNORMAL_POINTS
                 values.extend(median_cm * np.exp(constants.sigma * stats.norm.ppf(quantiles)))
             else:
                 values.extend(np.zeros(_LOGNORMAL_POINTS))
-            weights.extend(np.full(_LOGNORMAL_POINTS, 1.0 / (n_motions * _LOGNORMAL_POINTS)))
-            exact_beyond += float(pf) / n_motions
-            exact_weight += 1.0 / n_motions
+            weights.extend(np.full(_LOGNORMAL_POINTS, weight / _LOGNORMAL_POINTS))
+            exact_beyond += float(pf) * weight
+            exact_weight += weight
             continue
         share = 1.0 / (n_motions * len(runs))
+        if runs["planar"].any():
+            planar_motions.add(key)
+        uplift = uplift or bool((runs["uplift"] & (runs["mu_weight"] > 0.0)).any())
         values.extend(runs["sliding_cm"].to_numpy())
-        weights.extend(np.full(len(runs), share))
-        sampled_beyond.extend((runs["sliding_cm"] > clearance_cm).to_numpy())
-        sampled_overturn.extend(runs["overturned"].to_numpy())
-        sampled_weights.extend(np.full(len(runs), share))
+        weights.extend(np.full(len(runs), share * mu_weight))
+        history_parts.append(pd.DataFrame({
+            "motion_key": key, "realization": runs.index.to_numpy(), "share": share, "mass": mu_weight,
+            "beyond": mu_weight * (runs["sliding_cm"].to_numpy() > clearance_cm),
+            "overturn": mu_weight * runs["overturned"].to_numpy(dtype=float)}))
+    # per history: its weight (share × the μ weight of its simulated runs), and the μ-weighted share of its
+    # runs beyond the clearance / overturned; the intervals count histories, not μ values
+    sampled_weights, sampled_beyond, sampled_overturn = [], [], []
+    if history_parts:
+        per_history = pd.concat(history_parts).groupby(["motion_key", "realization"], sort=False).agg(
+            share=("share", "first"), mass=("mass", "sum"), beyond=("beyond", "sum"), overturn=("overturn", "sum"))
+        sampled_weights = (per_history["share"] * per_history["mass"]).tolist()
+        sampled_beyond = (per_history["beyond"] / per_history["mass"]).tolist()
+        sampled_overturn = (per_history["overturn"] / per_history["mass"]).tolist()
     p_beyond, p_beyond_interval = _probability(exact_beyond, exact_weight, sampled_beyond, sampled_weights)
     p_overturn, p_overturn_interval = _probability(0.0, exact_weight, sampled_overturn, sampled_weights)
     intervals = _quantile_intervals(values, weights, sampled_weights, exact_weight)
-    sources = [s for s in (RECORD, REGRESSION, SYNTHETIC, PULSE) if s in set(source_of)]
+    sources = [s for s in (RECORD, REGRESSION, SYNTHETIC, PULSE) if s in set(units["demand_source"])]
     return {
         "demand_source": " + ".join("records" if s == RECORD else s for s in sources),
         "demand_median_cm": weighted_quantile(values, weights, 0.5),
@@ -169,7 +231,10 @@ def _item_demand(item_cases: pd.DataFrame, histories: pd.DataFrame | None, regre
         "p_overturn": p_overturn, "p_overturn_low": p_overturn_interval[0], "p_overturn_high": p_overturn_interval[1],
         "suite_motions": n_motions, "suite_histories": len(sampled_weights),
         "theta_max_over_alpha": theta,
-        "demand_note": _source_note(item_cases, source_of, constants),
+        "demand_note": _source_note(item_cases, source_of, constants) + (
+            " " + planar_note(len(planar_motions), n_motions) if planar_motions else ""),
+        "demand_planar": bool(planar_motions),
+        "demand_uplift": uplift,
     }
 
 

@@ -218,22 +218,25 @@ def fragility_metadata(items, directional=True) -> dict:
     return meta
 
 
+def pelicun_fragility_files(items, directional=True) -> dict[str, bytes]:
+    """``fragility.csv`` and ``fragility.json`` as bytes, by name (nothing written)."""
+    items = list(items)
+    csv_text = fragility_table(items, directional).to_csv(index=False, lineterminator="\n")
+    json_text = json.dumps(fragility_metadata(items, directional), indent=2, ensure_ascii=False) + "\n"
+    return {CSV_NAME: csv_text.encode("utf-8"), JSON_NAME: json_text.encode("utf-8")}
+
+
 def write_pelicun_fragility(folder, items, directional=True) -> tuple[Path, Path]:
     """Write ``fragility.csv`` and ``fragility.json`` into ``folder``; return their paths.
 
     Both are built in memory first, so a failure leaves no half-written pair.
     """
-    items = list(items)
-    table = fragility_table(items, directional)
-    meta = fragility_metadata(items, directional)
+    files = pelicun_fragility_files(items, directional)
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
-    csv_path, json_path = folder / CSV_NAME, folder / JSON_NAME
-    csv_text = table.to_csv(index=False, lineterminator="\n")
-    json_text = json.dumps(meta, indent=2, ensure_ascii=False) + "\n"
-    csv_path.write_text(csv_text, encoding="utf-8")
-    json_path.write_text(json_text, encoding="utf-8")
-    return csv_path, json_path
+    for name, content in files.items():
+        (folder / name).write_bytes(content)
+    return folder / CSV_NAME, folder / JSON_NAME
 
 
 # --------------------------------------------------------------------------- helpers

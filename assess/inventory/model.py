@@ -23,7 +23,8 @@ class Inventory:
         ``clearance_m``, ``cg_height_m`` (= ``height_m / 2`` when not given),
         ``anchored`` (bool), ``quantity`` (int, 1 when not given), ``consequence`` (str, one of
         :data:`~assess.inventory.schema.CONSEQUENCES`, ``ordinary`` when not given),
-        ``row`` (int, the Excel row the item came from).
+        ``mu_low``, ``mu_high`` (the range μ may take, NaN when not given; both or neither,
+        ``mu_low <= mu <= mu_high``), ``row`` (int, the Excel row the item came from).
     hazard : pandas.DataFrame
         One row per motion and floor: ``level`` (canonical name, e.g.
         ``2in50``, or a label such as ``DE`` as first written: every spelling
@@ -33,7 +34,10 @@ class Inventory:
         ``all_floors``), ``pta_g`` [g], ``tp_s`` [s], ``vp_m_s`` [m/s]
         (NaN where not given), ``pulse`` ("A", "B", "C" or ""),
         ``record_path`` (absolute path as str, "" when none), ``scale`` (float,
-        1.0 when not given), ``row`` (int).
+        1.0 when not given; applies to both components), ``record_2_path`` (the second horizontal
+        component, along the items' depth, absolute path, "" when none), ``azimuth_deg`` (the angle
+        from the items' width axis to ``record``'s axis, towards their depth axis; 0 when not given,
+        see :mod:`assess.hazard.record_pairs`), ``row`` (int).
     settings : dict
         The packaged defaults (``assess.data.default_settings()``) updated
         with the user's ``settings`` sheet, values converted to float where

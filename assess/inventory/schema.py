@@ -140,6 +140,9 @@ EQUIPMENT = SheetSpec("equipment", (
     # holds some 10^4 racks) and keeps every count exact in 64-bit integers and floats
     Column("quantity", "integer", default=1, low=1, high=1_000_000),
     Column("consequence", "consequence", default="ordinary"),
+    # the range mu may take (e.g. the paper's best-fit and slow-pull values); both or neither
+    Column("mu_low", "number", low=0.01, high=1.5, positive=True, hint=_MU_HINT),
+    Column("mu_high", "number", low=0.01, high=1.5, positive=True, hint=_MU_HINT),
 ), subject="a piece of equipment")
 
 HAZARD = SheetSpec("hazard", (
@@ -159,6 +162,12 @@ HAZARD = SheetSpec("hazard", (
     # a factor beyond 100 or below 1/10,000 (a record in cm/s² read as g is 1/981) is a unit
     # mistake, not a scaling of the motion: convert the record instead
     Column("scale", "number", default=1.0, low=1e-4, high=100.0, positive=True),
+    # the second horizontal component of the same motion, along the items' depth (record: their width)
+    Column("record_2", "path", default="", max_chars=255),
+    # the angle from the items' width axis to the component in `record`, counter-clockwise seen
+    # from above (towards their depth axis); the pair is rotated by it onto the items' axes
+    Column("azimuth_deg", "number", default=0.0, high=360.0, signed=True,
+           hint="an angle in degrees, -360 to 360; leave it empty when the records are along the items' axes"),
 ), subject="a floor motion")
 
 SETTINGS = SheetSpec("settings", (

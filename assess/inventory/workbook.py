@@ -271,6 +271,7 @@ def _check_item(row: Row, headers: dict[str, Header], report: SheetReport) -> No
                   f"mu_static {schema.quote(raw['mu_static'])} is less than mu "
                   f"{schema.quote(raw['mu'])}; static friction is never below kinetic friction.",
                   "check both coefficients; leave mu_static empty if only mu is known.")
+    _check_mu_range(row, headers, report)
     if values.get("cg_height") is None:
         height = values.get("height")
         values["cg_height"] = height / 2 if height is not None and row.ok("height") else None
@@ -285,6 +286,35 @@ def _check_item(row: Row, headers: dict[str, Header], report: SheetReport) -> No
                   "their units, or leave the cell empty for a uniform block (half the height).")
 
 
+def _check_mu_range(row: Row, headers: dict[str, Header], report: SheetReport) -> None:
+    """``mu_low`` and ``mu_high``: both or neither, and ``mu_low <= mu <= mu_high``; reported at the cell."""
+    values, raw = row.values, row.raw
+    given = {name: values.get(name) for name in ("mu_low", "mu_high") if values.get(name) is not None}
+    if not row.ok("mu", "mu_low", "mu_high") or not given:
+        return
+    if len(given) == 1:
+        (name, _), = given.items()
+        other = "mu_high" if name == "mu_low" else "mu_low"
+        report.at(row.number, headers[name],
+                  f"{name} {schema.quote(raw[name])} is given without {other}; the range of the friction "
+                  "coefficient needs both ends.",
+                  f"give {other} too (e.g. the best-fit and the slow-pull values), or leave both empty.")
+        return
+    mu, low, high = values.get("mu"), given["mu_low"], given["mu_high"]
+    if mu is None:
+        return
+    if low > mu:
+        report.at(row.number, headers["mu_low"],
+                  f"mu_low {schema.quote(raw['mu_low'])} is above mu {schema.quote(raw['mu'])}; the range "
+                  "mu_low to mu_high holds mu.",
+                  "check the three coefficients: mu_low <= mu <= mu_high.")
+    if high < mu:
+        report.at(row.number, headers["mu_high"],
+                  f"mu_high {schema.quote(raw['mu_high'])} is below mu {schema.quote(raw['mu'])}; the range "
+                  "mu_low to mu_high holds mu.",
+                  "check the three coefficients: mu_low <= mu <= mu_high.")
+
+
 # ---------------------------------------------------------------- hazard
 
 def _check_hazard(table: Table, folder: Path, report: SheetReport) -> list[dict]:
@@ -296,11 +326,13 @@ def _check_hazard(table: Table, folder: Path, report: SheetReport) -> list[dict]
     records = []
     for row in table.rows:
         record_path = _record_path(row, folder, headers, report)
+        record_2_path = _record_path(row, folder, headers, report, "record_2")
+        _check_second_component(row, headers, report)
         if not record_path and row.ok("record"):
             for name in _require_pulse_measures(row, headers, report):
                 lacking[name].append(row.number)
         _check_duplicate_motion(row, headers, first_row_of, report)
-        records.append(_hazard_record(row, record_path, names))
+        records.append(_hazard_record(row, record_path, names, record_2_path))
     for name, rows in lacking.items():
         if rows and "record" in headers:  # else the missing column is already reported
             column = HAZARD.column(name)
@@ -318,16 +350,17 @@ def _check_hazard(table: Table, folder: Path, report: SheetReport) -> list[dict]
 _NAME_MAX_BYTES = 255
 
 
-def _record_path(row: Row, folder: Path, headers: dict[str, Header], report: SheetReport) -> str:
-    """The absolute path of the row's record ("" when none); a path that cannot name a file,
-    or a file that is not there, is reported at the row's record cell."""
-    text = row.values.get("record") or ""
+def _record_path(row: Row, folder: Path, headers: dict[str, Header], report: SheetReport,
+                 name: str = "record") -> str:
+    """The absolute path of the row's record (column ``name``; "" when none); a path that cannot
+    name a file, or a file that is not there, is reported at the row's cell of that column."""
+    text = row.values.get(name) or ""
     if not text:
         return ""
-    header = headers.get("record")
+    header = headers.get(name)
     too_long = [part for part in Path(text).parts if len(part.encode("utf-8", "replace")) > _NAME_MAX_BYTES]
     if too_long:
-        row.failed.add("record")
+        row.failed.add(name)
         report.at(row.number, header, f"the record path {schema.quote(text)} has a name of "
                   f"{len(too_long[0]):,} characters; a file name has at most {_NAME_MAX_BYTES}.",
                   "give the record file's real name, relative to the workbook's folder.")
@@ -336,7 +369,7 @@ def _record_path(row: Row, folder: Path, headers: dict[str, Header], report: She
         path = (folder / text).resolve()
         found = path.is_file()
     except (OSError, RuntimeError, ValueError) as error:  # a symlink loop, a NUL, a bad name
-        row.failed.add("record")
+        row.failed.add(name)
         loop = isinstance(error, RuntimeError) or getattr(error, "errno", None) == errno.ELOOP
         why = ("it is a link that leads back to itself" if loop
                else getattr(error, "strerror", None) or type(error).__name__)
@@ -351,6 +384,24 @@ def _record_path(row: Row, folder: Path, headers: dict[str, Header], report: She
                   "put the record file there, or correct its path (relative to the "
                   "workbook's folder).")
     return str(path)
+
+
+def _check_second_component(row: Row, headers: dict[str, Header], report: SheetReport) -> None:
+    """``record_2`` is the second component of the row's ``record``; ``azimuth_deg`` turns that pair."""
+    values = row.values
+    if values.get("record_2") and not values.get("record") and row.ok("record", "record_2"):
+        row.failed.add("record_2")
+        report.at(row.number, headers.get("record_2"),
+                  "record_2 is given but record is empty; record_2 is the second horizontal component "
+                  "(along the items' depth) of the motion whose first component (along their width) is record.",
+                  "give the first component in the record column, or move the file there if it is the only one.")
+    azimuth = values.get("azimuth_deg")
+    if row.ok("azimuth_deg", "record_2") and azimuth not in (None, 0.0) and not values.get("record_2"):
+        row.failed.add("azimuth_deg")
+        report.at(row.number, headers.get("azimuth_deg"),
+                  f"azimuth_deg {schema.quote(row.raw['azimuth_deg'])} is given but the row has no record_2; "
+                  "the azimuth turns a pair of records (record and record_2) onto the items' axes.",
+                  "give the second component in record_2, or leave azimuth_deg empty.")
 
 
 def _require_pulse_measures(row: Row, headers: dict[str, Header], report: SheetReport) -> list[str]:
@@ -389,7 +440,7 @@ def _check_duplicate_motion(row: Row, headers: dict[str, Header], first_row_of: 
               "delete one of the two rows, or correct its level, motion or floor.")
 
 
-def _hazard_record(row: Row, record_path: str, names: dict[str, str]) -> dict:
+def _hazard_record(row: Row, record_path: str, names: dict[str, str], record_2_path: str = "") -> dict:
     """One output row of the hazard frame (canonical names, SI); ``names`` gives every spelling
     of a level the name of its first (a label's case as first written)."""
     values = row.values
@@ -404,6 +455,8 @@ def _hazard_record(row: Row, record_path: str, names: dict[str, str]) -> dict:
         "pta_g": values.get("pta"), "tp_s": values.get("tp"), "vp_m_s": values.get("vp"),
         "pulse": values.get("pulse"), "record_path": record_path,
         "scale": values.get("scale"), "row": row.number,
+        "record_2_path": record_2_path,
+        "azimuth_deg": values.get("azimuth_deg") if values.get("azimuth_deg") is not None else 0.0,
     }
 
 
@@ -530,10 +583,12 @@ _EQUIPMENT_TYPES = {"id": "str", "name": "str", "room": "str", "floor": "int64",
                     "height_m": "float64", "width_m": "float64", "depth_m": "float64",
                     "mass_kg": "float64", "mu": "float64", "mu_static": "float64",
                     "clearance_m": "float64", "cg_height_m": "float64", "anchored": "bool",
-                    "quantity": "int64", "consequence": "str", "row": "int64"}
+                    "quantity": "int64", "consequence": "str", "mu_low": "float64", "mu_high": "float64",
+                    "row": "int64"}
 _HAZARD_TYPES = {"level": "str", "level_label": "str", "motion": "str", "all_floors": "bool",
                  "floor": "Int64", "pta_g": "float64", "tp_s": "float64", "vp_m_s": "float64",
-                 "pulse": "str", "record_path": "str", "scale": "float64", "row": "int64"}
+                 "pulse": "str", "record_path": "str", "scale": "float64", "record_2_path": "str",
+                 "azimuth_deg": "float64", "row": "int64"}
 
 
 def _frame(records: list[dict], types: dict[str, str]) -> pd.DataFrame:

@@ -26,6 +26,7 @@ from markupsafe import Markup
 
 import assess
 from assess.report import figures
+from assess.report.curve import curve_context
 
 TEMPLATE_NAME = "report.html.j2"
 STYLESHEET_NAME = "report.css"
@@ -452,9 +453,18 @@ def report_context(result) -> dict:
         },
         "simulation": _simulation_counts(result),
         "hazard_notes": list(getattr(result, "hazard_notes", [])),
+        "method_notes": _method_notes(summary),
         "changes": _changes(getattr(result, "comparison", None)),
+        "curve": curve_context(result),
         "stylesheet": Markup(template_text(STYLESHEET_NAME)),  # our own file, not user text
     }
+
+
+def _method_notes(summary: pd.DataFrame) -> list[str]:
+    """The method section's paragraphs on sliding in the plane and on μ ranges, where they apply."""
+    from assess.fragility import friction_range, planar
+
+    return [text for text in (planar.method_text(summary), friction_range.method_text(summary)) if text]
 
 
 def _changes(comparison) -> dict | None:

@@ -47,8 +47,10 @@ def with_us_units(summary: pd.DataFrame) -> pd.DataFrame:
 
 
 def _number_format(column: str) -> str | None:
-    if column.startswith("p_") or column in ("pf_sliding", "overturn_fraction"):
+    if column.startswith(("p_", "p50yr_")) or column in ("pf_sliding", "overturn_fraction"):
         return "0.0%"
+    if column.startswith("annual_rate_"):
+        return "0.00E+00"
     if column.endswith(("_cm", "_in")):
         return "0.0"
     if column.endswith(("_g", "_rad", "_rad_s", "_s")) or column in ("b_over_h", "mu", "im", "edp_median",

@@ -1,0 +1,661 @@
+"""A portfolio of buildings: each one's assessment, a summary across them, and what changed.
+
+``assess batch PORTFOLIO`` reads a portfolio (:func:`read_portfolio`): an
+``.xlsx`` with a sheet ``buildings`` (``building``, ``workbook``, optional
+``oq_hazard`` and ``level``), or a folder of workbooks. It checks every
+building's input before anything runs (:func:`prepare_buildings`), then
+assesses each one with the main job (:func:`assess.pipeline.run_assessment`)
+through one :class:`~assess.cache.CachingRunner`, so that a case simulated
+before (same item, same motion, same engine) is not simulated again, and
+writes (:func:`run_portfolio`, :meth:`StagedPortfolio.commit`)::
+
+    <out>/<building>/     what assess WORKBOOK --hazard LEVEL writes (summary.csv, motions.csv, report)
+    <out>/portfolio.csv   one row per building: items by risk and by action, cases simulated and reused
+    <out>/portfolio.html  the same, and the change report
+    <out>/changes.csv     what changed since the previous run in <out>, one row per item and quantity
+    <out>/previous/<building>/summary.csv   the summaries this run compared with
+    <out>/.cache/         the stored engine results (assess.cache)
+    <out>/.portfolio.json what each building's folder was made from (to keep it when nothing changed)
+
+A building whose inputs (workbook, records, hazard curve, level, seed,
+formats, code) are those of the previous run keeps its folder; the others
+are assessed again, their unchanged cases answered by the cache. The tables
+and the page across buildings are made in :mod:`assess.batch_report`.
+
+Everything is written into a folder beside ``<out>`` that takes its place in
+one rename once every building is done, so a run that fails or is
+interrupted leaves the previous ``<out>`` as it was (its cache keeps what the
+failed run simulated, so the next run reuses it).
+"""
+from __future__ import annotations
+
+import contextlib
+import hashlib
+import json
+import os
+import re
+import shutil
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable
+
+import pandas as pd
+
+from assess.batch_report import building_row, changes_between, portfolio_html
+from assess.errors import InputError, Problem, raise_if_any
+from assess.inventory import schema, xlsx
+from assess.inventory.schema import Column, SheetSpec
+
+#: The sheet of a portfolio workbook (SPEC §6).
+BUILDINGS = SheetSpec("buildings", (
+    Column("building", "text", required=True, max_chars=80),
+    Column("workbook", "text", required=True, max_chars=255),
+    Column("oq_hazard", "text", default="", max_chars=255),
+    Column("level", "level"),
+), subject="a building")
+#: Files and folders of a portfolio's output folder besides the buildings' folders.
+PORTFOLIO_FILES = ("portfolio.csv", "portfolio.html", "changes.csv")
+CACHE_FOLDER, PREVIOUS_FOLDER = ".cache", "previous"
+#: What the previous run recorded of each building (its inputs' key, its files), for reusing its folder.
+MANIFEST = ".portfolio.json"
+#: Files of the package that the outputs depend on (code, templates, packaged data).
+_CODE_SUFFIXES = {".py", ".j2", ".css", ".toml", ".csv", ".json"}
+_RESERVED = {name.lower() for name in PORTFOLIO_FILES + (CACHE_FOLDER, PREVIOUS_FOLDER, MANIFEST)}
+#: What a file browser leaves in a folder it has shown.
+_BROWSER_FILES = {".DS_Store", "Thumbs.db", "desktop.ini"}
+#: Most buildings in one portfolio (a university campus has some hundreds).
+MAX_BUILDINGS = 2_000
+#: A building's name becomes a folder name: letters, digits, space and . _ - ( ) +.
+_BUILDING_NAME = re.compile(r"[\w][\w .()+-]*")
+#: Largest previous summary.csv read for the change report [bytes].
+MAX_PREVIOUS_BYTES = 200 * 2**20
+
+
+@dataclass(frozen=True)
+class Building:
+    """One building of a portfolio: its name (its output folder), workbook, level and hazard curve.
+
+    ``level`` and ``oq_hazard`` are None where the portfolio leaves them to
+    the defaults (:func:`prepare_buildings`); ``source`` locates the building
+    in the portfolio for messages (``portfolio.xlsx, sheet 'buildings', row 3``).
+    """
+
+    name: str
+    workbook: Path
+    level: str | None = None
+    oq_hazard: Path | None = None
+    source: str = ""
+    portfolio: str = ""
+    sheet: str | None = None
+    row: int | None = None
+
+    def problem(self, message: str, fix: str, column: str | None = None) -> Problem:
+        """A problem located at this building's row of the portfolio (its workbook for a folder portfolio)."""
+        if self.row is None:
+            return Problem(file=str(self.workbook), message=message, fix=fix)
+        return Problem(file=self.portfolio, sheet=self.sheet, row=self.row, column=column, message=message, fix=fix)
+
+
+# ---------------------------------------------------------------- reading the portfolio
+
+def read_portfolio(path, *, allow_outside: bool = False) -> list[Building]:
+    """The buildings of a portfolio: an ``.xlsx`` with a sheet ``buildings``, or a folder of workbooks.
+
+    Paths in the sheet are relative to the portfolio's folder and must lie in
+    it or below it (once links are followed), as records must lie in their
+    workbook's folder, unless ``allow_outside``. A folder portfolio is every
+    ``*.xlsx`` directly in the folder (not its subfolders; Excel's ``~$`` lock
+    files and hidden files skipped), each building named by its file's stem.
+
+    Raises :class:`~assess.errors.InputError` naming the file, sheet, row and
+    cell of every problem.
+    """
+    given = str(path)
+    path = Path(path)
+    if path.is_dir():
+        return _folder_portfolio(path, given, allow_outside)
+    problems: list[Problem] = []
+    from assess.inventory.workbook import SheetReport, _read_table, _sheet_cells
+    report = SheetReport(given, None, problems)
+    try:
+        book = xlsx.Book(path)
+    except xlsx.Unreadable as error:
+        report(error.message, error.fix)
+        raise InputError(problems) from None
+    with book:
+        by_lower = {title.strip().lower(): title for title in book.sheetnames}
+        title = by_lower.get(BUILDINGS.name)
+        if title is None or not book.is_table(title):
+            have = ", ".join(f"'{schema.clip(t, 40)}'" for t in book.sheetnames[:20])
+            report(f"the portfolio has no sheet '{BUILDINGS.name}'; it has the sheets {have}.",
+                   "add a sheet named 'buildings' with the columns building, workbook and, optionally, "
+                   "oq_hazard and level (one row per building), or give a folder of workbooks.")
+            raise InputError(problems)
+        sheet_report = SheetReport(given, title, problems)
+        cells = _sheet_cells(book, title, sheet_report)
+        table = _read_table(BUILDINGS, cells, sheet_report) if cells is not None else None
+    raise_if_any(problems)
+    if len(table.rows) > MAX_BUILDINGS:
+        sheet_report(f"the sheet lists {len(table.rows):,} buildings; a portfolio is read up to "
+                     f"{MAX_BUILDINGS:,}.", "split it into several portfolios.", row=table.rows[-1].number)
+        raise InputError(problems)
+    folder = path.parent
+    buildings, first_row = [], {}
+    for row in table.rows:
+        if not row.ok("building", "workbook"):
+            continue
+        name = str(row.values["building"])
+        header = table.headers["building"]
+        why = building_name_problem(name)
+        if why:
+            sheet_report.at(row.number, header, why, "name the building with letters, digits, spaces and "
+                            ". _ - ( ) +, starting with a letter or digit (it names its output folder).")
+            continue
+        if name.lower() in first_row:
+            sheet_report.at(row.number, header, f"the building '{name}' is already in row {first_row[name.lower()]} "
+                            "(names are compared ignoring case: each names an output folder).",
+                            "give every building its own name.")
+            continue
+        first_row[name.lower()] = row.number
+        workbook = _portfolio_file(row, "workbook", table.headers, folder, allow_outside, sheet_report,
+                                   (".xlsx", ".xlsm"))
+        curve = None
+        if row.values.get("oq_hazard"):
+            curve = _portfolio_file(row, "oq_hazard", table.headers, folder, allow_outside, sheet_report, None)
+        level = None
+        if row.ok("level") and row.values.get("level") is not None:
+            level = str(row.raw["level"]).strip()
+        if workbook is not None and (curve is not None or not row.values.get("oq_hazard")):
+            buildings.append(Building(name, workbook, level, curve,
+                                      source=f"{given}, sheet '{title}', row {row.number}",
+                                      portfolio=given, sheet=title, row=row.number))
+    raise_if_any(problems)
+    return buildings
+
+
+def building_name_problem(name: str) -> str | None:
+    """Why ``name`` cannot name a building's output folder; None when it can."""
+    if not _BUILDING_NAME.fullmatch(name) or name != name.strip() or name.endswith("."):
+        return (f"the building name {schema.quote(name)} cannot name a folder: use letters, digits, spaces and "
+                ". _ - ( ) +, starting with a letter or digit and not ending with a dot or a space.")
+    if name.lower() in _RESERVED:
+        return f"the building name {schema.quote(name)} is the name of a file the portfolio writes itself."
+    return None
+
+
+def _portfolio_file(row, column: str, headers: dict, folder: Path, allow_outside: bool, report,
+                    suffixes: tuple[str, ...] | None) -> Path | None:
+    """The file a cell names, relative to the portfolio's folder; None after reporting it at the cell."""
+    from assess.hazard.records import check_record_location
+    text = str(row.values[column])
+    header = headers.get(column)
+    what = "workbook" if column == "workbook" else "OpenQuake hazard curve"
+    if any(not c.isprintable() for c in text):
+        report.at(row.number, header, f"the {what} path holds control characters.",
+                  f"write the {what}'s file name on one line.")
+        return None
+    try:
+        path = (folder / text).resolve()
+        exists = path.is_file()
+    except (OSError, RuntimeError, ValueError) as error:
+        report.at(row.number, header, f"the {what} path {schema.quote(text)} cannot be followed "
+                  f"({getattr(error, 'strerror', None) or type(error).__name__}).",
+                  f"give the path of the {what} file, relative to the portfolio's folder.")
+        return None
+    outside = check_record_location(str(path), folder)
+    if outside and not allow_outside:
+        report.at(row.number, header, f"the {what} {schema.quote(text)} is outside the portfolio's folder "
+                  f"{os.path.realpath(folder)}; files are read only from that folder and its subfolders, so "
+                  "that a portfolio cannot make assess read other files of this machine.",
+                  f"copy the {what} into the portfolio's folder (or a subfolder) and give its path relative to "
+                  "the portfolio, or run with --allow-files-outside if you trust this portfolio.")
+        return None
+    if not exists:
+        report.at(row.number, header, f"the {what} {schema.quote(text)} was not found (looked for "
+                  f"{schema.clip(str(path), 200)}).",
+                  f"correct the path (relative to the portfolio's folder), or put the {what} there.")
+        return None
+    if suffixes is not None and path.suffix.lower() not in suffixes:
+        report.at(row.number, header, f"{schema.quote(text)} is not an Excel workbook (.xlsx).",
+                  "give the building's inventory workbook (.xlsx).")
+        return None
+    return path
+
+
+def _folder_portfolio(folder: Path, given: str, allow_outside: bool) -> list[Building]:
+    """Every ``*.xlsx`` directly in ``folder``, each a building named by its file's stem."""
+    from assess.hazard.records import check_record_location
+    problems = []
+    try:
+        entries = sorted(folder.iterdir(), key=lambda p: p.name)
+    except OSError as error:
+        raise InputError([Problem(file=given, message=f"the folder cannot be read ({error.strerror}).",
+                                  fix="check that you may read it.")]) from None
+    workbooks = [p for p in entries if p.suffix.lower() == ".xlsx" and not p.name.startswith(("~$", "."))]
+    if not workbooks:
+        raise InputError([Problem(file=given, message="the folder holds no workbook (.xlsx).",
+                                  fix="give a folder of inventory workbooks, or a portfolio workbook with a "
+                                      "sheet 'buildings'.")])
+    if len(workbooks) > MAX_BUILDINGS:
+        raise InputError([Problem(file=given, message=f"the folder holds {len(workbooks):,} workbooks; a "
+                                  f"portfolio is read up to {MAX_BUILDINGS:,}.", fix="split it into several folders.")])
+    buildings, seen = [], {}
+    for path in workbooks:
+        name = path.stem
+        why = building_name_problem(name)
+        if why is None and name.lower() in seen:
+            why = f"the building name '{name}' is also that of {seen[name.lower()]} (names ignore case)."
+        outside = check_record_location(str(path), folder)
+        if outside and not allow_outside:
+            why = (f"{path.name} is a link to a file outside the folder ({os.path.realpath(path)[:200]}); files "
+                   "are read only from the portfolio's folder and its subfolders.")
+        if why:
+            problems.append(Problem(file=str(path), message=why,
+                                    fix="rename the workbook (its name, without .xlsx, names the building's "
+                                        "output folder), or move it out of the portfolio's folder."))
+            continue
+        seen[name.lower()] = path.name
+        buildings.append(Building(name, path.resolve(), source=str(path)))
+    raise_if_any(problems)
+    return buildings
+
+
+# ---------------------------------------------------------------- checking every building first
+
+@dataclass
+class PreparedBuilding:
+    """A building ready to run: its inventory read and checked, its level and hazard curve chosen."""
+
+    building: Building
+    inventory: object
+    level: str
+    curve: object = None  # an OpenQuakeHazard, or None
+
+
+def prepare_buildings(buildings: list[Building], *, level: str | None = None, oq_hazard=None,
+                      hazard_problems: Callable[[object], list[Problem]] = lambda inventory: [],
+                      say: Callable[[str], None] = lambda message: None) -> list[PreparedBuilding]:
+    """Read every building's workbook and hazard curve and choose its level, before anything runs.
+
+    A building's level is its row's ``level``, else ``level`` (``--hazard``),
+    else the one level its workbook defines (a workbook with several needs one
+    of the other two). A building's curve is its row's ``oq_hazard``, else
+    ``oq_hazard`` (``--oq-hazard``: a path, read once for all). ``hazard_problems``
+    is what the main command refuses in a hazard sheet (records outside the
+    workbook's folder...). Every problem of every building is raised together.
+    """
+    from assess.hazard.motions import select_level
+    from assess.hazard.openquake import read_openquake_hazard
+    from assess.inventory import read_workbook
+    problems: list[Problem] = []
+    curves: dict[Path, object] = {}
+
+    def curve_of(path: Path):
+        """The curve at ``path``, read once; its problems raised once, for the first building naming it."""
+        if path not in curves:
+            try:
+                curves[path] = read_openquake_hazard(path)
+            except InputError:
+                curves[path] = None
+                raise
+        if curves[path] is None:
+            raise InputError([])
+        return curves[path]
+
+    prepared = []
+    if oq_hazard is not None:  # named on the command line: read even if every row names its own
+        try:
+            curve_of(Path(oq_hazard))
+        except InputError as error:
+            problems.extend(error.problems)
+    for building in buildings:
+        say(f"checking {building.name} ({building.workbook.name})")
+        try:
+            inventory = read_workbook(building.workbook)
+            found = hazard_problems(inventory)
+            if found:
+                raise InputError(found)
+            chosen = building.level or level
+            if chosen is None:
+                levels = list(dict.fromkeys(inventory.hazard["level_label"]))
+                if len(levels) != 1:
+                    raise InputError([building.problem(
+                        f"the building '{building.name}' has no level, and its workbook "
+                        f"{building.workbook.name} defines {len(levels)} ("
+                        + ", ".join(f"'{schema.clip(v, 40)}'" for v in levels[:10]) + ").",
+                        "give the level in the portfolio's 'level' column, or run with --hazard LEVEL.", "level")])
+                chosen = str(levels[0])
+            try:
+                select_level(inventory.hazard, chosen, building.workbook.name)
+            except InputError as error:  # said at the building's row, where the level was chosen
+                raise InputError([building.problem(
+                    f"building '{building.name}': {p.message}", p.fix or "",
+                    "level" if building.level else None) if building.row is not None or building.level is None
+                    else p for p in error.problems]) from None
+            curve_path = building.oq_hazard or (Path(oq_hazard) if oq_hazard is not None else None)
+            curve = curve_of(curve_path) if curve_path is not None else None
+            if curve is not None and curve.kind != "curve":
+                raise InputError([building.problem(
+                    f"{curve_path.name} is an OpenQuake hazard map; a portfolio integrates the items' "
+                    "fragilities over a hazard curve (the map's values at a few probabilities cannot be "
+                    "integrated).", "give the site's hazard curve (hazard_curve-mean-PGA.csv), or no curve.",
+                    "oq_hazard" if building.oq_hazard else None)])
+        except InputError as error:
+            problems.extend(error.problems)
+            continue
+        prepared.append(PreparedBuilding(building, inventory, chosen, curve))
+    raise_if_any(problems)
+    return prepared
+
+
+# ---------------------------------------------------------------- the output folder
+
+def check_portfolio_folder(out_dir: Path) -> None:
+    """Refuse an output folder the batch may not replace: one holding anything it did not write.
+
+    It may be new, or hold what a batch writes: :data:`PORTFOLIO_FILES`, the
+    cache and previous summaries, and building folders holding only what the
+    main job writes (:data:`assess.output.OUTPUT_NAMES`).
+    """
+    from assess.output import OUTPUT_NAMES
+    out_dir = Path(out_dir)
+    if not out_dir.exists() and not out_dir.is_symlink():
+        return
+    if not out_dir.is_dir():
+        raise InputError([Problem(file=str(out_dir), message="the output folder is a file, not a folder.",
+                                  fix="give --out a new folder, or the folder of an earlier batch run.")])
+    foreign = []
+    for entry in sorted(out_dir.iterdir(), key=lambda p: p.name):
+        name = entry.name
+        if name in _BROWSER_FILES or (name in PORTFOLIO_FILES + (MANIFEST,) and entry.is_file()
+                                      and not entry.is_symlink()):
+            continue
+        if name in (CACHE_FOLDER, PREVIOUS_FOLDER) and entry.is_dir() and not entry.is_symlink():
+            continue
+        if entry.is_dir() and not entry.is_symlink() and not name.startswith(".") \
+                and all(child.name in OUTPUT_NAMES for child in entry.iterdir()):
+            continue
+        foreign.append(name)
+    if foreign:
+        shown = ", ".join(name[:60] for name in foreign[:5]) + (f" and {len(foreign) - 5} more"
+                                                                 if len(foreign) > 5 else "")
+        raise InputError([Problem(
+            file=str(out_dir), message=f"the output folder holds files assess batch did not write ({shown}); "
+            "the batch replaces its output folder as a whole, so these would be lost.",
+            fix="give --out a new or empty folder, or the folder of an earlier batch run.")])
+
+
+@dataclass
+class StagedPortfolio:
+    """A finished batch, written into ``staging`` beside ``out_dir``, not yet in its place.
+
+    :meth:`commit` swaps it in (the cache carried over); :meth:`discard` removes it.
+    """
+
+    out_dir: Path
+    staging: Path | None
+    summary: pd.DataFrame
+    changes: pd.DataFrame
+    files: list[str] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+    cases_simulated: int = 0
+    cases_reused: int = 0
+
+    def commit(self) -> Path:
+        """Make ``out_dir`` the staged folder, keeping the cache; on failure leave ``out_dir`` as it was."""
+        out_dir, staging = self.out_dir, self.staging
+        cache, staged_cache = out_dir / CACHE_FOLDER, staging / CACHE_FOLDER
+        moved = False
+        aside = None
+        try:
+            if cache.is_dir():
+                os.replace(cache, staged_cache)
+                moved = True
+            if out_dir.exists():
+                aside = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}-old-", dir=out_dir.parent))
+                os.replace(out_dir, aside)
+            try:
+                os.replace(staging, out_dir)
+            except BaseException:
+                if aside is not None:
+                    os.replace(aside, out_dir)
+                    aside = None
+                raise
+            self.staging = None
+        except BaseException:
+            if moved and staged_cache.is_dir():
+                with contextlib.suppress(OSError):
+                    os.replace(staged_cache, cache)
+            raise
+        finally:
+            if aside is not None:
+                shutil.rmtree(aside, ignore_errors=True)
+        return out_dir
+
+    def discard(self) -> None:
+        if self.staging is not None:
+            shutil.rmtree(self.staging, ignore_errors=True)
+            self.staging = None
+
+
+def default_out_dir(portfolio: Path) -> Path:
+    """``reports/<portfolio stem>/`` (a folder portfolio: its name)."""
+    portfolio = Path(portfolio)
+    return Path("reports") / (portfolio.name if portfolio.is_dir() else portfolio.stem)
+
+
+# ---------------------------------------------------------------- running
+
+def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, seed: int = 0,
+                  formats: tuple[str, ...] = ("html", "pdf", "xlsx"), units: str = "si",
+                  say: Callable[[str], None] = lambda message: None) -> StagedPortfolio:
+    """Assess every building through ``runner`` (a :class:`~assess.cache.CachingRunner`), writing into a
+    staging folder beside ``out_dir``; returns it staged (:meth:`StagedPortfolio.commit` puts it in place).
+
+    Each building's folder is what ``assess WORKBOOK --hazard LEVEL`` writes.
+    A building none of whose inputs changed since the previous run in
+    ``out_dir`` (:func:`building_key`: its workbook, records and hazard curve,
+    level, seed, formats, the code) keeps its folder as it is, when the folder's
+    files are those that run wrote; the others are assessed, their simulations
+    reused from the cache where their cases did not change.
+    """
+    from assess.output import csv_text, render_outputs
+    from assess.pipeline import run_assessment
+
+    out_dir = Path(out_dir)
+    if out_dir.is_symlink():
+        out_dir = out_dir.resolve()
+    check_portfolio_folder(out_dir)
+    previous = _previous_summaries(out_dir)
+    before_manifest = _read_manifest(out_dir)
+    out_dir.parent.mkdir(parents=True, exist_ok=True)
+    staging = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}-new-", dir=out_dir.parent))
+    staged = StagedPortfolio(out_dir, staging, pd.DataFrame(), pd.DataFrame())
+    try:
+        os.chmod(staging, (out_dir.stat().st_mode & 0o7777) if out_dir.is_dir() else 0o777 & ~_umask())
+        rows, current, manifest = [], {}, {}
+        version = code_version()
+        total = len(prepared)
+        for number, item in enumerate(prepared, start=1):
+            building = item.building
+            tag = f"[{number}/{total}] {building.name}"
+            say(f"{tag}: {building.workbook.name} at level {item.level}"
+                + (f", hazard curve {Path(item.curve.path).name}" if item.curve is not None else ""))
+            started = time.perf_counter()
+            key = building_key(item, seed=seed, formats=formats, units=units, version=version)
+            kept = _unchanged_folder(out_dir / building.name, before_manifest.get(building.name), key)
+            if kept is not None:
+                _write_files(staging / building.name, kept)
+                entry = dict(before_manifest[building.name])
+                summary = _restored_summary(kept["summary.csv"])
+                simulated, reused, level_label = 0, int(entry["cases"]), str(entry["level_label"])
+                say(f"{tag}: unchanged since the previous run (workbook, records, hazard curve, level, code): "
+                    f"its folder is kept, {reused} cases reused")
+            else:
+                before = (runner.cases_simulated, runner.cases_reused)
+                # the curve integrates the fragilities into annual rates; it does not rescale the motions
+                # (that is the main command's --oq-hazard), so the level's simulations never depend on it
+                result = run_assessment(item.inventory, item.level, seed=seed, runner=runner,
+                                        hazard_curve=item.curve,
+                                        progress=lambda message, tag=tag: say(f"{tag}: {message}"))
+                files = render_outputs(result, formats, units=units)
+                _write_files(staging / building.name, files)
+                simulated, reused = runner.cases_simulated - before[0], runner.cases_reused - before[1]
+                summary, level_label = result.summary, result.level_label
+                entry = dict(key=key, cases=simulated + reused, level_label=level_label,
+                             files={name: _digest(data) for name, data in files.items()})
+                kept = files
+            manifest[building.name] = entry
+            current[building.name] = kept["summary.csv"]
+            rows.append(building_row(building.name, building.workbook.name, level_label,
+                                     Path(item.curve.path).name if item.curve is not None else "", summary,
+                                     simulated, reused))
+            counts = summary["risk"].value_counts()
+            say(f"{tag}: {simulated} cases simulated, {reused} reused, {time.perf_counter() - started:.1f} s; "
+                f"{counts.get('high', 0)} high, {counts.get('moderate', 0)} moderate, {counts.get('low', 0)} low risk")
+        staged.summary = pd.DataFrame(rows)
+        staged.changes = changes_between(
+            {name: data for name, (_, data) in previous.items()},
+            {name.lower(): data for name, data in current.items()},
+            {name.lower(): name for name in [p[0] for p in previous.values()] + list(current)})
+        staged.cases_simulated = int(staged.summary["cases_simulated"].sum()) if rows else 0
+        staged.cases_reused = int(staged.summary["cases_reused"].sum()) if rows else 0
+        files = {"portfolio.csv": csv_text(staged.summary).encode(),
+                 "changes.csv": csv_text(staged.changes).encode(),
+                 "portfolio.html": portfolio_html(staged, bool(previous)).encode(),
+                 MANIFEST: (json.dumps(manifest, indent=1, sort_keys=True) + "\n").encode()}
+        for name, data in previous.values():
+            files[f"{PREVIOUS_FOLDER}/{name}/summary.csv"] = data
+        _write_files(staging, files)
+        staged.files = sorted(n for n in files if n != MANIFEST) + [f"{name}/" for name in current]
+        return staged
+    except BaseException:
+        staged.discard()
+        raise
+
+
+def code_version() -> str:
+    """Hash of the code an output folder depends on: every file of the ``assess`` package and the
+    report templates, and the versions of the libraries that compute or draw (numpy, numba, pandas,
+    matplotlib)."""
+    import importlib.metadata
+
+    import assess
+    digest = hashlib.blake2b(digest_size=16)
+    package = Path(assess.__file__).resolve().parent
+    folders = [package, package.parent / "templates"]
+    for folder in folders:
+        if not folder.is_dir():
+            continue
+        for path in sorted(folder.rglob("*")):
+            if path.is_file() and "__pycache__" not in path.parts and path.suffix in _CODE_SUFFIXES:
+                digest.update(str(path.relative_to(folder)).encode() + b"\0" + path.read_bytes() + b"\0")
+    for library in ("numpy", "numba", "pandas", "matplotlib", "scipy"):
+        with contextlib.suppress(importlib.metadata.PackageNotFoundError):
+            digest.update(f"{library}={importlib.metadata.version(library)}\0".encode())
+    return digest.hexdigest()
+
+
+def building_key(item: PreparedBuilding, *, seed: int, formats, units: str, version: str) -> str:
+    """Hash of everything a building's folder depends on: the bytes of its workbook, of every record its
+    hazard sheet names and of its hazard curve; its level, the seed, formats and units; the code."""
+    digest = hashlib.blake2b(digest_size=16)
+    digest.update(f"{version}|{item.level}|{seed}|{sorted(formats)}|{units}|".encode())
+    digest.update(_file_digest(item.building.workbook).encode())
+    hazard = item.inventory.hazard
+    records = sorted({str(p) for column in hazard.columns if column.endswith("_path")  # record_path, and
+                      for p in hazard[column] if isinstance(p, str) and p})           # any other record column
+    for record in records:
+        digest.update(f"|{record}|{_file_digest(Path(record))}".encode())
+    if item.curve is not None:
+        digest.update(f"|curve|{_file_digest(Path(item.curve.path))}".encode())
+    return digest.hexdigest()
+
+
+def _file_digest(path: Path) -> str:
+    digest = hashlib.blake2b(digest_size=16)
+    with open(path, "rb") as stream:
+        while chunk := stream.read(1 << 20):
+            digest.update(chunk)
+    return digest.hexdigest()
+
+
+def _digest(data: bytes) -> str:
+    return hashlib.blake2b(data, digest_size=16).hexdigest()
+
+
+def _read_manifest(out_dir: Path) -> dict:
+    """What the previous run recorded of each building (its key, cases, files); {} when unreadable."""
+    path = out_dir / MANIFEST
+    try:
+        if path.is_symlink() or path.stat().st_size > 16 * 2**20:
+            return {}
+        manifest = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return {}
+    if not isinstance(manifest, dict):
+        return {}
+    return {name: entry for name, entry in manifest.items()
+            if isinstance(entry, dict) and isinstance(entry.get("key"), str) and isinstance(entry.get("files"), dict)
+            and isinstance(entry.get("cases"), int) and isinstance(entry.get("level_label"), str)}
+
+
+def _unchanged_folder(folder: Path, entry: dict | None, key: str) -> dict[str, bytes] | None:
+    """The files of a building's previous folder when its key is ``key`` and the folder holds exactly
+    the files that run wrote, byte for byte; else None (the building is assessed again)."""
+    if entry is None or entry["key"] != key or not folder.is_dir() or folder.is_symlink():
+        return None
+    try:
+        paths = [p for p in folder.rglob("*") if p.name not in _BROWSER_FILES]
+        if any(p.is_symlink() or not (p.is_file() or p.is_dir()) for p in paths):
+            return None
+        present = sorted(p.relative_to(folder).as_posix() for p in paths if p.is_file())
+        if present != sorted(entry["files"]):
+            return None
+        files = {name: (folder / name).read_bytes() for name in present}
+    except OSError:
+        return None
+    if any(_digest(data) != entry["files"][name] for name, data in files.items()):
+        return None
+    return files
+
+
+def _restored_summary(data: bytes) -> pd.DataFrame:
+    """summary.csv as the assessment's table: numbers as numbers, text as it was before neutralising."""
+    import io
+
+    from assess.output import restore_text
+    return restore_text(pd.read_csv(io.BytesIO(data), dtype={"id": str, "name": str}, keep_default_na=False,
+                                    na_values=[""]))
+
+
+def _write_files(folder: Path, files: dict[str, bytes]) -> None:
+    for name, content in files.items():
+        target = folder / name
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_bytes(content)
+
+
+def _umask() -> int:
+    umask = os.umask(0)
+    os.umask(umask)
+    return umask
+
+
+def _previous_summaries(out_dir: Path) -> dict[str, tuple[str, bytes]]:
+    """The previous run's summary.csv of every building folder in ``out_dir``: name (lower case) ->
+    (folder name, bytes). A summary too large to be ours is skipped."""
+    found = {}
+    if not out_dir.is_dir():
+        return found
+    for entry in sorted(out_dir.iterdir(), key=lambda p: p.name):
+        summary = entry / "summary.csv"
+        if entry.name.startswith(".") or entry.name in (PREVIOUS_FOLDER,) or not summary.is_file() \
+                or summary.is_symlink():
+            continue
+        with contextlib.suppress(OSError):
+            if summary.stat().st_size <= MAX_PREVIOUS_BYTES:
+                found[entry.name.lower()] = (entry.name, summary.read_bytes())
+    return found

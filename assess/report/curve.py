@@ -1,0 +1,93 @@
+"""The report's account of the whole hazard curve: each item's chance over 50 years, from its
+fragilities over stripes (:mod:`assess.fragility.stripes`).
+
+Every sentence is made here from the result's numbers; the template only places them.
+"""
+from __future__ import annotations
+
+import math
+
+import pandas as pd
+
+#: A chance in 50 years at or above this is named on page 1.
+NOTABLE_P50YR = 0.10
+MODE_WORDS = {"beyond_clearance": "sliding past its room", "overturn": "overturning"}
+
+
+def chance_text(central, low, high) -> str:
+    """A probability in 50 years with its 90 % interval, or the one-sided bound the outcomes allow.
+
+    >>> chance_text(0.031, 0.025, 0.04), chance_text(float("nan"), float("nan"), 0.005)
+    ('3.1% (2.5–4.0%)', 'below 0.5%')
+    >>> chance_text(float("nan"), 0.99999, float("nan"))
+    'at least 100.0%'
+    """
+    def pct(p):
+        return f"{100 * p:.1f}%" if p >= 0.001 else "<0.1%"
+
+    values = [float(v) if v is not None else math.nan for v in (central, low, high)]
+    central, low, high = values
+    if math.isfinite(central):
+        if math.isfinite(low) and math.isfinite(high) and not (low == central == high):
+            return f"{pct(central)} ({pct(low).rstrip('%')}–{pct(high)})"
+        return pct(central)
+    if math.isfinite(high):
+        return f"below {pct(high)}"
+    if math.isfinite(low):
+        return f"at least {pct(low)}"
+    return "–"
+
+
+def curve_context(result) -> dict | None:
+    """What the report shows of the hazard curve; None without one."""
+    curve = getattr(result, "curve_risk", None)
+    if curve is None:
+        return None
+    summary = result.summary
+    free = summary[summary["risk"] != "anchored"]
+    rows = []
+    for _, row in free.iterrows():
+        entry = {"id": str(row["id"]), "name": str(row["name"]), "floor": row["floor"],
+                 "ratio": f"{row['pfa_per_pga']:.2f}", "note": str(row.get("curve_note") or "")}
+        for mode in MODE_WORDS:
+            entry[mode] = chance_text(row[f"p50yr_{mode}"], row[f"p50yr_{mode}_low"], row[f"p50yr_{mode}_high"])
+            median = row[f"fragility_{mode}_median_g"]
+            entry[f"{mode}_fragility"] = (f"{median:.2f} g, β {row[f'fragility_{mode}_beta']:.2f}"
+                                          if pd.notna(median) else "–")
+        rows.append(entry)
+    notable = {mode: [str(i) for i in free.loc[_at_least(free, mode), "id"]] for mode in MODE_WORDS}
+    return {"curve": curve.curve, "rows": rows, "lead": lead_sentence(notable, len(free)),
+            "floors": [f["basis"] for _, f in sorted(curve.floors.items())], "runs": curve.runs,
+            "stripes": _stripes_sentence(curve), "notes": list(curve.notes)}
+
+
+def _at_least(free: pd.DataFrame, mode: str) -> pd.Series:
+    """Items whose chance in 50 years is at least :data:`NOTABLE_P50YR`, or bounded below by it."""
+    central = free[f"p50yr_{mode}"].fillna(free[f"p50yr_{mode}_low"])
+    return central >= NOTABLE_P50YR
+
+
+def lead_sentence(notable: dict, n_items: int) -> str:
+    """Page 1's sentence on the whole curve, from the items named in ``notable`` (mode -> ids).
+
+    >>> lead_sentence({"beyond_clearance": ["A", "B"], "overturn": []}, 9)
+    'Over 50 years (the whole hazard curve, not only this level): 2 of the 9 freestanding items have a 10% chance or more of sliding past their room (A, B); none of overturning.'
+    """
+    parts = []
+    for mode, words in (("beyond_clearance", "sliding past their room"), ("overturn", "overturning")):
+        ids = notable.get(mode, [])
+        if ids:
+            shown = ", ".join(ids[:8]) + (f" and {len(ids) - 8} more" if len(ids) > 8 else "")
+            parts.append(f"{len(ids)} of the {n_items} freestanding items have a {NOTABLE_P50YR:.0%} chance or more "
+                         f"of {words} ({shown})" if not parts else f"{len(ids)} of {words} ({shown})")
+        else:
+            parts.append(f"none has a {NOTABLE_P50YR:.0%} chance of {words}" if not parts else f"none of {words}")
+    return "Over 50 years (the whole hazard curve, not only this level): " + "; ".join(parts) + "."
+
+
+def _stripes_sentence(curve) -> str:
+    levels = curve.stripes.groupby("id")["pfa_g"].agg(["min", "max", "nunique"])
+    if levels.empty:
+        return ""
+    return (f"{int(levels['nunique'].max())} stripes per floor, from {levels['min'].min():.2f} g to "
+            f"{levels['max'].max():.2f} g of floor acceleration; {curve.runs} simulations")
