@@ -359,7 +359,7 @@ def check_portfolio_folder(out_dir: Path) -> None:
     cache and previous summaries, and building folders holding only what the
     main job writes (:data:`assess.output.OUTPUT_NAMES`).
     """
-    from assess.output import OUTPUT_NAMES
+    from assess.output import OUTPUT_NAMES, refuse_foreign_files
     out_dir = Path(out_dir)
     if not out_dir.exists() and not out_dir.is_symlink():
         return
@@ -378,13 +378,7 @@ def check_portfolio_folder(out_dir: Path) -> None:
                 and all(child.name in OUTPUT_NAMES for child in entry.iterdir()):
             continue
         foreign.append(name)
-    if foreign:
-        shown = ", ".join(name[:60] for name in foreign[:5]) + (f" and {len(foreign) - 5} more"
-                                                                 if len(foreign) > 5 else "")
-        raise InputError([Problem(
-            file=str(out_dir), message=f"the output folder holds files assess batch did not write ({shown}); "
-            "the batch replaces its output folder as a whole, so these would be lost.",
-            fix="give --out a new or empty folder, or the folder of an earlier batch run.")])
+    refuse_foreign_files(out_dir, foreign, command="assess batch", run="batch run")
 
 
 @dataclass

@@ -99,8 +99,8 @@ def block_fingerprint(block) -> str:
     """The block's class and every dataclass field with its exact value, as text.
 
     >>> from assess.mechanics.block import Block
-    >>> block_fingerprint(Block(half_width_m=0.3, cg_height_m=1.0, height_m=2.0, mu=0.2))
-    "assess.mechanics.block.Block(half_width_m=0.3,cg_height_m=1.0,height_m=2.0,mu=0.2,mu_static=0.2,restitution=None,foot_inset_m=0.0)"
+    >>> print(block_fingerprint(Block(half_width_m=0.3, cg_height_m=1.0, height_m=2.0, mu=0.2)))
+    assess.mechanics.block.Block(half_width_m=0.3,cg_height_m=1.0,height_m=2.0,mu=0.2,mu_static=0.2,restitution=None,foot_inset_m=0.0)
     """
     kind = type(block)
     fields = ",".join(f"{f.name}={_canonical(getattr(block, f.name))}" for f in dataclasses.fields(block))

@@ -138,13 +138,18 @@ def check_output_folder(out_dir: Path) -> None:
         raise InputError([Problem(file=str(out_dir), message="the output folder is a file, not a folder.",
                                   fix="give --out a new folder, or the folder of an earlier run.")])
     foreign = sorted(entry.name for entry in out_dir.iterdir() if entry.name not in OUTPUT_NAMES)
+    refuse_foreign_files(out_dir, foreign)
+
+
+def refuse_foreign_files(out_dir: Path, foreign: list[str], command: str = "assess", run: str = "run") -> None:
+    """Exit 2 (``InputError``) naming the files in ``out_dir`` that ``command`` did not write, if any."""
     if foreign:
         shown = ", ".join(name[:60] for name in foreign[:5]) + (f" and {len(foreign) - 5} more"
                                                                  if len(foreign) > 5 else "")
         raise InputError([Problem(
-            file=str(out_dir), message=f"the output folder holds files assess did not write ({shown}); "
-            "assess replaces its output folder as a whole, so these would be lost.",
-            fix="give --out a new or empty folder, or the folder of an earlier run.")])
+            file=str(out_dir), message=f"the output folder holds files {command} did not write ({shown}); "
+            f"{command} replaces its output folder as a whole, so these would be lost.",
+            fix=f"give --out a new or empty folder, or the folder of an earlier {run}.")])
 
 
 def write_atomically(files: dict[str, bytes], out_dir: Path) -> list[Path]:

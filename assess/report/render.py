@@ -496,7 +496,8 @@ def _simulation_counts(result) -> dict:
     rest = ~(overturned | uplift | slid)
     solvers = getattr(result, "solver_runs", None)
     if solvers is None:  # a result built without the pipeline: one run per case
-        solvers = motions["sim_solver"].fillna("").astype(str).value_counts().to_dict()
+        solvers = motions["sim_solver"].astype(object).where(motions["sim_solver"].notna(), "").astype(str) \
+            .value_counts().to_dict()
     return {"cases": len(motions), "runs": int(sum(solvers.values())),
             "solvers": sorted(solvers.items(), key=lambda kv: -kv[1]),
             "overturned": int(overturned.sum()), "uplift": int(uplift.sum()), "slid": int(slid.sum()),
