@@ -47,6 +47,7 @@ from assess.batch_report import building_row, changes_between, portfolio_html
 from assess.errors import InputError, Problem, raise_if_any
 from assess.inventory import schema, xlsx
 from assess.inventory.schema import Column, SheetSpec
+from assess.output import swap_folder
 
 #: The sheet of a portfolio workbook (SPEC §6).
 BUILDINGS = SheetSpec("buildings", (
@@ -407,16 +408,7 @@ class StagedPortfolio:
             if cache.is_dir():
                 os.replace(cache, staged_cache)
                 moved = True
-            if out_dir.exists():
-                aside = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}-old-", dir=out_dir.parent))
-                os.replace(out_dir, aside)
-            try:
-                os.replace(staging, out_dir)
-            except BaseException:
-                if aside is not None:
-                    os.replace(aside, out_dir)
-                    aside = None
-                raise
+            aside = swap_folder(staging, out_dir)
             self.staging = None
         except BaseException:
             if moved and staged_cache.is_dir():

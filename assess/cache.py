@@ -42,7 +42,7 @@ from typing import Callable, Optional, Sequence
 
 import numpy as np
 
-from assess.mechanics.engine import DEFAULT_TAIL_S, CasePeaks
+from assess.mechanics.engine import DEFAULT_TAIL_S, CasePeaks, checked_record_index
 
 #: Bump when the pack layout changes: packs of another format are not read.
 PACK_FORMAT = 1
@@ -202,9 +202,7 @@ class CachingRunner:
                        record_index, *, tail_s: float = DEFAULT_TAIL_S,
                        progress: Optional[Callable[[int, int], None]] = None) -> CasePeaks:
         n = len(blocks)
-        record_index = np.asarray(record_index, dtype=np.int64)
-        if record_index.shape != (n,):
-            raise ValueError("record_index must give one record per block")
+        record_index = checked_record_index(record_index, n)
         keys = case_keys(blocks, records_g, dt_s, record_index, tail_s, self.version)
         cacheable = np.array([k is not None for k in keys], dtype=bool)
         key_array = np.array([k if k is not None else b"" for k in keys], dtype=f"S{KEY_BYTES}")

@@ -176,22 +176,37 @@ def write_atomically(files: dict[str, bytes], out_dir: Path) -> list[Path]:
             target = staging / name
             target.parent.mkdir(parents=True, exist_ok=True)
             target.write_bytes(content)
-        if out_dir.exists():
-            aside = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}-old-", dir=out_dir.parent))
-            os.replace(out_dir, aside)  # aside is an empty folder: rename replaces it
-        try:
-            os.replace(staging, out_dir)
-        except BaseException:
-            if aside is not None:
-                os.replace(aside, out_dir)
-                aside = None
-            raise
+        aside = swap_folder(staging, out_dir)
         staging = None
         return [out_dir / name for name in files]
     finally:
         for leftover in (staging, aside):
             if leftover is not None:
                 shutil.rmtree(leftover, ignore_errors=True)
+
+
+def swap_folder(staging: Path, out_dir: Path) -> Path | None:
+    """Put the folder ``staging`` in ``out_dir``'s place, or leave ``out_dir`` as it was.
+
+    The old folder is renamed aside, the new one renamed in; if the second
+    rename fails, the old folder is renamed back and the error raised. Returns
+    where the old folder now lies (the caller deletes it), or None if there was none.
+    """
+    aside = None
+    if out_dir.exists():
+        aside = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}-old-", dir=out_dir.parent))
+        try:
+            os.replace(out_dir, aside)  # aside is an empty folder: rename replaces it
+        except BaseException:
+            shutil.rmtree(aside, ignore_errors=True)
+            raise
+    try:
+        os.replace(staging, out_dir)
+    except BaseException:
+        if aside is not None:
+            os.replace(aside, out_dir)
+        raise
+    return aside
 
 
 def _folder_mode(out_dir: Path) -> int:

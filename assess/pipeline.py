@@ -78,9 +78,11 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
     if calibration is not None:
         from assess.calibration.apply import check_applies, with_declared
         check_applies(calibration, inventory.equipment)
-        declared = step(calibration=None)
+        # the curve's stripes run once, in the assessment that is returned (the declared one if no effect)
+        declared_governs = calibration.effect == "none"
+        declared = step(calibration=None, hazard_curve=hazard_curve if declared_governs else None)
         progress(f"again with the calibration {calibration.file}")
-        calibrated = step(calibration=calibration)
+        calibrated = step(calibration=calibration, hazard_curve=None if declared_governs else hazard_curve)
         return with_declared(calibrated, declared, calibration)
     return step(calibration=None)
 

@@ -123,7 +123,7 @@ def test_report_shows_each_affected_items_risk_with_and_without(lab):
     for item_id, *_ in ITEMS:
         assert "calibrated" in summary.loc[item_id, "flags"]
         assert f"as declared: risk {declared.loc[item_id, 'risk']} (mode " in html
-        assert f"with the calibration (friction_scale" in html
+        assert "with the calibration (friction_scale" in html
     # the declared run carries no such flag
     assert not declared["flags"].fillna("").str.contains("calibrated").any()
 

@@ -275,7 +275,7 @@ def impulse_laws(block, run):
         x, y, theta = before[:3]
         corners = corner_positions(x, y, theta, block.half_width_m, block.cg_height_m)
         r_x, r_y = corners[1 + sign] - x, corners[2 + sign] - y
-        v_before, v_after = corner_velocity(before, sign, block), corner_velocity(after, sign, block)
+        v_after = corner_velocity(after, sign, block)
         p_t, p_n = after[3] - before[3], after[4] - before[4]
         # impulses are differences of velocities: round-off relative to the block's speed
         tolerance = 1e-9 * (abs(before[3]) + abs(before[4]) + block.size_m * abs(before[5]))

@@ -178,9 +178,9 @@ def test_an_item_with_a_mu_range_slides_in_the_plane_at_each_mu_value(tmp_path):
                                       settings=inventory.settings), "test")
     runs = result.suite_runs[result.suite_runs["id"] == "SLIDER"]
     assert runs["planar"].all() and runs["mu"].nunique() == 9
-    for run in runs.itertuples():
-        expected_cm = sliding_response(1.25 * first, DT_S, run.mu).sliding_max_m * 100
-        assert run.sliding_cm == pytest.approx(expected_cm, rel=1e-9), run.mu
+    for history in runs.itertuples():
+        expected_cm = sliding_response(1.25 * first, DT_S, history.mu).sliding_max_m * 100
+        assert history.sliding_cm == pytest.approx(expected_cm, rel=1e-9), history.mu
 
 
 def test_a_second_component_that_is_not_a_record_is_refused_naming_record_2(tmp_path):

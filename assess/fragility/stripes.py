@@ -264,26 +264,30 @@ def stripe_outcomes(runs: pd.DataFrame, clearance_cm: pd.Series) -> pd.DataFrame
 
 
 def fit_items(outcomes: pd.DataFrame) -> tuple[dict, pd.DataFrame]:
-    """Fit every item's two fragilities; ``({(id, mode): FragilityFit}, stripes table)``."""
-    stripes = outcomes.groupby(["id", "pfa_g"], sort=True)[list(MODES)].agg(["size", "sum"])
-    ids = list(dict.fromkeys(stripes.index.get_level_values("id")))
-    n_stripes = stripes.groupby(level="id").size().max()
-    fits, table = {}, []
+    """Fit every item's two fragilities; ``({(id, mode): FragilityFit}, stripes table)``.
+
+    The stripes table has one row per item, mode and stripe: ``pfa_g``, ``trials``, ``failures``.
+    """
+    counts = outcomes.groupby(["id", "pfa_g"], sort=True)[list(MODES)].agg(["size", "sum"])
+    counts.columns = [f"{mode}_{stat}" for mode, stat in counts.columns]
+    counts = counts.reset_index()
+    ids = list(dict.fromkeys(counts["id"]))
+    row = counts.groupby("id", sort=False).cumcount().to_numpy()  # the stripe's place in its item's row
+    item = pd.Index(ids).get_indexer(counts["id"])
+    width = int(row.max()) + 1
+    fits, tables = {}, []
     for mode in MODES:
-        x = np.ones((len(ids), n_stripes))
-        n = np.zeros((len(ids), n_stripes), dtype=np.int64)
+        x = np.ones((len(ids), width))  # padding: stripes of 0 trials
+        n = np.zeros((len(ids), width), dtype=np.int64)
         z = np.zeros_like(n)
-        for i, item_id in enumerate(ids):
-            item = stripes.loc[item_id]
-            k = len(item)
-            x[i, :k] = item.index.to_numpy(dtype=float)
-            n[i, :k] = item[(mode, "size")].to_numpy()
-            z[i, :k] = item[(mode, "sum")].to_numpy()
-            table.append(pd.DataFrame({"id": item_id, "mode": mode, "pfa_g": x[i, :k], "trials": n[i, :k],
-                                       "failures": z[i, :k]}))
+        x[item, row] = counts["pfa_g"].to_numpy(dtype=float)
+        n[item, row] = counts[f"{mode}_size"].to_numpy()
+        z[item, row] = counts[f"{mode}_sum"].to_numpy()
         for item_id, fit in zip(ids, fit_lognormal_fragilities(x, n, z)):
             fits[(item_id, mode)] = fit
-    return fits, pd.concat(table, ignore_index=True)
+        tables.append(pd.DataFrame({"id": counts["id"].to_numpy(), "mode": mode, "pfa_g": x[item, row],
+                                    "trials": n[item, row], "failures": z[item, row]}))
+    return fits, pd.concat(tables, ignore_index=True)
 
 
 #: z of the two-sided 90 % interval the rates carry (from the fit's standard error of ln θ).
@@ -492,6 +496,7 @@ def curve_risk(cases: pd.DataFrame, motions: dict, level_motions: pd.DataFrame, 
                          ignore_index=True)
         fits, stripes = fit_items(stripe_outcomes(runs, clearance_cm))
     rows, fit_p = [], {}
+    outcomes_of = {key: group for key, group in stripes.groupby(["id", "mode"], sort=False)}
     for item_id in dict.fromkeys(cases["id"]):
         ratio = floors[int(floor_of[item_id])]["pfa_per_pga"]
         row = {"id": item_id, "pfa_per_pga": ratio}
@@ -503,7 +508,7 @@ def curve_risk(cases: pd.DataFrame, motions: dict, level_motions: pd.DataFrame, 
             row[f"fragility_{mode}_se_ln_median"] = fit.se_ln_median
             rates = item_rates(fit, mode, hazard, levels_g, rates_per_yr, ratio,
                                stripes_by_floor[int(floor_of[item_id])],
-                               stripes[(stripes["id"] == item_id) & (stripes["mode"] == mode)],
+                               outcomes_of[(item_id, mode)],
                                onset_g=float(onset_g[item_id]))
             notes.append(rates.pop("note"))
             fit_p[(item_id, mode)] = rates.pop("fit_p")

@@ -33,7 +33,7 @@ import numpy as np
 from assess.errors import InputError, Problem
 
 from .block import Block
-from .engine import DEFAULT_TAIL_S, CasePeaks, simulate_cases
+from .engine import DEFAULT_TAIL_S, CasePeaks, checked_record_index, simulate_cases
 
 #: Cases per task: about a tenth of a second to a second of work on one core, so that small jobs
 #: still spread over the workers and scheduling (about a millisecond a task) costs little.
@@ -175,9 +175,7 @@ class DaskRunner:
         from distributed import as_completed
 
         n = len(blocks)
-        record_index = np.asarray(record_index, dtype=np.int64)
-        if record_index.shape != (n,):
-            raise ValueError("record_index must give one record per block")
+        record_index = checked_record_index(record_index, n)
         tasks = case_tasks(record_index, self.cases_per_task)
         used = np.unique(record_index)
         scattered = self.client.scatter([np.asarray(records_g[j], dtype=float) for j in used])

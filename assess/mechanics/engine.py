@@ -274,6 +274,14 @@ def _named(response: BlockResponse, solver: str) -> BlockResponse:
     return replace(response, solver=solver)
 
 
+def checked_record_index(record_index, n_cases: int) -> np.ndarray:
+    """``record_index`` as int64, one record per case (every runner's ``simulate_cases`` takes it so)."""
+    record_index = np.asarray(record_index, dtype=np.int64)
+    if record_index.shape != (n_cases,):
+        raise ValueError("record_index must give one record per block")
+    return record_index
+
+
 @dataclass(frozen=True)
 class CasePeaks:
     """Peaks of many (block, motion) cases (:func:`simulate_cases`); arrays of shape (n_cases,).
@@ -320,9 +328,7 @@ def simulate_cases(blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_
     from .timestepping import time_stepping_case_peaks
 
     n = len(blocks)
-    record_index = np.asarray(record_index, dtype=np.int64)
-    if record_index.shape != (n,):
-        raise ValueError("record_index must give one record per block")
+    record_index = checked_record_index(record_index, n)
     sliding_max, residual = np.zeros(n), np.zeros(n)
     theta_max = np.zeros(n)
     uplift, overturned = np.zeros(n, dtype=bool), np.zeros(n, dtype=bool)

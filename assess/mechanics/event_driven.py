@@ -664,7 +664,6 @@ def _simulate(block, floor_accel_g, dt_s, tail_s=10.0, return_history=False, ini
     n_record, n_tail = accel.size, int(math.ceil(tail_s / dt - 1e-9))
     run = _Run(trace=[] if keep_trace else None, impacts=[] if keep_trace else None)
 
-    t = 0.0
     full = np.array([0.0, par.h, 0.0, 0.0, 0.0, 0.0])
     phase = _Phase(REST)
     run.enter(0.0, phase)

@@ -96,6 +96,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit, parallel_chunksize, prange
 
+from .case_records import CASES_PER_CHUNK, checked_records
 from .geometry import housner_restitution
 
 #: Largest Runge-Kutta step in dimensionless time p·h [-].
@@ -695,17 +696,8 @@ def rocking_case_peaks(records_g, dt_s, record_index, alpha_rad, p_rad_s, restit
     return _run_cases(records, dts, index, alpha, p, e, kappa, tail_s, stop)
 
 
-#: Cases a thread takes at a time in the parallel kernels (small: run times differ by orders of magnitude).
-CASES_PER_CHUNK = 4
-
-
 def _records(records_g, dt_s):
-    """Checked records (contiguous float arrays) and their sample intervals."""
-    first = np.asarray(records_g[0]) if len(records_g) else np.asarray([])
-    records = [records_g] if first.ndim == 0 else list(records_g)
-    dts = np.broadcast_to(np.asarray(dt_s, dtype=float), (len(records),))
-    checked = [_check_record(r, d) for r, d in zip(records, dts)]
-    return [c[0] for c in checked], np.array([c[1] for c in checked])
+    return checked_records(records_g, dt_s, _check_record)
 
 
 def _run_cases(records, dts, record_index, alpha, p, e, kappa, tail_s, friction_stop) -> RockingPeaks:

@@ -168,6 +168,7 @@ import numpy as np
 from numba import njit, parallel_chunksize, prange
 
 from .block import MODES, Block, BlockResponse, summary_mode
+from .case_records import CASES_PER_CHUNK, checked_records
 from .geometry import STANDARD_GRAVITY_M_S2
 
 #: Largest time step in dimensionless time, p·Δt [-].
@@ -917,17 +918,8 @@ def time_stepping_case_peaks(blocks, records_g, dt_s, record_index, *, time_step
     return _run_cases(blocks, records, dts, index, time_step_s, tail_s)
 
 
-#: Cases a thread takes at a time in the parallel kernel (small: run times differ by orders of magnitude).
-CASES_PER_CHUNK = 4
-
-
 def _records(records_g, dt_s):
-    """Checked records (contiguous float arrays) and their sample intervals."""
-    first = np.asarray(records_g[0]) if len(records_g) else np.asarray([])
-    records = [records_g] if first.ndim == 0 else list(records_g)
-    dts = np.broadcast_to(np.asarray(dt_s, dtype=float), (len(records),))
-    checked = [_check_record(r, d) for r, d in zip(records, dts)]
-    return [c[0] for c in checked], np.array([c[1] for c in checked])
+    return checked_records(records_g, dt_s, _check_record)
 
 
 def _run_cases(blocks, records, dts, record_index, time_step_s, tail_s) -> TimeSteppingPeaks:
