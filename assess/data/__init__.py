@@ -1,10 +1,15 @@
 """Packaged data: default settings and the paper's tables."""
 from __future__ import annotations
 
-import tomllib
+import sys
 from importlib import resources
 
 import pandas as pd
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # Python 3.10: tomli is the package tomllib was made from (same API), a dependency there only
+    import tomli as tomllib
 
 
 def default_settings() -> dict:
