@@ -574,10 +574,13 @@ def _engine_runner(scheduler):
     if scheduler is None:
         return LocalRunner()
     try:
-        from assess.mechanics.distributed import DaskRunner
+        import distributed  # noqa: F401 - Dask is the optional extra assess[cluster]
     except ImportError:
-        raise InputError([Problem(file="--scheduler", message="this installation of assess cannot run on a Dask "
-                                  "cluster.", fix="leave out --scheduler to run on this machine.")]) from None
+        raise InputError([Problem(file="--scheduler", message="running on a Dask cluster needs Dask, which this "
+                                  "installation of assess lacks.",
+                                  fix='pip install "assess[cluster]" (here and on the workers), or leave out '
+                                      "--scheduler to run on this machine's cores.")]) from None
+    from assess.mechanics.distributed import DaskRunner
     return DaskRunner.connect(scheduler)
 
 
