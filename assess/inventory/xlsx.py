@@ -36,7 +36,15 @@ and far below what takes minutes or gigabytes to parse.
 
 Cell decoding (shared strings, numbers, dates, booleans, inline strings) is
 openpyxl's ``WorkSheetParser.parse_cell``; only the streaming loop around it
-is this module's.
+is this module's. ``WorkSheetParser`` (``openpyxl.worksheet._reader``) and the
+read-only workbook's archive, shared strings and date formats are openpyxl's
+private names: openpyxl's public read-only API (``iter_rows``) has no bound on
+the cells it parses, pads every row up to a stray cell at row 1,048,576, turns
+a formula without a cached value into an empty cell and raises half-way
+through on a damaged cell, so it cannot give what this module promises. The
+dependency is pinned to the tested openpyxl 3.1 (``openpyxl>=3.1,<3.2``) and
+``tests/test_xlsx_openpyxl.py`` fails, naming what is missing, when a version
+lacks any of these names.
 """
 from __future__ import annotations
 
@@ -47,9 +55,14 @@ from pathlib import Path
 import defusedxml
 import defusedxml.ElementTree
 import openpyxl
+from openpyxl.chartsheet import Chartsheet
 from openpyxl.utils import coordinate_to_tuple, get_column_letter
-from openpyxl.worksheet._read_only import ReadOnlyWorksheet
-from openpyxl.worksheet._reader import (CELL_TAG, FORMULA_TAG, ROW_TAG, WorkSheetParser)
+
+try:  # openpyxl's private cell parser (module docstring): the dependency is pinned to openpyxl 3.1
+    from openpyxl.worksheet._reader import CELL_TAG, FORMULA_TAG, ROW_TAG, WorkSheetParser
+except ImportError as error:  # pragma: no cover - depends on the environment
+    raise ImportError(f"assess reads workbooks with openpyxl 3.1's cell parser, which openpyxl "
+                      f"{openpyxl.__version__} lacks ({error}): pip install 'openpyxl>=3.1,<3.2'") from error
 
 if not openpyxl.DEFUSEDXML:  # pragma: no cover - depends on the environment
     raise ImportError("assess needs openpyxl to parse workbooks with defusedxml (XML-bomb "
@@ -293,7 +306,7 @@ class Book:
 
     def is_table(self, title: str) -> bool:
         """True for a worksheet, False for a chart sheet."""
-        return isinstance(self._book[title], ReadOnlyWorksheet)
+        return not isinstance(self._book[title], Chartsheet)
 
     def cells(self, title: str) -> SheetCells:
         """The non-empty cells of sheet ``title``; raises :class:`Unreadable` (located) when it
@@ -317,7 +330,7 @@ class Book:
 class _CellParser(WorkSheetParser):
     """openpyxl's cell decoding in a streaming loop that keeps only non-empty cells, within bounds."""
 
-    def __init__(self, sheet: ReadOnlyWorksheet, book) -> None:
+    def __init__(self, sheet, book) -> None:
         super().__init__(None, sheet._shared_strings, data_only=True, epoch=book.epoch,
                          date_formats=book._date_formats, timedelta_formats=book._timedelta_formats)
         self.title = sheet.title
