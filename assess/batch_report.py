@@ -14,7 +14,7 @@ from assess.inventory import schema
 
 #: Columns of summary.csv the change report follows, besides the hazard-curve ones.
 CHANGE_FIELDS = ("risk", "action_kind", "action", "priority", "p_beyond_clearance", "p_overturn")
-#: The hazard-curve columns of summary.csv (SPEC §6), followed when present (their intervals are not).
+#: The hazard-curve columns of summary.csv (docs/outputs.md), followed when present (their intervals are not).
 CURVE_FIELDS = ("annual_rate_beyond_clearance", "annual_rate_overturn", "p50yr_beyond_clearance", "p50yr_overturn")
 CHANGE_COLUMNS = ["building", "id", "name", "change", "field", "old", "new"]
 RISKS = ("high", "moderate", "low", "anchored")

@@ -8,7 +8,7 @@ import pandas as pd
 
 from assess.hazard.levels import HazardLevel
 
-#: Columns of ``summary.csv`` in order (SPEC §3 first, then extras).
+#: Columns of ``summary.csv`` in order, each documented in docs/outputs.md (tests/test_docs.py).
 SUMMARY_COLUMNS = [
     "id", "name", "room", "floor", "quantity", "alpha_rad", "p_rad_s", "b_over_h",
     "governing_direction", "mu", "mode", "governing_motion", "pta_g", "tp_s", "im",
@@ -23,7 +23,7 @@ SUMMARY_COLUMNS = [
     "p_beyond_clearance_mu_high", "mu_range_note",
 ]
 
-#: Columns of ``motions.csv`` in order (SPEC §3 first, then extras).
+#: Columns of ``motions.csv`` in order, each documented in docs/outputs.md (tests/test_docs.py).
 MOTION_COLUMNS = [
     "id", "motion", "direction", "pta_g", "tp_s", "im", "edp_median", "sliding_median_cm",
     "pf_sliding", "sim_sliding_max_cm", "sim_theta_max_over_alpha", "sim_overturned",

@@ -22,7 +22,7 @@ M_TO_CM = 100.0
 
 @dataclass(frozen=True)
 class ItemSimulation:
-    """What ``assess simulate`` reports (SPEC §4).
+    """What ``assess simulate`` reports (docs/commands.md, "What assess simulate prints").
 
     Attributes
     ----------
@@ -47,7 +47,7 @@ class ItemSimulation:
     regression_sliding_median_m: Optional[float] = None
 
     def as_dict(self) -> dict:
-        """The JSON object of SPEC §4 (lengths in cm), plus what the run was."""
+        """The JSON object of ``assess simulate --json`` (docs/commands.md; lengths in cm), plus what the run was."""
         r = self.response
         out = {
             "alpha_rad": self.block.alpha_rad,

@@ -1,4 +1,4 @@
-"""Build the sample inventory workbook ``inventories/lab.xlsx`` (format: SPEC.md section 1).
+"""Build the sample inventory workbook ``inventories/lab.xlsx`` (format: docs/workbook.md).
 
 A sample research-laboratory building with floors 0 (ground) to 6, modelled on
 the "UC Science Building" of Konstantinidis & Makris (2010), Bull. Earthquake
@@ -51,7 +51,7 @@ CONSEQUENCE_BY_PREFIX = {"GAS": "hazardous", "LN2": "hazardous", "CAB": "hazardo
 
 def item(id, name, room, floor, h, w, d, kg, mu, clearance, notes, source,
          mu_static=None, cg=None, anchored=False, qty=1, mu_range=(None, None)):
-    """One row of the `equipment` sheet, in cm and kg (SPEC.md section 1)."""
+    """One row of the `equipment` sheet, in cm and kg (docs/workbook.md)."""
     return dict(id=id, name=name, room=room, floor=floor, height_cm=h, width_cm=w,
                 depth_cm=d, mass_kg=kg, mu=mu, mu_static=mu_static, mu_low=mu_range[0], mu_high=mu_range[1],
                 clearance_cm=clearance, cg_height_cm=cg,

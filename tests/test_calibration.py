@@ -1,4 +1,4 @@
-"""Calibration (SPEC §5): recover an undeclared effect from synthetic measurements, and read MEASURED.xlsx.
+"""Calibration (docs/calibration.md): recover an undeclared effect from synthetic measurements, and read MEASURED.xlsx.
 
 The generator plays the engine with ONE effect switched on that the workbook
 does not declare, and measures like a shake table would: peak sliding with
@@ -258,7 +258,7 @@ def test_residual_correlation_points_to_the_quantity_the_residual_follows():
 def measured_on_feet(lab, contact_fraction, seed):
     """What the table measures if each specimen stood on feet at ``contact_fraction``·b from its
     centre line: the event-driven solver (not the calibration's code path) on the footed box, its
-    peak rotation divided by α of the DECLARED box, atan(b/h), as SPEC §5 defines the measure."""
+    peak rotation divided by α of the DECLARED box, atan(b/h), as docs/workbook.md defines the measure."""
     from assess.mechanics.block import Block
     from assess.mechanics.event_driven import simulate_event_driven
 

@@ -241,7 +241,7 @@ KM2010_MEASURED = ROOT / "inventories" / "km2010-measured.xlsx"
 
 
 def test_calibrate_the_papers_loop_writes_spec_json(tmp_path):
-    """The shipped example (slow-pull mu against Table 3's sliding): calibration.json has SPEC §5's keys,
+    """The shipped example (slow-pull mu against Table 3's sliding): calibration.json has docs/outputs.md's keys,
     27 tests, every effect tried, a selection the file explains, and a report."""
     import json
 

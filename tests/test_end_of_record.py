@@ -1,6 +1,6 @@
 """One end-of-record convention for every solver: the floor is at rest right after the last sample.
 
-SPEC §4 defines a pulse on 0 ≤ t ≤ Tp and zero after. A Type-B pulse,
+A pulse is defined on 0 ≤ t ≤ Tp and zero after (docs/commands.md, ``assess simulate``). A Type-B pulse,
 ap·cos(2πt/Tp), ends at +ap: the floor then *steps* to rest. The reference
 here integrates Housner's equation of pure rocking (Makris & Roussos 2000,
 eq. 1; Housner 1963, eq. 11 for the impacts) with scipy's DOP853 under that

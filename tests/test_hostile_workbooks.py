@@ -379,7 +379,7 @@ def test_calibrate_lists_at_most_50_problems(tmp_path):
 
 
 def test_consequence_column_is_read_and_a_wrong_value_is_located(tmp_path):
-    """consequence (SPEC §1): any case, space or underscore for the hyphen, ordinary when empty; anything else
+    """consequence (docs/workbook.md): any case, space or underscore for the hyphen, ordinary when empty; anything else
     exit 2 at its cell."""
     sheets = good_sheets()
     for row in sheets["equipment"]:

@@ -21,7 +21,7 @@ LEAD_S, TAIL_S = 5.0, 30.0
 
 
 def padded_pulse(pulse, ap_g, tp_s, dt=DT):
-    """A pulse of SPEC §4 with LEAD_S of zeros before it and TAIL_S after."""
+    """A pulse of ``assess simulate`` (docs/commands.md) with LEAD_S of zeros before it and TAIL_S after."""
     core = pulse_record(pulse, ap_g, tp_s, dt).accel_g
     return np.concatenate([np.zeros(int(round(LEAD_S / dt))), core, np.zeros(int(round(TAIL_S / dt)))])
 
@@ -34,7 +34,7 @@ def sine(amplitude_g, period_s, cycles, samples_per_cycle=200):
 
 # ------------------------------------------------------------------ the filter keeps pulses
 
-# Peak velocity of the pulse (SPEC §4, pulses.py): A: 2 ap/ωp at Tp/2; B: ap/ωp at Tp/4.
+# Peak velocity of the pulse (pulses.py): A: 2 ap/ωp at Tp/2; B: ap/ωp at Tp/4.
 # Tolerances: a Type-B pulse has no net displacement and keeps its PGV within 1 %.
 # A Type-A pulse carries a permanent displacement (fling) that any high-pass filter
 # removes, taking back about f_c·Tp of its PGV (f_c = 0.02 Hz): allowed 1.15 f_c Tp + 0.5 %.

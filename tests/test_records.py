@@ -1,4 +1,4 @@
-"""Record readers (SPEC §1): every format, robustness to how files are saved, and wrong records.
+"""Record readers (docs/workbook.md): every format, robustness to how files are saved, and wrong records.
 
 Every wrong record must raise :class:`InputError` whose problem names the file,
 the line (``Problem.row``), says what is wrong and how to fix it.

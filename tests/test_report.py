@@ -1,4 +1,4 @@
-"""The risk report (SPEC §3: report.html and report.pdf).
+"""The risk report (docs/outputs.md: report.html and report.pdf).
 
 The result is built here from the dataclass, not by the pipeline, so the
 report is tested on its own: one item rocks (high), one slides far beyond its

@@ -1,4 +1,4 @@
-"""``assess simulate`` (SPEC §4) as a user runs it, and the record reader it uses."""
+"""``assess simulate`` (docs/commands.md) as a user runs it, and the record reader it uses."""
 from __future__ import annotations
 
 import json

@@ -175,7 +175,7 @@ def sheet_xml(rows_xml):
 
 
 def write_tests_workbook(path: Path, rows: list[list], sheet: str = "tests") -> Path:
-    """A measured-tests workbook (SPEC §5): ``rows`` of the sheet ``tests``, header first."""
+    """A measured-tests workbook (docs/workbook.md): ``rows`` of the sheet ``tests``, header first."""
     book = openpyxl.Workbook()
     book.active.title = sheet
     for row in rows:

@@ -1,4 +1,4 @@
-"""Calibration against measured tests (SPEC §5, ``assess calibrate``).
+"""Calibration against measured tests (``assess calibrate``, docs/calibration.md).
 
 :func:`run_calibration` only sequences the pure functions of
 :mod:`assess.calibration.measured` (the tests and the motion each played),
@@ -78,7 +78,7 @@ class CalibrationResult:
     margin: float = MARGIN
 
     def as_json(self) -> dict:
-        """The content of ``calibration.json`` (SPEC §5).
+        """The content of ``calibration.json`` (docs/outputs.md).
 
         A parameter the tests cannot fix (:func:`~assess.calibration.fit.undetermined_parameters`)
         is ``null`` in ``parameters`` and ``standard_error``, and ``not_determined`` says why.
@@ -125,7 +125,7 @@ def build_cases(inventory, measured: pd.DataFrame) -> list[Case]:
 def run_calibration(inventory, measured: pd.DataFrame, *, effects=None, margin: float = MARGIN,
                     progress: Optional[Callable[[int, int], None]] = None,
                     cache: Optional[dict] = None) -> CalibrationResult:
-    """Fit every available effect to the measured tests and select one (SPEC §5).
+    """Fit every available effect to the measured tests and select one (docs/calibration.md).
 
     Parameters
     ----------

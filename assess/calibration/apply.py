@@ -1,7 +1,7 @@
 """The calibrated model in the assessment: ``assess WORKBOOK --hazard LEVEL --calibration calibration.json``.
 
 ``assess calibrate`` selects an effect and its parameters
-(``calibration.json``, SPEC §5). Here that effect is switched on for the
+(``calibration.json``, docs/outputs.md). Here that effect is switched on for the
 items assessed, by the same function the calibration fitted it with
 (:func:`assess.calibration.effects.calibrated_block`), so that on the
 shake-table workbook of a calibration the assessment simulates each specimen

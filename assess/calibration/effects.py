@@ -4,7 +4,7 @@ Every effect changes one physical ingredient of the block model of
 :mod:`assess.mechanics.block` with one or two parameters, each with bounds and
 a neutral value (the value at which the effect changes nothing, or the closest
 the effect comes to that; None for ``restitution``, whose neutral is Housner's
-e, different for every item). :data:`EFFECTS` lists them by name (SPEC §5):
+e, different for every item). :data:`EFFECTS` lists them by name (docs/calibration.md):
 
 ``none``
     The model as the workbook declares it.
@@ -38,7 +38,7 @@ e, different for every item). :data:`EFFECTS` lists them by name (SPEC §5):
     those about a foot, the moment of inertia stays that of the whole box.
 
 Every effect's θmax/α is θmax over α of the item's **declared** box,
-atan(b/h) (:func:`declared_alpha_rad`), as the measured one is (SPEC §5):
+atan(b/h) (:func:`declared_alpha_rad`), as the measured one is (docs/workbook.md, the measured tests):
 with feet the solvers divide by α of the feet, and the prediction is
 brought back to the declared α.
 
@@ -146,7 +146,7 @@ def item_block(item: Mapping, half_width_m: float, **changes) -> Block:
 
 
 def declared_alpha_rad(block: Block) -> float:
-    """α = atan(b/h) of the item's declared box [rad], whatever it stands on (SPEC §5).
+    """α = atan(b/h) of the item's declared box [rad], whatever it stands on (as measured: docs/workbook.md).
 
     A measured θmax/α is divided by this α; an effect may change the points
     the block pivots on (``foot_inset``), never the α a rotation is read against.
@@ -164,7 +164,7 @@ def theta_over_declared_alpha(response_theta_max_over_alpha, block: Block) -> fl
 
 
 def _engine(block: Block, motion: Record) -> Prediction:
-    """The engine's peaks, θmax over α of the declared box (as measured, SPEC §5) for every effect."""
+    """The engine's peaks, θmax over α of the declared box (as measured, docs/workbook.md) for every effect."""
     response = simulate(block, motion.accel_g, motion.dt_s)
     return Prediction(float(response.sliding_max_m), theta_over_declared_alpha(response.theta_max_over_alpha, block),
                       bool(response.overturned), response.mode)

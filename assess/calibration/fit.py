@@ -1,4 +1,4 @@
-"""Errors of a model against measured tests, fitting an effect, and choosing one (SPEC §5).
+"""Errors of a model against measured tests, fitting an effect, and choosing one (docs/calibration.md).
 
 **Error measures** (:func:`error_measures`):
 

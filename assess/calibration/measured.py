@@ -1,4 +1,4 @@
-"""Read the measured table tests (SPEC §5, MEASURED.xlsx sheet ``tests``) and the motion of each.
+"""Read the measured table tests (MEASURED.xlsx sheet ``tests``, docs/workbook.md) and the motion of each.
 
 One row per test: ``specimen`` (an ``equipment.id`` of the inventory
 workbook), ``motion`` (a ``hazard.motion`` of the workbook: the motion as the

@@ -1,6 +1,6 @@
 """The governing demand: each item's sliding and overturning over its floor's suite, from the model that holds.
 
-Every motion of the suite weighs the same (SPEC §1, Suites), and each motion
+Every motion of the suite weighs the same (docs/workbook.md, Suites), and each motion
 contributes the distribution of the model that governs for it:
 
 * ``record`` — the engine under the record itself: exact for the rigid-block

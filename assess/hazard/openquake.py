@@ -2,7 +2,7 @@
 
 Reads the two CSV exports of the OpenQuake engine's classical and event-based
 calculators that give the peak ground acceleration of a site at a hazard level
-(SPEC §2, ``--oq-hazard``):
+(``--oq-hazard``, docs/commands.md):
 
 * a **hazard curve**, ``hazard_curve-<kind>-PGA_<calc_id>.csv``::
 

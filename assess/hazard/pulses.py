@@ -1,6 +1,6 @@
 """Trigonometric and rectangular acceleration pulses (Makris 1997; Makris & Chang 2000).
 
-With ωp = 2π/Tp and acceleration amplitude ap (SPEC §4):
+With ωp = 2π/Tp and acceleration amplitude ap (docs/commands.md, ``assess simulate``):
 
 * ``rect``: ü = ap for 0 ≤ t ≤ Tp (Newmark 1965);
 * ``A`` (one-sine, forward displacement): ü = ap sin(ωp t), 0 ≤ t ≤ Tp;

@@ -1,6 +1,6 @@
 """A motion given by its two horizontal components (``record`` and ``record_2``), on the items' axes.
 
-The hazard sheet (SPEC §1) may give a motion both horizontal components of one
+The hazard sheet (docs/workbook.md) may give a motion both horizontal components of one
 recording: ``record`` and ``record_2``, and ``azimuth_deg``, the angle from the
 items' width axis (direction 1) to the axis of the component in ``record``,
 counted positive towards the items' depth axis (direction 2); the axis of

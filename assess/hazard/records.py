@@ -1,6 +1,6 @@
 """Acceleration records: read a file into floor accelerations [g] at a constant step.
 
-Formats (SPEC §1):
+Formats (docs/workbook.md, "Record files"):
 
 * CSV with a header naming time and acceleration with their units,
   ``time_s,accel_g`` (also ``accel_m_s2``, ``accel_cm_s2`` and ``accel_gal``,
@@ -140,7 +140,7 @@ def _problem(path, message, fix, line=None):
 def check_record_location(record_path, folder) -> str | None:
     """Why a workbook in ``folder`` may not name ``record_path`` as a record; None when it may.
 
-    A workbook names its records relative to its own folder (SPEC §1); one
+    A workbook names its records relative to its own folder (docs/workbook.md); one
     that reaches outside it (``../../etc/passwd``, ``/proc/self/environ``, a
     link inside the folder that points elsewhere) would make assess read, and
     a message about it quote, a file the user never meant to hand over. So
@@ -643,7 +643,7 @@ def _step_of_times(path, times, where, header_dt) -> float:
 
 
 def pulse_record(pulse: str, ap_g: float, tp_s: float, dt_s: float | None = None) -> Record:
-    """The pulse of SPEC §4 sampled from 0 to its end (zero after), as a :class:`Record`.
+    """A pulse (docs/commands.md, ``--pulse``) sampled from 0 to its end (zero after), as a :class:`Record`.
 
     The default step is min(Tp/400, 5 ms): 400 samples per pulse period, over
     which the piecewise-linear input the engine reads follows the smooth pulse.

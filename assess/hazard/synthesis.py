@@ -1,7 +1,7 @@
 """Synthetic near-fault floor accelerations from PTA, Tp and vp alone.
 
 Where the workbook describes a motion only by its peak acceleration PTA, the
-period Tp and the velocity amplitude vp of its predominant pulse (SPEC §1), this
+period Tp and the velocity amplitude vp of its predominant pulse (docs/workbook.md), this
 module generates acceleration histories with the stochastic near-fault model of
 Dabaghi & Der Kiureghian [1]_ [2]_: a velocity pulse plus a stochastic
 high-frequency residual.

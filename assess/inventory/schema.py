@@ -1,7 +1,7 @@
 """The workbook's columns as a table, and the parsing of headers and cells.
 
 Each sheet is described by a :class:`SheetSpec`, a tuple of :class:`Column`
-entries (SPEC §1). Validation is driven by that table: a column's ``kind``
+entries (docs/workbook.md). Validation is driven by that table: a column's ``kind``
 picks its cell parser, its ``dimension`` the unit suffixes it accepts (see
 :mod:`assess.inventory.units`), its range the plausibility check. Nothing here
 raises to the user: a bad cell raises :class:`CellError`, which the reader
@@ -58,7 +58,7 @@ class Column:
 
     ``name`` is the header without its unit suffix; ``kind`` selects the cell
     parser (see :data:`PARSERS`); ``dimension`` is set for quantities whose
-    header must carry a unit suffix; ``spec_suffix`` is the suffix SPEC §1
+    header must carry a unit suffix; ``spec_suffix`` is the suffix docs/workbook.md
     documents. ``low``/``high`` bound the plausible value in canonical units
     (``positive``: must be > 0; ``signed``: the bound applies to the magnitude).
     ``unless_record``: required on a row that gives no ``record``.
@@ -466,7 +466,7 @@ def parse_pulse(value: object, column: Column) -> str:
     return text
 
 
-#: What an item's failure may cost (SPEC §1, ``consequence``), most severe first.
+#: What an item's failure may cost (docs/workbook.md, ``consequence``), most severe first.
 CONSEQUENCES = ("life-safety", "hazardous", "critical", "valuable", "ordinary")
 
 

@@ -1,4 +1,4 @@
-"""Read the inventory workbook (SPEC §1) into a validated, SI :class:`Inventory`.
+"""Read the inventory workbook (docs/workbook.md) into a validated, SI :class:`Inventory`.
 
 :func:`read_workbook` checks the whole file before giving up: every problem of
 every sheet and row is collected as a located :class:`~assess.errors.Problem`

@@ -1,4 +1,4 @@
-"""The risk report for facility managers: ``report.html`` and ``report.pdf`` (SPEC §3).
+"""The risk report for facility managers: ``report.html`` and ``report.pdf`` (docs/outputs.md).
 
 ``render_html(result)`` turns an :class:`~assess.result.AssessmentResult` into
 one self-contained HTML document (stylesheet inlined, figures as SVG ``data:``

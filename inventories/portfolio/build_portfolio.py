@@ -1,4 +1,4 @@
-"""Build the sample portfolio ``inventories/portfolio/`` (format: SPEC.md sections 1 and 6).
+"""Build the sample portfolio ``inventories/portfolio/`` (format: docs/workbook.md).
 
 Three small buildings made from the sample laboratory (``inventories/lab.xlsx``,
 built by ``inventories/build_lab.py``; its README says where every number came
