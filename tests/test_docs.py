@@ -158,3 +158,22 @@ def test_every_link_between_the_pages_lands_on_a_heading():
             if target not in anchors or (anchor and anchor not in anchors[target]):
                 broken.append(f"{page.name} -> {target}#{anchor}")
     assert checked > 20 and not broken, broken
+
+
+def test_every_key_of_simulate_json_is_documented():
+    """``assess simulate --json`` prints :meth:`ItemSimulation.as_dict`; its keys (a pulse's run, which adds
+    ``regression``) against the table of docs/commands.md."""
+    import math
+
+    from assess.hazard.records import pulse_record
+    from assess.mechanics.block import Block, BlockResponse
+    from assess.simulation import ItemSimulation
+
+    response = BlockResponse(sliding_max_m=0.1, sliding_residual_m=0.05, theta_max_over_alpha=0.0, uplift=False,
+                             overturned=False, overturn_time_s=math.nan, mode_sequence=((0.0, "slide"),),
+                             solver="sliding kernel")
+    run = ItemSimulation(block=Block(half_width_m=0.3, cg_height_m=1.0, height_m=2.0, mu=0.2),
+                         motion=pulse_record("B", 0.5, 1.0), response=response, pulse_period_s=1.0, im=1.5,
+                         regression_sliding_median_m=0.05)
+    compare(table_names(section("commands.md", "What `assess simulate` prints")), list(run.as_dict()),
+            "docs/commands.md, assess simulate --json")
