@@ -27,9 +27,11 @@ def _problems(make_workbook, **kwargs) -> list:
 
 def test_site_with_design_values_and_no_hazard_sheet(make_workbook):
     inventory = read_workbook(make_workbook(_sheets(
-        site=[("code", "ASCE 7-22"), ("sds_g", 1.0), ("sd1_g", 0.6), ("risk_category", "iv")], hazard=False)))
-    site = inventory.site
-    assert (site.code, site.sds_g, site.sd1_g, site.risk_category) == ("ASCE 7-22", 1.0, 0.6, "IV")
+        site=[("code", "ASCE 7-22"), ("sds_g", 1.0), ("sd1_g", 0.6), ("site_class", "D"),
+              ("risk_category", "iv")], hazard=False)))
+    site = inventory.site  # the site class beside design values is kept (it says what they stand on)
+    assert (site.code, site.sds_g, site.sd1_g, site.site_class, site.risk_category) == (
+        "ASCE 7-22", 1.0, 0.6, "D", "IV")
     assert site.tl_s == 8.0 and site.suite_size == 11 and site.ss_g is None
     assert inventory.hazard.empty and inventory.building is None
 
@@ -81,6 +83,7 @@ def test_unit_slip_in_height_is_refused(make_workbook):
 @pytest.mark.parametrize("pairs, cell, words", [
     ([("sds_g", 1.0)], "A2", "without sd1_g"),
     ([("ss_g", 1.0), ("s1_g", 0.4)], "A2", "without site_class"),
+    ([("ss_g", 1.0), ("site_class", "C")], "A2", "without s1"),
     ([("sds_g", 1.0), ("sd1_g", 0.6), ("code", "ASCE 7-10")], "B4", "not an edition"),
     ([("ss_g", 1.0), ("s1_g", 0.4), ("site_class", "F")], "B4", "site response analysis"),
     ([("ss_g", 1.0), ("s1_g", 0.4), ("site_class", "CD"), ("code", "ASCE 7-16")], "B4", "not one of ASCE 7-16's"),

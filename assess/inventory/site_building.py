@@ -252,20 +252,21 @@ def read_site(table, folder: Path, report) -> SiteSheet | None:
         at("risk_category", f"risk category {schema.quote(out['risk_category'])} is not one of "
            f"{', '.join(RISK_CATEGORIES)}.", "write I, II, III or IV (ASCE 7 Table 1.5-1: a hospital is IV).")
     design = [k for k in ("sds", "sd1") if k in out]
-    mapped = [k for k in ("ss", "s1", "site_class") if k in out]
+    mapped = [k for k in ("ss", "s1") if k in out]
     if design and mapped:
         report.at(values[mapped[0]][1], table.headers.get("key"), "the site sheet gives both design "
                   f"values ({', '.join(design)}) and mapped values ({', '.join(mapped)}).",
-                  "keep one set: sds_g and sd1_g, or ss_g, s1_g and site_class.")
+                  "keep one set: sds_g and sd1_g (from a hazard lookup), or ss_g, s1_g and site_class.")
     elif design and len(design) < 2:
         missing = ({"sds", "sd1"} - set(design)).pop()
         report.at(values[design[0]][1], table.headers.get("key"), f"the site sheet gives {design[0]}_g "
                   f"without {missing}_g.", f"add a row {missing}_g (both come from the site's hazard lookup).")
-    elif mapped and len(mapped) < 3:
-        missing = sorted({"ss", "s1", "site_class"} - set(mapped))
+    elif mapped and (len(mapped) < 2 or "site_class" not in out):
+        missing = sorted({"ss", "s1", "site_class"} - set(mapped) - set(out))
         report.at(values[mapped[0]][1], table.headers.get("key"), f"the site sheet gives "
                   f"{', '.join(mapped)} without {', '.join(missing)}.",
-                  "add the missing rows: ss_g, s1_g and site_class go together.")
+                  "add the missing rows: ss_g, s1_g and site_class go together (the site class sets the "
+                  "site coefficients).")
     if not design and not mapped and "uhs" not in out:
         report(f"the site sheet gives no hazard: neither sds_g and sd1_g, nor ss_g, s1_g and "
                "site_class, nor a uniform-hazard spectrum (uhs).",
