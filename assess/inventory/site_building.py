@@ -31,10 +31,6 @@ DEFAULT_RISK_CATEGORY = "II"
 #: Motions in a level's ground suite: ASCE 7-22 §16.2.2 asks for at least 11.
 DEFAULT_SUITE_SIZE = 11
 MIN_SUITE_SIZE, MAX_SUITE_SIZE = 3, 100
-#: The long-period transition period where the site sheet gives none [s]. The maps give 4-16 s in
-#: the conterminous US; TL bends the spectrum only beyond it, far above the periods of buildings
-#: of up to some 40 storeys and of equipment, so the value seldom matters here; 8 s is the middle.
-DEFAULT_TL_S = 8.0
 #: Lateral systems (the families of ASCE 7-22 Table 12.8-2); they set the default T1 and mode shape.
 SYSTEMS = ("steel moment frame", "concrete moment frame", "eccentrically braced frame",
            "braced frame", "shear wall", "other")
@@ -58,8 +54,9 @@ class SiteSheet:
         Mapped MCE_R spectral accelerations [g]; with ``site_class`` they give SDS, SD1.
     site_class : str or None
         ``A`` ... ``E`` (with ``BC``, ``CD``, ``DE`` under ASCE 7-22).
-    tl_s : float
-        Long-period transition period [s] (:data:`DEFAULT_TL_S` when not given).
+    tl_s : float or None
+        Long-period transition period [s]; None when not given (the spectrum then has no T > TL
+        branch, which bends it only beyond 4-16 s, above the periods of buildings and equipment).
     risk_category : str
         ``I`` ... ``IV``.
     uhs_path : str
@@ -82,7 +79,7 @@ class SiteSheet:
     ss_g: float | None = None
     s1_g: float | None = None
     site_class: str | None = None
-    tl_s: float = DEFAULT_TL_S
+    tl_s: float | None = None
     risk_category: str = DEFAULT_RISK_CATEGORY
     uhs_path: str = ""
     oq_site: str = ""
@@ -290,7 +287,7 @@ def read_site(table, folder: Path, report) -> SiteSheet | None:
     if len(report.problems) > before:
         return None
     return SiteSheet(code=code, sds_g=out.get("sds"), sd1_g=out.get("sd1"), ss_g=out.get("ss"),
-                     s1_g=out.get("s1"), site_class=site_class, tl_s=out.get("tl", DEFAULT_TL_S),
+                     s1_g=out.get("s1"), site_class=site_class, tl_s=out.get("tl"),
                      risk_category=risk, uhs_path=paths.get("uhs", ""), oq_site=out.get("oq_site", ""),
                      records_folder=paths.get("records", ""),
                      suite_size=int(out.get("suite_size", DEFAULT_SUITE_SIZE)),
