@@ -6,6 +6,8 @@ from pathlib import Path
 
 import pandas as pd
 
+from assess.inventory.site_building import BuildingSheet, SiteSheet
+
 
 @dataclass(frozen=True)
 class Inventory:
@@ -42,12 +44,18 @@ class Inventory:
         The packaged defaults (``assess.data.default_settings()``) updated
         with the user's ``settings`` sheet, values converted to float where
         numeric.
+    site : SiteSheet or None
+        The ``site`` sheet (:mod:`assess.inventory.site_building`), None when the workbook has none.
+    building : BuildingSheet or None
+        The ``building`` sheet, None when the workbook has none.
     """
 
     path: Path
     equipment: pd.DataFrame
     hazard: pd.DataFrame
     settings: dict = field(default_factory=dict)
+    site: SiteSheet | None = None
+    building: BuildingSheet | None = None
 
     @property
     def levels(self) -> list[str]:

@@ -174,6 +174,10 @@ SETTINGS = SheetSpec("settings", (
     Column("key", "text", required=True, max_chars=100),
     Column("value", "raw"),
 ), subject="a setting", extra_required_headers=("value",))
+#: The site's hazard and the building, key/value sheets like settings (assess/inventory/site_building.py).
+SITE = SheetSpec("site", SETTINGS.columns, subject="a site value", extra_required_headers=("value",))
+BUILDING = SheetSpec("building", SETTINGS.columns, subject="a building value",
+                     extra_required_headers=("value",))
 
 
 # ---------------------------------------------------------------- formatting

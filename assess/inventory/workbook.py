@@ -31,8 +31,9 @@ from assess.data import default_settings
 from assess.errors import InputError, Problem
 from assess.inventory import schema, xlsx
 from assess.inventory.model import Inventory
-from assess.inventory.schema import (EQUIPMENT, HAZARD, SETTINGS, UNUSABLE, CellError, Header,
-                                     SheetSpec)
+from assess.inventory.schema import (BUILDING, EQUIPMENT, HAZARD, SETTINGS, SITE, UNUSABLE, CellError,
+                                     Header, SheetSpec)
+from assess.inventory.site_building import read_building, read_site
 
 
 
@@ -114,7 +115,8 @@ def read_workbook(path: str | Path) -> Inventory:
         sheets = _find_sheets(book, report)
         reports = {name: SheetReport(given, title, problems) for name, title in sheets.items()}
         tables = {}
-        for name, spec in (("equipment", EQUIPMENT), ("hazard", HAZARD), ("settings", SETTINGS)):
+        for name, spec in (("equipment", EQUIPMENT), ("hazard", HAZARD), ("settings", SETTINGS),
+                           ("site", SITE), ("building", BUILDING)):
             if name in sheets:
                 cells = _sheet_cells(book, sheets[name], reports[name])
                 if cells is not None:
@@ -127,10 +129,12 @@ def read_workbook(path: str | Path) -> Inventory:
     settings = default_settings()
     if "settings" in tables:
         settings = _read_settings(tables["settings"], settings, reports["settings"])
+    site = read_site(tables["site"], path.parent, reports["site"]) if "site" in tables else None
+    building = read_building(tables["building"], reports["building"]) if "building" in tables else None
     if problems:
         raise InputError(problems)  # assess.errors lists the first 50 and counts the rest
     return Inventory(path=path, equipment=_frame(equipment, _EQUIPMENT_TYPES),
-                     hazard=_frame(hazard, _HAZARD_TYPES), settings=settings)
+                     hazard=_frame(hazard, _HAZARD_TYPES), settings=settings, site=site, building=building)
 
 
 # ---------------------------------------------------------------- the file
@@ -139,7 +143,8 @@ def _find_sheets(book: xlsx.Book, report: SheetReport) -> dict[str, str]:
     """Sheet titles by spec name (matched case-insensitively); missing required sheets reported."""
     by_lower = {title.strip().lower(): title for title in book.sheetnames}
     found = {}
-    for spec in (EQUIPMENT, HAZARD, SETTINGS):
+    optional = (SETTINGS, SITE, BUILDING)  # hazard too, where a site sheet gives the hazard
+    for spec in (EQUIPMENT, HAZARD, SETTINGS, SITE, BUILDING):
         title = by_lower.get(spec.name)
         if title is not None and not book.is_table(title):
             report(f"sheet '{title}' is a chart, not a table.",
@@ -147,12 +152,13 @@ def _find_sheets(book: xlsx.Book, report: SheetReport) -> dict[str, str]:
             continue
         if title is not None:
             found[spec.name] = title
-        elif spec is not SETTINGS:
+        elif spec not in optional and not (spec is HAZARD and SITE.name in by_lower):
             have = ", ".join(f"'{schema.clip(t, 40)}'" for t in book.sheetnames[:20])
             more = f" and {len(book.sheetnames) - 20} more" if len(book.sheetnames) > 20 else ""
             report(f"the required sheet '{spec.name}' is missing; the workbook has the sheets "
                    f"{have}{more}.",
-                   f"add a sheet named '{spec.name}' (or rename the sheet that holds its table).")
+                   f"add a sheet named '{spec.name}' (or rename the sheet that holds its table)"
+                   + (", or a 'site' sheet with the site's hazard." if spec is HAZARD else "."))
     return found
 
 

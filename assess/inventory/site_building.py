@@ -1,0 +1,350 @@
+"""The workbook's ``site`` and ``building`` sheets: the hazard and the structure as a user has them.
+
+Both are ``key`` / ``value`` sheets like ``settings`` (``docs/workbook.md``). They are read into two
+small frozen records, :class:`SiteSheet` and :class:`BuildingSheet`, with every value checked and in
+SI units; turning them into target spectra, ground suites and floor motions is the work of
+:mod:`assess.site` and :mod:`assess.building`.
+
+A key may carry a unit suffix where the quantity has one (``height_m``, ``height_ft``,
+``storey_height_m``, ``tl_s``): the same suffixes, converted once with pint, as the equipment
+columns (:mod:`assess.inventory.units`).
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from assess.inventory import schema
+from assess.inventory.schema import CellError, Column
+from assess.inventory.units import LENGTH, PERIOD
+
+#: Code editions whose spectra and equations the tool applies.
+CODES = ("ASCE 7-22", "ASCE 7-16")
+DEFAULT_CODE = "ASCE 7-22"
+#: Site classes of ASCE 7-22 Table 20.2-1 (7-16 has A-F without the intermediate BC, CD, DE).
+SITE_CLASSES = ("A", "B", "BC", "C", "CD", "D", "DE", "E")
+SITE_CLASSES_7_16 = ("A", "B", "C", "D", "E")
+#: Risk categories of ASCE 7 Table 1.5-1 (a hospital with surgery or emergency treatment is IV).
+RISK_CATEGORIES = ("I", "II", "III", "IV")
+DEFAULT_RISK_CATEGORY = "II"
+#: Motions in a level's ground suite: ASCE 7-22 §16.2.2 asks for at least 11.
+DEFAULT_SUITE_SIZE = 11
+MIN_SUITE_SIZE, MAX_SUITE_SIZE = 3, 100
+#: Lateral systems (the families of ASCE 7-22 Table 12.8-2); they set the default T1 and mode shape.
+SYSTEMS = ("steel moment frame", "concrete moment frame", "eccentrically braced frame",
+           "braced frame", "shear wall", "other")
+DEFAULT_DAMPING = 0.05
+MAX_STOREYS = 200
+
+_ROMAN = {"1": "I", "2": "II", "3": "III", "4": "IV"}
+
+
+@dataclass(frozen=True)
+class SiteSheet:
+    """The ``site`` sheet, checked (``docs/workbook.md``, sheet ``site``).
+
+    Attributes
+    ----------
+    code : str
+        ``ASCE 7-22`` or ``ASCE 7-16``.
+    sds_g, sd1_g : float or None
+        Design spectral accelerations at short periods and at 1 s [g].
+    ss_g, s1_g : float or None
+        Mapped MCE_R spectral accelerations [g]; with ``site_class`` they give SDS, SD1.
+    site_class : str or None
+        ``A`` ... ``E`` (with ``BC``, ``CD``, ``DE`` under ASCE 7-22).
+    tl_s : float or None
+        Long-period transition period [s]; None when not given (the spectrum then has no T > TL
+        branch, which bends it only beyond 4-16 s, above the periods of buildings and equipment).
+    risk_category : str
+        ``I`` ... ``IV``.
+    uhs_path : str
+        Absolute path of an OpenQuake uniform-hazard-spectrum export, "" when none.
+    oq_site : str
+        The site to pick in a ``uhs`` file of several ("" when not given).
+    records_folder : str
+        Absolute path of a folder of ground-motion records, "" when none.
+    suite_size : int
+        Motions in a level's ground suite.
+    rows : dict
+        The sheet row of each key given, to locate later problems.
+    sheet : str
+        The sheet's title as written.
+    """
+
+    code: str = DEFAULT_CODE
+    sds_g: float | None = None
+    sd1_g: float | None = None
+    ss_g: float | None = None
+    s1_g: float | None = None
+    site_class: str | None = None
+    tl_s: float | None = None
+    risk_category: str = DEFAULT_RISK_CATEGORY
+    uhs_path: str = ""
+    oq_site: str = ""
+    records_folder: str = ""
+    suite_size: int = DEFAULT_SUITE_SIZE
+    rows: dict = field(default_factory=dict, compare=False)
+    sheet: str = "site"
+
+    @property
+    def has_design_values(self) -> bool:
+        """True when SDS and SD1 are given (directly, or from SS, S1 and the site class)."""
+        return self.sds_g is not None or self.ss_g is not None
+
+
+@dataclass(frozen=True)
+class BuildingSheet:
+    """The ``building`` sheet, checked (``docs/workbook.md``, sheet ``building``).
+
+    Attributes
+    ----------
+    storeys : int
+        Storeys above ground; floors are numbered 0 (ground) to ``storeys`` (roof).
+    height_m : float
+        Height of the roof above the ground floor [m].
+    system : str
+        One of :data:`SYSTEMS`.
+    period_s : float or None
+        The fundamental period T1 where known [s]; None: the code's estimate.
+    damping : float
+        Modal damping ratio [-].
+    rows : dict
+        The sheet row of each key given.
+    sheet : str
+        The sheet's title as written.
+    """
+
+    storeys: int
+    height_m: float
+    system: str = "other"
+    period_s: float | None = None
+    damping: float = DEFAULT_DAMPING
+    rows: dict = field(default_factory=dict, compare=False)
+    sheet: str = "building"
+
+    @property
+    def roof_floor(self) -> int:
+        return self.storeys
+
+
+# ---------------------------------------------------------------- reading
+
+#: Keys of each sheet: name -> (column for the cell parser, what the value is).
+_SITE_KEYS = {
+    "code": Column("code", "text", max_chars=40),
+    "sds": Column("sds", "number", low=0.01, high=5.0, positive=True),
+    "sd1": Column("sd1", "number", low=0.01, high=5.0, positive=True),
+    "ss": Column("ss", "number", low=0.01, high=7.5, positive=True),
+    "s1": Column("s1", "number", low=0.01, high=3.0, positive=True),
+    "site_class": Column("site_class", "text", max_chars=20),
+    "tl": Column("tl", "number", dimension=PERIOD, spec_suffix="s", low=1.0, high=20.0, positive=True),
+    "risk_category": Column("risk_category", "text", max_chars=20),
+    "uhs": Column("uhs", "path", max_chars=255),
+    "oq_site": Column("oq_site", "text", max_chars=100),
+    "records": Column("records", "path", max_chars=255),
+    "suite_size": Column("suite_size", "integer", low=MIN_SUITE_SIZE, high=MAX_SUITE_SIZE),
+}
+#: Keys written with their only unit, g (``sds_g``), besides the bare name.
+_G_KEYS = ("sds", "sd1", "ss", "s1")
+_BUILDING_KEYS = {
+    "storeys": Column("storeys", "integer", low=1, high=MAX_STOREYS),
+    "height": Column("height", "number", dimension=LENGTH, spec_suffix="m", low=2.0, high=1000.0,
+                     positive=True),
+    "storey_height": Column("storey_height", "number", dimension=LENGTH, spec_suffix="m", low=2.0,
+                            high=20.0, positive=True),
+    "system": Column("system", "text", max_chars=60),
+    "period": Column("period", "number", dimension=PERIOD, spec_suffix="s", low=0.02, high=15.0,
+                     positive=True),
+    "damping": Column("damping", "number", low=0.0, high=0.3),
+}
+
+
+def _split_key(key: str, known: dict[str, Column]) -> tuple[str, str | None] | None:
+    """``(name, unit suffix)`` of a key such as ``height_ft``; None when the key is unknown."""
+    if key in known and known[key].dimension is None:
+        return key, None
+    for name, column in known.items():
+        if column.dimension is not None and key.startswith(name + "_"):
+            suffix = key[len(name) + 1:]
+            if suffix in column.dimension.units:
+                return name, suffix
+        if name in _G_KEYS and key == f"{name}_g":
+            return name, None
+    return None
+
+
+def _accepted(known: dict[str, Column]) -> list[str]:
+    return [f"{n}_g" if n in _G_KEYS else column.header() for n, column in known.items()]
+
+
+def _key_values(table, known: dict[str, Column], sheet: str, report) -> dict[str, tuple[object, int]]:
+    """The sheet's keys, each parsed by its column, in canonical units: name -> (value, row)."""
+    key_header, value_header = table.headers.get("key"), table.headers.get("value")
+    found: dict[str, tuple[object, int]] = {}
+    for row in table.rows:
+        if not row.ok("key", "value") or value_header is None or row.values["key"] is None:
+            continue
+        key = str(row.values["key"]).strip().lower()
+        split = _split_key(key, known)
+        if split is None:
+            close = schema.suggest(key, _accepted(known))
+            report.at(row.number, key_header, f"unknown key '{schema.clip(key, 40)}' in the {sheet} sheet"
+                      + (f"; did you mean '{close}'?" if close else "."),
+                      f"use one of {', '.join(_accepted(known))}.")
+            continue
+        name, suffix = split
+        if name in found:
+            report.at(row.number, key_header, f"'{name}' is given twice: in row {found[name][1]} and "
+                      f"in row {row.number}.", "delete one of the two rows.")
+            continue
+        raw = row.values["value"]
+        column = known[name]
+        if schema.is_empty(raw):
+            report.at(row.number, value_header, f"'{key}' has no value.", "type it, or delete the row.")
+            continue
+        try:
+            value = schema.parse_cell(raw, column, suffix, f"the {sheet}")
+        except CellError as error:
+            report.at(row.number, value_header, f"'{key}': {error.message}", error.fix)
+            continue
+        found[name] = (value, row.number)
+    return found
+
+
+def read_site(table, folder: Path, report) -> SiteSheet | None:
+    """The ``site`` sheet of a workbook in ``folder``, or None after reporting its problems.
+
+    ``table`` is the sheet read against the ``key``/``value`` spec; ``report`` locates problems
+    (:class:`assess.inventory.workbook.SheetReport`).
+    """
+    before = len(report.problems)
+    values = _key_values(table, _SITE_KEYS, "site", report)
+    value_header = table.headers.get("value")
+
+    def at(name, message, fix):
+        report.at(values[name][1], value_header, message, fix)
+
+    out = {name: value for name, (value, _) in values.items()}
+    code = _code(out.get("code", DEFAULT_CODE))
+    if code is None:
+        at("code", f"code {schema.quote(out['code'])} is not an edition the tool applies.",
+           f"write {' or '.join(CODES)}.")
+        code = DEFAULT_CODE
+    site_class = None
+    if "site_class" in out:
+        site_class = str(out["site_class"]).strip().upper().replace("SITE CLASS", "").strip()
+        allowed = SITE_CLASSES if code == "ASCE 7-22" else SITE_CLASSES_7_16
+        if site_class == "F":
+            at("site_class", "site class F needs a site response analysis (ASCE 7 §20.2.1); no "
+               "coefficient gives its spectrum.", "give sds_g and sd1_g from the site response "
+               "analysis instead of ss_g, s1_g and site_class.")
+        elif site_class not in allowed:
+            at("site_class", f"site class {schema.quote(out['site_class'])} is not one of {code}'s "
+               f"({', '.join(allowed)}).", "write the site class letter(s) from the geotechnical report.")
+    risk = str(out.get("risk_category", DEFAULT_RISK_CATEGORY)).strip().upper()
+    risk = _ROMAN.get(risk, risk)
+    if risk not in RISK_CATEGORIES:
+        at("risk_category", f"risk category {schema.quote(out['risk_category'])} is not one of "
+           f"{', '.join(RISK_CATEGORIES)}.", "write I, II, III or IV (ASCE 7 Table 1.5-1: a hospital is IV).")
+    design = [k for k in ("sds", "sd1") if k in out]
+    mapped = [k for k in ("ss", "s1") if k in out]
+    if design and mapped:
+        report.at(values[mapped[0]][1], table.headers.get("key"), "the site sheet gives both design "
+                  f"values ({', '.join(design)}) and mapped values ({', '.join(mapped)}).",
+                  "keep one set: sds_g and sd1_g (from a hazard lookup), or ss_g, s1_g and site_class.")
+    elif design and len(design) < 2:
+        missing = ({"sds", "sd1"} - set(design)).pop()
+        report.at(values[design[0]][1], table.headers.get("key"), f"the site sheet gives {design[0]}_g "
+                  f"without {missing}_g.", f"add a row {missing}_g (both come from the site's hazard lookup).")
+    elif mapped and (len(mapped) < 2 or "site_class" not in out):
+        missing = sorted({"ss", "s1", "site_class"} - set(mapped) - set(out))
+        report.at(values[mapped[0]][1], table.headers.get("key"), f"the site sheet gives "
+                  f"{', '.join(mapped)} without {', '.join(missing)}.",
+                  "add the missing rows: ss_g, s1_g and site_class go together (the site class sets the "
+                  "site coefficients).")
+    if not design and not mapped and "uhs" not in out:
+        report(f"the site sheet gives no hazard: neither sds_g and sd1_g, nor ss_g, s1_g and "
+               "site_class, nor a uniform-hazard spectrum (uhs).",
+               "add the site's design values (sds_g, sd1_g) from a hazard lookup, or delete the sheet.",
+               row=1)
+    paths = {}
+    for name, kind in (("uhs", "file"), ("records", "folder")):
+        if name in out:
+            path = _inside(folder, out[name])
+            if path is None:
+                at(name, f"{name} {schema.quote(out[name])} lies outside the workbook's folder.",
+                   f"move the {kind} into the workbook's folder and give its path relative to it.")
+            elif kind == "file" and not path.is_file():
+                at(name, f"{name} {schema.quote(out[name])} is not a file.",
+                   "give the path of the OpenQuake export, relative to the workbook's folder.")
+            elif kind == "folder" and not path.is_dir():
+                at(name, f"records {schema.quote(out[name])} is not a folder.",
+                   "give the folder of ground-motion records, relative to the workbook's folder.")
+            else:
+                paths[name] = str(path)
+    if len(report.problems) > before:
+        return None
+    return SiteSheet(code=code, sds_g=out.get("sds"), sd1_g=out.get("sd1"), ss_g=out.get("ss"),
+                     s1_g=out.get("s1"), site_class=site_class, tl_s=out.get("tl"),
+                     risk_category=risk, uhs_path=paths.get("uhs", ""), oq_site=out.get("oq_site", ""),
+                     records_folder=paths.get("records", ""),
+                     suite_size=int(out.get("suite_size", DEFAULT_SUITE_SIZE)),
+                     rows={name: row for name, (_, row) in values.items()}, sheet=table.title)
+
+
+def read_building(table, report) -> BuildingSheet | None:
+    """The ``building`` sheet, or None after reporting its problems."""
+    before = len(report.problems)
+    values = _key_values(table, _BUILDING_KEYS, "building", report)
+    value_header, key_header = table.headers.get("value"), table.headers.get("key")
+    out = {name: value for name, (value, _) in values.items()}
+    if "storeys" not in out:
+        report("the building sheet has no 'storeys'.", "add a row storeys with the number of storeys "
+               "above ground (floors are numbered 0, the ground, to storeys, the roof).", row=1)
+    if "height" in out and "storey_height" in out:
+        report.at(values["storey_height"][1], key_header, "the building sheet gives both height and "
+                  "storey_height.", "keep one: height_m (roof above ground) or storey_height_m (uniform).")
+    elif "height" not in out and "storey_height" not in out:
+        report("the building sheet has no height.", "add height_m (the roof above the ground floor) or "
+               "storey_height_m (when every storey is as high).", row=1)
+    system = str(out.get("system", "other")).strip().lower()
+    if system not in SYSTEMS:
+        close = schema.suggest(system, list(SYSTEMS))
+        report.at(values["system"][1], value_header, f"system {schema.quote(out['system'])} is not one of "
+                  "the lateral systems" + (f"; did you mean '{close}'?" if close else "."),
+                  f"write one of {', '.join(SYSTEMS)} (ASCE 7 Table 12.8-2).")
+    if len(report.problems) > before:
+        return None
+    storeys = int(out["storeys"])
+    height_m = out["height"] if "height" in out else out["storey_height"] * storeys
+    if not 2.0 * storeys <= height_m <= 20.0 * storeys:
+        where = values["height" if "height" in out else "storey_height"][1]
+        report.at(where, value_header, f"a roof {height_m:.3g} m above the ground over {storeys} storeys "
+                  f"is {height_m / storeys:.3g} m a storey; storeys are 2 to 20 m high.",
+                  "check the unit in the key (height_m, height_ft) and the number of storeys.")
+        return None
+    return BuildingSheet(storeys=storeys, height_m=float(height_m), system=system,
+                         period_s=out.get("period"), damping=float(out.get("damping", DEFAULT_DAMPING)),
+                         rows={name: row for name, (_, row) in values.items()}, sheet=table.title)
+
+
+def _code(text) -> str | None:
+    """The edition named by ``text`` (``ASCE 7-22``, ``asce7-22``, ``7-16``), None when unknown."""
+    compact = re.sub(r"[\s_]", "", str(text)).upper().replace("ASCE", "")
+    for code in CODES:
+        if compact in (code.replace("ASCE ", ""), code.replace("ASCE ", "").replace("-", "")):
+            return code
+    return None
+
+
+def _inside(folder: Path, relative: str) -> Path | None:
+    """``relative`` resolved against ``folder``; None when it leads outside it."""
+    base = folder.resolve()
+    path = (base / relative).resolve()
+    return path if path == base or base in path.parents else None
+
+
+__all__ = ["SiteSheet", "BuildingSheet", "read_site", "read_building", "CODES", "SYSTEMS",
+           "SITE_CLASSES", "RISK_CATEGORIES"]

@@ -1,0 +1,104 @@
+"""Build the sample workbook ``inventories/hospital.xlsx``: a 4-storey hospital, in inches, with no motion typed in.
+
+Written as a hospital's facility engineer would fill it in: the site's hazard as a hazard lookup gives
+it (``site`` sheet: ASCE 7-22, S_DS, S_D1, site class D, risk category IV), the building as the
+drawings give it (``building`` sheet: 4 storeys of 14 ft, a steel moment frame), and equipment on
+every floor in inches and pounds. There is no ``hazard`` sheet: every level's ground suite comes from
+the site's spectrum and every floor's motion from the building (docs/workbook.md, sheets ``site`` and
+``building``). Every item and number is invented but typical; do not use it for a real building.
+Deterministic (same bytes each run), like build_lab.py.
+
+    python inventories/build_hospital.py
+    assess inventories/hospital.xlsx --hazard DE
+"""
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+from openpyxl import Workbook
+
+from build_lab import deterministic_bytes, write_sheet
+
+OUT = Path(__file__).resolve().parent / "hospital.xlsx"
+
+
+def item(id, name, room, floor, h_in, w_in, d_in, lb, mu, clearance_in, consequence, notes, cg_in=None,
+         anchored=False, qty=1):
+    return dict(id=id, name=name, room=room, floor=floor, height_in=h_in, width_in=w_in, depth_in=d_in,
+                mass_lb=lb, mu=mu, clearance_in=clearance_in, cg_height_in=cg_in,
+                anchored="yes" if anchored else "no", quantity=qty, consequence=consequence, notes=notes)
+
+
+EQUIPMENT = [
+    # floor 0: emergency department and central supply
+    item("ED-0-01", "Crash cart, 5 drawers", "0-105 resuscitation", 0, 44, 30, 22, 210, 0.45, 12, "critical",
+         "on casters, brakes on; the code team's cart"),
+    item("ED-0-02", "Supply shelving, 6 shelves, loaded", "0-140 central supply", 0, 86, 48, 24, 900, 0.35, 10,
+         "life-safety", "wire shelving beside the corridor to the exit", cg_in=46),
+    item("ED-0-03", "Blanket and fluid warmer cabinet", "0-110 ED core", 0, 74, 24, 25, 360, 0.30, 6, "ordinary",
+         "two doors, glass"),
+    item("ED-0-04", "Liquid-nitrogen dewar, 230 L, on roller base", "0-150 lab receiving", 0, 62, 26, 26, 620, 0.40,
+         8, "hazardous", "pressurised LN2"),
+    # floor 1: laboratory
+    item("LB-1-01", "Ultra-low freezer, -80 °C, upright", "1-210 core lab", 1, 78, 34, 35, 750, 0.25, 4, "critical",
+         "patient specimens and reagents"),
+    item("LB-1-02", "Blood bank refrigerator, 2 doors", "1-220 blood bank", 1, 80, 52, 32, 680, 0.25, 6, "critical",
+         "the hospital's blood supply"),
+    item("LB-1-03", "Chemistry analyser", "1-210 core lab", 1, 50, 70, 34, 1500, 0.35, 12, "valuable",
+         "on levelling feet"),
+    item("LB-1-04", "Solvent cabinet, 30 gal", "1-230 histology", 1, 44, 43, 18, 300, 0.30, 3, "hazardous",
+         "xylene and alcohols"),
+    # floor 2: inpatient pharmacy
+    item("RX-2-01", "Automated dispensing cabinet, tower", "2-310 pharmacy", 2, 78, 36, 30, 1100, 0.30, 6,
+         "critical", "the unit the nurses draw every dose from"),
+    item("RX-2-02", "Medication shelving, 6 shelves", "2-310 pharmacy", 2, 84, 36, 18, 450, 0.35, 18, "life-safety",
+         "open shelving by the staff workstation", cg_in=46),
+    item("RX-2-03", "Pharmacy refrigerator, single door", "2-320 cold storage", 2, 72, 28, 30, 280, 0.25, 8,
+         "critical", "vaccines and insulin"),
+    # floor 3: patient floor and IT closet
+    item("IT-3-01", "Server rack, 42U, loaded", "3-405 IT closet", 3, 80, 24, 42, 1400, 0.30, 14, "critical",
+         "nurse-call and the floor's network", cg_in=36),
+    item("IT-3-02", "UPS cabinet", "3-405 IT closet", 3, 60, 20, 32, 1100, 0.30, 6, "critical",
+         "batteries low in the cabinet", cg_in=24),
+    item("PT-3-03", "Linen cart, stainless, covered", "3-420 clean linen", 3, 66, 50, 26, 260, 0.50, 20,
+         "ordinary", "on casters, brakes on"),
+    # floor 4: the roof's mechanical penthouse
+    item("MP-4-01", "Medical-gas manifold cabinet", "4-510 penthouse", 4, 72, 48, 18, 650, 0.35, 6, "hazardous",
+         "oxygen manifold controls"),
+    item("MP-4-02", "Spare-parts shelving, 5 shelves", "4-510 penthouse", 4, 84, 48, 24, 800, 0.35, 12,
+         "ordinary", "motors and filters on every shelf", cg_in=44),
+    item("MP-4-03", "Water-treatment skid", "4-520 penthouse", 4, 70, 60, 36, 2200, 0.40, 0, "critical",
+         "bolted to its housekeeping pad", anchored=True),
+]
+
+#: The site as a hazard lookup gives it (invented values typical of a coastal California site).
+SITE = [
+    ("code", "ASCE 7-22"), ("sds_g", 1.2), ("sd1_g", 0.7), ("tl_s", 8), ("site_class", "D"),
+    ("risk_category", "IV"),
+]
+#: The building as its drawings give it.
+BUILDING = [
+    ("storeys", 4), ("storey_height_ft", 14), ("system", "steel moment frame"), ("damping", 0.05),
+]
+SETTINGS = [
+    ("facility", "Sample community hospital (4 storeys)"),
+    ("site", "Sample site (invented)"),
+]
+
+
+def build() -> bytes:
+    workbook = Workbook()
+    write_sheet(workbook.active, list(EQUIPMENT[0]), EQUIPMENT)
+    workbook.active.title = "equipment"
+    write_sheet(workbook.create_sheet("site"), ["key", "value"], SITE)
+    write_sheet(workbook.create_sheet("building"), ["key", "value"], BUILDING)
+    write_sheet(workbook.create_sheet("settings"), ["key", "value"], SETTINGS)
+    return deterministic_bytes(workbook, "inventories/build_hospital.py")
+
+
+if __name__ == "__main__":
+    tmp = OUT.with_suffix(".xlsx.tmp")
+    tmp.write_bytes(build())
+    os.replace(tmp, OUT)
+    print(f"wrote {OUT} ({len(EQUIPMENT)} items)")

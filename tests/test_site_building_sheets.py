@@ -1,0 +1,118 @@
+"""The workbook's ``site`` and ``building`` sheets (docs/workbook.md): read, converted, refused at their cell."""
+from __future__ import annotations
+
+import pytest
+
+from assess.errors import InputError
+from assess.inventory import read_workbook
+from workbooks import good_sheets
+
+
+def _sheets(site=None, building=None, hazard=True):
+    sheets = good_sheets()
+    if not hazard:
+        del sheets["hazard"]
+    if site is not None:
+        sheets["site"] = [["key", "value"]] + [list(pair) for pair in site]
+    if building is not None:
+        sheets["building"] = [["key", "value"]] + [list(pair) for pair in building]
+    return sheets
+
+
+def _problems(make_workbook, **kwargs) -> list:
+    with pytest.raises(InputError) as error:
+        read_workbook(make_workbook(_sheets(**kwargs)))
+    return error.value.problems
+
+
+def test_site_with_design_values_and_no_hazard_sheet(make_workbook):
+    inventory = read_workbook(make_workbook(_sheets(
+        site=[("code", "ASCE 7-22"), ("sds_g", 1.0), ("sd1_g", 0.6), ("site_class", "D"),
+              ("risk_category", "iv")], hazard=False)))
+    site = inventory.site  # the site class beside design values is kept (it says what they stand on)
+    assert (site.code, site.sds_g, site.sd1_g, site.site_class, site.risk_category) == (
+        "ASCE 7-22", 1.0, 0.6, "D", "IV")
+    assert site.tl_s is None and site.suite_size == 11 and site.ss_g is None
+    assert inventory.hazard.empty and inventory.building is None
+
+
+def test_site_mapped_values_with_7_16_and_numbers_for_categories(make_workbook):
+    site = read_workbook(make_workbook(_sheets(site=[
+        ("code", "asce7-16"), ("SS_g", 1.5), ("s1_g", 0.6), ("site_class", "d"), ("risk_category", 3),
+        ("tl_s", 12), ("suite_size", 7)]))).site
+    assert (site.code, site.ss_g, site.s1_g, site.site_class, site.risk_category) == (
+        "ASCE 7-16", 1.5, 0.6, "D", "III")
+    assert (site.tl_s, site.suite_size) == (12.0, 7)
+
+
+def test_building_in_feet_is_converted_once(make_workbook):
+    building = read_workbook(make_workbook(_sheets(building=[
+        ("storeys", 4), ("storey_height_ft", 13), ("system", "Concrete moment frame"), ("period_s", 0.6),
+        ("damping", 0.03)]))).building
+    assert building.storeys == 4 and building.roof_floor == 4
+    assert building.height_m == pytest.approx(4 * 13 * 0.3048, rel=1e-12)
+    assert (building.system, building.period_s, building.damping) == ("concrete moment frame", 0.6, 0.03)
+
+
+def test_building_defaults(make_workbook):
+    building = read_workbook(make_workbook(_sheets(building=[("storeys", 3), ("height_m", 12)]))).building
+    assert (building.system, building.period_s, building.damping) == ("other", None, 0.05)
+
+
+def _located(problems, sheet, cell):
+    return [p for p in problems if p.sheet == sheet and p.cell == cell]
+
+
+def test_refusals_name_the_cell(make_workbook):
+    problems = _problems(make_workbook, site=[("sds_g", 1.0), ("sd1_g", 0.6), ("ss_g", 1.5)],
+                         building=[("storeys", 3), ("height_cm", 1200), ("system", "steel momentframe")])
+    # both sets of site values: located at the first mapped key
+    assert _located(problems, "site", "A4") and "both design values" in _located(problems, "site", "A4")[0].message
+    # a storey of 4 cm: the unit slip is caught at its value cell
+    # (height_cm 1200 = 12 m passes; the misspelt system is refused with a suggestion)
+    system = _located(problems, "building", "B4")
+    assert system and "did you mean 'steel moment frame'" in system[0].message
+
+
+def test_unit_slip_in_height_is_refused(make_workbook):
+    problems = _problems(make_workbook, building=[("storeys", 12), ("height_m", 48 * 12)])
+    bad = _located(problems, "building", "B3")
+    assert bad and "48 m a storey" in bad[0].message and "height_ft" in bad[0].fix
+
+
+@pytest.mark.parametrize("pairs, cell, words", [
+    ([("sds_g", 1.0)], "A2", "without sd1_g"),
+    ([("ss_g", 1.0), ("s1_g", 0.4)], "A2", "without site_class"),
+    ([("ss_g", 1.0), ("site_class", "C")], "A2", "without s1"),
+    ([("sds_g", 1.0), ("sd1_g", 0.6), ("code", "ASCE 7-10")], "B4", "not an edition"),
+    ([("ss_g", 1.0), ("s1_g", 0.4), ("site_class", "F")], "B4", "site response analysis"),
+    ([("ss_g", 1.0), ("s1_g", 0.4), ("site_class", "CD"), ("code", "ASCE 7-16")], "B4", "not one of ASCE 7-16's"),
+    ([("sds_g", 1.0), ("sd1_g", 0.6), ("risk_category", "V")], "B4", "risk category"),
+    ([("sds_g", 9.0), ("sd1_g", 0.6)], "B2", "not plausible"),
+    ([("sds_g", 1.0), ("sd1_g", 0.6), ("records", "../elsewhere")], "B4", "outside the workbook's folder"),
+    ([("sds_g", 1.0), ("sd1_g", 0.6), ("records", "missing")], "B4", "is not a folder"),
+    ([("sds_g", 1.0), ("sd1_g", 0.6), ("sds", 1.1)], "A4", "given twice"),
+    ([("sds_g", 1.0), ("sd1_g", 0.6), ("pga", 0.4)], "A4", "unknown key"),
+    ([("sds_g", 1.0), ("sd1_g", 0.6), ("suite_size", 2)], "B4", "not plausible"),
+])
+def test_site_refusals(make_workbook, pairs, cell, words):
+    problems = _problems(make_workbook, site=pairs)
+    located = _located(problems, "site", cell)
+    assert located, [str(p) for p in problems]
+    assert words in located[0].message, str(located[0])
+
+
+def test_no_hazard_anywhere_is_refused(make_workbook):
+    problems = _problems(make_workbook, hazard=False)
+    assert any("'hazard' is missing" in p.message and "'site' sheet" in p.fix for p in problems)
+
+
+def test_a_site_sheet_without_any_hazard_is_refused(make_workbook):
+    problems = _problems(make_workbook, site=[("risk_category", "IV")])
+    assert any(p.sheet == "site" and p.row == 1 and "gives no hazard" in p.message for p in problems)
+
+
+def test_building_needs_storeys_and_one_height(make_workbook):
+    problems = _problems(make_workbook, building=[("height_m", 12), ("storey_height_m", 4)])
+    messages = [p.message for p in problems if p.sheet == "building"]
+    assert any("no 'storeys'" in m for m in messages) and any("both height" in m for m in messages)
