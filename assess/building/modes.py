@@ -96,7 +96,8 @@ def continuum_characteristic(gamma, alpha):
     """
     gamma = np.asarray(gamma, dtype=float)
     beta = np.sqrt(gamma ** 2 + alpha ** 2)
-    return (2.0 / np.cosh(beta) + (2.0 + alpha ** 4 / (gamma ** 2 * beta ** 2)) * np.cos(gamma)
+    two_over_cosh = 4.0 * np.exp(-beta) / (1.0 + np.exp(-2.0 * beta))  # 2/cosh β, no overflow
+    return (two_over_cosh + (2.0 + alpha ** 4 / (gamma ** 2 * beta ** 2)) * np.cos(gamma)
             + alpha ** 2 / (gamma * beta) * np.sin(gamma) * np.tanh(beta))
 
 
@@ -156,10 +157,18 @@ def continuum_mode_shape(height_ratio, gamma, alpha):
     """
     xi = np.asarray(height_ratio, dtype=float)
     beta = np.sqrt(gamma ** 2 + alpha ** 2)
-    eta = (gamma ** 2 * np.sin(gamma) + gamma * beta * np.sinh(beta)) / (
-        gamma ** 2 * np.cos(gamma) + beta ** 2 * np.cosh(beta))
-    return (np.sin(gamma * xi) - gamma / beta * np.sinh(beta * xi)
-            + eta * (np.cosh(beta * xi) - np.cos(gamma * xi)))
+    # the hyperbolic terms are evaluated scaled by exp(-β), so that a large α (β up to 10⁴) neither
+    # overflows nor cancels: -(γ/β) sinh βξ + η cosh βξ
+    #   = [-(γ³/β) cos γ sinh βξ + γ² sin γ cosh βξ + γβ sinh β(1-ξ)] / (γ² cos γ + β² cosh β)
+    e = np.exp(-beta)
+    denominator = gamma ** 2 * np.cos(gamma) * e + beta ** 2 * (1.0 + e * e) / 2.0
+    eta = (gamma ** 2 * np.sin(gamma) * e + gamma * beta * (1.0 - e * e) / 2.0) / denominator
+    sinh_x = (np.exp(beta * (xi - 1.0)) - np.exp(-beta * (xi + 1.0))) / 2.0
+    cosh_x = (np.exp(beta * (xi - 1.0)) + np.exp(-beta * (xi + 1.0))) / 2.0
+    sinh_rest = (np.exp(-beta * xi) - np.exp(beta * (xi - 2.0))) / 2.0
+    hyperbolic = (-(gamma ** 3 / beta) * np.cos(gamma) * sinh_x + gamma ** 2 * np.sin(gamma) * cosh_x
+                  + gamma * beta * sinh_rest) / denominator
+    return np.sin(gamma * xi) + hyperbolic - eta * np.cos(gamma * xi)
 
 
 def shear_building_frequency_ratios(storeys):
