@@ -5,9 +5,10 @@ Run: python benchmarks/bench_floor_motions.py [--pga 0.4] [--cache DIR]   (needs
 Buildings: linear shear buildings in OpenSeesPy (tests/peers/opensees_shear.py), 3 storeys
 T_1 0.35 s, 6 storeys 0.70 s, 12 storeys 1.40 s, storeys 3.5 m, equal floor masses, 5 %
 damping in every mode (OpenSees' ``modalDamping``), stepped at ≤ 1 ms. Two stiffness
-distributions: **uniform** (what a shear building assumes) and **falling linearly to a
+distributions: **uniform** (what a shear building assumes), **falling linearly to a
 quarter at the roof** (what it does not: a code-designed frame's storey stiffness follows
-its storey shear), each scaled to the same T_1.
+its storey shear), and a **wall-frame** building (an Euler-Bernoulli column beside the
+uniform storey springs, α = 2), each scaled to the same T_1.
 
 Ground: pyslammer's 18 records, each scaled to PGA ``--pga``.
 
@@ -22,10 +23,11 @@ Routes, each through ``assess.mechanics.engine.simulate_cases`` as the truth is:
   route with the uniform shear building (α = ∞), every mode;
 * ``steel moment frame``: the same with the shape ``system = steel moment frame`` implies
   (α = 12, shear-flexural);
+* ``shear wall``: the shape ``system = shear wall`` implies (α = 1);
 * ``ground x (1 + 2z/h)``: the ground record scaled by ASCE 7-16's floor factor (the
   former ``--derive-floors``), for context.
 
-Printed per table (one per stiffness distribution): over item × floor × record cases,
+Printed per table (one per OpenSees building): over item × floor × record cases,
 the geometric mean and σ ln of the route's peak sliding over the truth's (cases where the
 truth slides at least 1 cm and neither overturns), the share within a factor 2, the
 overturn verdicts that agree (and the counts), and a risk proxy per item-floor over the
@@ -50,7 +52,7 @@ from assess.hazard.records import read_record  # noqa: E402
 from assess.mechanics.block import Block  # noqa: E402
 from assess.mechanics.engine import simulate_cases  # noqa: E402
 from peers.opensees_shear import (load_opensees, shear_building_floor_accelerations,  # noqa: E402
-                                  shear_building_periods)
+                                  shear_building_periods, shear_flexural_periods)
 
 BUILDINGS = [(3, 0.35), (6, 0.70), (12, 1.40)]
 STOREY_HEIGHT_M = 3.5
@@ -65,7 +67,11 @@ ITEMS = [
     ("tall shelving", 1.88, 0.23, 1.10, 0.45, 0.45, 0.05),
     ("chest freezer", 0.90, 0.35, 0.45, 0.70, 0.75, 0.10),
 ]
-PROFILES = {"uniform": lambda n: np.ones(n), "quarter at the roof": lambda n: np.linspace(1.0, 0.25, n)}
+PROFILES = {"uniform": lambda n: np.ones(n), "quarter at the roof": lambda n: np.linspace(1.0, 0.25, n),
+            "wall-frame": lambda n: np.ones(n)}
+#: Lateral stiffness ratio α of each OpenSees building (inf: storey springs only; 2: a column of
+#: EI = k h H²/α² beside them, a wall-frame building near the walls' end of the range).
+ALPHAS = {"uniform": np.inf, "quarter at the roof": np.inf, "wall-frame": 2.0}
 SLIDING_FLOOR_M = 0.01
 
 
@@ -87,9 +93,17 @@ def opensees_floors(storeys, period_s, profile, suite, cache):
         return [data[f"r{i}"] for i in range(len(suite))]
     shape = PROFILES[profile](storeys)
     masses = np.full(storeys, FLOOR_MASS_KG)
-    periods = shear_building_periods(shape, masses)
-    stiffness = shape * (periods[0] / period_s) ** 2
-    out = [shear_building_floor_accelerations(stiffness, masses, ground, dt, damping=DAMPING)[0]
+    alpha = ALPHAS[profile]
+    if np.isinf(alpha):
+        periods = shear_building_periods(shape, masses)
+        factor, bending = (periods[0] / period_s) ** 2, None
+    else:
+        bending = STOREY_HEIGHT_M * (storeys * STOREY_HEIGHT_M) ** 2 / alpha ** 2  # k = 1
+        periods = shear_flexural_periods(storeys, STOREY_HEIGHT_M, 1.0, bending, FLOOR_MASS_KG)
+        factor = (periods[0] / period_s) ** 2
+        bending = bending * factor
+    out = [shear_building_floor_accelerations(shape * factor, masses, ground, dt, damping=DAMPING,
+                                              bending_rigidity_n_m2=bending, storey_height_m=STOREY_HEIGHT_M)[0]
            for _, ground, dt in suite]
     if key is not None:
         key.parent.mkdir(parents=True, exist_ok=True)
@@ -102,8 +116,8 @@ def route_floors(route, storeys, period_s, suite):
         factors = 1.0 + 2.0 * np.arange(storeys + 1) / storeys
         return [np.outer(factors, ground) for _, ground, _ in suite]
     alpha = np.inf if route == "shear building" else None
-    modes = building_modes(storeys, STOREY_HEIGHT_M, system="steel moment frame", period_s=period_s,
-                           damping=DAMPING, alpha=alpha)
+    system = "shear wall" if route == "shear wall" else "steel moment frame"
+    modes = building_modes(storeys, STOREY_HEIGHT_M, system=system, period_s=period_s, damping=DAMPING, alpha=alpha)
     return [floor_accelerations(modes, ground, dt) for _, ground, dt in suite]
 
 
@@ -183,17 +197,22 @@ def main():
     truth_floors = {p: [opensees_floors(n, t, p, suite, args.cache) for n, t in BUILDINGS] for p in PROFILES}
     print(f"OpenSees floor histories: {time.perf_counter() - start:.0f} s")
     start = time.perf_counter()
-    routes = ("shear building", "steel moment frame", "ground x (1 + 2z/h)")
+    routes = ("shear building", "steel moment frame", "shear wall", "ground x (1 + 2z/h)")
     route_floors_ = {r: [route_floors(r, n, t, suite) for n, t in BUILDINGS] for r in routes}
-    print(f"modal floor histories, 3 routes x 3 buildings x {len(suite)} records: {time.perf_counter() - start:.2f} s")
-    # floor histories: modal (shear building) against OpenSees (uniform), every floor and record
-    for b, (storeys, _) in enumerate(BUILDINGS):
-        errors = []
-        for truth, ours in zip(truth_floors["uniform"][b], route_floors_["shear building"][b]):
-            errors.append(np.sqrt(np.mean((ours[1:] - truth[1:]) ** 2, axis=1) / np.mean(truth[1:] ** 2, axis=1)))
-        errors = np.array(errors)
-        print(f"  {storeys} storeys: floor-history RMS error against OpenSees, over {errors.size} floor-records: "
-              f"median {100 * np.median(errors):.3f} %, max {100 * errors.max():.3f} %")
+    print(f"modal floor histories, {len(routes)} routes x 3 buildings x {len(suite)} records: "
+          f"{time.perf_counter() - start:.2f} s")
+    # floor histories: the modal solver with OpenSees' own stiffness against OpenSees, every floor and record
+    for profile in PROFILES:
+        for b, (storeys, period) in enumerate(BUILDINGS):
+            modes = building_modes(storeys, STOREY_HEIGHT_M, period_s=period, damping=DAMPING, alpha=ALPHAS[profile],
+                                   storey_stiffness=PROFILES[profile](storeys))
+            errors = []
+            for truth, (_, ground, dt) in zip(truth_floors[profile][b], suite):
+                ours = floor_accelerations(modes, ground, dt)
+                errors.append(np.sqrt(np.mean((ours[1:] - truth[1:]) ** 2, axis=1) / np.mean(truth[1:] ** 2, axis=1)))
+            errors = np.array(errors)
+            print(f"  {profile}, {storeys} storeys: floor-history RMS error of the modal solver against OpenSees, "
+                  f"{errors.size} floor-records: median {100 * np.median(errors):.3f} %, max {100 * errors.max():.3f} %")
     start = time.perf_counter()
     demand = {f"OpenSees {p}": run_engine(truth_floors[p], suite) for p in PROFILES}
     demand.update({r: run_engine(route_floors_[r], suite) for r in routes})
@@ -203,17 +222,21 @@ def main():
                 demand["OpenSees uniform"], {r: demand[r] for r in routes})
     print_table("OpenSees building with storey stiffness falling to 1/4 at the roof (what `system` does not assume)",
                 demand["OpenSees quarter at the roof"], {r: demand[r] for r in routes})
+    print_table("OpenSees wall-frame building, a column beside the storey springs, α = 2 (what a frame does not assume)",
+                demand["OpenSees wall-frame"], {r: demand[r] for r in routes})
     # PFA/PGA per floor against H_f
     print("\n### Mean PFA/PGA over the suite per floor (z/h), against ASCE 7-22 H_f for T_1")
     for b, (storeys, period) in enumerate(BUILDINGS):
         pga = np.array([np.abs(h[0]).max() for h in truth_floors["uniform"][b]])
         print(f"{storeys} storeys, T1 {period} s:")
-        print("| floor | z/h | OpenSees uniform | OpenSees 1/4 at roof | shear building | steel moment frame | H_f |")
-        print("|---|---|---|---|---|---|---|")
+        print("| floor | z/h | OpenSees uniform | OpenSees 1/4 at roof | OpenSees wall-frame | shear building | "
+              "steel moment frame | shear wall | H_f |")
+        print("|---|---|---|---|---|---|---|---|---|")
         for k in range(storeys + 1):
             means = [np.mean([np.abs(h[k]).max() for h in source[b]] / pga) for source in
-                     (truth_floors["uniform"], truth_floors["quarter at the roof"],
-                      route_floors_["shear building"], route_floors_["steel moment frame"])]
+                     (truth_floors["uniform"], truth_floors["quarter at the roof"], truth_floors["wall-frame"],
+                      route_floors_["shear building"], route_floors_["steel moment frame"],
+                      route_floors_["shear wall"])]
             print(f"| {k} | {k / storeys:.2f} | " + " | ".join(f"{m:.2f}" for m in means)
                   + f" | {float(height_factor(k / storeys, period)):.2f} |")
 

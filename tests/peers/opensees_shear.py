@@ -76,8 +76,31 @@ def shear_building_periods(storey_stiffness, floor_masses):
     return 2 * np.pi / np.sqrt(np.array(eigenvalues))
 
 
+def _stick(ops, storey_stiffness, floor_masses, storey_height_m, bending_rigidity_n_m2):
+    """The column (EI) and the storey springs in parallel (see :func:`shear_flexural_periods`), ndm 2."""
+    ops.wipe()
+    ops.model("basic", "-ndm", 2, "-ndf", 3)
+    n = len(storey_stiffness)
+    for i in range(n + 1):
+        ops.node(i, 0.0, i * storey_height_m)
+    ops.fix(0, 1, 1, 1)
+    ops.geomTransf("Linear", 1)
+    for i in range(1, n + 1):
+        ops.fix(i, 0, 1, 0)
+        ops.mass(i, float(floor_masses[i - 1]), 0.0, 0.0)
+        ops.element("elasticBeamColumn", i, i - 1, i, 1e12, 1.0, float(bending_rigidity_n_m2), 1)
+        aux = 1000 + i
+        ops.node(aux, 0.0, i * storey_height_m)
+        ops.fix(aux, 0, 1, 1)
+        ops.equalDOF(i - 1, aux, 1)
+        ops.uniaxialMaterial("Elastic", i, float(storey_stiffness[i - 1]))
+        ops.element("zeroLength", 1000 + i, aux, i, "-mat", i, "-dir", 1, "-doRayleigh", 1)
+    return n
+
+
 def shear_building_floor_accelerations(storey_stiffness, floor_masses, ground_accel_g, dt_s, *,
-                                       damping=0.05, rayleigh_modes=None, substeps=None):
+                                       damping=0.05, rayleigh_modes=None, substeps=None,
+                                       bending_rigidity_n_m2=None, storey_height_m=3.5):
     """Absolute floor accelerations [g] of the storey chain under a ground record.
 
     Parameters
@@ -93,6 +116,9 @@ def shear_building_floor_accelerations(storey_stiffness, floor_masses, ground_ac
     damping : float
         ζ: with ``rayleigh_modes=None`` OpenSees' ``modalDamping`` for every mode; otherwise
         Rayleigh damping with ζ at the two modes given (1-based, e.g. ``(1, 3)``).
+    bending_rigidity_n_m2, storey_height_m : float, optional
+        With EI given, a column of that rigidity stands beside the storey springs, tied at
+        the floors (the shear-flexural stick of :func:`shear_flexural_periods`).
     substeps : int, optional
         Newmark steps per record step; by default enough for steps of at most 1 ms (Newmark's
         error is O(Δt²): at 5 ms steps the floors of a 3-storey building were 1.5 % RMS off
@@ -107,7 +133,10 @@ def shear_building_floor_accelerations(storey_stiffness, floor_masses, ground_ac
     ops, why = load_opensees()
     if ops is None:
         raise RuntimeError(why)
-    n = _storey_chain(ops, storey_stiffness, floor_masses)
+    if bending_rigidity_n_m2 is None:
+        n = _storey_chain(ops, storey_stiffness, floor_masses)
+    else:
+        n = _stick(ops, storey_stiffness, floor_masses, storey_height_m, bending_rigidity_n_m2)
     omega = np.sqrt(np.array(ops.eigen("-fullGenLapack", n)))
     if rayleigh_modes is None:
         ops.modalDamping(float(damping))
@@ -121,7 +150,7 @@ def shear_building_floor_accelerations(storey_stiffness, floor_masses, ground_ac
     ground = np.asarray(ground_accel_g, dtype=float)
     ops.timeSeries("Path", 1, "-dt", float(dt_s), "-values", *(ground * GRAVITY_M_S2).tolist())
     ops.pattern("UniformExcitation", 1, 1, "-accel", 1)
-    ops.constraints("Plain")
+    ops.constraints("Plain" if bending_rigidity_n_m2 is None else "Transformation")
     ops.numberer("Plain")
     ops.system("FullGeneral")
     ops.test("NormDispIncr", 1e-12, 10)
@@ -154,23 +183,8 @@ def shear_flexural_periods(storeys, storey_height_m, storey_stiffness_n_m, bendi
     ops, why = load_opensees()
     if ops is None:
         raise RuntimeError(why)
-    ops.wipe()
-    ops.model("basic", "-ndm", 2, "-ndf", 3)
-    n = int(storeys)
-    for i in range(n + 1):
-        ops.node(i, 0.0, i * storey_height_m)
-    ops.fix(0, 1, 1, 1)
-    ops.geomTransf("Linear", 1)
-    ops.uniaxialMaterial("Elastic", 1, float(storey_stiffness_n_m))
-    for i in range(1, n + 1):
-        ops.fix(i, 0, 1, 0)
-        ops.mass(i, float(floor_mass_kg), 0.0, 0.0)
-        ops.element("elasticBeamColumn", i, i - 1, i, 1e12, 1.0, float(bending_rigidity_n_m2), 1)
-        aux = 1000 + i
-        ops.node(aux, 0.0, i * storey_height_m)
-        ops.fix(aux, 0, 1, 1)
-        ops.equalDOF(i - 1, aux, 1)
-        ops.element("zeroLength", 1000 + i, aux, i, "-mat", 1, "-dir", 1)
+    n = _stick(ops, np.full(int(storeys), float(storey_stiffness_n_m)), np.full(int(storeys), float(floor_mass_kg)),
+               storey_height_m, bending_rigidity_n_m2)
     ops.constraints("Transformation")
     ops.numberer("Plain")
     ops.system("FullGeneral")
