@@ -33,7 +33,6 @@ import numpy as np
 from numba import njit
 
 from assess.hazard.records import Record
-from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
 
 from .modes import BuildingModes
 
@@ -213,8 +212,3 @@ def floor_records(modes: BuildingModes, ground_motions: Sequence[Record]) -> lis
             floors[k][m] = Record(np.array(accel, dtype=float), motion.dt_s,
                                   motion.name if k == 0 else f"{motion.name} @ floor {k}")
     return floors
-
-
-def to_m_s2(accel_g):
-    """Acceleration [g] in m/s² (standard gravity)."""
-    return np.asarray(accel_g, dtype=float) * STANDARD_GRAVITY_M_S2
