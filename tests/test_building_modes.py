@@ -1,10 +1,10 @@
 """The building's modes against closed forms.
 
-* Continuous shear beam (α → ∞): ω_i ∝ 2i - 1, period ratios 1 : 1/3 : 1/5 (Chopra 2012 §16.3).
+* Continuous shear beam (α → ∞): ω_i ∝ 2i - 1, period ratios 1 : 1/3 : 1/5 (the continuous shear beam, e.g. Chopra 2012 chapter 16).
 * Flexural cantilever (α = 0): β_iL = 1.8751, 4.6941, 7.8548, 10.9955, T_1/T_i = 1 : 6.267 : 17.547 :
-  34.39 (Chopra 2012 Table 16.4.1; Clough & Penzien).
+  34.39 (roots of cos βL cosh βL = -1, the Euler-Bernoulli cantilever).
 * Uniform shear building of n storeys: ω_j = 2√(k/m) sin((2j-1)π/(2(2n+1))),
-  φ_j(i) = sin((2j-1) i π/(2n+1)) (Chopra 2012 §16.7; the chain's exact eigenvalues).
+  φ_j(i) = sin((2j-1) i π/(2n+1)) (the free-fixed chain's exact eigenvalues and vectors).
 * Euler-Bernoulli cantilever flexibility: deflection at x from a unit load at b ≥ x is
   x²(3b - x)/(6EI) (any strength-of-materials text), exact for the cubic elements.
 * Intermediate α: the lumped stick model with many storeys against the continuum's

@@ -3,10 +3,10 @@
 * The oscillator step: scipy.signal.lsim with first-order hold (its own exact
   discretisation of a linear system under piecewise-linear input).
 * Harmonic ground motion, each mode from rest: the closed-form solution of a damped
-  oscillator under p(t) = p0 sin ω̄t (Chopra 2012 §3.2, Eqs. 3.2.1-3.2.4); at resonance
+  oscillator under p(t) = p0 sin ω̄t from rest (Chopra 2012 §3.2); at resonance
   (ω̄ = ω_n) u(t) = (u_st/2ζ)[e^{-ζω t}(cos ω_D t + ζ/√(1-ζ²) sin ω_D t) - cos ω t], whose
   steady-state relative acceleration has amplitude a0/(2ζ) and whose envelope builds up as
-  (1 - e^{-ζωt})/(2ζ) (Chopra 2012 Eq. 3.2.? and Fig. 3.2.5). The sine is sampled at T/400
+  (1 - e^{-ζωt})/(2ζ) for light damping (Chopra 2012 §3.2). The sine is sampled at T/400
   and read as piecewise linear: tolerance 2e-4 of the peak.
 """
 import time
@@ -36,7 +36,7 @@ def test_recursion_against_scipy_first_order_hold():
 
 
 def _harmonic_from_rest(a0, forcing_rad_s, period_s, zeta, time_s):
-    """u, u̇ of ü + 2ζωu̇ + ω²u = -a0 sin(ω̄t), u(0) = u̇(0) = 0 (Chopra 2012 Eqs. 3.2.2-3.2.4)."""
+    """u, u̇ of ü + 2ζωu̇ + ω²u = -a0 sin(ω̄t), u(0) = u̇(0) = 0 (Chopra 2012 §3.2)."""
     w = 2 * np.pi / period_s
     wd = w * np.sqrt(1 - zeta ** 2)
     r = forcing_rad_s / w

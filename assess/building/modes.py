@@ -38,8 +38,9 @@ References
 .. [2] Miranda, E., Taghavi, S. (2005). Approximate floor acceleration demands
    in multistory buildings. I: Formulation. J. Struct. Eng. 131(2):203-211.
    doi:10.1061/(ASCE)0733-9445(2005)131:2(203)
-.. [3] Chopra, A. K. (2012). Dynamics of Structures, 4th ed. Pearson. §12.8
-   (modal participation and effective modal mass), §16.7 (uniform shear building).
+.. [3] Chopra, A. K. (2012). Dynamics of Structures, 4th ed. Pearson: modal
+   participation factors and effective modal masses (chapter 13), distributed-mass
+   systems (chapter 16), finite-element beam stiffness (chapter 17).
 """
 from __future__ import annotations
 
@@ -136,7 +137,7 @@ def continuum_period_ratios(alpha, n_modes):
 
     Examples
     --------
-    Flexural cantilever: T_1/T_2 = 6.27, T_1/T_3 = 17.55 (Chopra [3]_ §16.4):
+    Flexural cantilever: roots of cos γ cosh γ = -1, T_1/T_2 = 6.27, T_1/T_3 = 17.55:
 
     >>> np.round(1.0 / continuum_period_ratios(0.0, 3), 2)
     array([ 1.  ,  6.27, 17.55])
@@ -182,7 +183,9 @@ def shear_building_frequency_ratios(storeys):
     .. math::  \\omega_j = 2\\sqrt{k/m}\\,\\sin\\frac{(2j-1)\\pi}{2(2n+1)},\\qquad
                \\phi_j(i) = \\sin\\frac{(2j-1)\\,i\\,\\pi}{2n+1}
 
-    (n storeys, floor i = 1..n; Chopra [3]_ §16.7; the roof carries a full floor's mass).
+    (n storeys, floor i = 1..n, the roof carrying a full floor's mass: the eigenvalues of
+    K/k = tridiag(-1, 2, -1) with 1 in its last diagonal cell, 4 sin²(θ_j/2), θ_j = (2j-1)π/(2n+1),
+    as substituting φ_j(i) = sin(iθ_j) shows; its free end needs sin(nθ_j) = sin((n+1)θ_j)).
 
     Examples
     --------
@@ -218,7 +221,7 @@ def shear_stiffness_matrix(storey_stiffness):
 def flexural_stiffness_matrix(storeys, storey_height_m, bending_rigidity_n_m2):
     """Lateral stiffness matrix [N/m] of a uniform Euler-Bernoulli cantilever, translations at the floors.
 
-    Beam elements between the floors (the cubic element of Chopra [3]_ §17.3,
+    Beam elements between the floors (the cubic Hermitian element, Chopra [3]_ chapter 17,
     translation and rotation at each end), the base fixed, the rotations
     condensed out (static condensation, no rotational inertia).
 
@@ -341,7 +344,7 @@ def lumped_modes(stiffness, floor_masses, period_s=None):
 
     Solves K φ = ω² M φ (scipy.linalg.eigh); shapes normalised to 1 at the roof
     (the last degree of freedom), a ground row of zeros added on top.
-    Γ_j = φ_jᵀ M 1 / φ_jᵀ M φ_j, M_j* = (φ_jᵀ M 1)² / φ_jᵀ M φ_j (Chopra [3]_ §13.2).
+    Γ_j = φ_jᵀ M 1 / φ_jᵀ M φ_j, M_j* = (φ_jᵀ M 1)² / φ_jᵀ M φ_j (Chopra [3]_ chapter 13).
 
     Examples
     --------
