@@ -39,4 +39,7 @@ def test_floors_table_rows_and_statistics():
     assert table.loc[3, "hf_asce7_22"] == pytest.approx(3.5)
     assert table.loc[0, "gamma_phi_2"] == 0.0
     with pytest.raises(ValueError):
-        floors_table(modes, floors[:2])
+        floors_table(modes, {3: floors[3]})
+    some = floors_table(modes, floor_records(modes, suite, floors=[0, 2]))
+    assert list(some["floor"]) == [0, 2]
+    assert some.loc[1, "pfa_median_g"] == pytest.approx(table.loc[2, "pfa_median_g"])

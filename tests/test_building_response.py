@@ -110,11 +110,16 @@ def test_floor_records_shape_names_and_step():
     rng = np.random.default_rng(1)
     suite = [Record(rng.normal(size=500) * 0.1, 0.01, "a"), Record(rng.normal(size=300) * 0.1, 0.02, "b")]
     floors = floor_records(modes, suite)
-    assert len(floors) == 4 and all(len(f) == 2 for f in floors)
+    assert sorted(floors) == [0, 1, 2, 3] and all(len(f) == 2 for f in floors.values())
     assert floors[0][1] is not suite[1] and np.array_equal(floors[0][1].accel_g, suite[1].accel_g)
     assert floors[3][1].dt_s == 0.02 and floors[3][1].accel_g.size == 300
     assert floors[2][0].name == "a @ floor 2"
     np.testing.assert_array_equal(floors[3][0].accel_g, floor_accelerations(modes, suite[0].accel_g, 0.01)[3])
+    some = floor_records(modes, suite, floors=[3, 1])
+    assert list(some) == [3, 1]
+    np.testing.assert_array_equal(some[1][1].accel_g, floors[1][1].accel_g)
+    with pytest.raises(ValueError):
+        floor_records(modes, suite, floors=[4])
 
 
 def test_eleven_motions_twelve_floors_well_under_a_second():

@@ -15,7 +15,7 @@ References
 """
 from __future__ import annotations
 
-from typing import Sequence
+from typing import Mapping, Sequence
 
 import numpy as np
 import pandas as pd
@@ -55,16 +55,16 @@ def height_factor(height_ratio, period_s=None):
     return 1.0 + a1 * ratio + a2 * ratio ** 10
 
 
-def floors_table(modes: BuildingModes, floors: Sequence[Sequence[Record]], level: str = "") -> pd.DataFrame:
+def floors_table(modes: BuildingModes, floors: Mapping[int, Sequence[Record]], level: str = "") -> pd.DataFrame:
     """One row per floor: the modes used and the peak floor acceleration over the level's suite.
 
     Parameters
     ----------
     modes : BuildingModes
         The modes the floor histories were computed with.
-    floors : sequence of sequence of Record
-        ``floors[k][m]``: floor k under ground motion m (:func:`~assess.building.response.floor_records`),
-        floor 0 being the ground motions.
+    floors : mapping of int to sequence of Record
+        ``floors[k][m]``: floor k under ground motion m (:func:`~assess.building.response.floor_records`);
+        it must hold floor 0 (the ground motions, for PGA); the table has a row per floor it holds.
     level : str
         The hazard level the suite belongs to.
 
@@ -80,12 +80,12 @@ def floors_table(modes: BuildingModes, floors: Sequence[Sequence[Record]], level
         the code's H_f at the floor for T_1.
     """
     heights = modes.floor_heights_m
-    if len(floors) != heights.size:
-        raise ValueError("floors must hold one suite per floor, the ground first")
+    if 0 not in floors or any(not 0 <= int(k) < heights.size for k in floors):
+        raise ValueError("floors must hold the ground (floor 0) and floors of the building only")
     pga = np.array([record.pta_g for record in floors[0]])
     contributions = modes.floor_participation()
     rows = []
-    for k, suite in enumerate(floors):
+    for k, suite in sorted(floors.items()):
         pfa = np.array([record.pta_g for record in suite])
         ratio = pfa / pga
         row = {"level": level, "floor": k, "height_m": heights[k], "z_over_h": heights[k] / heights[-1]}

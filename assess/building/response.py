@@ -27,7 +27,7 @@ References
 """
 from __future__ import annotations
 
-from typing import Sequence
+from typing import Optional, Sequence
 
 import numpy as np
 from numba import njit
@@ -189,26 +189,35 @@ def floor_accelerations(modes: BuildingModes, ground_accel_g, dt_s):
     return _floor_sum(ground, relative, np.ascontiguousarray(modes.floor_participation()))
 
 
-def floor_records(modes: BuildingModes, ground_motions: Sequence[Record]) -> list[list[Record]]:
-    """Every floor's absolute acceleration history under every ground motion, as records.
+def floor_records(modes: BuildingModes, ground_motions: Sequence[Record],
+                  floors: Optional[Sequence[int]] = None) -> dict[int, list[Record]]:
+    """Absolute acceleration histories of the floors asked for, under every ground motion, as records.
 
     Parameters
     ----------
     modes : BuildingModes
     ground_motions : sequence of Record
-        The ground suite (accelerations [g]).
+        The ground suite (accelerations [g]); each keeps its own step.
+    floors : sequence of int, optional
+        Floors wanted (0 = ground to ``modes.storeys`` = roof); by default every floor.
+        Only those are computed (memory grows with floors x samples).
 
     Returns
     -------
-    list of list of Record
+    dict of int to list of Record
         ``result[k][m]``: floor k under ground motion m, at the ground motion's
-        step, named ``"<ground name> @ floor k"``; floor 0 is the ground motion itself.
+        step, named ``"<ground name> @ floor k"``; floor 0 is (a copy of) the ground motion.
     """
-    floors = [[None] * len(ground_motions) for _ in range(modes.storeys + 1)]
-    for m, motion in enumerate(ground_motions):
-        history = floor_accelerations(modes, motion.accel_g, motion.dt_s)
-        for k in range(modes.storeys + 1):
-            accel = motion.accel_g if k == 0 else history[k]
-            floors[k][m] = Record(np.array(accel, dtype=float), motion.dt_s,
-                                  motion.name if k == 0 else f"{motion.name} @ floor {k}")
-    return floors
+    wanted = list(range(modes.storeys + 1)) if floors is None else [int(k) for k in floors]
+    if any(not 0 <= k <= modes.storeys for k in wanted):
+        raise ValueError(f"floors must lie between 0 and {modes.storeys}")
+    contributions = np.ascontiguousarray(modes.floor_participation()[wanted])
+    out = {k: [] for k in wanted}
+    for motion in ground_motions:
+        ground = np.ascontiguousarray(motion.accel_g, dtype=float)
+        relative = modal_relative_accelerations(ground, motion.dt_s, modes.periods_s, modes.damping)
+        history = _floor_sum(ground, relative, contributions)
+        for row, k in enumerate(wanted):
+            accel = ground.copy() if k == 0 else history[row]
+            out[k].append(Record(accel, motion.dt_s, motion.name if k == 0 else f"{motion.name} @ floor {k}"))
+    return out
