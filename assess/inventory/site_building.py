@@ -17,6 +17,7 @@ from pathlib import Path
 
 from assess.inventory import schema
 from assess.inventory.schema import CellError, Column
+from assess.building.period import SYSTEMS  # the lateral systems of ASCE 7 Table 12.8-2
 from assess.inventory.units import LENGTH, PERIOD
 
 #: Code editions whose spectra and equations the tool applies.
@@ -31,9 +32,6 @@ DEFAULT_RISK_CATEGORY = "II"
 #: Motions in a level's ground suite: ASCE 7-22 §16.2.2 asks for at least 11.
 DEFAULT_SUITE_SIZE = 11
 MIN_SUITE_SIZE, MAX_SUITE_SIZE = 3, 100
-#: Lateral systems (the families of ASCE 7-22 Table 12.8-2); they set the default T1 and mode shape.
-SYSTEMS = ("steel moment frame", "concrete moment frame", "eccentrically braced frame",
-           "braced frame", "shear wall", "other")
 DEFAULT_DAMPING = 0.05
 MAX_STOREYS = 200
 
@@ -153,7 +151,7 @@ _BUILDING_KEYS = {
     "height": Column("height", "number", dimension=LENGTH, spec_suffix="m", low=2.0, high=1000.0,
                      positive=True),
     "storey_height": Column("storey_height", "number", dimension=LENGTH, spec_suffix="m", low=2.0,
-                            high=20.0, positive=True),
+                            high=10.0, positive=True),
     "system": Column("system", "text", max_chars=60),
     "period": Column("period", "number", dimension=PERIOD, spec_suffix="s", low=0.02, high=15.0,
                      positive=True),
@@ -319,10 +317,10 @@ def read_building(table, report) -> BuildingSheet | None:
         return None
     storeys = int(out["storeys"])
     height_m = out["height"] if "height" in out else out["storey_height"] * storeys
-    if not 2.0 * storeys <= height_m <= 20.0 * storeys:
+    if not 2.0 * storeys <= height_m <= 10.0 * storeys:
         where = values["height" if "height" in out else "storey_height"][1]
         report.at(where, value_header, f"a roof {height_m:.3g} m above the ground over {storeys} storeys "
-                  f"is {height_m / storeys:.3g} m a storey; storeys are 2 to 20 m high.",
+                  f"is {height_m / storeys:.3g} m a storey; storeys are 2 to 10 m high.",
                   "check the unit in the key (height_m, height_ft) and the number of storeys.")
         return None
     return BuildingSheet(storeys=storeys, height_m=float(height_m), system=system,
