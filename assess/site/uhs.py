@@ -105,6 +105,10 @@ class UniformHazardSpectrum:
         """
         return spectrum_between_periods(self.period_s, self.sa_g, period_s)
 
+    def __call__(self, period_s):
+        """Same as :meth:`target_g`: the spectrum is a target callable with ``max_period_s``."""
+        return self.target_g(period_s)
+
     @property
     def max_period_s(self) -> float:
         return float(self.period_s[-1])
