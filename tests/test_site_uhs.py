@@ -94,3 +94,19 @@ def test_site_choice_text():
     assert parse_site_choice("0") == 0
     assert parse_site_choice(" -122.3 , 37.9 ") == (-122.3, 37.9)
     assert parse_site_choice(None) is None
+
+
+def test_level_names_its_target():
+    from assess.site.asce7 import from_design_values
+    from assess.site.target import level_target
+    design = from_design_values(1.0, 0.6, 8.0)
+    assert float(level_target(parse_level("DE"), design=design)(1.0)) == pytest.approx(0.6)
+    assert float(level_target(parse_level("mce_r"), design=design)(1.0)) == pytest.approx(0.9)
+    uhs = level_target(parse_level("2in50"), uhs_path=DATA / "constructed-hazard_uhs-mean_1.csv", oq_site="HOSP")
+    assert uhs.max_period_s == 2.0
+    with pytest.raises(InputError, match="sds_g"):
+        level_target(parse_level("DE"), workbook="h.xlsx")
+    with pytest.raises(InputError, match="uhs"):
+        level_target(parse_level("2in50"), design=design, workbook="h.xlsx")
+    with pytest.raises(InputError, match="no target"):
+        level_target(parse_level("SLE"), design=design, workbook="h.xlsx")
