@@ -138,3 +138,10 @@ def test_synthetic_motions_are_reproducible_per_level_and_index():
     two, _, _ = suite.synthetic_motion(DE.design_g, lower, upper, seed)
     assert one.accel_g.tobytes() == two.accel_g.tobytes()
     assert suite.motion_seed("MCE_R", 1, 0) != seed != suite.motion_seed("DE", 1, 1)
+
+
+def test_records_folder_outside_the_workbook_refused(tmp_path):
+    (tmp_path / "site").mkdir()
+    (tmp_path / "elsewhere").mkdir()
+    with pytest.raises(InputError, match="outside"):
+        suite.read_records_folder(tmp_path / "site" / ".." / "elsewhere", workbook_folder=tmp_path / "site")

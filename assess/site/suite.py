@@ -61,7 +61,7 @@ import numpy as np
 import pandas as pd
 
 from assess.errors import InputError, Problem
-from assess.hazard.records import DT_TOLERANCE, MIN_DURATION_S, Record, read_record
+from assess.hazard.records import DT_TOLERANCE, MIN_DURATION_S, Record, check_record_location, read_record
 from assess.hazard.synthesis import rezaeian_residual
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
 from assess.site.spectrum import pseudo_acceleration_spectrum, rotd_spectrum
@@ -158,13 +158,15 @@ def _component_key(stem: str) -> str | None:
     return _COMPONENT.sub("", stem)
 
 
-def read_records_folder(folder, *, what: str = "records") -> list[Motion]:
+def read_records_folder(folder, *, workbook_folder=None, what: str = "records") -> list[Motion]:
     """The ground motions of a records folder: PEER NGA ``.AT2`` or CSV files, paired by name.
 
     Two files whose names differ only in a trailing horizontal-component designator (an
     azimuth such as ``-090``/``-360``, ``H1``/``H2``, ``N``/``E``, ``FN``/``FP``) form a pair;
     vertical components (``UP``, ``DWN``, ``V``, ``HNZ``) are skipped; any other file is one
     motion. Files are read with :func:`~assess.hazard.records.read_record` (at least 2 s long).
+    With ``workbook_folder``, the folder and every file must lie inside it once links are followed
+    (:func:`~assess.hazard.records.check_record_location`).
 
     Raises
     ------
@@ -177,6 +179,11 @@ def read_records_folder(folder, *, what: str = "records") -> list[Motion]:
         raise InputError([Problem(str(folder), f"the {what} folder does not exist.",
                                   "give a folder, relative to the workbook, holding .AT2 or .csv records.")])
     files = sorted(p for p in folder.iterdir() if p.is_file() and p.suffix.lower() in (".at2", ".csv"))
+    if workbook_folder is not None:
+        for path in [folder] + files:
+            outside = check_record_location(path, workbook_folder)
+            if outside:
+                raise InputError([Problem(str(path), outside, f"put the {what} folder inside the workbook's folder.")])
     if len(files) > MAX_RECORD_FILES:
         raise InputError([Problem(str(folder), f"the {what} folder holds more than {MAX_RECORD_FILES} records.",
                                   "keep the candidate records of this site only.")])
@@ -388,7 +395,8 @@ def match_spectrum(accel_g, dt_s, target: Callable, lower_s: float, upper_s: flo
 
     Each pass (Gasparini & Vanmarcke 1976, SIMQKE): Sa at ``points`` log-spaced periods from
     lower_s/1.5 to 1.5 upper_s (clipped to the target's domain), the ratio R = target/Sa,
-    interpolated in log frequency at f = 1/T (held constant beyond the band), multiplies the
+    interpolated in log frequency at f = 1/T (held at its last value above the band, 1 below it:
+    periods longer than the band are left as generated), multiplies the
     Fourier amplitudes (phases kept, mean removed); then :func:`baseline_corrected`. The
     largest |Sa/target − 1| is measured on ``check_points`` log-spaced periods over
     [lower_s, upper_s]; the best pass is returned, early once within ``tolerance``.
@@ -419,6 +427,7 @@ def match_spectrum(accel_g, dt_s, target: Callable, lower_s: float, upper_s: flo
             if error <= tolerance:
                 break
         gain = np.interp(np.log(np.maximum(frequency, 1e-12)), np.log(band_frequency), (goal / sa)[::-1])
+        gain[frequency < band_frequency[0]] = 1.0  # below the band: left as it is, never pumped up pass after pass
         spectrum = np.fft.rfft(accel) * gain
         spectrum[0] = 0.0
         accel = baseline_corrected(np.fft.irfft(spectrum, n), dt_s)
