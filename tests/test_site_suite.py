@@ -145,3 +145,13 @@ def test_records_folder_outside_the_workbook_refused(tmp_path):
     (tmp_path / "elsewhere").mkdir()
     with pytest.raises(InputError, match="outside"):
         suite.read_records_folder(tmp_path / "site" / ".." / "elsewhere", workbook_folder=tmp_path / "site")
+
+
+def test_ground_suite_from_a_folder_takes_the_records_route(tmp_path):
+    for path in RECORDS.iterdir():
+        if path.name.endswith(".csv"):
+            (tmp_path / path.name).write_text(path.read_text())
+    built = suite.ground_suite(DE.design_g, BUILDING_AND_ITEMS_S, level="DE", records_folder=tmp_path,
+                               workbook_folder=tmp_path.parent, suite_size=11, mass_period_s=0.05)
+    assert built.method == "records" and built.lower_s == pytest.approx(0.05)
+    assert built.spectrum[built.spectrum.in_range].ratio.min() >= 0.9 - 1e-9

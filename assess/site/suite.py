@@ -92,19 +92,24 @@ _COMPONENT = re.compile(r"[-_ ](\d{3}|H1|H2|HN1|HN2|HNE|HNN|HLE|HLN|N|E|S|W|NS|E
 
 # --------------------------------------------------------------------------- period range
 
-def period_range_s(periods_s, *, lower_factor=LOWER_FACTOR, upper_factor=UPPER_FACTOR):
+def period_range_s(periods_s, *, mass_period_s=None, lower_factor=LOWER_FACTOR, upper_factor=UPPER_FACTOR):
     """(lower, upper) period range [s] of the suite: 0.2 T_min and 2 T_max (ASCE 7-22 §16.2.3.1).
 
     ``periods_s`` are the periods that matter: the building's first modes in its two
-    directions and the items' own periods.
+    directions and the items' own periods. ``mass_period_s``, where known, is the shortest
+    period of the modes needed for 90 % of the building's mass: §16.2.3.1 asks the range to
+    reach down to it too, so the lower bound is the smaller of the two.
 
-    >>> period_range_s([0.7, 0.5, 1.2])
-    (0.1, 2.4)
+    >>> period_range_s([0.7, 0.5, 1.2]), period_range_s([0.7, 0.5, 1.2], mass_period_s=0.08)
+    ((0.1, 2.4), (0.08, 2.4))
     """
     periods = np.asarray(periods_s, dtype=float).ravel()
     if periods.size == 0 or np.any(~np.isfinite(periods)) or np.any(periods <= 0):
         raise ValueError("the periods that matter must be positive numbers [s]")
-    return float(lower_factor * periods.min()), float(upper_factor * periods.max())
+    lower = float(lower_factor * periods.min())
+    if mass_period_s is not None:
+        lower = min(lower, float(mass_period_s))
+    return lower, float(upper_factor * periods.max())
 
 
 def check_periods_s(lower_s, upper_s, points=CHECK_POINTS):
@@ -288,7 +293,7 @@ def _target_domain(target, upper):
 
 def select_and_scale(candidates: Sequence[Motion], target: Callable, periods_s, *, level: str,
                      suite_size: int = DEFAULT_SUITE_SIZE, scale_bounds=DEFAULT_SCALE_BOUNDS,
-                     mean_ratio_min: float = MEAN_RATIO_MIN) -> GroundSuite:
+                     mean_ratio_min: float = MEAN_RATIO_MIN, mass_period_s=None) -> GroundSuite:
     """Select ``suite_size`` motions from ``candidates`` and amplitude-scale them to ``target``.
 
     Parameters
@@ -306,13 +311,15 @@ def select_and_scale(candidates: Sequence[Motion], target: Callable, periods_s, 
     suite_size : int
     scale_bounds : (float, float)
     mean_ratio_min : float
+    mass_period_s : float, optional
+        See :func:`period_range_s`.
 
     Raises
     ------
     ValueError
         Fewer candidates than ``suite_size``; a range beyond the target's periods.
     """
-    lower, upper = period_range_s(periods_s)
+    lower, upper = period_range_s(periods_s, mass_period_s=mass_period_s)
     max_period = _target_domain(target, upper)
     if len(candidates) < suite_size:
         raise ValueError(f"{len(candidates)} candidate motions for a suite of {suite_size}")
@@ -492,7 +499,7 @@ def synthetic_motion(target: Callable, lower_s: float, upper_s: float, seed: int
 
 def synthetic_suite(target: Callable, periods_s, *, level: str, level_key: str | None = None,
                     suite_size: int = DEFAULT_SUITE_SIZE, base_seed: int = 0, dt_s: float = 0.005,
-                    tolerance: float = SYNTHETIC_TOLERANCE) -> GroundSuite:
+                    tolerance: float = SYNTHETIC_TOLERANCE, mass_period_s=None) -> GroundSuite:
     """``suite_size`` spectrum-compatible synthetic motions for ``target`` (see the module docstring).
 
     Motion k is seeded by :func:`motion_seed` (``level_key`` or ``level``, k, ``base_seed``).
@@ -503,7 +510,7 @@ def synthetic_suite(target: Callable, periods_s, *, level: str, level_key: str |
         A motion could not be matched within ``tolerance`` over the range (the target, range
         and step are then not compatible: e.g. periods near 2 dt).
     """
-    lower, upper = period_range_s(periods_s)
+    lower, upper = period_range_s(periods_s, mass_period_s=mass_period_s)
     max_period = _target_domain(target, upper)
     key = level_key or level
     motions, seeds, errors = [], [], []
@@ -528,10 +535,16 @@ def synthetic_suite(target: Callable, periods_s, *, level: str, level_key: str |
     return GroundSuite(level, "synthetic", tuple(motions), factors, lower, upper, min_ratio, ground, spectrum, notes)
 
 
-def ground_suite(target: Callable, periods_s, *, level: str, records_folder=None,
-                 suite_size: int = DEFAULT_SUITE_SIZE, base_seed: int = 0) -> GroundSuite:
-    """A level's ground suite: selected and scaled from ``records_folder``, or synthetic without it."""
+def ground_suite(target: Callable, periods_s, *, level: str, records_folder=None, workbook_folder=None,
+                 suite_size: int = DEFAULT_SUITE_SIZE, base_seed: int = 0, mass_period_s=None) -> GroundSuite:
+    """A level's ground suite: selected and scaled from ``records_folder``, or synthetic without it.
+
+    Raises InputError for the folder and its records (:func:`read_records_folder`), ValueError
+    when the suite cannot be made (fewer records than ``suite_size``, a range beyond the target's
+    periods, a synthetic motion that cannot be matched): the caller names the site sheet's cells.
+    """
     if records_folder is not None:
-        return select_and_scale(read_records_folder(records_folder), target, periods_s, level=level,
-                                suite_size=suite_size)
-    return synthetic_suite(target, periods_s, level=level, suite_size=suite_size, base_seed=base_seed)
+        return select_and_scale(read_records_folder(records_folder, workbook_folder=workbook_folder), target,
+                                periods_s, level=level, suite_size=suite_size, mass_period_s=mass_period_s)
+    return synthetic_suite(target, periods_s, level=level, suite_size=suite_size, base_seed=base_seed,
+                           mass_period_s=mass_period_s)
