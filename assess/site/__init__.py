@@ -1,0 +1,16 @@
+"""The site's hazard: design and uniform-hazard target spectra, and ground suites matched to them.
+
+Modules: ``spectrum`` (response spectra of records), ``asce7`` (ASCE 7-16 / 7-22 design
+spectra and the ``site`` sheet's values), ``uhs`` (OpenQuake uniform-hazard spectra, maps and
+curves), ``target`` (which spectrum a level names), ``suite`` (a level's ground suite: records
+selected and scaled, or synthetic motions matched).
+
+The sequence a job follows with a ``site`` sheet::
+
+    design = asce7.site_design_spectrum(values, file=workbook, cells=cells)      # or None
+    target = target.level_target(level, design=design, uhs_path=..., oq_site=uhs.parse_site_choice(...))
+    ground = suite.ground_suite(target, periods_that_matter_s, level=level.name,
+                                records_folder=folder_or_None, suite_size=11, base_seed=seed)
+    ground.motions / ground.records          # the level's ground motions (Record, scaled or matched)
+    ground.ground_motions, ground.spectrum   # the rows of ground_motions.csv and spectrum.csv
+"""
