@@ -16,8 +16,8 @@ import pytest
 import scipy.signal
 
 from assess.building.modes import building_modes
-from assess.building.response import (floor_accelerations, floor_records, modal_relative_accelerations,
-                                      recursion_coefficients)
+from assess.building.response import floor_accelerations, floor_records, modal_relative_accelerations
+from assess.site.spectrum import nigam_jennings_coefficients
 from assess.hazard.records import Record
 
 
@@ -137,7 +137,7 @@ def test_eleven_motions_twelve_floors_well_under_a_second():
 
 def test_coefficients_reduce_to_free_vibration():
     """No load: the step is the free vibration's transition matrix (det = e^{-2ζωΔt})."""
-    c = recursion_coefficients([0.7], [0.05], 0.01)
+    c = nigam_jennings_coefficients([0.7], 0.01, [0.05])
     a, b, a1, b1 = c[0, 0], c[1, 0], c[4, 0], c[5, 0]
     w = 2 * np.pi / 0.7
     assert a * b1 - b * a1 == pytest.approx(np.exp(-2 * 0.05 * w * 0.01), rel=1e-12)

@@ -33,62 +33,9 @@ import numpy as np
 from numba import njit
 
 from assess.hazard.records import Record
+from assess.site.spectrum import nigam_jennings_coefficients  # the one exact step of a linear oscillator
 
 from .modes import BuildingModes
-
-
-def recursion_coefficients(period_s, damping, dt_s):
-    """Coefficients of the exact step for piecewise-linear loading (Chopra [2]_ Table 5.2.1).
-
-    For p(t) linear between p_i and p_{i+1} (per unit mass, k = ω²):
-
-    .. math::
-
-        u_{i+1} = A u_i + B\\dot u_i + C p_i + D p_{i+1},\\qquad
-        \\dot u_{i+1} = A' u_i + B'\\dot u_i + C' p_i + D' p_{i+1}
-
-    Parameters
-    ----------
-    period_s, damping : float or ndarray
-        T [s] and ζ (0 ≤ ζ < 1) of each oscillator.
-    dt_s : float
-        Step [s].
-
-    Returns
-    -------
-    ndarray, shape (8, n)
-        A, B, C, D, A', B', C', D' per oscillator.
-
-    Examples
-    --------
-    Undamped, a step of a quarter period from rest at u = 1: u → cos(π/2) = 0,
-    u̇ → -ω sin(π/2) = -2π (T = 1 s):
-
-    >>> c = recursion_coefficients(1.0, 0.0, 0.25)
-    >>> round(float(c[0, 0]), 12), round(float(c[4, 0]), 6)
-    (0.0, -6.283185)
-    """
-    period = np.atleast_1d(np.asarray(period_s, dtype=float))
-    zeta = np.broadcast_to(np.asarray(damping, dtype=float), period.shape)
-    omega = 2.0 * np.pi / period
-    root = np.sqrt(1.0 - zeta ** 2)
-    omega_d = omega * root
-    k = omega ** 2
-    dt = float(dt_s)
-    e = np.exp(-zeta * omega * dt)
-    s = np.sin(omega_d * dt)
-    c = np.cos(omega_d * dt)
-    a = e * (zeta / root * s + c)
-    b = e * s / omega_d
-    cc = (2 * zeta / (omega * dt) + e * (((1 - 2 * zeta ** 2) / (omega_d * dt) - zeta / root) * s
-                                         - (1 + 2 * zeta / (omega * dt)) * c)) / k
-    d = (1 - 2 * zeta / (omega * dt) + e * ((2 * zeta ** 2 - 1) / (omega_d * dt) * s
-                                            + 2 * zeta / (omega * dt) * c)) / k
-    a1 = -e * omega / root * s
-    b1 = e * (c - zeta / root * s)
-    c1 = (-1 / dt + e * ((omega / root + zeta / (dt * root)) * s + c / dt)) / k
-    d1 = (1 - e * (zeta / root * s + c)) / (k * dt)
-    return np.array([a, b, cc, d, a1, b1, c1, d1])
 
 
 @njit(cache=True)
@@ -162,7 +109,7 @@ def modal_relative_accelerations(ground_accel_g, dt_s, periods_s, damping):
     ground = np.ascontiguousarray(ground_accel_g, dtype=float)
     periods = np.ascontiguousarray(periods_s, dtype=float)
     zeta = np.ascontiguousarray(np.broadcast_to(np.asarray(damping, dtype=float), periods.shape))
-    coefficients = np.ascontiguousarray(recursion_coefficients(periods, zeta, dt_s))
+    coefficients = np.ascontiguousarray(nigam_jennings_coefficients(periods, dt_s, zeta))
     return _relative_accelerations(ground, coefficients, 2.0 * np.pi / periods, zeta)
 
 

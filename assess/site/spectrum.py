@@ -57,8 +57,8 @@ def nigam_jennings_coefficients(period_s, dt_s, damping=DEFAULT_DAMPING):
         Oscillator periods [s], > 0.
     dt_s : float
         Step [s].
-    damping : float
-        Damping ratio ζ, 0 ≤ ζ < 1.
+    damping : float or array_like
+        Damping ratio ζ, 0 ≤ ζ < 1: one for all periods, or one per period (a building's modes).
 
     Returns
     -------
@@ -76,7 +76,7 @@ def nigam_jennings_coefficients(period_s, dt_s, damping=DEFAULT_DAMPING):
     """
     period = np.atleast_1d(np.asarray(period_s, dtype=float))
     w = 2.0 * np.pi / period
-    z = float(damping)
+    z = np.broadcast_to(np.asarray(damping, dtype=float), period.shape)
     root = np.sqrt(1.0 - z * z)
     wd = w * root
     e = np.exp(-z * w * dt_s)
