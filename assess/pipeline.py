@@ -347,7 +347,7 @@ def _add_simulation(cases: pd.DataFrame, motions: dict[int, list[tuple[Record, s
                            [record.dt_s for record in records], np.asarray(run_history),
                            progress=report)
     theta_max_over_alpha = peaks.theta_max_over_alpha
-    if calibration is not None:  # over α of the declared box, feet or not (SPEC §5)
+    if calibration is not None:  # over α of the declared box, feet or not (docs/calibration.md)
         from assess.calibration.apply import theta_over_declared
         theta_max_over_alpha = theta_over_declared(theta_max_over_alpha, [blocks_by_case[k] for k in run_case])
     runs = pd.DataFrame({

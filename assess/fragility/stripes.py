@@ -72,7 +72,7 @@ STRIPE_PGA_G = (0.05, 2.0)
 RAREST_RATE_PER_YR = 1.0 / 10_000.0
 MODES = ("beyond_clearance", "overturn")
 
-#: Columns the hazard curve adds to ``summary.csv`` (SPEC §6), then the fragilities they rest on.
+#: Columns the hazard curve adds to ``summary.csv`` (docs/outputs.md), then the fragilities they rest on.
 CURVE_COLUMNS = [
     "annual_rate_beyond_clearance", "annual_rate_overturn", "p50yr_beyond_clearance", "p50yr_overturn",
     "annual_rate_beyond_clearance_low", "annual_rate_beyond_clearance_high", "annual_rate_overturn_low",

@@ -39,7 +39,7 @@ from typing import Callable, Optional, Protocol, Sequence, Union
 
 import numpy as np
 
-from .block import Block, BlockResponse
+from .block import Block
 from .engine import (DEFAULT_TAIL_S, EVENT_DRIVEN, GENERAL, ROCKING_KERNEL, SLIDING_KERNEL, BlockOnInterface,
                      CasePeaks, SlidingInterface, checked_record_index, pure_sliding_proved, simulate,
                      simulate_cases)

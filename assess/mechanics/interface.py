@@ -96,8 +96,9 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from assess.mechanics.case_records import checked_record
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
-from assess.mechanics.sliding import SlidingResult
+from assess.mechanics.sliding import SlidingResult, slide_onset
 
 #: Longest RK4 sub-step of the velocity-friction kernel [s].
 _MAX_SUBSTEP_S = 1.0e-3
@@ -114,18 +115,6 @@ _MAX_TAIL_SUBSTEPS = 50_000_000
 
 
 # ----------------------------------------------------------------------------- shared
-def _check_record(floor_accel_g, dt_s):
-    accel = np.ascontiguousarray(floor_accel_g, dtype=float)
-    if accel.ndim != 1:
-        raise ValueError("floor_accel_g must be one-dimensional")
-    if not np.all(np.isfinite(accel)):
-        raise ValueError("floor_accel_g contains NaN or infinite values")
-    dt_s = float(dt_s)
-    if not (np.isfinite(dt_s) and dt_s > 0.0):
-        raise ValueError("dt_s must be finite and > 0")
-    return accel, dt_s
-
-
 def _result(hi, lo, residual, slide_time, n, dt_s, return_history, u_hist, v_hist):
     history = {}
     if return_history:
@@ -204,26 +193,9 @@ def _velocity_record(accel_g, n, dt, mu_min, mu_max, rate, mu_s, gravity, subste
         events = 0
         while tau < dt and events < _MAX_EVENTS_PER_STEP:
             if s == 0:
-                a_here = a0 + slope * tau
-                if a_here > mu_s:
-                    s = -1
-                elif a_here < -mu_s:
-                    s = 1
-                else:
-                    if a1 > mu_s:
-                        t_cross = (mu_s - a0) / (a1 - a0) * dt
-                        s_new = -1
-                    elif a1 < -mu_s:
-                        t_cross = (-mu_s - a0) / (a1 - a0) * dt
-                        s_new = 1
-                    else:
-                        break  # stuck for the rest of the step
-                    if t_cross < tau:
-                        t_cross = tau
-                    if t_cross >= dt:
-                        break
-                    tau = t_cross
-                    s = s_new
+                s, tau, _, stuck = slide_onset(a0 + slope * tau, a0, a1, mu_s, tau, dt)
+                if stuck:
+                    break
                 events += 1
             h = min(h_sub, dt - tau)
             if h <= 1e-12 * dt:
@@ -322,7 +294,7 @@ def velocity_friction_response(floor_accel_g, dt_s, mu_min, mu_max, rate_s_m, mu
     >>> round(r.sliding_max_m, 7), round(r.slide_time_s, 7)
     (2.4516625, 2.0)
     """
-    accel, dt_s = _check_record(floor_accel_g, dt_s)
+    accel, dt_s = checked_record(floor_accel_g, dt_s)
     mu_min = float(mu_min)
     mu_max = float(mu_max)
     rate = float(rate_s_m)
@@ -535,7 +507,7 @@ def elastic_interface_response(floor_accel_g, dt_s, mu, yield_displacement_m, re
     >>> r.sliding_residual_m, r.slide_time_s, r.sliding_max_m <= 0.001
     (0.0, 0.0, True)
     """
-    accel, dt_s = _check_record(floor_accel_g, dt_s)
+    accel, dt_s = checked_record(floor_accel_g, dt_s)
     mu = float(mu)
     u_y = float(yield_displacement_m)
     zeta = float(damping_ratio)

@@ -60,6 +60,7 @@ from typing import Optional
 import numpy as np
 from numba import get_num_threads, njit, prange
 
+from assess.mechanics.case_records import checked_record
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
 
 #: Events (stop, start, reversal) the kernel resolves inside one step of the
@@ -133,6 +134,44 @@ def _velocity_root(v0, b, c, h):
     return best
 
 
+@njit(cache=True, inline="always")
+def slide_onset(a_here, a0, a1, mu_s, tau, dt):
+    """The stick-slip rule for a block at rest ``tau`` seconds into a sample interval [s].
+
+    The floor acceleration [g] is ``a0`` at the start of the interval, ``a1``
+    at its end (``dt`` later), linear between, and ``a_here`` at ``tau``. The
+    block stays stuck while :math:`|a_g| \\le \\mu_s`; it starts to slide, away
+    from the floor's push, at the first instant :math:`|a_g|` exceeds μs: at
+    once if it does at ``tau``, else where the line reaches ±μs. Returns
+    (direction of sliding s: −1 for a_g > μs, +1 for a_g < −μs; the time it
+    starts [s]; a_g then [g]; whether it stays stuck for the rest of the
+    interval). Shared by the kernels that slide one way (this module's and
+    :func:`assess.mechanics.interface.velocity_friction_response`).
+
+    >>> slide_onset(0.1, 0.1, 0.5, 0.3, 0.0, 1.0)
+    (-1, 0.5, 0.3, False)
+    """
+    if a_here > mu_s:
+        return -1, tau, a_here, False
+    if a_here < -mu_s:
+        return 1, tau, a_here, False
+    if a1 > mu_s:
+        t_cross = (mu_s - a0) / (a1 - a0) * dt
+        a_cross = mu_s
+        s_new = -1
+    elif a1 < -mu_s:
+        t_cross = (-mu_s - a0) / (a1 - a0) * dt
+        a_cross = -mu_s
+        s_new = 1
+    else:
+        return 0, tau, a_here, True  # stuck for the rest of the interval
+    if t_cross < tau:
+        t_cross = tau
+    if t_cross >= dt:
+        return 0, tau, a_here, True  # starts at the next sample (round-off at the interval's end)
+    return s_new, t_cross, a_cross, False
+
+
 @njit(cache=True)
 def _slide_record(accel_g, n, dt, mu_k, mu_s, gravity, keep_history, u_out, v_out):
     """Exact event-driven integration over the first ``n`` samples of ``accel_g``.
@@ -162,28 +201,9 @@ def _slide_record(accel_g, n, dt, mu_k, mu_s, gravity, keep_history, u_out, v_ou
         a_here = a0  # a_g at tau [g]; set exactly to ±mu_s when a slide starts at a crossing
         for _event in range(_MAX_EVENTS_PER_STEP):
             if s == 0:
-                if a_here > mu_s:
-                    s = -1
-                elif a_here < -mu_s:
-                    s = 1
-                else:
-                    if a1 > mu_s:
-                        t_cross = (mu_s - a0) / (a1 - a0) * dt
-                        a_cross = mu_s
-                        s_new = -1
-                    elif a1 < -mu_s:
-                        t_cross = (-mu_s - a0) / (a1 - a0) * dt
-                        a_cross = -mu_s
-                        s_new = 1
-                    else:
-                        break  # stuck for the rest of the step
-                    if t_cross < tau:
-                        t_cross = tau
-                    if t_cross >= dt:
-                        break  # starts at the next sample (round-off at the step end)
-                    tau = t_cross
-                    a_here = a_cross
-                    s = s_new
+                s, tau, a_here, stuck = slide_onset(a_here, a0, a1, mu_s, tau, dt)
+                if stuck:
+                    break
             # sliding in direction s from tau with velocity v (sign s, or 0 at a start)
             h = dt - tau
             b = -gravity * (a_here + s * mu_k)
@@ -268,17 +288,6 @@ def _check_friction(mu, mu_static):
     return mu, np.broadcast_to(mu_static, mu.shape).astype(float)
 
 
-def _check_record(floor_accel_g, dt_s):
-    accel = np.ascontiguousarray(floor_accel_g, dtype=float)
-    if accel.ndim != 1:
-        raise ValueError("floor_accel_g must be one-dimensional")
-    if not np.all(np.isfinite(accel)):
-        raise ValueError("floor_accel_g contains NaN or infinite values")
-    if not (np.isfinite(dt_s) and dt_s > 0.0):
-        raise ValueError("dt_s must be finite and > 0")
-    return accel
-
-
 def sliding_response(floor_accel_g, dt_s, mu, mu_static=None, return_history=False) -> SlidingResult:
     """Two-way sliding of a rigid block under a floor motion, exact for piecewise-linear input.
 
@@ -318,7 +327,7 @@ def sliding_response(floor_accel_g, dt_s, mu, mu_static=None, return_history=Fal
     >>> round(r.sliding_max_m, 7), round(r.sliding_residual_m, 7), r.slide_time_s
     (2.4516625, -2.4516625, 2.0)
     """
-    accel = _check_record(floor_accel_g, float(dt_s))
+    accel, _ = checked_record(floor_accel_g, dt_s)
     mu_arr, mu_s_arr = _check_friction(float(mu), mu_static if mu_static is None else float(mu_static))
     n = accel.shape[0]
     u_hist = np.empty(n if return_history else 0)
