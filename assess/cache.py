@@ -219,8 +219,10 @@ class CachingRunner(RunnerBase):
         cacheable = np.array([k is not None for k in keys], dtype=bool)
         key_array = np.array([k if k is not None else b"" for k in keys], dtype=f"S{KEY_BYTES}")
         self._load_new_packs()
+        names = key_array.tolist()  # as the packs hold them (a fixed-width bytes array drops trailing zeros)
         if cases.kind == RESPONSE:
-            row = np.array([0 if k is not None and k in self._responses else -1 for k in keys], dtype=np.int64)
+            row = np.array([0 if ok and name in self._responses else -1 for ok, name in zip(cacheable, names)],
+                           dtype=np.int64)
         else:
             row = np.full(n, -1, dtype=np.int64)
             row[cacheable] = self._index.find(key_array[cacheable])
@@ -250,7 +252,7 @@ class CachingRunner(RunnerBase):
             progress(n, n)
         stored = cacheable[send]
         if cases.kind == RESPONSE:
-            result = [self._responses.get(k) if row[i] >= 0 else None for i, k in enumerate(keys)]
+            result = [self._responses[name] if row[i] >= 0 else None for i, name in enumerate(names)]
             for m, k in enumerate(missing):
                 result[k] = fresh[source[m]]
             if stored.any():

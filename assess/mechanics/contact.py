@@ -253,7 +253,7 @@ def solve_contacts(prev_m, prev_p, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv
             if changes != level:
                 continue
             violation, v, pnm, _, pnp, _ = contact_candidate(st_m, st_p, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p,
-                                                      inv_j, mu, mu_s)
+                                                             inv_j, mu, mu_s)
             if violation <= tol:
                 return st_m, st_p, v, pnm, pnp
             if violation < best[0]:
@@ -328,7 +328,7 @@ def impact(vx, vy, w, theta, prev_m, prev_p, on_m, on_p, b, hcg, inv_j, mu, mu_s
         _, v, _, _, _, _ = contact_candidate(pm, pp, on_m, on_p, (vx, vy, w), rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s)
         vx, vy, w = v
     st_m, st_p, v, _, _ = solve_contacts(pm, pp, on_m, on_p, (vx, vy, w), rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s,
-                                          tol)
+                                         tol)
     if e_override >= 0.0 and ((st_m == STICK and hit_m and st_p == OPEN and pp != OPEN)
                               or (st_p == STICK and hit_p and st_m == OPEN and pm != OPEN)):
         # rocking impact: rotation about the arriving corner at e times θ̇ before

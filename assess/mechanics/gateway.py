@@ -94,7 +94,8 @@ class Cases:
         n = len(self.blocks)
         object.__setattr__(self, "record_index", checked_record_index(self.record_index, n))
         if (self.kind == PLANAR) != (self.record_index_2 is not None):
-            raise ValueError("record_index_2 (the component along the depth) is given for planar runs, and only for them")
+            raise ValueError("record_index_2 (the component along the depth) is given for planar runs, "
+                             "and only for them")
         if self.record_index_2 is not None:
             object.__setattr__(self, "record_index_2", checked_record_index(self.record_index_2, n))
         for index in (self.record_index, self.record_index_2):

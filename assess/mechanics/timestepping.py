@@ -206,7 +206,7 @@ def _step(q, h, a_mid, a_change, prev_m, prev_p, b, hcg, inv_j, mu, mu_s, gravit
     on_m, on_p = g0_m <= act_tol, g0_p <= act_tol
     if (on_m and prev_m == OPEN) or (on_p and prev_p == OPEN):
         prev_m, prev_p, vx, vy, w = impact(vx, vy, w, theta, prev_m, prev_p, on_m, on_p, b, hcg, inv_j, mu, mu_s,
-                                            e_override, tol, VELOCITY_RATIO * np.sqrt(gravity * radius))
+                                           e_override, tol, VELOCITY_RATIO * np.sqrt(gravity * radius))
     theta_mid, y_mid = theta + 0.5 * h * w, y + 0.5 * h * vy
     act_m = on_m or corner_gap(y_mid, theta_mid, -b, hcg) <= 0.0
     act_p = on_p or corner_gap(y_mid, theta_mid, b, hcg) <= 0.0
@@ -216,7 +216,7 @@ def _step(q, h, a_mid, a_change, prev_m, prev_p, b, hcg, inv_j, mu, mu_s, gravit
     pm, pp = (prev_m if act_m else OPEN), (prev_p if act_p else OPEN)
     if act_m or act_p:
         st_m, st_p, v, _, _ = solve_contacts(pm, pp, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s,
-                                              tol)
+                                             tol)
     else:
         st_m, st_p, v = OPEN, OPEN, vf
     frac, event = 1.0, 0  # event: 0 none or a slip reversal, ±1 the corner that arrives, 2 a slip onset
@@ -283,8 +283,8 @@ def _step(q, h, a_mid, a_change, prev_m, prev_p, b, hcg, inv_j, mu, mu_s, gravit
         x += anchor - corner_x(x, theta, b if keep_p else -b, hcg)
     # contact states of the step, gaps at its end, velocities in its middle
     v_mid = (0.5 * (vx + v[0]), 0.5 * (vy + v[1]), 0.5 * (w + v[2]))
-    mode = step_mode(st_m, st_p, v_mid, rn_m, rt_m, rn_p, rt_p, corner_gap(y, theta, -b, hcg), corner_gap(y, theta, b, hcg),
-                         radius, gravity)
+    mode = step_mode(st_m, st_p, v_mid, rn_m, rt_m, rn_p, rt_p, corner_gap(y, theta, -b, hcg),
+                     corner_gap(y, theta, b, hcg), radius, gravity)
     if st_m == STICK and st_p == STICK:
         v = (0.0, 0.0, 0.0)
     if frac < 1.0 and event == 0:  # the reversing corners have stopped
