@@ -148,8 +148,11 @@ def slide_onset(a_here, a0, a1, mu_s, tau, dt):
     interval). Shared by the kernels that slide one way (this module's and
     :func:`assess.mechanics.interface.velocity_friction_response`).
 
-    >>> slide_onset(0.1, 0.1, 0.5, 0.3, 0.0, 1.0)
-    (-1, 0.5, 0.3, False)
+    The floor rises from 0 to 0.5 g over 1 s: it reaches μs = 0.25 halfway, and
+    the block slides away from the push from then on:
+
+    >>> slide_onset(0.0, 0.0, 0.5, 0.25, 0.0, 1.0)
+    (-1, 0.5, 0.25, False)
     """
     if a_here > mu_s:
         return -1, tau, a_here, False
