@@ -174,7 +174,8 @@ class DaskRunner(RunnerBase):
         n = len(cases)
         tasks = case_tasks(cases.record_index, self.cases_per_task)
         used = cases.records_used()
-        scattered = self.client.scatter([np.asarray(cases.records_g[j], dtype=float) for j in used])
+        # unique keys per batch (hash=False): a record sent again by the next batch is not the one being released
+        scattered = self.client.scatter([np.asarray(cases.records_g[j], dtype=float) for j in used], hash=False)
         records = dict(zip(used.tolist(), scattered))
         futures = {}
         for number, task in enumerate(tasks):
