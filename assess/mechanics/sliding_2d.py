@@ -90,7 +90,8 @@ from numba import get_num_threads, njit, prange
 
 from assess.mechanics.case_records import checked_record
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
-from assess.mechanics.sliding import _check_friction, _velocity_root
+from assess.mechanics.sliding import _check_friction
+from assess.mechanics.stick_slip import _velocity_root
 
 #: Default longest substep [s]; measured accuracy in the module docstring.
 DEFAULT_MAX_SUBSTEP_S = 1.0e-3
