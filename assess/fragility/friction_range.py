@@ -3,7 +3,7 @@
 μ is the least certain input of an item: Konstantinidis & Makris (2010) measured
 0.23–0.31 by slow pull on their three prototypes and needed 0.13–0.20 to match
 the shake table ([1] Table 3 and p.1470). An item whose workbook row gives
-``mu_low`` and ``mu_high`` (SPEC §1) has its μ taken as a **triangular
+``mu_low`` and ``mu_high`` (docs/workbook.md) has its μ taken as a **triangular
 distribution** on [``mu_low``, ``mu_high``] with its mode at the row's ``mu``:
 the three-point estimate an engineer gives (least, most likely, most), and the
 one distribution that uses all three numbers and no others. The workbook's
