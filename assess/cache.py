@@ -1,17 +1,22 @@
 """A cache of engine results, keyed by the content of everything a result depends on.
 
-:class:`CachingRunner` is a runner (:mod:`assess.mechanics.runner`): it takes
-the assessment's batch of (block, motion) cases, answers those it has seen
-before from a folder of stored peaks, and hands only the others to the runner
-it wraps (this machine's threads, a Dask cluster), in one batch. A case's key
-is a hash of
+:class:`CachingRunner` is a runner (:mod:`assess.mechanics.gateway`): it takes
+a batch of cases of any kind (the level's peaks, planar sliding, full
+responses with or without histories), answers those it has seen before from a
+folder of stored results, and hands only the others to the runner it wraps
+(this machine's threads, a Dask cluster), in one batch. A case's key is a
+hash of
+
+* what is asked of the run (:meth:`~assess.mechanics.gateway.Cases.options`):
+  its kind, the seconds followed after the record (``tail_s``) and, for a
+  full response, whether it carries the histories and which solver was asked;
 
 * the block: its class and every dataclass field (nested dataclasses such as a
   sliding interface included), floats by their exact ``repr``;
 * the motion: the bytes of the record's samples (float64) and its time step
-  ``dt_s`` (hashed once per record, not once per case); synthetic histories
-  enter through their samples, so their seed is part of the key;
-* the seconds followed after the record (``tail_s``);
+  ``dt_s`` (hashed once per record, not once per case), and of the second
+  component of a planar run; synthetic histories enter through their
+  samples, so their seed is part of the key;
 * :func:`engine_version`: a hash of the source of every ``assess/mechanics``
   module, the package version, and the numpy and numba versions, so that a
   change of the engine invalidates every stored result.
@@ -21,7 +26,8 @@ is in its batch), so a stored result is the result; the tests check that the
 numbers are identical with and without the cache.
 
 Storage: a folder of *packs*, compressed ``.npz`` files each holding the
-cases one call simulated (keys and peaks, no pickled objects). A pack is
+cases one call simulated (keys and peaks, or keys and responses with their
+histories as flat arrays; no pickled objects). A pack is
 written to a temporary file and renamed into place, so a reader never sees
 half a pack and two processes writing at once lose nothing; packs are never
 modified, only merged (when there are more than :data:`MAX_PACKS`) or
@@ -38,14 +44,20 @@ import os
 import tempfile
 import time
 from pathlib import Path
-from typing import Callable, Optional, Sequence
+from typing import Optional
 
 import numpy as np
 
-from assess.mechanics.engine import DEFAULT_TAIL_S, CasePeaks, checked_record_index
+import numba
+
+import assess
+from assess.mechanics.block import BlockResponse
+from assess.mechanics.gateway import PEAKS, RESPONSE, CasePeaks, Cases, LocalRunner, Progress, Result, RunnerBase
 
 #: Bump when the pack layout changes: packs of another format are not read.
 PACK_FORMAT = 1
+#: Format of a pack of full responses (:class:`~assess.mechanics.block.BlockResponse`).
+RESPONSE_PACK_FORMAT = 2
 #: Largest cache folder [bytes] before the least recently used packs are deleted.
 DEFAULT_MAX_BYTES = 1 << 30
 #: Packs in the folder before they are merged into one.
@@ -58,6 +70,8 @@ _MECHANICS = Path(__file__).resolve().parent / "mechanics"
 _FLOATS = ("sliding_max_m", "sliding_residual_m", "theta_max_over_alpha")
 _BOOLS = ("uplift", "overturned")
 _TEXTS = ("mode", "solver")
+_RESPONSE_FLOATS = ("sliding_max_m", "sliding_residual_m", "theta_max_over_alpha", "overturn_time_s")
+_HISTORIES = ("time_s", "sliding_m", "theta_rad")
 
 
 def engine_version(folder: Path = _MECHANICS) -> str:
@@ -66,9 +80,6 @@ def engine_version(folder: Path = _MECHANICS) -> str:
     The source of every ``*.py`` module of ``folder`` (default: ``assess/mechanics``),
     by name and content, plus the versions of assess, numpy and numba.
     """
-    import numba
-
-    import assess
     digest = hashlib.blake2b(digest_size=KEY_BYTES)
     for path in sorted(Path(folder).glob("*.py")):
         digest.update(path.name.encode() + b"\0" + path.read_bytes() + b"\0")
@@ -116,14 +127,14 @@ def record_digest(record_g, dt_s: float) -> bytes:
     return digest.digest()
 
 
-def case_keys(blocks: Sequence, records_g: Sequence[np.ndarray], dt_s: Sequence[float], record_index,
-              tail_s: float, version: str) -> list[Optional[bytes]]:
+def case_keys(cases: Cases, version: str) -> list[Optional[bytes]]:
     """One key per case (None for a block whose fields have no exact text: never cached)."""
-    records = [record_digest(r, d) for r, d in zip(records_g, dt_s)]
-    prefix = f"{version}|{float(tail_s)!r}|".encode()
+    records = [record_digest(r, d) for r, d in zip(cases.records_g, cases.dt_s)]
+    prefix = f"{version}|{cases.options()}|".encode()
+    second = cases.record_index_2.tolist() if cases.record_index_2 is not None else [None] * len(cases)
     by_block: dict[int, Optional[bytes]] = {}
     keys = []
-    for block, j in zip(blocks, np.asarray(record_index, dtype=np.int64)):
+    for block, j, j2 in zip(cases.blocks, cases.record_index.tolist(), second):
         digest = by_block.get(id(block), b"")
         if digest == b"":
             try:
@@ -131,8 +142,9 @@ def case_keys(blocks: Sequence, records_g: Sequence[np.ndarray], dt_s: Sequence[
             except TypeError:
                 digest = None
             by_block[id(block)] = digest
+        motion = records[j] + (b"" if j2 is None else records[j2])
         keys.append(None if digest is None
-                    else hashlib.blake2b(prefix + digest + records[j], digest_size=KEY_BYTES).digest())
+                    else hashlib.blake2b(prefix + digest + motion, digest_size=KEY_BYTES).digest())
     return keys
 
 
@@ -161,14 +173,15 @@ class _Index:
         return np.where(self.keys[clipped] == keys, clipped, -1)
 
 
-class CachingRunner:
+class CachingRunner(RunnerBase):
     """A runner that reuses stored results and simulates only the cases it has not seen.
 
     Parameters
     ----------
     inner : runner
-        What simulates the cases not in the cache (any object with
-        ``simulate_cases``; default :class:`~assess.mechanics.runner.LocalRunner`).
+        What simulates the cases not in the cache (a runner of
+        :mod:`assess.mechanics.gateway`; default
+        :class:`~assess.mechanics.gateway.LocalRunner`).
     folder : path
         The cache folder (created on the first write).
     max_bytes : int
@@ -176,39 +189,43 @@ class CachingRunner:
     version : str, optional
         The engine version the keys carry (default :func:`engine_version`).
 
-    ``cases_simulated`` counts the cases handed to ``inner`` (one per distinct
-    key), ``cases_reused`` those answered from the cache or by an identical
-    case of the same batch; the two add up to the cases asked for.
-    ``write_errors`` holds why a pack could not be stored (the run goes on
-    without storing it).
+    ``cases_simulated`` counts the ``peaks`` cases handed to ``inner`` (one per
+    distinct key: the level's item × motion × direction runs and the stripes,
+    the portfolio's account), ``cases_reused`` those answered from the cache or
+    by an identical case of the same batch; the two add up to the ``peaks``
+    cases asked for. ``runs_simulated`` and ``runs_reused`` count every run the
+    same way, by kind (``peaks``, ``planar``, ``response``). ``write_errors``
+    holds why a pack could not be stored (the run goes on without storing it).
     """
 
     def __init__(self, inner=None, folder=".cache", *, max_bytes: int = DEFAULT_MAX_BYTES,
                  version: str | None = None):
-        if inner is None:
-            from assess.mechanics.runner import LocalRunner
-            inner = LocalRunner()
-        self.inner = inner
+        self.inner = inner if inner is not None else LocalRunner()
         self.folder = Path(folder)
         self.max_bytes = int(max_bytes)
         self.version = version if version is not None else engine_version()
         self.cases_simulated = 0
         self.cases_reused = 0
+        self.runs_simulated: dict = {}
+        self.runs_reused: dict = {}
         self.write_errors: list[str] = []
         self._index = _Index()
+        self._responses: dict = {}
 
     # ------------------------------------------------------------ the runner seam
-    def simulate_cases(self, blocks: Sequence, records_g: Sequence[np.ndarray], dt_s: Sequence[float],
-                       record_index, *, tail_s: float = DEFAULT_TAIL_S,
-                       progress: Optional[Callable[[int, int], None]] = None) -> CasePeaks:
-        n = len(blocks)
-        record_index = checked_record_index(record_index, n)
-        keys = case_keys(blocks, records_g, dt_s, record_index, tail_s, self.version)
+    def run(self, cases: Cases, *, progress: Progress = None) -> Result:
+        n = len(cases)
+        keys = case_keys(cases, self.version)
         cacheable = np.array([k is not None for k in keys], dtype=bool)
         key_array = np.array([k if k is not None else b"" for k in keys], dtype=f"S{KEY_BYTES}")
         self._load_new_packs()
-        row = np.full(n, -1, dtype=np.int64)
-        row[cacheable] = self._index.find(key_array[cacheable])
+        names = key_array.tolist()  # as the packs hold them (a fixed-width bytes array drops trailing zeros)
+        if cases.kind == RESPONSE:
+            row = np.array([0 if ok and name in self._responses else -1 for ok, name in zip(cacheable, names)],
+                           dtype=np.int64)
+        else:
+            row = np.full(n, -1, dtype=np.int64)
+            row[cacheable] = self._index.find(key_array[cacheable])
         missing = np.flatnonzero(row < 0)
         # one simulation per distinct key; uncacheable cases each run
         send, first_of = [], {}
@@ -224,6 +241,36 @@ class CachingRunner:
             send.append(k)
         send = np.asarray(send, dtype=np.int64)
         hits = n - send.size
+        fresh = None
+        if send.size:
+            def report(done, total):
+                if progress is not None:
+                    progress(hits + done, n)
+
+            fresh = self.inner.run(cases.subset(send), progress=report)
+        elif progress is not None:
+            progress(n, n)
+        stored = cacheable[send]
+        if cases.kind == RESPONSE:
+            result = [self._responses[name] if row[i] >= 0 else None for i, name in enumerate(names)]
+            for m, k in enumerate(missing):
+                result[k] = fresh[source[m]]
+            if stored.any():
+                self._store_responses(key_array[send][stored], [r for r, s in zip(fresh, stored) if s])
+        else:
+            result = self._peaks(n, row, missing, source, fresh)
+            if stored.any():
+                self._store(key_array[send][stored],
+                            {name: np.asarray(getattr(fresh, name))[stored] for name in _FLOATS + _BOOLS}
+                            | {name: np.asarray(getattr(fresh, name)).astype(str)[stored] for name in _TEXTS})
+        self._count(cases, int(send.size))
+        if cases.kind == PEAKS:
+            self.cases_reused += int(hits)
+        self.runs_reused[cases.kind] = self.runs_reused.get(cases.kind, 0) + int(hits)
+        return result
+
+    def _peaks(self, n, row, missing, source, fresh) -> CasePeaks:
+        """Peaks of every case: stored ones from the index, the others from ``fresh`` (of the sent cases)."""
         values = {name: np.zeros(n, dtype=float) for name in _FLOATS}
         values.update({name: np.zeros(n, dtype=bool) for name in _BOOLS})
         texts = {name: np.full(n, "", dtype=object) for name in _TEXTS}
@@ -233,31 +280,11 @@ class CachingRunner:
                 values[name][found] = self._index.values[name][row[found]]
             for name in _TEXTS:
                 texts[name][found] = self._index.values[name][row[found]]
-        if send.size:
-            used = np.unique(record_index[send])  # only the records the misses need, grouping kept
-            renumber = np.full(len(records_g), -1, dtype=np.int64)
-            renumber[used] = np.arange(used.size)
-
-            def report(done, total):
-                if progress is not None:
-                    progress(hits + done, n)
-
-            peaks = self.inner.simulate_cases([blocks[k] for k in send], [records_g[j] for j in used],
-                                              [dt_s[j] for j in used], renumber[record_index[send]],
-                                              tail_s=tail_s, progress=report)
+        if fresh is not None:
             for name in _FLOATS + _BOOLS:
-                values[name][missing] = np.asarray(getattr(peaks, name))[source]
+                values[name][missing] = np.asarray(getattr(fresh, name))[source]
             for name in _TEXTS:
-                texts[name][missing] = np.asarray(getattr(peaks, name)).astype(str)[source]
-            stored = cacheable[send]
-            if stored.any():
-                self._store(key_array[send][stored],
-                            {name: np.asarray(getattr(peaks, name))[stored] for name in _FLOATS + _BOOLS}
-                            | {name: np.asarray(getattr(peaks, name)).astype(str)[stored] for name in _TEXTS})
-        elif progress is not None:
-            progress(n, n)
-        self.cases_simulated += int(send.size)
-        self.cases_reused += int(hits)
+                texts[name][missing] = np.asarray(getattr(fresh, name)).astype(str)[source]
         return CasePeaks(sliding_max_m=values["sliding_max_m"], sliding_residual_m=values["sliding_residual_m"],
                          theta_max_over_alpha=values["theta_max_over_alpha"], uplift=values["uplift"],
                          overturned=values["overturned"], mode=texts["mode"].astype(str),
@@ -280,17 +307,26 @@ class CachingRunner:
                 with contextlib.suppress(OSError):
                     path.unlink()  # damaged: its cases are simulated again
                 continue
-            self._index.add(*pack)
+            if isinstance(pack, dict):
+                self._responses.update(pack)
+            else:
+                self._index.add(*pack)
             self._index.packs.add(path.name)
             with contextlib.suppress(OSError):
                 os.utime(path)  # recently used: deleted last when the folder is trimmed
 
     def _store(self, keys: np.ndarray, values: dict) -> None:
         self._index.add(keys, values)
+        self._write(lambda: _write_pack(self.folder, keys, values))
+
+    def _store_responses(self, keys: np.ndarray, responses: list) -> None:
+        self._responses.update(zip(keys.tolist(), responses))
+        self._write(lambda: _write_response_pack(self.folder, keys, responses))
+
+    def _write(self, write) -> None:
         try:
             self.folder.mkdir(parents=True, exist_ok=True)
-            name = _write_pack(self.folder, keys, values)
-            self._index.packs.add(name)
+            self._index.packs.add(write())
             self._tidy()
         except OSError as error:
             self.write_errors.append(f"{self.folder}: {error.strerror or type(error).__name__}")
@@ -305,13 +341,17 @@ class CachingRunner:
         packs = self._pack_paths()
         if len(packs) > MAX_PACKS:
             merged = [p for p in packs if p.name in self._index.packs]
-            keys, values = self._index.keys, self._index.values
-            name = _write_pack(self.folder, keys, values)  # everything this process knows, in one pack
+            names = set()  # everything this process knows, in one pack of each layout
+            if self._index.keys.size:
+                names.add(_write_pack(self.folder, self._index.keys, self._index.values))
+            if self._responses:
+                keys = np.array(list(self._responses), dtype=f"S{KEY_BYTES}")
+                names.add(_write_response_pack(self.folder, keys, list(self._responses.values())))
             for path in merged:
-                if path.name != name:
+                if path.name not in names:
                     with contextlib.suppress(OSError):
                         path.unlink()
-            self._index.packs = {name} | (self._index.packs - {p.name for p in merged})
+            self._index.packs = names | (self._index.packs - {p.name for p in merged})
             packs = self._pack_paths()
         sizes = []
         for path in packs:
@@ -328,15 +368,39 @@ class CachingRunner:
 
 
 def _write_pack(folder: Path, keys: np.ndarray, values: dict) -> str:
-    """Write one pack atomically (temporary file, then rename); returns its file name."""
-    name = hashlib.blake2b(np.ascontiguousarray(keys).tobytes(), digest_size=KEY_BYTES).hexdigest() + ".npz"
+    """Write one pack of peaks atomically (temporary file, then rename); returns its file name."""
+    return _write_arrays(folder, format=np.array(PACK_FORMAT), keys=keys,
+                         **{f: np.asarray(values[f], dtype=float) for f in _FLOATS},
+                         **{f: np.asarray(values[f], dtype=bool) for f in _BOOLS},
+                         **{f: np.asarray(values[f], dtype=str) for f in _TEXTS})
+
+
+def _write_response_pack(folder: Path, keys: np.ndarray, responses: list) -> str:
+    """Write one pack of full responses: their fields per row, mode sequences and histories as flat arrays."""
+    histories = [r.time_s is not None for r in responses]
+    flat = {name: [np.asarray(getattr(r, name), dtype=float) for r, kept in zip(responses, histories) if kept]
+            for name in _HISTORIES}
+    return _write_arrays(
+        folder, format=np.array(RESPONSE_PACK_FORMAT), keys=keys,
+        **{f: np.array([float(getattr(r, f)) for r in responses], dtype=float) for f in _RESPONSE_FLOATS},
+        **{f: np.array([bool(getattr(r, f)) for r in responses], dtype=bool) for f in _BOOLS},
+        solver=np.array([str(r.solver) for r in responses], dtype=str),
+        mode_count=np.array([len(r.mode_sequence) for r in responses], dtype=np.int64),
+        mode_time=np.array([float(t) for r in responses for t, _ in r.mode_sequence], dtype=float),
+        mode_name=np.array([str(m) for r in responses for _, m in r.mode_sequence], dtype=str),
+        history_length=np.array([r.time_s.size if kept else -1 for r, kept in zip(responses, histories)],
+                                dtype=np.int64),
+        **{name: np.concatenate(arrays) if arrays else np.zeros(0) for name, arrays in flat.items()})
+
+
+def _write_arrays(folder: Path, **arrays) -> str:
+    """Write ``arrays`` as one pack atomically (temporary file, then rename); returns its file name (a hash
+    of its ``keys``)."""
+    name = hashlib.blake2b(np.ascontiguousarray(arrays["keys"]).tobytes(), digest_size=KEY_BYTES).hexdigest() + ".npz"
     handle, temporary = tempfile.mkstemp(prefix=".tmp-", suffix=".npz", dir=folder)
     try:
         with os.fdopen(handle, "wb") as stream:
-            np.savez_compressed(stream, format=np.array(PACK_FORMAT), keys=keys,
-                                **{f: np.asarray(values[f], dtype=float) for f in _FLOATS},
-                                **{f: np.asarray(values[f], dtype=bool) for f in _BOOLS},
-                                **{f: np.asarray(values[f], dtype=str) for f in _TEXTS})
+            np.savez_compressed(stream, **arrays)
             stream.flush()
             os.fsync(stream.fileno())
         umask = os.umask(0)
@@ -352,9 +416,12 @@ def _write_pack(folder: Path, keys: np.ndarray, values: dict) -> str:
 
 
 def _read_pack(path: Path):
-    """``(keys, values)`` of a pack, or None when it cannot be read or is not a pack of this format."""
+    """``(keys, values)`` of a pack of peaks, ``{key: BlockResponse}`` of a pack of responses, or None when
+    it cannot be read or is of neither format."""
     try:
         with np.load(path, allow_pickle=False) as pack:
+            if int(pack["format"]) == RESPONSE_PACK_FORMAT:
+                return _responses_of(pack)
             if int(pack["format"]) != PACK_FORMAT:
                 return None
             keys = pack["keys"]
@@ -368,3 +435,31 @@ def _read_pack(path: Path):
             or any(values[f].dtype.kind != "U" for f in _TEXTS):
         return None
     return keys, values
+
+
+def _responses_of(pack) -> dict | None:
+    """The responses of an open pack of :data:`RESPONSE_PACK_FORMAT`, by key; None if inconsistent."""
+    keys = pack["keys"]
+    n = keys.shape
+    columns = {name: pack[name] for name in _RESPONSE_FLOATS + _BOOLS + ("solver", "mode_count", "history_length")}
+    mode_time, mode_name = pack["mode_time"], pack["mode_name"]
+    flat = {name: pack[name] for name in _HISTORIES}
+    if keys.dtype != np.dtype(f"S{KEY_BYTES}") or keys.ndim != 1 or any(v.shape != n for v in columns.values()):
+        return None
+    counts, lengths = columns["mode_count"], np.maximum(columns["history_length"], 0)
+    if counts.sum() != mode_time.size or mode_time.size != mode_name.size or \
+            any(v.size != lengths.sum() for v in flat.values()):
+        return None
+    mode_start = np.concatenate([[0], np.cumsum(counts)])
+    history_start = np.concatenate([[0], np.cumsum(lengths)])
+    out = {}
+    for i, key in enumerate(keys.tolist()):
+        sequence = tuple((float(t), str(m)) for t, m in zip(mode_time[mode_start[i]:mode_start[i + 1]],
+                                                             mode_name[mode_start[i]:mode_start[i + 1]]))
+        history = {}
+        if columns["history_length"][i] >= 0:
+            history = {name: flat[name][history_start[i]:history_start[i + 1]].copy() for name in _HISTORIES}
+        out[key] = BlockResponse(**{f: float(columns[f][i]) for f in _RESPONSE_FLOATS},
+                                 **{f: bool(columns[f][i]) for f in _BOOLS}, mode_sequence=sequence,
+                                 solver=str(columns["solver"][i]), **history)
+    return out

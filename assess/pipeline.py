@@ -30,7 +30,7 @@ from assess.fragility.friction_range import expand_cases, with_mu_range
 from assess.fragility.planar import planar_runs, with_planar_peaks
 from assess.inventory import Inventory
 from assess.mechanics.block import Block
-from assess.mechanics.engine import simulate
+from assess.mechanics.gateway import run_responses
 from assess.mechanics.runner import LocalRunner
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2, frequency_parameter, inertia_ratio, slenderness
 from assess.mechanics.modes import MODE_SEVERITY, ROCK, SLIDE, SLIDE_ROCK, initial_mode
@@ -138,7 +138,7 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     cases, runs = _add_simulation(cases, simulated_motions, progress, runner, calibration, record_pairs)
     cases = add_pulse_share(_add_demand(cases, constants))
     cases["demand_source"] = motion_sources(cases, simulated_as, constants)
-    planar = planar_runs(cases, record_pairs)  # items that cannot uplift, under both components at once
+    planar = planar_runs(cases, record_pairs, runner)  # items that cannot uplift, under both components at once
     room_quantile = 1.0 - float(settings["risk_pf_moderate"])
     demand = governing_demand(cases, runs, constants, room_quantile=room_quantile, planar=planar)
     nominal = cases["mu_nominal"].to_numpy()
@@ -153,7 +153,7 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
         summary = summary.merge(curve.table, on="id", how="left")
         summary_columns = SUMMARY_COLUMNS + CURVE_COLUMNS
     histories = _worst_histories(cases, runs[nominal[runs["case"].to_numpy()]], summary, simulated_motions,
-                                 record_pairs)
+                                 record_pairs, runner)
     regression = {"zeta": constants.zeta, "eta": constants.eta, "sigma": constants.sigma,
                   "im_min": constants.im_min, "im_max": constants.im_max,
                   "source": _regression_source(settings)}
@@ -347,7 +347,7 @@ def _add_simulation(cases: pd.DataFrame, motions: dict[int, list[tuple[Record, s
                            [record.dt_s for record in records], np.asarray(run_history),
                            progress=report)
     theta_max_over_alpha = peaks.theta_max_over_alpha
-    if calibration is not None:  # over α of the declared box, feet or not (SPEC §5)
+    if calibration is not None:  # over α of the declared box, feet or not (docs/calibration.md)
         from assess.calibration.apply import theta_over_declared
         theta_max_over_alpha = theta_over_declared(theta_max_over_alpha, [blocks_by_case[k] for k in run_case])
     runs = pd.DataFrame({
@@ -376,12 +376,14 @@ def _add_simulation(cases: pd.DataFrame, motions: dict[int, list[tuple[Record, s
 
 
 def _worst_histories(cases: pd.DataFrame, runs: pd.DataFrame, summary: pd.DataFrame,
-                     motions: dict[int, list[tuple[Record, str]]], record_pairs: dict | None = None) -> list[dict]:
+                     motions: dict[int, list[tuple[Record, str]]], record_pairs: dict | None = None,
+                     runner=None) -> list[dict]:
     """Time histories of every item's worst run, worst items first (the report draws the first
     :data:`assess.report.render.HISTORY_FIGURES` as Fig. 7 of the paper, and every one small in the item's details).
 
     Worst: overturned first, then the largest θmax/α, then the largest
-    simulated sliding over clearance; for each item, its worst run.
+    simulated sliding over clearance; for each item, its worst run, run again with its histories
+    through ``runner`` (all in one batch).
     """
     ranked = runs.assign(
         id=cases["id"].to_numpy()[runs["case"]],
@@ -390,13 +392,17 @@ def _worst_histories(cases: pd.DataFrame, runs: pd.DataFrame, summary: pd.DataFr
     ).sort_values(["_over", "theta_max_over_alpha", "_ratio"], ascending=False, kind="stable")
     worst = ranked.drop_duplicates("id")
     names = summary.set_index("id")["name"]
-    histories = []
+    chosen = []
     for run in worst.itertuples(index=False):
         case = cases.iloc[int(run.case)]
         record, description = motions[case.motion_key][int(run.realization)]
         if record_pairs and case.motion_key in record_pairs and int(case.direction) == 2:
             record = record_pairs[case.motion_key][1]
-        response = simulate(case["block"], record.accel_g, record.dt_s, return_history=True)
+        chosen.append((case, record, description))
+    responses = run_responses([(case["block"], record.accel_g, record.dt_s) for case, record, _ in chosen],
+                              runner, history=True)
+    histories = []
+    for (case, record, description), response in zip(chosen, responses):
         floor = np.zeros(response.time_s.size)
         floor[:min(record.accel_g.size, floor.size)] = record.accel_g[:floor.size]
         histories.append({

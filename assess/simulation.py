@@ -1,6 +1,7 @@
 """One item under one motion (``assess simulate``): the engine's answer beside the regression's.
 
-Sequences :func:`assess.mechanics.engine.simulate` and, where the motion is a
+Runs the item through the engine's gateway (a ``response`` run,
+:func:`assess.mechanics.gateway.run_responses`) and, where the motion is a
 pulse of known period, the paper's regression (eqs. 7, 8 and 21) for the same
 item, and returns both in one :class:`ItemSimulation`.
 """
@@ -15,7 +16,7 @@ from assess.data import default_settings
 from assess.fragility import RegressionConstants, intensity_measure, sliding_quantile
 from assess.hazard.records import Record
 from assess.mechanics.block import Block, BlockResponse
-from assess.mechanics.engine import DEFAULT_TAIL_S, simulate
+from assess.mechanics.gateway import DEFAULT_TAIL_S, run_responses
 
 M_TO_CM = 100.0
 
@@ -76,8 +77,10 @@ class ItemSimulation:
 
 def simulate_item(block: Block, motion: Record, *, pulse_period_s: Optional[float] = None,
                   tail_s: float = DEFAULT_TAIL_S, solver: str = "auto", return_history: bool = False,
-                  constants: Optional[RegressionConstants] = None) -> ItemSimulation:
+                  constants: Optional[RegressionConstants] = None, runner=None) -> ItemSimulation:
     """Simulate ``block`` under ``motion``; with a pulse period, add the regression's median.
+
+    ``runner`` runs the engine's case (:mod:`assess.mechanics.gateway`; default this machine).
 
     Examples
     --------
@@ -87,8 +90,8 @@ def simulate_item(block: Block, motion: Record, *, pulse_period_s: Optional[floa
     >>> run.response.mode, round(run.im, 2)
     ('slide', 3.15)
     """
-    response = simulate(block, motion.accel_g, motion.dt_s, tail_s=tail_s, solver=solver,
-                        return_history=return_history)
+    response, = run_responses([(block, motion.accel_g, motion.dt_s)], runner, tail_s=tail_s, solver=solver,
+                              history=return_history)
     im = median_m = None
     if pulse_period_s is not None:
         constants = constants or RegressionConstants.from_settings(default_settings())

@@ -18,21 +18,24 @@ from assess.cache import CachingRunner, block_fingerprint, engine_version
 from assess.hazard.records import pulse_record
 from assess.mechanics.block import Block
 from assess.mechanics.engine import BlockOnInterface, SlidingInterface, simulate_cases
-from assess.mechanics.runner import LocalRunner
+from assess.mechanics.gateway import run_cases
+from assess.mechanics.runner import LocalRunner, RunnerBase
 
 TAIL_S = 2.0
 
 
-class Recording:
+class Recording(RunnerBase):
     """A runner that simulates with the engine and keeps every block and record it was handed."""
 
     def __init__(self):
         self.blocks, self.records = [], []
+        self.cases_simulated, self.runs_simulated = 0, {}
 
-    def simulate_cases(self, blocks, records_g, dt_s, record_index, *, tail_s, progress=None):
-        self.blocks.extend(blocks)
-        self.records.extend(np.asarray(records_g[j]) for j in record_index)
-        return simulate_cases(blocks, records_g, dt_s, record_index, tail_s=tail_s, progress=progress)
+    def run(self, cases, *, progress=None):
+        self.blocks.extend(cases.blocks)
+        self.records.extend(np.asarray(cases.records_g[j]) for j in cases.record_index)
+        self._count(cases, len(cases))
+        return run_cases(cases, progress=progress)
 
 
 def _blocks():

@@ -20,6 +20,7 @@ from assess.hazard.pulses import pulse_acceleration  # noqa: E402
 from assess.mechanics.block import Block  # noqa: E402
 from assess.mechanics.distributed import DaskRunner, case_tasks  # noqa: E402
 from assess.mechanics.engine import GENERAL, ROCKING_KERNEL, SLIDING_KERNEL, simulate_cases  # noqa: E402
+from assess.mechanics.gateway import Cases, run_cases  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 LAB = ROOT / "inventories" / "lab.xlsx"
@@ -80,6 +81,29 @@ def test_runner_reassembles_in_case_order(cluster):
     for name in ("sliding_max_m", "sliding_residual_m", "theta_max_over_alpha", "uplift", "overturned", "mode",
                  "solver"):
         np.testing.assert_array_equal(getattr(got, name), getattr(expected, name), err_msg=name)
+
+
+def test_planar_and_history_runs_on_the_cluster_are_the_local_ones(cluster):
+    """Every kind of run goes through the runner: the cluster's planar peaks and full responses (histories
+    included) are this machine's, bit for bit, in case order."""
+    blocks, records, dts, index = _mixed_cases()
+    sliders = [k for k, b in enumerate(blocks) if b.mu_static < b.b_over_h]
+    planar = Cases.planar([blocks[k] for k in sliders], records, dts, index[sliders], (index[sliders] + 1) % 3)
+    responses = Cases.responses(blocks[:12], records, dts, index[:12], tail_s=1.0, history=True)
+    runner = DaskRunner.connect(cluster.scheduler_address, cases_per_task=4)
+    try:
+        got_planar, got_responses = runner.run(planar), runner.run(responses)
+    finally:
+        runner.close()
+    assert runner.runs_simulated == {"planar": len(sliders), "response": 12} and runner.cases_simulated == 0
+    expected = run_cases(planar)
+    for name in ("sliding_max_m", "sliding_residual_m", "mode", "solver"):
+        np.testing.assert_array_equal(getattr(got_planar, name), getattr(expected, name), err_msg=name)
+    for got, want in zip(got_responses, run_cases(responses), strict=True):
+        assert (got.sliding_max_m, got.theta_max_over_alpha, got.mode_sequence, got.solver) == \
+            (want.sliding_max_m, want.theta_max_over_alpha, want.mode_sequence, want.solver)
+        np.testing.assert_array_equal(got.theta_rad, want.theta_rad)
+        np.testing.assert_array_equal(got.sliding_m, want.sliding_m)
 
 
 @pytest.mark.parametrize("address", ["tcp://127.0.0.1:1", "http://127.0.0.1:8787"])

@@ -124,7 +124,7 @@ def build_cases(inventory, measured: pd.DataFrame) -> list[Case]:
 
 def run_calibration(inventory, measured: pd.DataFrame, *, effects=None, margin: float = MARGIN,
                     progress: Optional[Callable[[int, int], None]] = None,
-                    cache: Optional[dict] = None) -> CalibrationResult:
+                    cache: Optional[dict] = None, runner=None) -> CalibrationResult:
     """Fit every available effect to the measured tests and select one (docs/calibration.md).
 
     Parameters
@@ -143,6 +143,8 @@ def run_calibration(inventory, measured: pd.DataFrame, *, effects=None, margin: 
     cache : dict, optional
         Predictions already computed, reused between calls on the same tests
         (the key holds the item's numbers and the motion's samples).
+    runner : optional
+        Runs the test simulations (:mod:`assess.mechanics.gateway`; default this machine).
     """
     cache = {} if cache is None else cache
     names = list(EFFECTS) if effects is None else list(effects)
@@ -153,7 +155,7 @@ def run_calibration(inventory, measured: pd.DataFrame, *, effects=None, margin: 
     observed = Measured.from_table(measured)
     fits: list[EffectFit] = []
     for k, effect in enumerate(chosen):
-        fits.append(fit_effect(effect, cases, observed, cache))
+        fits.append(fit_effect(effect, cases, observed, cache, runner=runner))
         if progress is not None:
             progress(k + 1, len(chosen))
     selected, similar = select_effect(fits, margin)

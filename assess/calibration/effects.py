@@ -26,7 +26,7 @@ e, different for every item). :data:`EFFECTS` lists them by name (docs/calibrati
     workbook declares) to μ_min = f·μ, at rate ``rate_s_m``
     (:func:`assess.mechanics.interface.velocity_friction_response`). That
     kernel is a sliding-only solver, so it is used for items that cannot
-    uplift (μ_s < b/h, :func:`assess.mechanics.engine.pure_sliding_proved`);
+    uplift (μ_s < b/h, :func:`assess.mechanics.gateway.pure_sliding_proved`);
     items that can uplift keep the engine's normal model under this effect.
 ``interface_elasticity``
     A compliant (elastic–perfectly-plastic) interface of yield displacement
@@ -45,6 +45,10 @@ brought back to the declared α.
 The two interface effects need :mod:`assess.mechanics.interface`; when it is
 not installed, :func:`available_effects` leaves them out.
 
+Every prediction is a run of the engine's gateway (a ``response`` run,
+:func:`assess.mechanics.gateway.run_responses`), the tests of one grid point
+in one batch (:func:`assess.calibration.fit.predict_cases`).
+
 Which base direction a test shook comes with the test (see
 :mod:`assess.calibration.measured`); the effects take the half-width of that
 direction.
@@ -57,7 +61,6 @@ References
 """
 from __future__ import annotations
 
-import importlib
 from dataclasses import dataclass, replace
 from dataclasses import fields as dataclass_fields
 from typing import Callable, Mapping, NamedTuple
@@ -67,7 +70,7 @@ import numpy as np
 from assess.hazard.records import Record
 from assess.mechanics.block import Block
 from assess.mechanics.geometry import slenderness
-from assess.mechanics.engine import BlockOnInterface, SlidingInterface, simulate
+from assess.mechanics.gateway import BlockOnInterface, SlidingInterface, run_responses, solver_installed
 
 INTERFACE_MODULE = "assess.mechanics.interface"
 
@@ -118,13 +121,13 @@ class Effect:
 
     def available(self) -> bool:
         """Whether the module the effect needs is installed."""
-        if self.requires is None:
-            return True
-        try:
-            importlib.import_module(self.requires)
-        except ImportError:
-            return False
-        return True
+        return self.requires is None or solver_installed(self.requires)
+
+    def model(self, item: Mapping, half_width_m: float, motion: Record,
+              parameters: Mapping[str, float]) -> tuple[Block, Record]:
+        """The block and the floor motion that ``predict`` simulates for one test."""
+        return (calibrated_block(item_block(item, half_width_m), self.name, parameters),
+                calibrated_motion(motion, self.name, parameters))
 
 
 def half_width_of(item: Mapping, direction: int) -> float:
@@ -163,9 +166,9 @@ def theta_over_declared_alpha(response_theta_max_over_alpha, block: Block) -> fl
     return float(response_theta_max_over_alpha) * block.alpha_rad / declared_alpha_rad(block)
 
 
-def _engine(block: Block, motion: Record) -> Prediction:
-    """The engine's peaks, θmax over α of the declared box (as measured, docs/workbook.md) for every effect."""
-    response = simulate(block, motion.accel_g, motion.dt_s)
+def prediction(block: Block, response) -> Prediction:
+    """The peaks of the engine's ``response`` of ``block``, θmax over α of the declared box (as measured,
+    docs/calibration.md) for every effect."""
     return Prediction(float(response.sliding_max_m), theta_over_declared_alpha(response.theta_max_over_alpha, block),
                       bool(response.overturned), response.mode)
 
@@ -217,8 +220,9 @@ def calibrated_motion(motion: Record, effect: str, parameters: Mapping[str, floa
 def _predictor(effect: str):
     """``predict(item, half_width_m, motion, parameters)`` of one effect (see :class:`Effect`)."""
     def predict(item, half_width_m, motion, parameters):
-        return _engine(calibrated_block(item_block(item, half_width_m), effect, parameters),
-                       calibrated_motion(motion, effect, parameters))
+        block, motion = EFFECTS[effect].model(item, half_width_m, motion, parameters)
+        response, = run_responses([(block, motion.accel_g, motion.dt_s)])
+        return prediction(block, response)
     predict.__name__ = f"predict_{effect}"
     return predict
 

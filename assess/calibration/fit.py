@@ -68,7 +68,8 @@ from typing import Mapping, Sequence
 import numpy as np
 import pandas as pd
 
-from assess.calibration.effects import Effect, Prediction
+from assess.calibration.effects import Effect, Prediction, prediction
+from assess.mechanics.gateway import run_responses
 from assess.hazard.records import Record
 
 #: Peak sliding below which a prediction or measurement counts as this value [m].
@@ -198,17 +199,22 @@ def error_measures(predicted: Predicted, measured: Measured) -> dict:
 
 
 def predict_cases(effect: Effect, cases: Sequence[Case], parameters: Mapping[str, float],
-                  cache: dict | None = None) -> Predicted:
-    """The effect's predictions for every test, from ``cache`` where it has them."""
+                  cache: dict | None = None, runner=None) -> Predicted:
+    """The effect's predictions for every test, from ``cache`` where it has them; the others are simulated
+    in one batch through ``runner`` (:mod:`assess.mechanics.gateway`; default this machine)."""
     cache = {} if cache is None else cache
     values = tuple(round(float(parameters[p.name]), 12) for p in effect.parameters)
-    out = []
-    for case in cases:
-        key = (effect.name, values, case.key())
-        if key not in cache:
-            cache[key] = effect.predict(case.item, case.half_width_m, case.record, dict(parameters))
-        out.append(cache[key])
-    return Predicted.from_predictions(out)
+    keys = [(effect.name, values, case.key()) for case in cases]
+    todo = {}
+    for key, case in zip(keys, cases):
+        if key not in cache and key not in todo:
+            todo[key] = case
+    if todo:
+        models = [effect.model(c.item, c.half_width_m, c.record, dict(parameters)) for c in todo.values()]
+        responses = run_responses([(block, motion.accel_g, motion.dt_s) for block, motion in models], runner)
+        for key, (block, _), response in zip(todo, models, responses):
+            cache[key] = prediction(block, response)
+    return Predicted.from_predictions([cache[key] for key in keys])
 
 
 @dataclass
@@ -256,22 +262,23 @@ def leave_one_out(losses: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 def fit_effect(effect: Effect, cases: Sequence[Case], measured: Measured, cache: dict | None = None,
-               refine: bool = True) -> EffectFit:
-    """Fit the effect's parameters to the tests and cross-validate it (module docstring)."""
+               refine: bool = True, runner=None) -> EffectFit:
+    """Fit the effect's parameters to the tests and cross-validate it (module docstring); ``runner`` runs
+    the simulations (:func:`predict_cases`)."""
     cache = {} if cache is None else cache
     counts = measured.counts
     grid = parameter_grid(effect)
-    losses = [test_losses(predict_cases(effect, cases, point, cache), measured) for point in grid]
+    losses = [test_losses(predict_cases(effect, cases, point, cache, runner), measured) for point in grid]
     not_determined = undetermined_parameters(effect, grid, [objective(loss, counts) for loss in losses])
     best = int(np.argmin(np.sum(losses, axis=1)))
     parameters = {k: float(v) for k, v in grid[best].items()}
     if refine and effect.parameters:
-        parameters = _refine(effect, cases, measured, cache, parameters, objective(losses[best], counts))
+        parameters = _refine(effect, cases, measured, cache, parameters, objective(losses[best], counts), runner)
         local = _local_grid(effect, parameters) + [parameters]
         grid += local
-        losses += [test_losses(predict_cases(effect, cases, point, cache), measured) for point in local]
+        losses += [test_losses(predict_cases(effect, cases, point, cache, runner), measured) for point in local]
     held, chosen = leave_one_out(np.array(losses))
-    predicted = predict_cases(effect, cases, parameters, cache)
+    predicted = predict_cases(effect, cases, parameters, cache, runner)
     error = jackknife_standard_error([grid[k] for k in chosen])
     if refine and effect.parameters:  # the held-out estimates are grid points: add their quantisation
         for p, (low, high) in zip(effect.parameters, _cell_bounds(effect, parameters)):
@@ -371,7 +378,7 @@ def _local_grid(effect: Effect, point: Mapping[str, float]) -> list[dict]:
     return [dict(zip([p.name for p in effect.parameters], map(float, v))) for v in itertools.product(*axes)]
 
 
-def _refine(effect, cases, measured, cache, start: dict, start_value: float) -> dict:
+def _refine(effect, cases, measured, cache, start: dict, start_value: float, runner=None) -> dict:
     """Minimise the objective within the grid cells around ``start``; keep ``start`` unless it improves."""
     from scipy.optimize import minimize, minimize_scalar
 
@@ -382,7 +389,7 @@ def _refine(effect, cases, measured, cache, start: dict, start_value: float) -> 
 
     def value(x):
         point = {p.name: float(back(v)) for p, back, v in zip(effect.parameters, backward, np.atleast_1d(x))}
-        return objective(test_losses(predict_cases(effect, cases, point, cache), measured), counts)
+        return objective(test_losses(predict_cases(effect, cases, point, cache, runner), measured), counts)
 
     x0 = np.array([fwd(start[p.name]) for p, fwd in zip(effect.parameters, forward)])
     if len(effect.parameters) == 1:

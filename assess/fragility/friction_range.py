@@ -60,7 +60,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from assess.mechanics.engine import pure_sliding_proved
+from assess.mechanics.gateway import pure_sliding_proved
 
 #: Intervals a side of the nominal μ for an item that cannot uplift anywhere in its range.
 NODES_PER_SIDE_SLIDING = 4

@@ -2,10 +2,10 @@
 
 Where a motion gives both horizontal components (``record`` and ``record_2``,
 :mod:`assess.hazard.record_pairs`) and an item cannot uplift in either base
-direction (μs < b/h both ways, :func:`~assess.mechanics.engine.pure_sliding_proved`),
+direction (μs < b/h both ways, :func:`~assess.mechanics.gateway.pure_sliding_proved`),
 the block slides on the floor under the two components at once, with the
-friction force μmg opposing its velocity vector
-(:func:`~assess.mechanics.sliding_2d.sliding_2d_peaks_batch`). Its sliding
+friction force μmg opposing its velocity vector (the engine's ``planar`` runs,
+:meth:`assess.mechanics.gateway.Cases.planar`). Its sliding
 demand under that motion is then the **peak distance from rest** of that
 path, compared with its clearance, and it replaces the larger of the two
 one-way answers (each base direction under its component alone, friction
@@ -24,8 +24,7 @@ import numpy as np
 import pandas as pd
 
 from assess.hazard.records import Record
-from assess.mechanics.engine import pure_sliding_proved
-from assess.mechanics.sliding_2d import sliding_2d_peaks_batch
+from assess.mechanics.gateway import Cases, pure_sliding_proved
 
 #: Columns of :func:`planar_runs`.
 PLANAR_COLUMNS = ["id", "motion_key", "mu_node", "realization", "sliding_cm", "residual_cm"]
@@ -33,7 +32,8 @@ PLANAR_COLUMNS = ["id", "motion_key", "mu_node", "realization", "sliding_cm", "r
 
 def planar_cases(cases: pd.DataFrame, pairs: dict) -> pd.DataFrame:
     """One row per item × paired motion × μ node that slides in the plane: ``id``, ``motion_key``,
-    ``mu_node``, ``mu``, ``mu_static``, ``case`` (its direction-1 row in ``cases``)."""
+    ``mu_node``, ``mu``, ``mu_static``, ``case`` (its direction-1 row in ``cases``), and ``block`` (that
+    row's block) where ``cases`` has one."""
     if not pairs or cases.empty:
         return pd.DataFrame(columns=["id", "motion_key", "mu_node", "mu", "mu_static", "case"])
     node = cases["mu_node"] if "mu_node" in cases else pd.Series(0, index=cases.index)
@@ -42,27 +42,32 @@ def planar_cases(cases: pd.DataFrame, pairs: dict) -> pd.DataFrame:
     slender = table.groupby(["id", "motion_key", "mu_node"])["b_over_h"].transform("min")
     sliding = pure_sliding_proved(table["mu_static"].to_numpy(), slender.to_numpy())
     chosen = table[sliding & (table["direction"] == 1)]
-    return chosen[["id", "motion_key", "mu_node", "mu", "mu_static", "case"]].reset_index(drop=True)
+    columns = ["id", "motion_key", "mu_node", "mu", "mu_static", "case"] + (["block"] if "block" in chosen else [])
+    return chosen[columns].reset_index(drop=True)
 
 
-def planar_runs(cases: pd.DataFrame, pairs: dict[int, tuple[Record, Record]]) -> pd.DataFrame:
+def planar_runs(cases: pd.DataFrame, pairs: dict[int, tuple[Record, Record]], runner) -> pd.DataFrame:
     """The 2-D peak distance from rest [cm] of every item that cannot uplift under every paired motion.
 
-    ``pairs`` maps a ``motion_key`` to its accelerations along the items'
-    width and depth (:func:`assess.hazard.record_pairs.item_axes_pair`).
-    Returns :data:`PLANAR_COLUMNS` (``realization`` 0: a record is one history).
+    ``cases`` carry their ``block``; ``pairs`` maps a ``motion_key`` to its
+    accelerations along the items' width and depth
+    (:func:`assess.hazard.record_pairs.item_axes_pair`); ``runner`` runs the
+    engine's cases (:mod:`assess.mechanics.gateway`). Returns
+    :data:`PLANAR_COLUMNS` (``realization`` 0: a record is one history).
     """
     chosen = planar_cases(cases, pairs)
-    frames = []
-    for key, group in chosen.groupby("motion_key", sort=True):
-        width, depth = pairs[key]
-        peak_m, residual_m = sliding_2d_peaks_batch([width.accel_g], [depth.accel_g], width.dt_s,
-                                                    group["mu"].to_numpy(), group["mu_static"].to_numpy())
-        frames.append(group[["id", "motion_key", "mu_node"]].assign(
-            realization=0, sliding_cm=peak_m[:, 0] * 100.0, residual_cm=residual_m[:, 0] * 100.0))
-    if not frames:
+    if chosen.empty:
         return pd.DataFrame(columns=PLANAR_COLUMNS)
-    return pd.concat(frames, ignore_index=True)[PLANAR_COLUMNS]
+    chosen = chosen.sort_values("motion_key", kind="stable").reset_index(drop=True)
+    keys = sorted(set(chosen["motion_key"]))
+    slot = {key: 2 * j for j, key in enumerate(keys)}
+    records = [component for key in keys for component in pairs[key]]
+    first = chosen["motion_key"].map(slot).to_numpy(dtype=np.int64)
+    peaks = runner.run(Cases.planar(chosen["block"].tolist(), [r.accel_g for r in records],
+                                    [r.dt_s for r in records], first, first + 1))
+    return chosen[["id", "motion_key", "mu_node"]].assign(
+        realization=0, sliding_cm=peaks.sliding_max_m * 100.0,
+        residual_cm=peaks.sliding_residual_m * 100.0)[PLANAR_COLUMNS]
 
 
 def planar_note(motions: int, total: int) -> str:

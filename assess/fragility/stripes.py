@@ -61,6 +61,7 @@ from scipy import stats
 from assess.fragility.msa import FITTED, FragilityFit, fit_lognormal_fragilities
 from assess.hazard.openquake import OpenQuakeHazard
 from assess.hazard.risk_integral import annual_rates_of_curve, openquake_failure_rate, probability_in_years
+from assess.mechanics.gateway import Cases
 
 #: Number of stripes of floor acceleration.
 N_STRIPES = 10
@@ -71,7 +72,7 @@ STRIPE_PGA_G = (0.05, 2.0)
 RAREST_RATE_PER_YR = 1.0 / 10_000.0
 MODES = ("beyond_clearance", "overturn")
 
-#: Columns the hazard curve adds to ``summary.csv`` (SPEC §6), then the fragilities they rest on.
+#: Columns the hazard curve adds to ``summary.csv`` (docs/outputs.md), then the fragilities they rest on.
 CURVE_COLUMNS = [
     "annual_rate_beyond_clearance", "annual_rate_overturn", "p50yr_beyond_clearance", "p50yr_overturn",
     "annual_rate_beyond_clearance_low", "annual_rate_beyond_clearance_high", "annual_rate_overturn_low",
@@ -190,7 +191,7 @@ def stripe_runs(cases: pd.DataFrame, motions: dict, plan, runner,
     A motion of ``record_pairs`` (``motion_key`` -> its components along the
     items' width and depth) runs direction 1 under the first and direction 2
     under the second, both scaled by one factor that brings the larger peak
-    to the stripe. Returns ``id``, ``direction``, ``pfa_g``, ``history`` (per
+    to the stripe. ``runner`` runs them (:mod:`assess.mechanics.gateway`). Returns ``id``, ``direction``, ``pfa_g``, ``history`` (per
     floor), ``sliding_max_cm``, ``overturned``.
     """
     record_pairs = record_pairs or {}
@@ -222,7 +223,7 @@ def stripe_runs(cases: pd.DataFrame, motions: dict, plan, runner,
                 rows.append((case.id, int(case.direction), float(pfa_g), h))
     if not blocks:
         return pd.DataFrame(columns=["id", "direction", "pfa_g", "history", "sliding_max_cm", "overturned"])
-    peaks = runner.simulate_cases(blocks, records, dts, np.asarray(index), progress=progress)
+    peaks = runner.run(Cases.peaks(blocks, records, dts, np.asarray(index)), progress=progress)
     runs = pd.DataFrame(rows, columns=["id", "direction", "pfa_g", "history"])
     runs["sliding_max_cm"] = peaks.sliding_max_m * 100.0
     runs["overturned"] = peaks.overturned

@@ -1,11 +1,11 @@
 """The engine's cases on a Dask distributed cluster (``assess --scheduler ADDRESS``).
 
-:class:`DaskRunner` has the runner signature of :mod:`assess.mechanics.runner`:
-it cuts the cases, ordered by record, into tasks of :data:`CASES_PER_TASK`
-(so the tasks depend on the cases alone, never on how many workers there
-are), sends each record to the cluster once, runs
-:func:`assess.mechanics.engine.simulate_cases` on the workers and puts the
-peaks back in case order. A case's result depends only on its block and its
+:class:`DaskRunner` is a runner of :mod:`assess.mechanics.gateway`: it cuts
+a batch of cases (of any kind), ordered by record, into tasks of
+:data:`CASES_PER_TASK` (so the tasks depend on the cases alone, never on how
+many workers there are), sends each record to the cluster once, runs
+:func:`assess.mechanics.gateway.run_cases` on the workers and puts the
+results back in case order. A case's result depends only on its block and its
 record (the kernels are deterministic and every synthetic motion is seeded
 per motion before it gets here), so the numbers are those of a run on this
 machine, bit for bit, wherever and in whatever order the tasks ran.
@@ -25,15 +25,16 @@ References
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import Any, Callable, Optional, Sequence
+import asyncio
+from dataclasses import dataclass, field, replace
+from typing import Any
 
 import numpy as np
 
+import assess
 from assess.errors import InputError, Problem
 
-from .block import Block
-from .engine import DEFAULT_TAIL_S, CasePeaks, checked_record_index, simulate_cases
+from .gateway import RESPONSE, CasePeaks, Cases, Progress, Result, RunnerBase, run_cases
 
 #: Cases per task: about a tenth of a second to a second of work on one core, so that small jobs
 #: still spread over the workers and scheduling (about a millisecond a task) costs little.
@@ -59,13 +60,12 @@ def case_tasks(record_index, cases_per_task: int = CASES_PER_TASK) -> list[np.nd
     return [order[start:start + cases_per_task] for start in range(0, order.size, cases_per_task)]
 
 
-def _simulate_task(blocks, records_g, dt_s, record_index, tail_s):
-    """One task on a worker: its blocks under its records (the engine, peaks only)."""
-    return simulate_cases(blocks, records_g, dt_s, record_index, tail_s=tail_s)
+def _run_task(cases: Cases, records_g: list) -> Result:
+    """One task on a worker: its cases under its records (sent apart, once per record), through the gateway."""
+    return run_cases(replace(cases, records_g=records_g))
 
 
 def _worker_version():
-    import assess
     return assess.__version__
 
 
@@ -75,9 +75,7 @@ def _probe(address: str, timeout_s: float) -> None:
     Raises OSError, TimeoutError or ValueError unless a Dask scheduler answers
     (a Client that fails to start waits long and complains again at exit).
     """
-    import asyncio
-
-    from distributed.comm import connect
+    from distributed.comm import connect  # the optional cluster extra
 
     async def knock():
         comm = await connect(address, timeout=timeout_s)
@@ -104,17 +102,19 @@ def _scheduler_problem(address: str, message: str, fix: str) -> InputError:
 
 
 @dataclass
-class DaskRunner:
+class DaskRunner(RunnerBase):
     """Run the engine's cases on the Dask cluster that ``client`` is connected to.
 
-    Build it with :meth:`connect`. ``cases_simulated`` counts the cases this
-    runner simulated; ``tasks_run`` the tasks it sent.
+    Build it with :meth:`connect`. ``cases_simulated`` counts the ``peaks``
+    cases this runner simulated, ``runs_simulated`` every run by kind;
+    ``tasks_run`` the tasks it sent.
     """
 
     client: Any
     cases_per_task: int = CASES_PER_TASK
     cases_simulated: int = field(default=0)
     tasks_run: int = field(default=0)
+    runs_simulated: dict = field(default_factory=dict)
 
     @classmethod
     def connect(cls, address: str, *, timeout_s: float = CONNECT_TIMEOUT_S,
@@ -126,7 +126,7 @@ class DaskRunner:
         there, no worker has joined, or the workers cannot run this version of
         ``assess``.
         """
-        from distributed import Client
+        from distributed import Client  # the optional cluster extra
 
         fix = ("give the address the scheduler printed when it started (e.g. tcp://10.0.0.5:8786, "
                "'dask scheduler' prints it), check that it is running and reachable from this machine, "
@@ -148,7 +148,6 @@ class DaskRunner:
                     text, f"the scheduler has no worker after {timeout_s:g} s",
                     f"start workers ('dask worker {text}'), or wait until the cluster's jobs have "
                     "started, then run again") from None
-            import assess
             versions = set(client.run(_worker_version).values())
             if versions != {assess.__version__}:
                 raise _scheduler_problem(
@@ -168,26 +167,22 @@ class DaskRunner:
         """Disconnect from the cluster (the cluster itself keeps running)."""
         self.client.close()
 
-    def simulate_cases(self, blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_s: Sequence[float],
-                       record_index, *, tail_s: float = DEFAULT_TAIL_S,
-                       progress: Optional[Callable[[int, int], None]] = None) -> CasePeaks:
-        """As :func:`assess.mechanics.engine.simulate_cases`, on the cluster's workers."""
-        from distributed import as_completed
+    def run(self, cases: Cases, *, progress: Progress = None) -> Result:
+        """As :func:`assess.mechanics.gateway.run_cases`, on the cluster's workers."""
+        from distributed import as_completed  # the optional cluster extra
 
-        n = len(blocks)
-        record_index = checked_record_index(record_index, n)
-        tasks = case_tasks(record_index, self.cases_per_task)
-        used = np.unique(record_index)
-        scattered = self.client.scatter([np.asarray(records_g[j], dtype=float) for j in used])
+        n = len(cases)
+        tasks = case_tasks(cases.record_index, self.cases_per_task)
+        used = cases.records_used()
+        # unique keys per batch (hash=False): a record sent again by the next batch is not the one being released
+        scattered = self.client.scatter([np.asarray(cases.records_g[j], dtype=float) for j in used], hash=False)
         records = dict(zip(used.tolist(), scattered))
         futures = {}
-        for number, cases in enumerate(tasks):
-            mine, local = np.unique(record_index[cases], return_inverse=True)
-            future = self.client.submit(_simulate_task, [blocks[i] for i in cases], [records[j] for j in mine],
-                                        [float(dt_s[j]) for j in mine], local.astype(np.int64), float(tail_s),
-                                        pure=False)
-            futures[future] = number
-        parts: list[Optional[CasePeaks]] = [None] * len(tasks)
+        for number, task in enumerate(tasks):
+            mine = cases.records_used(task).tolist()
+            part = cases.subset(task, records_g=[None] * len(mine))  # the records travel as the cluster's copies
+            futures[self.client.submit(_run_task, part, [records[j] for j in mine], pure=False)] = number
+        parts: list = [None] * len(tasks)
         done = 0
         try:
             for future in as_completed(futures, loop=self.client.loop):
@@ -201,14 +196,19 @@ class DaskRunner:
                 future.release()
             for future in records.values():
                 future.release()
-        self.cases_simulated += n
+        self._count(cases, n)
         self.tasks_run += len(tasks)
-        return _assembled(tasks, parts, n)
+        return _assembled(tasks, parts, n, cases.kind)
 
 
-def _assembled(tasks, parts, n) -> CasePeaks:
-    """The tasks' peaks put back in case order."""
+def _assembled(tasks, parts, n, kind) -> Result:
+    """The tasks' results put back in case order."""
     order = np.concatenate(tasks) if tasks else np.zeros(0, dtype=np.int64)
+    if kind == RESPONSE:
+        responses: list = [None] * n
+        for k, response in zip(order.tolist(), [r for part in parts for r in part]):
+            responses[k] = response
+        return responses
     fields = {}
     for name, empty in (("sliding_max_m", np.zeros(0)), ("sliding_residual_m", np.zeros(0)),
                         ("theta_max_over_alpha", np.zeros(0)), ("uplift", np.zeros(0, dtype=bool)),

@@ -23,7 +23,7 @@ it, and by the general solver otherwise:
 After the record the floor is at rest and the block is followed for
 ``tail_s`` more seconds (run-out of sliding, free rocking, or a late
 overturning). Every solver takes the floor at rest right after the last
-sample (SPEC §4: zero after the record, after Tp for a pulse): a step there,
+sample (the floor motion is zero after the record, and after Tp for a pulse): a step there,
 not a ramp down over one more sample interval, so that a pulse ending at full
 amplitude (Type B) pushes the block for the same time in each.
 
@@ -37,15 +37,19 @@ References
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from time import perf_counter, process_time
 from typing import Callable, Optional, Sequence
 
 import numpy as np
 
 from .block import Block, BlockResponse
+from .event_driven import simulate_event_driven
+from .interface import elastic_interface_response, velocity_friction_response
 from .modes import REST, ROCK, SLIDE
 from .rocking import rocking_case_peaks, rocking_response
 from .sliding import sliding_peaks_batch, sliding_response
+from .timestepping import simulate_time_stepping, time_stepping_case_peaks
 
 SLIDING_KERNEL = "sliding kernel"
 VELOCITY_FRICTION_KERNEL = "sliding kernel (velocity-dependent friction)"
@@ -92,7 +96,6 @@ class SlidingInterface:
 
     def response(self, block: Block, floor_accel_g, dt_s, return_history=False):
         """The interface kernel's :class:`~assess.mechanics.sliding.SlidingResult` for ``block``."""
-        from .interface import elastic_interface_response, velocity_friction_response
         if self.yield_displacement_m is not None:
             return elastic_interface_response(floor_accel_g, dt_s, mu=block.mu,
                                               yield_displacement_m=self.yield_displacement_m,
@@ -124,6 +127,29 @@ def pure_sliding_proved(mu_static, b_over_h):
     return np.asarray(mu_static) < np.asarray(b_over_h)
 
 
+def first_solvers(blocks: Sequence[Block]) -> np.ndarray:
+    """The solver each block runs by first: the engine's one choice (module docstring).
+
+    Where uplift is impossible (:func:`pure_sliding_proved`), the sliding
+    kernel, or the kernel of the block's :class:`SlidingInterface`: that run is
+    the answer. Elsewhere the rocking kernel, whose run is kept where pure
+    rocking held (:func:`pure_rocking_held`) and handed to the general solver
+    otherwise.
+
+    >>> first_solvers([Block(half_width_m=0.3, cg_height_m=1.0, height_m=2.0, mu=0.2),
+    ...                Block(half_width_m=0.3, cg_height_m=1.0, height_m=2.0, mu=0.5)]).tolist()
+    ['sliding kernel', 'rocking kernel']
+    """
+    mu_static = np.array([b.mu_static for b in blocks], dtype=float)
+    sliding = pure_sliding_proved(mu_static, np.array([b.b_over_h for b in blocks], dtype=float))
+    solvers = np.where(sliding, SLIDING_KERNEL, ROCKING_KERNEL).astype(object)
+    for i in np.flatnonzero(sliding):
+        interface = getattr(blocks[i], "interface", None)
+        if interface is not None:
+            solvers[i] = interface.solver
+    return solvers
+
+
 def pure_rocking_held(friction_demand_max, normal_force_min_over_weight, mu_static):
     """Whether a pure-rocking run is the block's true motion: |F|/N ≤ μ_s and N > 0 throughout.
 
@@ -140,7 +166,7 @@ def with_tail(floor_accel_g, dt_s, tail_s=DEFAULT_TAIL_S):
     Not the floor at rest after the record: read as samples, linear between
     them, these zeros ramp the floor down over the interval after the last
     sample. The solvers take ``tail_s`` themselves and step the floor to rest
-    at the last sample (SPEC §4).
+    at the last sample.
     """
     accel = np.asarray(floor_accel_g, dtype=float)
     return np.concatenate([accel, np.zeros(int(np.ceil(tail_s / dt_s)))])
@@ -201,17 +227,17 @@ def simulate(block: Block, floor_accel_g, dt_s, *, tail_s=DEFAULT_TAIL_S, return
     """
     accel = np.asarray(floor_accel_g, dtype=float)
     if solver == "event-driven":
-        from .event_driven import simulate_event_driven
         response = simulate_event_driven(block, accel, dt_s, tail_s=tail_s, return_history=return_history)
         return _named(response, EVENT_DRIVEN)
     if solver == "general":
         return _general(block, accel, dt_s, tail_s, return_history)
     if solver != "auto":
         raise ValueError(f"solver must be 'auto', 'general' or 'event-driven', not {solver!r}")
-    if pure_sliding_proved(block.mu_static, block.b_over_h):
-        if getattr(block, "interface", None) is not None:
-            return _on_interface(block, accel, dt_s, tail_s, return_history)
+    first = first_solvers([block])[0]
+    if first == SLIDING_KERNEL:
         return _sliding(block, accel, dt_s, tail_s, return_history)
+    if first != ROCKING_KERNEL:
+        return _on_interface(block, accel, dt_s, tail_s, return_history)
     rocking = rocking_response(accel, dt_s, block.alpha_rad, block.p_rad_s,
                                restitution=block.restitution_effective, return_history=return_history,
                                inertia_ratio_value=block.inertia_ratio, tail_s=tail_s)
@@ -264,13 +290,11 @@ def _pure_sliding_response(result, block, accel, dt_s, tail_s, return_history, s
 
 
 def _general(block, accel, dt_s, tail_s, return_history):
-    from .timestepping import simulate_time_stepping
     response = simulate_time_stepping(block, accel, dt_s, tail_s=tail_s, return_history=return_history)
     return _named(response, GENERAL)
 
 
 def _named(response: BlockResponse, solver: str) -> BlockResponse:
-    from dataclasses import replace
     return replace(response, solver=solver)
 
 
@@ -324,9 +348,6 @@ def simulate_cases(blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_
     (wall, CPU of all threads), are added to it under the solver's name (the
     rocking kernel's include the runs it hands on to the general solver).
     """
-    from time import perf_counter, process_time
-    from .timestepping import time_stepping_case_peaks
-
     n = len(blocks)
     record_index = checked_record_index(record_index, n)
     sliding_max, residual = np.zeros(n), np.zeros(n)
@@ -336,8 +357,9 @@ def simulate_cases(blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_
     solver = np.full(n, "", dtype=object)
     mu = np.array([b.mu for b in blocks], dtype=float)
     mu_static = np.array([b.mu_static for b in blocks], dtype=float)
-    sliding_set = pure_sliding_proved(mu_static, np.array([b.b_over_h for b in blocks], dtype=float))
-    on_interface = np.array([getattr(b, "interface", None) is not None for b in blocks], dtype=bool)
+    first = first_solvers(blocks)
+    sliding_set = first != ROCKING_KERNEL
+    on_interface = sliding_set & (first != SLIDING_KERNEL)
     done = 0
     clock = {"solver": None, "start": (0.0, 0.0)}
 

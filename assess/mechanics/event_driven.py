@@ -108,6 +108,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from .block import FLIGHT, Block, BlockResponse, sliding_displacement
+from .case_records import checked_record
 from .geometry import STANDARD_GRAVITY_M_S2
 from .modes import REST, ROCK, SLIDE, SLIDE_ROCK
 from .rocking import REST_ANGULAR_VELOCITY_RATIO
@@ -641,11 +642,7 @@ def _interval(phase, full, t_start, t_end, a_start, a_end, par, rtol, run):
 
 
 def _check_inputs(floor_accel_g, dt_s, tail_s, initial_theta_rad, rtol):
-    accel = np.asarray(floor_accel_g, dtype=float)
-    if accel.ndim != 1 or accel.size < 2 or not np.all(np.isfinite(accel)):
-        raise ValueError("floor_accel_g must be a 1-D finite record of at least 2 samples")
-    if not (np.isfinite(dt_s) and dt_s > 0.0):
-        raise ValueError("dt_s must be finite and > 0")
+    accel, _ = checked_record(floor_accel_g, dt_s, min_samples=2)
     if not (np.isfinite(tail_s) and tail_s >= 0.0):
         raise ValueError("tail_s must be finite and >= 0")
     if not abs(initial_theta_rad) < _HALF_PI:

@@ -96,17 +96,15 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from assess.mechanics.case_records import checked_record
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
 from assess.mechanics.sliding import SlidingResult
+from assess.mechanics.stick_slip import ELASTIC, VELOCITY, _friction, _interface_substep, stick_slip_record
 
 #: Longest RK4 sub-step of the velocity-friction kernel [s].
 _MAX_SUBSTEP_S = 1.0e-3
 #: Bound on the velocity term's stiffness times the sub-step, g Δμ a h (RK4 is stable below 2.78).
 _STIFFNESS_STEP = 0.25
-#: Events (stop, start, yield, end of slip) resolved in one step of the record
-#: before the kernel moves on: a guard against a round-off cycle only.
-_MAX_EVENTS_PER_STEP = 64
-_BISECTIONS = 60
 #: Simpson intervals of the run-out quadrature (each of two pieces).
 _RUNOUT_INTERVALS = 2000
 #: Cap on the sub-steps of the run-out of the elastic interface.
@@ -114,18 +112,6 @@ _MAX_TAIL_SUBSTEPS = 50_000_000
 
 
 # ----------------------------------------------------------------------------- shared
-def _check_record(floor_accel_g, dt_s):
-    accel = np.ascontiguousarray(floor_accel_g, dtype=float)
-    if accel.ndim != 1:
-        raise ValueError("floor_accel_g must be one-dimensional")
-    if not np.all(np.isfinite(accel)):
-        raise ValueError("floor_accel_g contains NaN or infinite values")
-    dt_s = float(dt_s)
-    if not (np.isfinite(dt_s) and dt_s > 0.0):
-        raise ValueError("dt_s must be finite and > 0")
-    return accel, dt_s
-
-
 def _result(hi, lo, residual, slide_time, n, dt_s, return_history, u_hist, v_hist):
     history = {}
     if return_history:
@@ -136,29 +122,6 @@ def _result(hi, lo, residual, slide_time, n, dt_s, return_history, u_hist, v_his
 
 
 # ----------------------------------------------------------------------------- velocity-dependent friction
-@njit(cache=True)
-def _friction(speed, mu_min, mu_max, rate):
-    """μ at sliding speed ``speed`` [m/s] ([2] eq. 1); continued smoothly for speed < 0."""
-    return mu_max - (mu_max - mu_min) * np.exp(-rate * speed)
-
-
-@njit(cache=True)
-def _rk4_sliding(u, v, a_start, slope, h, s, mu_min, mu_max, rate, gravity):
-    """One RK4 step of u' = v, v' = -g(a_g + s μ(s v)), a_g = a_start + slope t [g]."""
-    a_mid = a_start + slope * 0.5 * h
-    a_end = a_start + slope * h
-    k1 = -gravity * (a_start + s * _friction(s * v, mu_min, mu_max, rate))
-    v2 = v + 0.5 * h * k1
-    k2 = -gravity * (a_mid + s * _friction(s * v2, mu_min, mu_max, rate))
-    v3 = v + 0.5 * h * k2
-    k3 = -gravity * (a_mid + s * _friction(s * v3, mu_min, mu_max, rate))
-    v4 = v + h * k3
-    k4 = -gravity * (a_end + s * _friction(s * v4, mu_min, mu_max, rate))
-    u_new = u + h / 6.0 * (v + 2.0 * v2 + 2.0 * v3 + v4)
-    v_new = v + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
-    return u_new, v_new
-
-
 @njit(cache=True)
 def _simpson_runout(w_from, w_to, mu_min, mu_max, rate, intervals):
     """(∫ w/μ(w) dw, ∫ 1/μ(w) dw) over [w_from, w_to] by composite Simpson."""
@@ -179,85 +142,13 @@ def _simpson_runout(w_from, w_to, mu_min, mu_max, rate, intervals):
 @njit(cache=True)
 def _velocity_record(accel_g, n, dt, mu_min, mu_max, rate, mu_s, gravity, substep,
                      keep_history, u_out, v_out):
-    """Stick-slip integration with μ(u̇); returns (peak +u, peak -u magnitude, residual u, slide time)."""
+    """Stick-slip integration with μ(u̇) (:func:`~assess.mechanics.stick_slip.stick_slip_record`), then the
+    run-out; returns (peak +u, peak -u magnitude, residual u, slide time)."""
     m = max(1, int(np.ceil(dt / substep - 1e-9)))
     h_sub = dt / m
-    u = 0.0
-    v = 0.0
-    s = 0
-    u_hi = 0.0
-    u_lo = 0.0
-    slide_time = 0.0
-    if keep_history and n > 0:
-        u_out[0] = 0.0
-        v_out[0] = 0.0
-    for k in range(n - 1):
-        a0 = accel_g[k]
-        a1 = accel_g[k + 1]
-        if s == 0 and abs(a0) <= mu_s and abs(a1) <= mu_s:
-            if keep_history:
-                u_out[k + 1] = u
-                v_out[k + 1] = 0.0
-            continue
-        slope = (a1 - a0) / dt
-        tau = 0.0
-        events = 0
-        while tau < dt and events < _MAX_EVENTS_PER_STEP:
-            if s == 0:
-                a_here = a0 + slope * tau
-                if a_here > mu_s:
-                    s = -1
-                elif a_here < -mu_s:
-                    s = 1
-                else:
-                    if a1 > mu_s:
-                        t_cross = (mu_s - a0) / (a1 - a0) * dt
-                        s_new = -1
-                    elif a1 < -mu_s:
-                        t_cross = (-mu_s - a0) / (a1 - a0) * dt
-                        s_new = 1
-                    else:
-                        break  # stuck for the rest of the step
-                    if t_cross < tau:
-                        t_cross = tau
-                    if t_cross >= dt:
-                        break
-                    tau = t_cross
-                    s = s_new
-                events += 1
-            h = min(h_sub, dt - tau)
-            if h <= 1e-12 * dt:
-                break
-            a_start = a0 + slope * tau
-            u1, v1 = _rk4_sliding(u, v, a_start, slope, h, s, mu_min, mu_max, rate, gravity)
-            if s * v1 > 0.0:
-                u = u1
-                v = v1
-                tau += h
-                slide_time += h
-            else:  # u̇ back to zero inside the sub-step: bisect on the sub-step length
-                lo_s = 0.0
-                hi_s = h
-                for _ in range(_BISECTIONS):
-                    mid = 0.5 * (lo_s + hi_s)
-                    _um, vm = _rk4_sliding(u, v, a_start, slope, mid, s, mu_min, mu_max, rate, gravity)
-                    if s * vm > 0.0:
-                        lo_s = mid
-                    else:
-                        hi_s = mid
-                u, _vm = _rk4_sliding(u, v, a_start, slope, hi_s, s, mu_min, mu_max, rate, gravity)
-                v = 0.0
-                s = 0
-                tau += hi_s
-                slide_time += hi_s
-                events += 1
-            if u > u_hi:
-                u_hi = u
-            if u < u_lo:
-                u_lo = u
-        if keep_history:
-            u_out[k + 1] = u
-            v_out[k + 1] = v
+    u, v, _, s, u_hi, u_lo, slide_time = stick_slip_record(accel_g, n, dt, VELOCITY, mu_s,
+                                                           (mu_min, mu_max, rate, gravity, h_sub, 0.0),
+                                                           keep_history, u_out, v_out)
     if s != 0 and v != 0.0:  # run-out on a floor at rest
         speed = abs(v)
         w_split = speed if rate <= 0.0 else min(speed, 30.0 / rate)  # resolve the e^{-a w} layer
@@ -322,7 +213,7 @@ def velocity_friction_response(floor_accel_g, dt_s, mu_min, mu_max, rate_s_m, mu
     >>> round(r.sliding_max_m, 7), round(r.slide_time_s, 7)
     (2.4516625, 2.0)
     """
-    accel, dt_s = _check_record(floor_accel_g, dt_s)
+    accel, dt_s = checked_record(floor_accel_g, dt_s)
     mu_min = float(mu_min)
     mu_max = float(mu_max)
     rate = float(rate_s_m)
@@ -353,73 +244,10 @@ def velocity_friction_response(floor_accel_g, dt_s, mu_min, mu_max, rate_s_m, mu
 
 # ----------------------------------------------------------------------------- elastoplastic interface
 @njit(cache=True)
-def _rhs_interface(u, v, z, a_g, s, omega2, c_elastic, mu_g, gravity):
-    """u'' of the interface: elastic (s = 0) or slipping with e = s u_y (s = ±1)."""
-    if s == 0:
-        return -gravity * a_g - omega2 * (u - z) - c_elastic * v
-    return -gravity * a_g - s * mu_g
-
-
-@njit(cache=True)
-def _rk4_interface(u, v, z, a_start, slope, h, s, omega2, c_elastic, mu_g, gravity):
-    a_mid = a_start + slope * 0.5 * h
-    a_end = a_start + slope * h
-    k1 = _rhs_interface(u, v, z, a_start, s, omega2, c_elastic, mu_g, gravity)
-    u2 = u + 0.5 * h * v
-    v2 = v + 0.5 * h * k1
-    k2 = _rhs_interface(u2, v2, z, a_mid, s, omega2, c_elastic, mu_g, gravity)
-    u3 = u + 0.5 * h * v2
-    v3 = v + 0.5 * h * k2
-    k3 = _rhs_interface(u3, v3, z, a_mid, s, omega2, c_elastic, mu_g, gravity)
-    u4 = u + h * v3
-    v4 = v + h * k3
-    k4 = _rhs_interface(u4, v4, z, a_end, s, omega2, c_elastic, mu_g, gravity)
-    return (u + h / 6.0 * (v + 2.0 * v2 + 2.0 * v3 + v4),
-            v + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4))
-
-
-@njit(cache=True)
-def _interface_substep(u, v, z, s, a_start, slope, h, u_y, omega2, c_elastic, mu_g, gravity):
-    """Advance one sub-step, stopping at the first yield or end-of-slip event.
-
-    Returns (u, v, z, s, time advanced, event flag).
-    """
-    u1, v1 = _rk4_interface(u, v, z, a_start, slope, h, s, omega2, c_elastic, mu_g, gravity)
-    if s == 0:
-        e1 = u1 - z
-        if abs(e1) <= u_y:
-            return u1, v1, z, 0, h, False
-        s_new = 1 if e1 > 0.0 else -1
-        lo_s = 0.0
-        hi_s = h
-        for _ in range(_BISECTIONS):
-            mid = 0.5 * (lo_s + hi_s)
-            um, _vm = _rk4_interface(u, v, z, a_start, slope, mid, s, omega2, c_elastic, mu_g, gravity)
-            if s_new * (um - z) < u_y:
-                lo_s = mid
-            else:
-                hi_s = mid
-        um, vm = _rk4_interface(u, v, z, a_start, slope, hi_s, s, omega2, c_elastic, mu_g, gravity)
-        return um, vm, um - s_new * u_y, s_new, hi_s, True
-    if s * v1 > 0.0:
-        return u1, v1, u1 - s * u_y, s, h, False
-    lo_s = 0.0
-    hi_s = h
-    for _ in range(_BISECTIONS):
-        mid = 0.5 * (lo_s + hi_s)
-        _um, vm = _rk4_interface(u, v, z, a_start, slope, mid, s, omega2, c_elastic, mu_g, gravity)
-        if s * vm > 0.0:
-            lo_s = mid
-        else:
-            hi_s = mid
-    um, _vm = _rk4_interface(u, v, z, a_start, slope, hi_s, s, omega2, c_elastic, mu_g, gravity)
-    return um, 0.0, um - s * u_y, 0, hi_s, True
-
-
-@njit(cache=True)
 def _interface_record(accel_g, n, dt, mu, u_y, damping_ratio, gravity, steps_per_period,
                       keep_history, u_out, v_out):
-    """Returns (peak +u, peak -u magnitude, residual slip z, slip time)."""
+    """The record (:func:`~assess.mechanics.stick_slip.stick_slip_record`), then the run-out; returns
+    (peak +u, peak -u magnitude, residual slip z, slip time)."""
     omega2 = mu * gravity / u_y
     omega = np.sqrt(omega2)
     c_elastic = 2.0 * damping_ratio * omega
@@ -428,42 +256,9 @@ def _interface_record(accel_g, n, dt, mu, u_y, damping_ratio, gravity, steps_per
     h_target = period / steps_per_period
     m = max(1, int(np.ceil(dt / h_target - 1e-9)))
     h_sub = dt / m
-    u = 0.0
-    v = 0.0
-    z = 0.0
-    s = 0
-    u_hi = 0.0
-    u_lo = 0.0
-    slip_time = 0.0
-    if keep_history and n > 0:
-        u_out[0] = 0.0
-        v_out[0] = 0.0
-    for k in range(n - 1):
-        a0 = accel_g[k]
-        slope = (accel_g[k + 1] - a0) / dt
-        tau = 0.0
-        events = 0
-        while tau < dt:
-            h = min(h_sub, dt - tau)
-            if h <= 1e-12 * dt:
-                break
-            u, v, z, s_new, adv, event = _interface_substep(
-                u, v, z, s, a0 + slope * tau, slope, h, u_y, omega2, c_elastic, mu_g, gravity)
-            if s != 0:
-                slip_time += adv
-            s = s_new
-            tau += adv
-            if event:
-                events += 1
-                if events > _MAX_EVENTS_PER_STEP:  # round-off cycle: finish the step unresolved
-                    tau = dt
-            if u > u_hi:
-                u_hi = u
-            if u < u_lo:
-                u_lo = u
-        if keep_history:
-            u_out[k + 1] = u
-            v_out[k + 1] = v
+    u, v, z, s, u_hi, u_lo, slip_time = stick_slip_record(accel_g, n, dt, ELASTIC, 0.0,
+                                                          (u_y, omega2, c_elastic, mu_g, gravity, h_sub),
+                                                          keep_history, u_out, v_out)
     # run-out on a floor at rest: until elastic below yield energy, then one more period for the peak
     energy_cap = 0.5 * omega2 * u_y * u_y * (1.0 + 1e-9)
     settled_time = -1.0
@@ -535,7 +330,7 @@ def elastic_interface_response(floor_accel_g, dt_s, mu, yield_displacement_m, re
     >>> r.sliding_residual_m, r.slide_time_s, r.sliding_max_m <= 0.001
     (0.0, 0.0, True)
     """
-    accel, dt_s = _check_record(floor_accel_g, dt_s)
+    accel, dt_s = checked_record(floor_accel_g, dt_s)
     mu = float(mu)
     u_y = float(yield_displacement_m)
     zeta = float(damping_ratio)

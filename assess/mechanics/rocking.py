@@ -53,8 +53,8 @@ After an impact whose outgoing angular velocity is below
 towards θ = 0, the block is put back at rest (the Zeno sequence of ever
 smaller rocks has converged); the impacts of that sequence are counted.
 
-**End of the record.** After the last sample the floor is at rest (SPEC §4:
-zero after the record or after Tp): the acceleration steps to zero there, as
+**End of the record.** After the last sample the floor is at rest (its
+acceleration is zero after the record, or after Tp for a pulse): the acceleration steps to zero there, as
 in the sliding kernel and both general solvers, and ``tail_s`` more seconds
 are followed. (Appending zeros to the samples instead would ramp the floor
 down over one more sample interval: a pulse that ends at full amplitude, as
@@ -96,7 +96,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit, parallel_chunksize, prange
 
-from .case_records import CASES_PER_CHUNK, checked_records
+from .case_records import CASES_PER_CHUNK, checked_record, checked_records
 from .geometry import housner_restitution
 
 #: Largest Runge-Kutta step in dimensionless time p·h [-].
@@ -505,18 +505,6 @@ def tail_intervals(tail_s, dt_s) -> int:
     return int(np.ceil(tail_s / float(dt_s) - 1e-9))
 
 
-def _check_record(accel_g, dt_s):
-    accel = np.ascontiguousarray(np.asarray(accel_g, dtype=float))
-    if accel.ndim != 1 or accel.size < 2:
-        raise ValueError("a floor acceleration record must be a 1-D array of at least 2 samples")
-    if not np.all(np.isfinite(accel)):
-        raise ValueError("floor acceleration contains NaN or infinite values")
-    dt = float(dt_s)
-    if not (np.isfinite(dt) and dt > 0.0):
-        raise ValueError("dt_s must be positive and finite")
-    return accel, dt
-
-
 def rocking_response(floor_accel_g, dt_s, alpha_rad, p_rad_s, restitution=None, return_history=False,
                      initial_theta_rad=0.0, initial_theta_dot_rad_s=0.0,
                      inertia_ratio_value=4.0 / 3.0, tail_s=0.0) -> RockingResult:
@@ -530,7 +518,7 @@ def rocking_response(floor_accel_g, dt_s, alpha_rad, p_rad_s, restitution=None, 
     ----------
     floor_accel_g : array-like
         Floor acceleration ü_g/g [g] at times 0, dt, 2dt, ...; linear between
-        samples, and zero from the last sample on (SPEC §4: the floor is at
+        samples, and zero from the last sample on (the floor is at
         rest after the record, a step at the last sample, as in every solver
         of :mod:`assess.mechanics.engine`).
     dt_s : float
@@ -570,7 +558,7 @@ def rocking_response(floor_accel_g, dt_s, alpha_rad, p_rad_s, restitution=None, 
     >>> r.uplift, r.overturned, r.theta_max_over_alpha < 1.0
     (True, False, True)
     """
-    accel, dt = _check_record(floor_accel_g, dt_s)
+    accel, dt = checked_record(floor_accel_g, dt_s, min_samples=2)
     alpha, p, e, kappa = _check_block(alpha_rad, p_rad_s, restitution, inertia_ratio_value)
     if alpha.size != 1:
         raise ValueError("rocking_response takes one block; use rocking_peaks_batch for many")
@@ -633,7 +621,7 @@ def rocking_peaks_batch(records_g, dt_s, alpha_rad, p_rad_s, restitution=None,
     >>> peaks.uplift[:, 0].tolist()
     [True, False]
     """
-    records, dts = _records(records_g, dt_s)
+    records, dts = checked_records(records_g, dt_s, min_samples=2)
     alpha, p, e, kappa = _check_block(alpha_rad, p_rad_s, restitution, inertia_ratio_value)
     shape = (alpha.size, dts.size)
     block_index = np.repeat(np.arange(alpha.size), dts.size)
@@ -685,7 +673,7 @@ def rocking_case_peaks(records_g, dt_s, record_index, alpha_rad, p_rad_s, restit
     >>> peaks.uplift.tolist(), (peaks.friction_demand_max <= [0.7, 0.7, 0.05]).tolist()
     ([True, False, True], [True, True, False])
     """
-    records, dts = _records(records_g, dt_s)
+    records, dts = checked_records(records_g, dt_s, min_samples=2)
     index = np.ascontiguousarray(np.asarray(record_index, dtype=np.int64))
     if index.ndim != 1 or (index.size and (index.min() < 0 or index.max() >= dts.size)):
         raise ValueError("record_index must be a 1-D array of indices into records_g")
@@ -694,10 +682,6 @@ def rocking_case_peaks(records_g, dt_s, record_index, alpha_rad, p_rad_s, restit
     alpha, p, e, kappa, stop = (np.ascontiguousarray(np.broadcast_to(x, index.shape), dtype=float)
                                 for x in (alpha, p, e, kappa, stop))
     return _run_cases(records, dts, index, alpha, p, e, kappa, tail_s, stop)
-
-
-def _records(records_g, dt_s):
-    return checked_records(records_g, dt_s, _check_record)
 
 
 def _run_cases(records, dts, record_index, alpha, p, e, kappa, tail_s, friction_stop) -> RockingPeaks:

@@ -60,15 +60,9 @@ from typing import Optional
 import numpy as np
 from numba import get_num_threads, njit, prange
 
+from assess.mechanics.case_records import checked_record
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
-
-#: Events (stop, start, reversal) the kernel resolves inside one step of the
-#: record. With a linear a_g in the step at most four occur (stop, stick, start,
-#: stop); the bound only guards the loop against a round-off cycle.
-_MAX_EVENTS_PER_STEP = 16
-
-_NO_ROOT = -1.0
-
+from assess.mechanics.stick_slip import COULOMB, stick_slip_record
 
 @dataclass(frozen=True)
 class SlidingResult:
@@ -101,123 +95,16 @@ class SlidingResult:
 
 
 @njit(cache=True)
-def _velocity_root(v0, b, c, h):
-    """First σ in (0, h] where v0 + bσ + cσ² reaches zero, or -1.
-
-    ``v0`` is nonzero, or zero at the start of a slide (then the root at σ = 0 is
-    not counted). Roots by the cancellation-free form q = -(b + sign(b)√Δ)/2.
-    """
-    if v0 == 0.0:
-        if c == 0.0:
-            return _NO_ROOT
-        root = -b / c
-        return root if 0.0 < root <= h else _NO_ROOT
-    if c == 0.0:
-        if b == 0.0:
-            return _NO_ROOT
-        root = -v0 / b
-        return root if 0.0 < root <= h else _NO_ROOT
-    disc = b * b - 4.0 * c * v0
-    if disc < 0.0:
-        return _NO_ROOT
-    sq = np.sqrt(disc)
-    q = -0.5 * (b + sq) if b >= 0.0 else -0.5 * (b - sq)
-    best = _NO_ROOT
-    r1 = q / c
-    if 0.0 < r1 <= h:
-        best = r1
-    if q != 0.0:
-        r2 = v0 / q
-        if 0.0 < r2 <= h and (best < 0.0 or r2 < best):
-            best = r2
-    return best
-
-
-@njit(cache=True)
 def _slide_record(accel_g, n, dt, mu_k, mu_s, gravity, keep_history, u_out, v_out):
-    """Exact event-driven integration over the first ``n`` samples of ``accel_g``.
+    """Exact event-driven integration over the first ``n`` samples of ``accel_g``
+    (:func:`~assess.mechanics.stick_slip.stick_slip_record` under Coulomb friction), then the run-out.
 
     Returns (peak positive u, peak negative u as magnitude, residual u, slide time).
     If ``keep_history``, writes u and u̇ at the samples into ``u_out``, ``v_out``.
     """
-    u = 0.0
-    v = 0.0
-    s = 0  # 0 stuck, +1 / -1 sliding in the positive / negative direction
-    u_hi = 0.0
-    u_lo = 0.0
-    slide_time = 0.0
-    if keep_history and n > 0:
-        u_out[0] = 0.0
-        v_out[0] = 0.0
-    for k in range(n - 1):
-        a0 = accel_g[k]
-        a1 = accel_g[k + 1]
-        if s == 0 and abs(a0) <= mu_s and abs(a1) <= mu_s:  # stuck all step (a_g is linear)
-            if keep_history:
-                u_out[k + 1] = u
-                v_out[k + 1] = 0.0
-            continue
-        slope = (a1 - a0) / dt  # [g/s]
-        tau = 0.0  # time into the step [s]
-        a_here = a0  # a_g at tau [g]; set exactly to ±mu_s when a slide starts at a crossing
-        for _event in range(_MAX_EVENTS_PER_STEP):
-            if s == 0:
-                if a_here > mu_s:
-                    s = -1
-                elif a_here < -mu_s:
-                    s = 1
-                else:
-                    if a1 > mu_s:
-                        t_cross = (mu_s - a0) / (a1 - a0) * dt
-                        a_cross = mu_s
-                        s_new = -1
-                    elif a1 < -mu_s:
-                        t_cross = (-mu_s - a0) / (a1 - a0) * dt
-                        a_cross = -mu_s
-                        s_new = 1
-                    else:
-                        break  # stuck for the rest of the step
-                    if t_cross < tau:
-                        t_cross = tau
-                    if t_cross >= dt:
-                        break  # starts at the next sample (round-off at the step end)
-                    tau = t_cross
-                    a_here = a_cross
-                    s = s_new
-            # sliding in direction s from tau with velocity v (sign s, or 0 at a start)
-            h = dt - tau
-            b = -gravity * (a_here + s * mu_k)
-            c = -0.5 * gravity * slope
-            sigma = _velocity_root(v, b, c, h)
-            if sigma < 0.0:
-                v_end = v + (b + c * h) * h
-                u += (v + (0.5 * b + c * h / 3.0) * h) * h
-                slide_time += h
-                if v_end * s <= 0.0:  # the root fell on the step end (round-off)
-                    v = 0.0
-                    s = 0
-                else:
-                    v = v_end
-                if u > u_hi:
-                    u_hi = u
-                if u < u_lo:
-                    u_lo = u
-                break
-            u += (v + (0.5 * b + c * sigma / 3.0) * sigma) * sigma
-            v = 0.0
-            s = 0
-            slide_time += sigma
-            tau += sigma
-            a_here = a0 + slope * tau
-            if u > u_hi:
-                u_hi = u
-            if u < u_lo:
-                u_lo = u
-            if tau >= dt:
-                break
-        if keep_history:
-            u_out[k + 1] = u
-            v_out[k + 1] = v
+    u, v, _, s, u_hi, u_lo, slide_time = stick_slip_record(accel_g, n, dt, COULOMB, mu_s,
+                                                           (mu_k, gravity, 0.0, 0.0, 0.0, 0.0), keep_history,
+                                                           u_out, v_out)
     if s != 0 and v != 0.0:  # run-out on a floor at rest after the record
         u += v * abs(v) / (2.0 * mu_k * gravity)
         slide_time += abs(v) / (mu_k * gravity)
@@ -268,17 +155,6 @@ def _check_friction(mu, mu_static):
     return mu, np.broadcast_to(mu_static, mu.shape).astype(float)
 
 
-def _check_record(floor_accel_g, dt_s):
-    accel = np.ascontiguousarray(floor_accel_g, dtype=float)
-    if accel.ndim != 1:
-        raise ValueError("floor_accel_g must be one-dimensional")
-    if not np.all(np.isfinite(accel)):
-        raise ValueError("floor_accel_g contains NaN or infinite values")
-    if not (np.isfinite(dt_s) and dt_s > 0.0):
-        raise ValueError("dt_s must be finite and > 0")
-    return accel
-
-
 def sliding_response(floor_accel_g, dt_s, mu, mu_static=None, return_history=False) -> SlidingResult:
     """Two-way sliding of a rigid block under a floor motion, exact for piecewise-linear input.
 
@@ -318,7 +194,7 @@ def sliding_response(floor_accel_g, dt_s, mu, mu_static=None, return_history=Fal
     >>> round(r.sliding_max_m, 7), round(r.sliding_residual_m, 7), r.slide_time_s
     (2.4516625, -2.4516625, 2.0)
     """
-    accel = _check_record(floor_accel_g, float(dt_s))
+    accel, _ = checked_record(floor_accel_g, dt_s)
     mu_arr, mu_s_arr = _check_friction(float(mu), mu_static if mu_static is None else float(mu_static))
     n = accel.shape[0]
     u_hist = np.empty(n if return_history else 0)

@@ -88,8 +88,10 @@ from typing import Optional
 import numpy as np
 from numba import get_num_threads, njit, prange
 
+from assess.mechanics.case_records import checked_record
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
-from assess.mechanics.sliding import _check_friction, _velocity_root
+from assess.mechanics.sliding import _check_friction
+from assess.mechanics.stick_slip import _velocity_root
 
 #: Default longest substep [s]; measured accuracy in the module docstring.
 DEFAULT_MAX_SUBSTEP_S = 1.0e-3
@@ -290,14 +292,10 @@ def _slide_record_2d(ax_g, ay_g, n, dt, mu_k, mu_s, gravity, max_substep, keep_h
 
 
 def _check_two_components(floor_accel_x_g, floor_accel_y_g, dt_s):
-    ax = np.ascontiguousarray(floor_accel_x_g, dtype=float)
-    ay = np.ascontiguousarray(floor_accel_y_g, dtype=float)
-    if ax.ndim != 1 or ay.shape != ax.shape:
-        raise ValueError("floor_accel_x_g and floor_accel_y_g must be one-dimensional and of one length")
-    if not (np.all(np.isfinite(ax)) and np.all(np.isfinite(ay))):
-        raise ValueError("the floor accelerations contain NaN or infinite values")
-    if not (np.isfinite(dt_s) and dt_s > 0.0):
-        raise ValueError("dt_s must be finite and > 0")
+    ax, _ = checked_record(floor_accel_x_g, dt_s)
+    ay, _ = checked_record(floor_accel_y_g, dt_s)
+    if ay.shape != ax.shape:
+        raise ValueError("floor_accel_x_g and floor_accel_y_g must be of one length")
     return ax, ay
 
 

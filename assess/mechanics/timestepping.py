@@ -41,17 +41,8 @@ Coulomb law of the model on the impulses. Housner's restitution is **not**
 imposed: a rocking impact is the arrival of a corner with :math:`e_N = 0` while
 the old pivot lifts, which conserves the angular momentum about the arriving
 corner when it sticks, so :math:`e = 1 - (2/\\kappa)\\sin^2\\alpha` emerges.
-
-**Contact problem.** With two corners it is solved exactly by enumerating
-the states of the active corners (open, stick, slip +, slip −): each candidate
-is a linear system of at most 2 unknowns, checked for consistency to
-:math:`10^{-10} g\\Delta t`. "Both stick" means v = 0 (two fixed points of a
-rigid body) with 4 impulses for 3 equations: the friction split is left free and
-the candidate holds if some split lies in both cones (stick with slip, or
-opposite slips, also give v = 0 and fall in this case). With μs > μ the law is
-non-monotone, so candidates are tried in order of fewest changes from the
-previous states: a slipping corner slips on while it can, a sticking one sticks
-while μs holds it; this is the stick-slip rule of :mod:`assess.mechanics.sliding`.
+The contact problem of a step, impacts, the projection back onto the floor
+and the step's mode are those of :mod:`assess.mechanics.contact`.
 
 **Events inside a step.** Four instants are located inside the step, which
 is cut there and finished from them, so that the scheme keeps its accuracy
@@ -68,30 +59,6 @@ to slip where its cone margin :math:`\\mu_s P_N - |P_T|`, linear in
 end), passes zero.
 The step up to an arrival or a slip onset is taken afresh with its own middle.
 
-**Impacts.** An arriving corner is put on the floor at the located instant
-and the next step starts with the impact alone: the velocity is first made
-consistent with the corners that stay closed (their contact problem with no
-force, with the lever arms of the impact configuration rather than those of
-the middle of the last step), then the two-corner contact problem is solved
-with no force (Δt → 0: impulses only, the same laws), and the step is taken
-from the velocity after it. The impact is thus exact for the state it is
-given, and the step after it second order.
-
-**Position drift.** The velocity-level constraints let the gap of a corner in
-persistent contact drift by :math:`O(\\Delta t^2)` per step. After every step the
-corners that carry load (closed in the contact solution), an arriving corner
-and any corner below the floor are put back onto it, :math:`g_N = 0`: two
-corners along :math:`M^{-1}\\nabla g_N` (y and θ) by Newton iteration, the
-projected scheme of [4]; a single corner by a shift of y alone, so that the
-correction leaves θ as integrated (along :math:`M^{-1}\\nabla g_N` it would turn
-the block by :math:`O(\\Delta t^2)` each step, a first-order error in θ). A pivot
-that sticks on through the step is put back where it stood by a shift of x.
-
-**Restitution override.** If ``block.restitution`` is given, at every rocking
-impact (a corner that was off the floor arrives and sticks while the pivot
-lifts) the velocity after the impact is replaced by a rotation about the
-arriving corner with :math:`\\dot\\theta^+ = e\\,\\dot\\theta^-` (θ̇ at the arrival).
-Impacts at which the arriving corner slips keep the emergent law.
 
 **Time step.** Each sample interval is cut into
 :math:`n = \\max(k, \\lceil p\\,dt/\\epsilon\\rceil)` equal steps, ε =
@@ -109,42 +76,22 @@ the exact kernel to ~1e-4 (see the tests). p·Δt, τ and the tolerances being
 dimensionless, a block scaled by λ under the same accelerations compressed in
 time by √λ takes the same steps (Froude similitude to round-off).
 
-**Trains of small rocks (fixed).** A block that rocks a little near the uplift
-threshold makes long trains of micro-rocks (the Kobe Takatori record at 0.6 on
-a 1.8 m block with b/h = 0.3, μ = 0.33: θmax/α = 0.026, some 230 impacts). The
-first version of this solver gained energy there, never came back to rest and
-overturned. Its causes: (i) Moreau's active set (gap at the middle of the step)
-misses a corner that arrives in the second half of the step; the step then
-carried the rotation about the old pivot past θ = 0 and the projection lifted
-the block back to the floor without taking the kinetic energy gained, a gain of
-order :math:`p^2\\alpha\\,\\Delta t` in θ̇ per impact, comparable with
-Housner's loss :math:`(1-e)\\dot\\theta` when θ̇ is small; (ii) an impact
-inside a step moved the positions with the mean of the velocities before and
-after it, and the projection along :math:`M^{-1}\\nabla g_N` turned the block,
-both :math:`O(\\Delta t)` errors per impact and per step. Even with steps of
-dt/40 the peak was 4 times too small and the result did not converge. The arrival is now
-located for every corner off the floor, the impact taken as an impulse at the
-start of the next step with a consistent velocity, the single-corner
-projection made vertical, the position update exact for linear forcing, slip
-onsets located and small rocks given shorter steps; the solver then converges
-at second order to the event-driven solver (θmax/α 0.02606 at the default
-step, 0.02600 with steps of dt/1000, the event-driven 0.02600, same rests).
-Such responses stay ill-conditioned: the event-driven θmax/α moves by 3 % when the record is scaled
-by 1 ± 1e-7, by a factor 2 at 1 ± 1e-5, and the block overturns at 1 − 1e-4;
-a comparison on them is meaningful to that extent only.
 
-**Modes and uplift.** A corner is off the floor in a step if the contact
-solution leaves it open and its gap at the end of the step exceeds
-``UPLIFT_GAP_RATIO`` · R (1e-9 R) or its normal velocity in the middle of the
-step exceeds ``VELOCITY_RATIO`` · √(gR) (1e-9 √(gR)) in size; a corner on the
-floor that is not sticking slips if :math:`|v_T|` there exceeds 1e-9 √(gR). The
-step's mode follows (:data:`assess.mechanics.block.MODES`) and a change is dated
-at the start of the step (at the event where one was located); ``uplift`` is
-true if a corner was ever off the floor. A block whose corners both stick in the
-contact solution is at rest: a train of ever smaller rocks ends there once a
-rock is shorter than the (refined) step, when the floor pushes the block back.
-No filter is applied. After the record the floor is at rest; the run-out stops when both corners stick (v = 0, θ = 0)
-or after ``tail_s``.
+**Trains of small rocks.** A block rocking a little near the uplift threshold
+makes long trains of micro-rocks (the Kobe Takatori record at 0.6 on a 1.8 m
+block with b/h = 0.3, μ = 0.33: θmax/α = 0.026, some 230 impacts). Energy is
+neither gained nor lost there by the scheme because the arrival of every
+corner off the floor is located (Moreau's active set alone, with the gap at the
+middle of the step, misses a corner arriving in its second half), the impact
+is an impulse at the start of the next step from a consistent velocity, a
+single corner is projected vertically, the position update is exact for
+linear forcing, slip onsets are located and small rocks get shorter steps.
+The solver then converges at second order to the event-driven solver
+(θmax/α 0.02606 at the default step, 0.02600 with steps of dt/1000, the
+event-driven 0.02600, same rests). Such responses stay ill-conditioned: the
+event-driven θmax/α moves by 3 % when the record is scaled by 1 ± 1e-7, by a
+factor 2 at 1 ± 1e-5, and the block overturns at 1 − 1e-4; a comparison on
+them is meaningful to that extent only.
 
 References
 ----------
@@ -168,17 +115,16 @@ import numpy as np
 from numba import njit, parallel_chunksize, prange
 
 from .block import MODES, Block, BlockResponse, summary_mode
-from .case_records import CASES_PER_CHUNK, checked_records
+from .case_records import CASES_PER_CHUNK, checked_record, checked_records
+from .contact import (CODE_REST, CODE_ROCK, CODE_SLIDE, OPEN, SLIP_POS, STICK, VELOCITY_RATIO, cone_margin,
+                      contact_candidate, corner_gap, corner_x, impact, lever_arms, project_onto_floor, solve_contacts,
+                      step_mode)
 from .geometry import STANDARD_GRAVITY_M_S2
 
 #: Largest time step in dimensionless time, p·Δt [-].
 STEP_DIMENSIONLESS = 2e-3
 #: Fewest time steps per sample interval of the record [-].
 MIN_STEPS_PER_SAMPLE = 4
-#: A corner is off the floor above this gap, as a fraction of R [-].
-UPLIFT_GAP_RATIO = 1e-9
-#: Opening and slip velocities below this fraction of √(gR) count as zero [-].
-VELOCITY_RATIO = 1e-9
 #: Consistency tolerance of the contact problem, as a fraction of gΔt [-].
 _CONTACT_TOLERANCE = 1e-10
 #: A corner within this fraction of R of the floor at the start of a step is active [-].
@@ -190,216 +136,7 @@ _MAX_ARRIVALS_PER_STEP = 4
 ROCK_STEP_FRACTION = 0.03
 #: Most steps a step is cut into for small rocks [-].
 MAX_REFINEMENT = 16
-
-_OPEN, _STICK, _SLIP_POS, _SLIP_NEG = 0, 1, 2, 3
-_REST, _SLIDE, _ROCK, _SLIDE_ROCK, _FLIGHT = 0, 1, 2, 3, 4
-#: Candidate states (minus corner, plus corner) with both corners active, in order of preference.
-#: (Tuples, not arrays: the compiled code reads them without reference counting.)
-_PAIR_MINUS = (1, 0, 1, 2, 3, 0, 0, 2, 3, 0)
-_PAIR_PLUS = (1, 1, 0, 2, 3, 2, 3, 0, 0, 0)
-#: States of a single active corner, in order of preference.
-_SINGLE = (1, 2, 3, 0)
 _HALF_PI = 0.5 * np.pi
-
-
-# --------------------------------------------------------------------------- contact kernel
-@njit(cache=True)
-def _lever_arms(xi, theta, hcg):
-    """θ-components of w_N and w_T of the corner at body offset (ξ, −h) [m]."""
-    cos_t, sin_t = np.cos(theta), np.sin(theta)
-    return -xi * cos_t + hcg * sin_t, -xi * sin_t - hcg * cos_t
-
-
-@njit(cache=True)
-def _gap(y, theta, xi, hcg):
-    """Height of the corner at body offset (ξ, −h) above the floor [m]."""
-    return y - xi * np.sin(theta) - hcg * np.cos(theta)
-
-
-@njit(cache=True)
-def _corner_x(x, theta, xi, hcg):
-    """Horizontal position of the corner at body offset (ξ, −h) [m]."""
-    return x + xi * np.cos(theta) - hcg * np.sin(theta)
-
-
-@njit(cache=True)
-def _dot(row, direction, inv_j):
-    """row · M⁻¹ direction for (x, y, θ) triples, M = diag(1, 1, 1/inv_j)."""
-    return row[0] * direction[0] + row[1] * direction[1] + row[2] * direction[2] * inv_j
-
-
-@njit(cache=True)
-def _direction(state, rn, rt, mu):
-    """Impulse direction (x, y, θ) of one unknown P_N of a slipping corner: w_N − μ s w_T."""
-    s = 1.0 if state == _SLIP_POS else -1.0
-    return -mu * s, 1.0, rn - mu * s * rt
-
-
-@njit(cache=True)
-def _violation(state, pn, pt, vn, vt, mu_s):
-    """How far one corner's impulse and velocity are from its assumed state (≥ 0) [m/s]."""
-    if state == _OPEN:
-        return max(0.0, -vn)
-    if state == _STICK:
-        return max(0.0, -pn, abs(pt) - mu_s * pn)
-    s = 1.0 if state == _SLIP_POS else -1.0
-    return max(0.0, -pn, -s * vt)
-
-
-@njit(cache=True)
-def _both_stick(vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu_s):
-    """Both corners sticking: v⁺ = 0; returns (violation, pn_m, pt_m, pn_p, pt_p).
-
-    The 3 equations Wᵀ P = −M v_free leave the friction split t = P_T+ free:
-    P_T− = −v_x − t and the normal impulses are linear in t. Each of the six
-    cone inequalities a + b t ≥ 0 bounds t; the middle of the feasible interval is
-    taken, or, if it is empty, the point of least violation.
-    """
-    a0 = (rt_m * vf[0] + rn_p * vf[1] - vf[2] / inv_j) / (rn_m - rn_p)  # P_N− = a0 + a1 t
-    a1 = (rt_m - rt_p) / (rn_m - rn_p)
-    an = -vf[1] - a0  # P_N+ = an − a1 t, P_T− = −v_x − t, P_T+ = t
-    lo, hi = -np.inf, np.inf
-    for c, d in ((a0, a1), (an, -a1), (mu_s * a0 + vf[0], mu_s * a1 + 1.0), (mu_s * a0 - vf[0], mu_s * a1 - 1.0),
-                 (mu_s * an, -mu_s * a1 - 1.0), (mu_s * an, 1.0 - mu_s * a1)):
-        if d > 0.0:
-            lo = max(lo, -c / d)
-        elif d < 0.0:
-            hi = min(hi, -c / d)
-        elif c < 0.0:
-            lo, hi = np.inf, -np.inf
-    t = 0.5 * (lo + hi) if np.isfinite(lo) and np.isfinite(hi) else (lo if np.isfinite(lo) else hi)
-    t = t if np.isfinite(t) else 0.0
-    pnm, ptm, pnp = a0 + a1 * t, -vf[0] - t, an - a1 * t
-    violation = max(0.0, -pnm, -pnp, abs(ptm) - mu_s * pnm, abs(t) - mu_s * pnp)
-    return violation, pnm, ptm, pnp, t
-
-
-@njit(cache=True, inline="always")
-def _candidate(st_m, st_p, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s):
-    """Velocity and impulses for assumed corner states; returns (violation, v⁺, P_N−, P_T−, P_N+, P_T+)."""
-    if act_m and act_p and st_m == _STICK and st_p == _STICK:
-        violation, pnm, ptm, pnp, ptp = _both_stick(vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu_s)
-        return violation, (0.0, 0.0, 0.0), pnm, ptm, pnp, ptp
-    # up to two (row, direction) pairs: row · v⁺ = 0 with an impulse λ along the direction
-    n = 0
-    r1 = d1 = r2 = d2 = (0.0, 0.0, 0.0)
-    for side in range(2):
-        st, rn, rt = (st_m, rn_m, rt_m) if side == 0 else (st_p, rn_p, rt_p)
-        if st == _STICK:
-            r1 = d1 = (0.0, 1.0, rn)
-            r2 = d2 = (1.0, 0.0, rt)
-            n = 2
-        elif st != _OPEN:
-            if n == 0:
-                r1, d1 = (0.0, 1.0, rn), _direction(st, rn, rt, mu)
-            else:
-                r2, d2 = (0.0, 1.0, rn), _direction(st, rn, rt, mu)
-            n += 1
-    if n > 2:
-        return np.inf, vf, 0.0, 0.0, 0.0, 0.0  # stick with slip: v = 0, covered by "both stick"
-    lam1 = lam2 = 0.0
-    a11, b1 = _dot(r1, d1, inv_j), -_dot(r1, vf, 1.0)
-    if n == 1:
-        if a11 <= 0.0:
-            return np.inf, vf, 0.0, 0.0, 0.0, 0.0
-        lam1 = b1 / a11
-    elif n == 2:
-        a12, a21, a22, b2 = _dot(r1, d2, inv_j), _dot(r2, d1, inv_j), _dot(r2, d2, inv_j), -_dot(r2, vf, 1.0)
-        det = a11 * a22 - a12 * a21
-        if abs(det) <= 1e-14 * (abs(a11 * a22) + abs(a12 * a21)):
-            return np.inf, vf, 0.0, 0.0, 0.0, 0.0
-        lam1, lam2 = (b1 * a22 - a12 * b2) / det, (a11 * b2 - a21 * b1) / det
-    v = (vf[0] + d1[0] * lam1 + d2[0] * lam2, vf[1] + d1[1] * lam1 + d2[1] * lam2,
-         vf[2] + (d1[2] * lam1 + d2[2] * lam2) * inv_j)
-    # impulses per corner: a sticking corner owns both unknowns, a slipping one the next
-    pnm = ptm = pnp = ptp = 0.0
-    used = 0
-    for side in range(2):
-        st = st_m if side == 0 else st_p
-        if st == _OPEN:
-            continue
-        if st == _STICK:
-            pn, pt = lam1, lam2
-        else:
-            pn = lam1 if used == 0 else lam2
-            pt = -mu * (1.0 if st == _SLIP_POS else -1.0) * pn
-            used += 1
-        if side == 0:
-            pnm, ptm = pn, pt
-        else:
-            pnp, ptp = pn, pt
-    violation = 0.0
-    if act_m:
-        violation = max(violation, _violation(st_m, pnm, ptm, v[1] + rn_m * v[2], v[0] + rt_m * v[2], mu_s))
-    if act_p:
-        violation = max(violation, _violation(st_p, pnp, ptp, v[1] + rn_p * v[2], v[0] + rt_p * v[2], mu_s))
-    return violation, v, pnm, ptm, pnp, ptp
-
-
-@njit(cache=True, inline="always")
-def _solve_contacts(prev_m, prev_p, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s, tol):
-    """Exact solution of the two-corner contact problem by enumeration of states.
-
-    Candidates are tried with 0, 1, then 2 state changes from the previous step
-    (inactive corners are open and not counted); the first consistent one is
-    kept, else the least inconsistent. Returns (state−, state+, v⁺, P_N−, P_N+).
-    """
-    best = (np.inf, 0, 0, vf, 0.0, 0.0)
-    n_cand = len(_PAIR_MINUS) if (act_m and act_p) else len(_SINGLE)
-    for level in range(3):
-        for i in range(n_cand):
-            if act_m and act_p:
-                st_m, st_p = _PAIR_MINUS[i], _PAIR_PLUS[i]
-            elif act_m:
-                st_m, st_p = _SINGLE[i], _OPEN
-            else:
-                st_m, st_p = _OPEN, _SINGLE[i]
-            changes = (act_m and st_m != prev_m) + (act_p and st_p != prev_p)
-            if changes != level:
-                continue
-            violation, v, pnm, _, pnp, _ = _candidate(st_m, st_p, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p,
-                                                      inv_j, mu, mu_s)
-            if violation <= tol:
-                return st_m, st_p, v, pnm, pnp
-            if violation < best[0]:
-                best = (violation, st_m, st_p, v, pnm, pnp)
-    return best[1], best[2], best[3], best[4], best[5]
-
-
-@njit(cache=True, inline="always")
-def _project(y, theta, fix_m, fix_p, b, hcg, inv_j, gap_tol):
-    """Put the fixed corners back on the floor: both along M⁻¹∇g by Newton iteration (y and θ
-    move), a single one by a vertical shift (θ, the rocking coordinate, is left as integrated)."""
-    if fix_m != fix_p:
-        return y - _gap(y, theta, -b if fix_m else b, hcg), theta
-    for _ in range(6):
-        g_m, g_p = _gap(y, theta, -b, hcg), _gap(y, theta, b, hcg)
-        if abs(g_m) <= gap_tol and abs(g_p) <= gap_tol:
-            break
-        rn_m, _ = _lever_arms(-b, theta, hcg)
-        rn_p, _ = _lever_arms(b, theta, hcg)
-        a11, a12, a22 = 1.0 + rn_m * rn_m * inv_j, 1.0 + rn_m * rn_p * inv_j, 1.0 + rn_p * rn_p * inv_j
-        det = a11 * a22 - a12 * a12
-        lam_m = (-g_m * a22 + a12 * g_p) / det
-        lam_p = (-a11 * g_p + a12 * g_m) / det
-        y += lam_m + lam_p
-        theta += (rn_m * lam_m + rn_p * lam_p) * inv_j
-    return y, theta
-
-
-@njit(cache=True, inline="always")
-def _mode_of_step(st_m, st_p, v, rn_m, rt_m, rn_p, rt_p, g_m, g_p, radius, gravity):
-    """Mode code of a step from the contact states, the gaps at its end and a velocity in it."""
-    gap_tol, v_tol = UPLIFT_GAP_RATIO * radius, VELOCITY_RATIO * np.sqrt(gravity * radius)
-    off_m = st_m == _OPEN and (g_m > gap_tol or abs(v[1] + rn_m * v[2]) > v_tol)
-    off_p = st_p == _OPEN and (g_p > gap_tol or abs(v[1] + rn_p * v[2]) > v_tol)
-    slip_m = not off_m and st_m != _STICK and abs(v[0] + rt_m * v[2]) > v_tol
-    slip_p = not off_p and st_p != _STICK and abs(v[0] + rt_p * v[2]) > v_tol
-    if off_m and off_p:
-        return _FLIGHT
-    if off_m or off_p:
-        return _SLIDE_ROCK if (slip_m or slip_p) else _ROCK
-    return _SLIDE if (slip_m or slip_p) else _REST
 
 
 # --------------------------------------------------------------------------- time loop
@@ -419,12 +156,12 @@ def _event_fraction(pm, pp, relocate, v, vf, g0_m, g0_p, vx, vy, w, h, rn_m, rt_
     """
     vc, carry = v, False
     if relocate:
-        _, vcc, pnm, _, pnp, _ = _candidate(pm, pp, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s)
+        _, vcc, pnm, _, pnp, _ = contact_candidate(pm, pp, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s)
         if min(pnm, pnp) >= -tol:  # else a lift-off: no velocity jump, only arrivals to locate
             vc, carry = vcc, True
     frac, arrived = 1.0, 0
     for side, g0, st, rn, rt in ((-1, g0_m, pm, rn_m, rt_m), (1, g0_p, pp, rn_p, rt_p)):
-        if st == _OPEN:
+        if st == OPEN:
             vn0, vn1 = vy + rn * w, vc[1] + rn * vc[2]
             if g0 > 0.0 and g0 + 0.5 * h * (vn0 + vn1) < 0.0:
                 lo, hi = 0.0, 1.0
@@ -436,52 +173,12 @@ def _event_fraction(pm, pp, relocate, v, vf, g0_m, g0_p, vx, vy, w, h, rn_m, rt_
                         hi = mid
                 if lo < frac:
                     frac, arrived = lo, side
-        elif carry and st != _STICK:
-            s = 1.0 if st == _SLIP_POS else -1.0
+        elif carry and st != STICK:
+            s = 1.0 if st == SLIP_POS else -1.0
             vt0, vt1 = vx + rt * w, vc[0] + rt * vc[2]
             if s * vt0 > 0.0 and s * vt1 < 0.0 and vt0 / (vt0 - vt1) < frac:
                 frac, arrived = vt0 / (vt0 - vt1), 0
     return frac, vc, carry, arrived
-
-
-@njit(cache=True, inline="always")
-def _cone_margin(pm, pp, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s):
-    """μs P_N − |P_T| of the sticking pivot of a block on one corner (pm, pp: stick and open)."""
-    _, _, pnm, ptm, pnp, ptp = _candidate(pm, pp, True, True, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s)
-    return mu_s * pnm - abs(ptm) if pm == _STICK else mu_s * pnp - abs(ptp)
-
-
-@njit(cache=True)
-def _impact(vx, vy, w, theta, prev_m, prev_p, on_m, on_p, b, hcg, inv_j, mu, mu_s, e_override, tol, v_tol):
-    """Impulses at the start of a step where an open corner on the floor moves into it.
-
-    The velocity is first made consistent with the corners that stay closed
-    (their contact problem with no force, lever arms at the impact), then the
-    contact problem is solved with no force (Δt → 0: Moreau's impact law,
-    :math:`e_N = 0`, and Coulomb's law on the impulses); the restitution
-    override, if any, replaces a rocking impact's outcome. Returns (state−,
-    state+, ẋ, ẏ, θ̇) after it (unchanged if no corner arrives).
-    """
-    rn_m, rt_m = _lever_arms(-b, theta, hcg)
-    rn_p, rt_p = _lever_arms(b, theta, hcg)
-    hit_m = on_m and prev_m == _OPEN and vy + rn_m * w < -v_tol
-    hit_p = on_p and prev_p == _OPEN and vy + rn_p * w < -v_tol
-    if not (hit_m or hit_p):
-        return prev_m, prev_p, vx, vy, w
-    pm, pp = (prev_m if on_m else _OPEN), (prev_p if on_p else _OPEN)
-    if pm != _OPEN or pp != _OPEN:
-        # the velocity of the last step keeps the closed corner at rest with its lever arms in that step's
-        # middle: make it do so with those of the impact (an O(Δt) correction), then strike
-        _, v, _, _, _, _ = _candidate(pm, pp, on_m, on_p, (vx, vy, w), rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s)
-        vx, vy, w = v
-    st_m, st_p, v, _, _ = _solve_contacts(pm, pp, on_m, on_p, (vx, vy, w), rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s,
-                                          tol)
-    if e_override >= 0.0 and ((st_m == _STICK and hit_m and st_p == _OPEN and pp != _OPEN)
-                              or (st_p == _STICK and hit_p and st_m == _OPEN and pm != _OPEN)):
-        # rocking impact: rotation about the arriving corner at e times θ̇ before
-        rn, rt = (rn_m, rt_m) if st_m == _STICK else (rn_p, rt_p)
-        v = (-rt * e_override * w, -rn * e_override * w, e_override * w)
-    return st_m, st_p, v[0], v[1], v[2]
 
 
 @njit(cache=True)
@@ -491,7 +188,7 @@ def _step(q, h, a_mid, a_change, prev_m, prev_p, b, hcg, inv_j, mu, mu_s, gravit
     The floor acceleration is ``a_mid`` in the middle of the step and changes by
     ``a_change`` over it. A corner that starts the step on the floor, open and
     moving into it, is an impact: its impulses are applied first
-    (:func:`_impact`), then the step is taken from the velocity after it. With
+    (:func:`impact`), then the step is taken from the velocity after it. With
     ``split``, a step in which the contact states change because a corner
     arrives on the floor, the slip of a slipping corner would reverse or a lone
     sticking pivot leaves its friction cone is taken only up to that instant;
@@ -505,44 +202,44 @@ def _step(q, h, a_mid, a_change, prev_m, prev_p, b, hcg, inv_j, mu, mu_s, gravit
     tol = _CONTACT_TOLERANCE * gravity * h
     x, y, theta, vx, vy, w = q[0], q[1], q[2], q[3], q[4], q[5]
     act_tol = _ACTIVE_GAP_RATIO * radius
-    g0_m, g0_p = _gap(y, theta, -b, hcg), _gap(y, theta, b, hcg)
+    g0_m, g0_p = corner_gap(y, theta, -b, hcg), corner_gap(y, theta, b, hcg)
     on_m, on_p = g0_m <= act_tol, g0_p <= act_tol
-    if (on_m and prev_m == _OPEN) or (on_p and prev_p == _OPEN):
-        prev_m, prev_p, vx, vy, w = _impact(vx, vy, w, theta, prev_m, prev_p, on_m, on_p, b, hcg, inv_j, mu, mu_s,
-                                            e_override, tol, VELOCITY_RATIO * np.sqrt(gravity * radius))
+    if (on_m and prev_m == OPEN) or (on_p and prev_p == OPEN):
+        prev_m, prev_p, vx, vy, w = impact(vx, vy, w, theta, prev_m, prev_p, on_m, on_p, b, hcg, inv_j, mu, mu_s,
+                                           e_override, tol, VELOCITY_RATIO * np.sqrt(gravity * radius))
     theta_mid, y_mid = theta + 0.5 * h * w, y + 0.5 * h * vy
-    act_m = on_m or _gap(y_mid, theta_mid, -b, hcg) <= 0.0
-    act_p = on_p or _gap(y_mid, theta_mid, b, hcg) <= 0.0
-    rn_m, rt_m = _lever_arms(-b, theta_mid, hcg)
-    rn_p, rt_p = _lever_arms(b, theta_mid, hcg)
+    act_m = on_m or corner_gap(y_mid, theta_mid, -b, hcg) <= 0.0
+    act_p = on_p or corner_gap(y_mid, theta_mid, b, hcg) <= 0.0
+    rn_m, rt_m = lever_arms(-b, theta_mid, hcg)
+    rn_p, rt_p = lever_arms(b, theta_mid, hcg)
     vf = (vx - h * a_mid * gravity, vy - h * gravity, w)
-    pm, pp = (prev_m if act_m else _OPEN), (prev_p if act_p else _OPEN)
+    pm, pp = (prev_m if act_m else OPEN), (prev_p if act_p else OPEN)
     if act_m or act_p:
-        st_m, st_p, v, _, _ = _solve_contacts(pm, pp, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s,
-                                              tol)
+        st_m, st_p, v, _, _ = solve_contacts(pm, pp, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s,
+                                             tol)
     else:
-        st_m, st_p, v = _OPEN, _OPEN, vf
+        st_m, st_p, v = OPEN, OPEN, vf
     frac, event = 1.0, 0  # event: 0 none or a slip reversal, ±1 the corner that arrives, 2 a slip onset
     relocate = split and (st_m != pm or st_p != pp)
-    if relocate or (locate and (pm == _OPEN or pp == _OPEN)):
+    if relocate or (locate and (pm == OPEN or pp == OPEN)):
         frac, vc, carry, event = _event_fraction(pm, pp, relocate, v, vf, g0_m, g0_p, vx, vy, w, h, rn_m, rt_m, rn_p,
                                                  rt_p, act_m, act_p, inv_j, mu, mu_s, tol)
         if frac < 1.0:
             if carry:
                 st_m, st_p = pm, pp
             elif event == -1:  # (after a lift-off) the arriving corner is off the floor up to its arrival
-                st_m = _OPEN
+                st_m = OPEN
             elif event == 1:
-                st_p = _OPEN
+                st_p = OPEN
             if event == 0:  # a slip reverses: its corner stops at the end of the (linear) velocity
                 v = (vx + frac * (vc[0] - vx), vy + frac * (vc[1] - vy), w + frac * (vc[2] - w))
-    if split and frac == 1.0 and ((pm == _STICK and pp == _OPEN and st_p == _OPEN and st_m != _OPEN)
-                                  or (pp == _STICK and pm == _OPEN and st_m == _OPEN and st_p != _OPEN)):
+    if split and frac == 1.0 and ((pm == STICK and pp == OPEN and st_p == OPEN and st_m != OPEN)
+                                  or (pp == STICK and pm == OPEN and st_m == OPEN and st_p != OPEN)):
         # a lone sticking pivot: where does its cone margin, linear in the floor acceleration, change sign?
-        kept = (st_m if pm == _STICK else st_p) == _STICK
-        c_mid = _cone_margin(pm, pp, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s)
+        kept = (st_m if pm == STICK else st_p) == STICK
+        c_mid = cone_margin(pm, pp, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s)
         a_end = a_mid + (0.5 if kept else -0.5) * a_change  # the end of the step, or its start
-        c_end = _cone_margin(pm, pp, (vx - h * a_end * gravity, vf[1], w), rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s)
+        c_end = cone_margin(pm, pp, (vx - h * a_end * gravity, vf[1], w), rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s)
         if kept and c_mid >= 0.0 > c_end:
             frac, event = 0.5 + 0.5 * c_mid / (c_mid - c_end), 2
         elif not kept and c_end > 0.0 > c_mid:
@@ -554,45 +251,45 @@ def _step(q, h, a_mid, a_change, prev_m, prev_p, b, hcg, inv_j, mu, mu_s, gravit
     a_step = a_mid - 0.5 * (1.0 - frac) * a_change  # the floor acceleration in the middle of the step taken
     if event != 0:  # taken up to an arrival or a slip onset: afresh, with its own middle
         theta_mid = theta + 0.5 * h * w
-        rn_m, rt_m = _lever_arms(-b, theta_mid, hcg)
-        rn_p, rt_p = _lever_arms(b, theta_mid, hcg)
+        rn_m, rt_m = lever_arms(-b, theta_mid, hcg)
+        rn_p, rt_p = lever_arms(b, theta_mid, hcg)
         vf = (vx - h * a_step * gravity, vy - h * gravity, w)
-        _, v, _, _, _, _ = _candidate(st_m, st_p, True, True, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s)
-    override = e_override >= 0.0 and ((st_m == _STICK and pm == _OPEN and st_p == _OPEN and pp != _OPEN)
-                                      or (st_p == _STICK and pp == _OPEN and st_m == _OPEN and pm != _OPEN))
+        _, v, _, _, _, _ = contact_candidate(st_m, st_p, True, True, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s)
+    override = e_override >= 0.0 and ((st_m == STICK and pm == OPEN and st_p == OPEN and pp != OPEN)
+                                      or (st_p == STICK and pp == OPEN and st_m == OPEN and pm != OPEN))
     if override:  # rocking impact inside the step (not located): rotation about the arriving corner at e θ̇ before
-        rn, rt = (rn_m, rt_m) if st_m == _STICK else (rn_p, rt_p)
+        rn, rt = (rn_m, rt_m) if st_m == STICK else (rn_p, rt_p)
         v = (-rt * e_override * w, -rn * e_override * w, e_override * w)
     # positions: the velocity at the end of the step with the floor acceleration of t + Δt/3 instead
     # of t + Δt/2 (same contact states), so that a force linear in time is integrated exactly
     vq = v
     if a_change != 0.0 and not override and not (frac < 1.0 and event == 0) and not (
-            st_m == _STICK and st_p == _STICK):
+            st_m == STICK and st_p == STICK):
         vfq = (vx - h * (a_step - a_change * frac / 6.0) * gravity, vy - h * gravity, w)
-        _, vq, _, _, _, _ = _candidate(st_m, st_p, True, True, vfq, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s)
+        _, vq, _, _, _, _ = contact_candidate(st_m, st_p, True, True, vfq, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s)
     # a pivot that sticks on keeps its place on the floor
-    keep_m = pm == _STICK and st_m == _STICK and st_p == _OPEN
-    keep_p = pp == _STICK and st_p == _STICK and st_m == _OPEN
-    anchor = _corner_x(x, theta, b if keep_p else -b, hcg)
+    keep_m = pm == STICK and st_m == STICK and st_p == OPEN
+    keep_p = pp == STICK and st_p == STICK and st_m == OPEN
+    anchor = corner_x(x, theta, b if keep_p else -b, hcg)
     x += 0.5 * h * (vx + vq[0])
     y += 0.5 * h * (vy + vq[1])
     theta += 0.5 * h * (w + vq[2])
     # an arriving corner is put on the floor, to be taken as an impact by the next step
-    fix_m = st_m != _OPEN or event == -1 or _gap(y, theta, -b, hcg) < 0.0
-    fix_p = st_p != _OPEN or event == 1 or _gap(y, theta, b, hcg) < 0.0
+    fix_m = st_m != OPEN or event == -1 or corner_gap(y, theta, -b, hcg) < 0.0
+    fix_p = st_p != OPEN or event == 1 or corner_gap(y, theta, b, hcg) < 0.0
     if fix_m or fix_p:
-        y, theta = _project(y, theta, fix_m, fix_p, b, hcg, inv_j, 1e-15 * radius)
+        y, theta = project_onto_floor(y, theta, fix_m, fix_p, b, hcg, inv_j, 1e-15 * radius)
     if keep_m or keep_p:
-        x += anchor - _corner_x(x, theta, b if keep_p else -b, hcg)
+        x += anchor - corner_x(x, theta, b if keep_p else -b, hcg)
     # contact states of the step, gaps at its end, velocities in its middle
     v_mid = (0.5 * (vx + v[0]), 0.5 * (vy + v[1]), 0.5 * (w + v[2]))
-    mode = _mode_of_step(st_m, st_p, v_mid, rn_m, rt_m, rn_p, rt_p, _gap(y, theta, -b, hcg), _gap(y, theta, b, hcg),
-                         radius, gravity)
-    if st_m == _STICK and st_p == _STICK:
+    mode = step_mode(st_m, st_p, v_mid, rn_m, rt_m, rn_p, rt_p, corner_gap(y, theta, -b, hcg),
+                     corner_gap(y, theta, b, hcg), radius, gravity)
+    if st_m == STICK and st_p == STICK:
         v = (0.0, 0.0, 0.0)
     if frac < 1.0 and event == 0:  # the reversing corners have stopped
-        st_m = _STICK if st_m >= _SLIP_POS and abs(v[0] + rt_m * v[2]) <= 1e-9 * abs(vx) + tol else st_m
-        st_p = _STICK if st_p >= _SLIP_POS and abs(v[0] + rt_p * v[2]) <= 1e-9 * abs(vx) + tol else st_p
+        st_m = STICK if st_m >= SLIP_POS and abs(v[0] + rt_m * v[2]) <= 1e-9 * abs(vx) + tol else st_m
+        st_p = STICK if st_p >= SLIP_POS and abs(v[0] + rt_p * v[2]) <= 1e-9 * abs(vx) + tol else st_p
     q[0], q[1], q[2], q[3], q[4], q[5] = x, y, theta, v[0], v[1], v[2]
     return st_m, st_p, frac, mode
 
@@ -619,10 +316,10 @@ def _simulate(accel_g, dt_s, n_sub, tail_steps, b, hcg, inv_j, mu, mu_s, gravity
     side0 = 1.0 if theta0 >= 0.0 else -1.0
     q = np.array([hcg * np.sin(theta0) + side0 * b * (1.0 - np.cos(theta0)),
                   side0 * b * np.sin(theta0) + hcg * np.cos(theta0), theta0, 0.0, 0.0, 0.0])
-    st_m = _STICK if theta0 <= 0.0 else _OPEN
-    st_p = _STICK if theta0 >= 0.0 else _OPEN
+    st_m = STICK if theta0 <= 0.0 else OPEN
+    st_p = STICK if theta0 >= 0.0 else OPEN
     resting = theta0 == 0.0
-    mode = _REST if resting else _ROCK
+    mode = CODE_REST if resting else CODE_ROCK
     u = q[0] - hcg * np.sin(theta0) - b * np.sign(theta0) * (1.0 - np.cos(theta0))
     u_max, theta_max = abs(u), abs(theta0)
     uplift, overturned, t_over = not resting, False, np.nan
@@ -669,7 +366,7 @@ def _simulate(accel_g, dt_s, n_sub, tail_steps, b, hcg, inv_j, mu, mu_s, gravity
         while start < 1.0 and not overturned:
             if sub == 0:  # a new (sub)step: refined while the block rocks a little
                 m = 1
-                if st_m == _OPEN or st_p == _OPEN:
+                if st_m == OPEN or st_p == OPEN:
                     scale = np.sqrt(2.0 * abs(q[2]) / alpha + (q[5] / (p * alpha)) ** 2)
                     m = MAX_REFINEMENT
                     if p * h < MAX_REFINEMENT * ROCK_STEP_FRACTION * scale:
@@ -682,9 +379,9 @@ def _simulate(accel_g, dt_s, n_sub, tail_steps, b, hcg, inv_j, mu, mu_s, gravity
                                            sub < _MAX_ARRIVALS_PER_STEP)
             t_start = (step + start) * h
             start, sub = (end, 0) if frac == 1.0 else (start + frac * (end - start), sub + 1)
-            resting = st_m == _STICK and st_p == _STICK
+            resting = st_m == STICK and st_p == STICK
             visited |= 1 << mode
-            uplift = uplift or (mode != _REST and mode != _SLIDE)
+            uplift = uplift or (mode != CODE_REST and mode != CODE_SLIDE)
             if keep_modes and mode != mode_c[n_modes - 1]:
                 if n_modes == mode_t.size:
                     mode_t = np.concatenate((mode_t, np.empty_like(mode_t)))
@@ -722,18 +419,6 @@ def _cases(accel_flat, offsets, dts, record_index, n_sub, tail_steps, b, hcg, in
 
 
 # --------------------------------------------------------------------------- API
-def _check_record(floor_accel_g, dt_s):
-    accel = np.ascontiguousarray(floor_accel_g, dtype=float)
-    if accel.ndim != 1 or accel.size < 1:
-        raise ValueError("floor_accel_g must be a non-empty one-dimensional array")
-    if not np.all(np.isfinite(accel)):
-        raise ValueError("floor_accel_g contains NaN or infinite values")
-    dt = float(dt_s)
-    if not (np.isfinite(dt) and dt > 0.0):
-        raise ValueError("dt_s must be finite and > 0")
-    return accel, dt
-
-
 def _steps(block, dt_s, time_step_s, tail_s):
     """Steps per sample interval and steps of run-out for one block and one record."""
     if time_step_s is None:
@@ -808,7 +493,7 @@ def simulate_time_stepping(block: Block, floor_accel_g, dt_s, *, time_step_s=Non
     >>> round(r.sliding_max_m, 4), r.uplift, [(round(t, 2), mode) for t, mode in r.mode_sequence]
     (2.4517, False, [(0.0, 'rest'), (0.0, 'slide'), (2.0, 'rest')])
     """
-    accel, dt = _check_record(floor_accel_g, dt_s)
+    accel, dt = checked_record(floor_accel_g, dt_s, min_samples=1)
     theta0 = float(initial_theta_rad)
     if not (np.isfinite(theta0) and abs(theta0) < 0.5 * np.pi):
         raise ValueError("initial_theta_rad must lie in (-pi/2, pi/2)")
@@ -879,7 +564,7 @@ def time_stepping_peaks_batch(blocks, records_g, dt_s, *, time_step_s=None, tail
     >>> peaks.mode[:, 0].tolist(), peaks.uplift[:, 0].tolist(), peaks.overturned[:, 0].tolist()
     (['slide', 'rock'], [False, True], [False, False])
     """
-    records, dts = _records(records_g, dt_s)
+    records, dts = checked_records(records_g, dt_s, min_samples=1)
     blocks = list(blocks)
     if not blocks:
         raise ValueError("blocks is empty")
@@ -910,16 +595,12 @@ def time_stepping_case_peaks(blocks, records_g, dt_s, record_index, *, time_step
     >>> peaks.mode.tolist(), peaks.uplift.tolist()
     (['slide', 'rock', 'rest'], [False, True, False])
     """
-    records, dts = _records(records_g, dt_s)
+    records, dts = checked_records(records_g, dt_s, min_samples=1)
     blocks = list(blocks)
     index = np.ascontiguousarray(np.asarray(record_index, dtype=np.int64))
     if index.shape != (len(blocks),) or (index.size and (index.min() < 0 or index.max() >= dts.size)):
         raise ValueError("record_index must give one index into records_g per block")
     return _run_cases(blocks, records, dts, index, time_step_s, tail_s)
-
-
-def _records(records_g, dt_s):
-    return checked_records(records_g, dt_s, _check_record)
 
 
 def _run_cases(blocks, records, dts, record_index, time_step_s, tail_s) -> TimeSteppingPeaks:
