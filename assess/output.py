@@ -7,13 +7,12 @@ folder as it was; one that succeeds leaves exactly its own files, no stale
 ``report.pdf`` of an earlier ``--format html,pdf`` run.
 
 Text written to CSV is protected from spreadsheet formulas
-(:func:`neutralise_formulas`).
+(:func:`assess.tables.neutralise_formulas`).
 """
 from __future__ import annotations
 
 import contextlib
 import os
-import re
 import shutil
 import tempfile
 from pathlib import Path
@@ -21,7 +20,11 @@ from pathlib import Path
 import pandas as pd
 
 from assess.errors import InputError, Problem
+from assess.fragility.stripes import fragility_files
+from assess.report import render_html, render_pdf
+from assess.report.spreadsheet import summary_workbook
 from assess.result import AssessmentResult
+from assess.tables import csv_text, neutralise_formulas, restore_text  # noqa: F401 (re-exported)
 
 #: Everything assess writes into an output folder. A folder holding anything
 #: else is not swapped (it would be lost): the user is asked for another one.
@@ -30,63 +33,6 @@ OUTPUT_NAMES = frozenset({
     "calibration.json", "calibration_tests.csv", "fragility",
     ".DS_Store", "Thumbs.db", "desktop.ini",  # what a file browser leaves in a folder it has shown
 })
-#: First characters that make a spreadsheet read a cell as a formula (OWASP, "CSV Injection"):
-#: = + - @, tab and carriage return; and the quote itself, so that the prefix can be undone exactly.
-_FORMULA_START = ("=", "+", "-", "@", "\t", "\r", "'")
-#: Text that is a plain number (e.g. an id "-5") is no formula and is left as it is.
-_PLAIN_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
-
-
-def neutralise_formulas(table: pd.DataFrame) -> pd.DataFrame:
-    """``table`` with every text cell that a spreadsheet would run as a formula made inert.
-
-    A cell written from user text (an item's name ``=HYPERLINK(...)``, a
-    motion ``-M1``) that starts with ``=``, ``+``, ``-``, ``@``, a tab or a
-    carriage return gets a single quote in front, as the OWASP "CSV
-    Injection" page recommends; a spreadsheet then shows it as text. A text
-    starting with a quote gets one more, so that :func:`restore_text` gives
-    back exactly what was written. Only text cells change: numbers (negative
-    ones included) and text that is a plain number (an id ``-5``) are left as
-    they are.
-
-    >>> table = pd.DataFrame({"name": ["=1+2", "-80 freezer", "fridge", "-5"], "x": [-1.5, 2.0, 3.0, 4.0]})
-    >>> neutralise_formulas(table).to_dict("list")
-    {'name': ["'=1+2", "'-80 freezer", 'fridge', '-5'], 'x': [-1.5, 2.0, 3.0, 4.0]}
-    """
-    out = table.copy()
-    for column in out.columns:
-        if _is_text(out[column]):
-            out[column] = out[column].map(_neutralised)
-    return out
-
-
-def _is_text(column: pd.Series) -> bool:
-    """Whether a column may hold text (object or string dtype); numeric columns never change."""
-    return column.dtype == object or pd.api.types.is_string_dtype(column.dtype)
-
-
-def _neutralised(value):
-    if isinstance(value, str) and value.startswith(_FORMULA_START) and not _PLAIN_NUMBER.fullmatch(value):
-        return "'" + value
-    return value
-
-
-def restore_text(table: pd.DataFrame) -> pd.DataFrame:
-    """The text cells of a CSV written through :func:`neutralise_formulas`, as they were."""
-    out = table.copy()
-    for column in out.columns:
-        if _is_text(out[column]):
-            out[column] = out[column].map(
-                lambda v: v[1:] if isinstance(v, str) and v.startswith("'") and v[1:].startswith(_FORMULA_START)
-                else v)
-    return out
-
-
-def csv_text(table: pd.DataFrame) -> str:
-    """A table as CSV text: formulas neutralised, fixed float format so that reruns compare byte for byte."""
-    return neutralise_formulas(table).to_csv(index=False, float_format="%.6g", lineterminator="\n")
-
-
 def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: str = "si",
                    other_levels: tuple[AssessmentResult, ...] = ()) -> dict[str, bytes]:
     """All files of a run, by name, as bytes (nothing is written here).
@@ -102,20 +48,14 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: st
         "motions.csv": csv_text(result.motions).encode(),
     }
     if "xlsx" in formats:
-        from assess.report.spreadsheet import summary_workbook
-
         sheets = {result.level_label: result.summary}
         sheets.update({other.level_label: other.summary for other in other_levels})
         files["summary.xlsx"] = summary_workbook(sheets, units=units)
     if result.curve_risk is not None:
-        from assess.fragility.stripes import fragility_files
-
         files.update(fragility_files(result.curve_risk, result.summary))
     if result.comparison is not None:
         files["comparison.csv"] = csv_text(result.comparison).encode()
     if "html" in formats or "pdf" in formats:
-        from assess.report import render_html, render_pdf
-
         html = render_html(result)
         if "html" in formats:
             files["report.html"] = html.encode()
@@ -171,11 +111,8 @@ def write_atomically(files: dict[str, bytes], out_dir: Path) -> list[Path]:
     staging = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}-new-", dir=out_dir.parent))
     aside = None
     try:
-        os.chmod(staging, _folder_mode(out_dir))
-        for name, content in files.items():
-            target = staging / name
-            target.parent.mkdir(parents=True, exist_ok=True)
-            target.write_bytes(content)
+        os.chmod(staging, folder_mode(out_dir))
+        write_files(staging, files)
         aside = swap_folder(staging, out_dir)
         staging = None
         return [out_dir / name for name in files]
@@ -209,7 +146,15 @@ def swap_folder(staging: Path, out_dir: Path) -> Path | None:
     return aside
 
 
-def _folder_mode(out_dir: Path) -> int:
+def write_files(folder: Path, files: dict[str, bytes]) -> None:
+    """Write ``files`` (name -> bytes; a name may contain ``/``) into ``folder``, making subfolders."""
+    for name, content in files.items():
+        target = Path(folder) / name
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_bytes(content)
+
+
+def folder_mode(out_dir: Path) -> int:
     """Permissions of the new output folder: the old one's, else what the umask gives a new folder."""
     if out_dir.is_dir():
         return out_dir.stat().st_mode & 0o7777

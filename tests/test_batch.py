@@ -400,8 +400,8 @@ def test_an_edited_record_reassesses_its_building(first_run):
     lines = record.read_text().splitlines()
     lines[20] = lines[20].split(",")[0] + ",0.65"  # one sample of the record
     record.write_text("\n".join(lines) + "\n")
-    import assess.pipeline
-    assess.pipeline._read_scaled.cache_clear()  # it keeps a record by path for the process's life
+    import assess.assessment.motions
+    assess.assessment.motions.read_scaled.cache_clear()  # it keeps a record by path for the process's life
     assert _batch(portfolio, "--out", out) == 0
     table = pd.read_csv(out / "portfolio.csv").set_index("building")
     # both buildings read this record: every case of each runs again

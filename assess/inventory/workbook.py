@@ -1,4 +1,4 @@
-"""Read the inventory workbook (SPEC §1) into a validated, SI :class:`Inventory`.
+"""Read the inventory workbook (docs/workbook.md) into a validated, SI :class:`Inventory`.
 
 :func:`read_workbook` checks the whole file before giving up: every problem of
 every sheet and row is collected as a located :class:`~assess.errors.Problem`
@@ -116,9 +116,9 @@ def read_workbook(path: str | Path) -> Inventory:
         tables = {}
         for name, spec in (("equipment", EQUIPMENT), ("hazard", HAZARD), ("settings", SETTINGS)):
             if name in sheets:
-                cells = _sheet_cells(book, sheets[name], reports[name])
+                cells = sheet_cells(book, sheets[name], reports[name])
                 if cells is not None:
-                    tables[name] = _read_table(spec, cells, reports[name])
+                    tables[name] = read_table(spec, cells, reports[name])
     equipment = hazard = []
     if "equipment" in tables:
         equipment = _check_equipment(tables["equipment"], reports["equipment"])
@@ -156,7 +156,7 @@ def _find_sheets(book: xlsx.Book, report: SheetReport) -> dict[str, str]:
     return found
 
 
-def _sheet_cells(book: xlsx.Book, title: str, report: SheetReport) -> xlsx.SheetCells | None:
+def sheet_cells(book: xlsx.Book, title: str, report: SheetReport) -> xlsx.SheetCells | None:
     """The sheet's non-empty cells, each cell that is a problem reported and made UNUSABLE;
     None after reporting a sheet that cannot be read."""
     try:
@@ -194,7 +194,7 @@ def _marker_problem(marker) -> tuple[str, str]:
 
 # ---------------------------------------------------------------- rows
 
-def _read_table(spec: SheetSpec, cells: xlsx.SheetCells, report: SheetReport) -> Table:
+def read_table(spec: SheetSpec, cells: xlsx.SheetCells, report: SheetReport) -> Table:
     """Headers recognised and every non-blank row parsed cell by cell."""
     title = cells.title
     rows = [(number, row) for number, row in cells.data_rows()
