@@ -56,8 +56,8 @@ from assess.hazard.records import check_record_location
 from assess.inventory import read_workbook, schema, xlsx
 from assess.inventory.schema import Column, SheetSpec
 from assess.inventory.workbook import SheetReport, read_table, sheet_cells
-from assess.output import (OUTPUT_NAMES, folder_mode, refuse_foreign_files, render_outputs, swap_folder,
-                           write_files)
+from assess.folders import OUTPUT_NAMES, folder_mode, refuse_foreign_files, swap_folder, write_files
+from assess.output import render_outputs
 from assess.tables import csv_text, restore_text
 
 #: The sheet of a portfolio workbook (docs/workbook.md).
@@ -363,7 +363,7 @@ def check_portfolio_folder(out_dir: Path) -> None:
 
     It may be new, or hold what a batch writes: :data:`PORTFOLIO_FILES`, the
     cache and previous summaries, and building folders holding only what the
-    main job writes (:data:`assess.output.OUTPUT_NAMES`).
+    main job writes (:data:`assess.folders.OUTPUT_NAMES`).
     """
     out_dir = Path(out_dir)
     if not out_dir.exists() and not out_dir.is_symlink():
