@@ -46,7 +46,7 @@ from typing import Callable
 import pandas as pd
 
 import assess
-from assess import pipeline
+from assess import output, pipeline
 from assess.assessment.inputs import check_inputs
 from assess.batch_report import building_row, changes_between, portfolio_html
 from assess.errors import InputError, Problem, raise_if_any
@@ -57,7 +57,6 @@ from assess.inventory import read_workbook, schema, xlsx
 from assess.inventory.schema import Column, SheetSpec
 from assess.inventory.workbook import SheetReport, read_table, sheet_cells
 from assess.folders import OUTPUT_NAMES, folder_mode, refuse_foreign_files, swap_folder, write_files
-from assess.output import render_outputs
 from assess.tables import csv_text, restore_text
 
 #: The sheet of a portfolio workbook (docs/workbook.md).
@@ -488,7 +487,7 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
                 result = pipeline.run_assessment(item.inventory, item.level, seed=seed, runner=runner,
                                         hazard_curve=item.curve, allow_records_outside=item.allow_records_outside,
                                         progress=lambda message, tag=tag: say(f"{tag}: {message}"))
-                files = render_outputs(result, formats, units=units)
+                files = output.render_outputs(result, formats, units=units)
                 write_files(staging / building.name, files)
                 simulated, reused = runner.cases_simulated - before[0], runner.cases_reused - before[1]
                 summary, level_label = result.summary, result.level_label

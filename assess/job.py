@@ -17,7 +17,7 @@ from typing import Callable, Iterator
 
 import numba
 
-from assess import batch, pipeline
+from assess import batch, output, pipeline
 from assess.assessment.inputs import check_inputs
 from assess.cache import CachingRunner
 from assess.calibration import read_measured, run_calibration
@@ -29,7 +29,6 @@ from assess.hazard.openquake import read_openquake_hazard
 from assess.inventory import read_workbook
 from assess.mechanics.runner import LocalRunner
 from assess.folders import check_output_folder
-from assess.output import render_outputs
 from assess.report import render_pdf
 from assess.report.calibration import render_calibration_html
 from assess.result import AssessmentResult
@@ -202,7 +201,8 @@ def run_job(job: AssessmentJob, say: Say = lambda message: None) -> Iterator[Lev
             "summary.xlsx" if f == "xlsx" else f"report.{f}" for f in job.formats]
             + (["fragility/"] if result.curve_risk is not None else [])))
         others = tuple(other for other in results if other is not result)
-        yield LevelOutput(result, out_dir, render_outputs(result, job.formats, units=job.units, other_levels=others))
+        files = output.render_outputs(result, job.formats, units=job.units, other_levels=others)
+        yield LevelOutput(result, out_dir, files)
 
 
 # ---------------------------------------------------------------- assess batch PORTFOLIO
