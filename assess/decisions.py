@@ -28,7 +28,7 @@ from assess.result import Flag
 UPLIFT_MODES = (ROCK, SLIDE_ROCK)
 #: What an anchored item's row says (it is not analysed as freestanding).
 ANCHORED = {"mode": "", "risk": "anchored", "action": "None: anchored (not analysed as freestanding)",
-            "action_kind": "anchored", "flags": ""}
+            "action_kind": "anchored", "flags": ()}
 
 
 def classify_risk(p_beyond_clearance: float, p_overturn: float, uplift: bool, settings: dict) -> str:

@@ -32,7 +32,7 @@ from assess.folders import check_output_folder
 from assess.report import render_pdf
 from assess.report.calibration import render_calibration_html
 from assess.result import AssessmentResult
-from assess.tables import csv_text, restore_text
+from assess.tables import csv_text, restore_text, summary_text
 
 Say = Callable[[str], None]
 #: What the main job writes besides the CSV files: the report and summary.xlsx.
@@ -132,7 +132,7 @@ def with_comparison(result: AssessmentResult, explicit: Path | None, in_out_dir:
         return result
     previous = restore_text(previous)  # the text summary.csv protects from spreadsheet formulas
     say(f"comparing with the previous run {explicit or in_out_dir}")
-    return replace(result, comparison=compare_summaries(previous, result.summary))
+    return replace(result, comparison=compare_summaries(previous, summary_text(result.summary)))
 
 
 # ---------------------------------------------------------------- assess WORKBOOK --hazard LEVEL[,LEVEL...]

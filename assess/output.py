@@ -10,7 +10,7 @@ from assess.fragility.stripes import fragility_files
 from assess.report import render_html, render_pdf
 from assess.report.spreadsheet import summary_workbook
 from assess.result import AssessmentResult
-from assess.tables import csv_text, neutralise_formulas, restore_text  # noqa: F401 (re-exported)
+from assess.tables import csv_text, neutralise_formulas, restore_text, summary_text  # noqa: F401 (re-exported)
 
 
 def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: str = "si",
@@ -24,12 +24,12 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: st
     after this level's.
     """
     files = {
-        "summary.csv": csv_text(result.summary).encode(),
+        "summary.csv": csv_text(summary_text(result.summary)).encode(),
         "motions.csv": csv_text(result.motions).encode(),
     }
     if "xlsx" in formats:
-        sheets = {result.level_label: result.summary}
-        sheets.update({other.level_label: other.summary for other in other_levels})
+        sheets = {result.level_label: summary_text(result.summary)}
+        sheets.update({other.level_label: summary_text(other.summary) for other in other_levels})
         files["summary.xlsx"] = summary_workbook(sheets, units=units)
     if result.curve_risk is not None:
         files.update(fragility_files(result.curve_risk, result.summary))

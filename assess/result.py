@@ -8,7 +8,7 @@ import pandas as pd
 
 from assess.hazard.levels import HazardLevel
 
-#: Columns of ``summary.csv`` in order (SPEC §3 first, then extras).
+#: Columns of ``summary.csv`` in order (docs/outputs.md).
 SUMMARY_COLUMNS = [
     "id", "name", "room", "floor", "quantity", "alpha_rad", "p_rad_s", "b_over_h",
     "governing_direction", "mu", "mode", "governing_motion", "pta_g", "tp_s", "im",
@@ -23,7 +23,7 @@ SUMMARY_COLUMNS = [
     "p_beyond_clearance_mu_high", "mu_range_note",
 ]
 
-#: Columns of ``motions.csv`` in order (SPEC §3 first, then extras).
+#: Columns of ``motions.csv`` in order (docs/outputs.md).
 MOTION_COLUMNS = [
     "id", "motion", "direction", "pta_g", "tp_s", "im", "edp_median", "sliding_median_cm",
     "pf_sliding", "sim_sliding_max_cm", "sim_theta_max_over_alpha", "sim_overturned",
@@ -59,7 +59,9 @@ class AssessmentResult:
     summary : DataFrame
         One row per item, :data:`SUMMARY_COLUMNS`; lengths in cm, accelerations in g.
         ``mode``, ``overturn_fraction``, ``theta_max_over_alpha`` and
-        ``sim_sliding_max_cm`` come from the time-history simulation.
+        ``sim_sliding_max_cm`` come from the time-history simulation. ``flags`` (the codes of the
+        item's :attr:`flags`) and ``demand_source`` (what its governing demand comes from) are tuples;
+        the files join them into text (:func:`assess.tables.summary_text`).
     motions : DataFrame
         One row per freestanding item x motion x direction, :data:`MOTION_COLUMNS`.
         ``direction`` is 1 (along width) or 2 (along depth); ``sim_*`` from the

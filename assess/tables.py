@@ -61,6 +61,23 @@ def restore_text(table: pd.DataFrame) -> pd.DataFrame:
     return out
 
 
+#: Columns of the summary that hold a list (a tuple per item), and how summary.csv and summary.xlsx join it.
+SUMMARY_LISTS = {"flags": "; ", "demand_source": " + "}
+
+
+def summary_text(summary: pd.DataFrame) -> pd.DataFrame:
+    """The summary as its files show it: each list column (:data:`SUMMARY_LISTS`) joined into one text.
+
+    >>> summary_text(pd.DataFrame({"flags": [("uplift", "im_outside_fit"), ()], "x": [1, 2]}))["flags"].tolist()
+    ['uplift; im_outside_fit', '']
+    """
+    out = summary.copy()
+    for column, separator in SUMMARY_LISTS.items():
+        if column in out:
+            out[column] = out[column].map(lambda v, s=separator: s.join(v) if isinstance(v, tuple) else v)
+    return out
+
+
 def csv_text(table: pd.DataFrame) -> str:
     """A table as CSV text: formulas neutralised, fixed float format so that reruns compare byte for byte."""
     return neutralise_formulas(table).to_csv(index=False, float_format="%.6g", lineterminator="\n")

@@ -288,7 +288,8 @@ def test_the_hazard_curve_reaches_the_assessment_and_its_rates_the_portfolio(tmp
     seen = {}
 
     def with_curve(inventory, level_text, seed=0, progress=lambda m: None, oq_hazard=None,
-                   derive_floors_roof=None, calibration=None, runner=None, hazard_curve=None):
+                   derive_floors_roof=None, calibration=None, runner=None, hazard_curve=None,
+                   allow_records_outside=False):
         seen[inventory.path.name] = (hazard_curve, oq_hazard)
         result = real(inventory, level_text, seed=seed, progress=progress, runner=runner)
         rate = np.arange(1, len(result.summary) + 1) * 1e-4

@@ -73,7 +73,7 @@ def sliding_suite(tmp_path_factory):
 def test_records_suite_gives_the_suite_statistics_of_the_exact_sliding(sliding_suite):
     result, peaks_cm = sliding_suite
     row = result.summary.set_index("id").loc["FORMA"]
-    assert row["demand_source"] == "records"
+    assert row["demand_source"] == ("records",)
     assert row["suite_motions"] == 4 and row["suite_histories"] == 4
     assert row["demand_median_cm"] == pytest.approx(np.quantile(peaks_cm, 0.5, method="hazen"), rel=1e-9)
     assert row["demand_p84_cm"] == pytest.approx(np.quantile(peaks_cm, 0.84, method="hazen"), rel=1e-9)

@@ -55,7 +55,7 @@ def summarise(equipment: pd.DataFrame, cases: pd.DataFrame, demand, constants: R
         uplift = bool(item_cases["sim_uplift"].any()) or bool(row.get("demand_uplift", False))
         item_flags = decisions.item_flags(item, item_cases, constants)
         flags.extend(item_flags)
-        row["flags"] = "; ".join(flag.code for flag in item_flags)
+        row["flags"] = tuple(flag.code for flag in item_flags)
         row.update(decisions.decide_item(item, row, uplift, settings))
         rows.append(row)
     summary = pd.DataFrame(rows)

@@ -29,7 +29,7 @@ from assess.report import figures
 from assess.report.curve import curve_context
 from assess.report.sentences import (
     DASH, action_groups, case_outcomes, changes, cm_interval_text, finite, flag_groups, format_cm, format_percent,
-    format_significant, integer_text, interval_text, method_notes, risk_units, suite_text, text, total_units,
+    format_significant, integer_text, interval_text, list_text, method_notes, risk_units, suite_text, text, total_units,
     what_happens,
 )
 
@@ -135,7 +135,7 @@ def _item_row(row: pd.Series) -> dict:
         "what_if": text(row.get("what_if")),
         "priority": integer_text(row.get("priority")),
         "action": text(row.get("action")) or DASH,
-        "source": text(row.get("demand_source")) or DASH,
+        "source": list_text(row.get("demand_source"), " + ") or DASH,
         "source_note": text(row.get("demand_note")),
         "demand_median": format_cm(row.get("demand_median_cm")),
         "demand_p84": format_cm(row.get("demand_p84_cm")),

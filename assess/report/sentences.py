@@ -84,6 +84,17 @@ def text(value) -> str:
     return str(value)
 
 
+def list_text(value, separator: str) -> str:
+    """A list field of the result (a tuple, e.g. an item's demand sources) as one text ("" for missing).
+
+    >>> list_text(("records", "regression"), " + "), list_text(float("nan"), " + ")
+    ('records + regression', '')
+    """
+    if isinstance(value, (tuple, list)):
+        return separator.join(str(part) for part in value)
+    return text(value)
+
+
 def integer_text(value) -> str:
     number = finite(value)
     if number is None:
