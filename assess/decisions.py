@@ -1,16 +1,16 @@
 """What to do about each item: risk class, action, priority, anchorage, what-if and flags.
 
-Every function here is a pure function of an item's governing demand (the
-``demand`` stage, :mod:`assess.assessment.demand`) and the settings; the
-pipeline calls :func:`decide_item` once per freestanding item and
-:func:`mu_range_decisions` for the items with a range of friction, after the
-demand. The risk rule is one function, :func:`classify_risk`, fed by the
+The decisions stage of the assessment (:func:`decide`, after the demand
+stage :mod:`assess.assessment.demand`): every function here is a pure
+function of an item's governing demand and the settings. The risk rule is one function, :func:`classify_risk`, fed by the
 demand (``p_beyond_clearance``, ``p_overturn``, ``uplift``): replacing the
 rule means replacing that function. What the report says about an item is
 built from these fields (:mod:`assess.report.sentences`); the columns are
 those of ``summary.csv`` (docs/outputs.md).
 """
 from __future__ import annotations
+
+from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
@@ -19,16 +19,83 @@ from assess.fragility.anchorage import (
     COMPONENT_AMPLIFICATION, COMPONENT_RESPONSE_MODIFICATION, base_overturning, component_design_force,
     importance_factor,
 )
-from assess.fragility.friction_range import MU_RANGE_COLUMNS, mu_dependence_sentence
+from assess.fragility.friction_range import mu_dependence_sentence
 from assess.fragility.regression import RegressionConstants
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
 from assess.mechanics.modes import ROCK, SLIDE_ROCK
 from assess.result import Flag
 
 UPLIFT_MODES = (ROCK, SLIDE_ROCK)
+def item_consequence(item) -> str:
+    """What an item's failure costs (the workbook's ``consequence``; ``ordinary`` where not given)."""
+    return str(getattr(item, "consequence", "") or "ordinary")
+
+
 #: What an anchored item's row says (it is not analysed as freestanding).
 ANCHORED = {"mode": "", "risk": "anchored", "action": "None: anchored (not analysed as freestanding)",
             "action_kind": "anchored", "flags": ()}
+
+
+@dataclass
+class Decisions:
+    """The decisions stage's output: per item (``by_item``: id -> the summary's decision columns, in
+    :data:`assess.result.SUMMARY_COLUMNS`) and the flags of every item, in item order."""
+
+    by_item: dict
+    flags: list
+
+
+def decide(equipment: pd.DataFrame, governing: dict, uplift: dict, cases: pd.DataFrame, at_mu_ends: pd.DataFrame,
+           constants: RegressionConstants, settings: dict) -> Decisions:
+    """Every item's decisions from its governing demand (``governing``: id -> its demand row,
+    :func:`assess.assessment.demand.governing_rows`; ``uplift``: id -> whether it uplifts; ``cases``: the
+    cases at the workbook's μ; ``at_mu_ends``: the demand at the ends of a μ range).
+
+    An anchored item is not analysed (:data:`ANCHORED`); a freestanding one gets :func:`item_flags`,
+    :func:`decide_item` and, with a μ range, :func:`mu_range_decision`; then every item its
+    :func:`priorities` rank.
+    """
+    by_item, flags = {}, []
+    for item in equipment.itertuples(index=False):
+        decided = dict(NO_MU_RANGE)
+        if item.anchored:
+            by_item[item.id] = {**ANCHORED, **decided}
+            continue
+        row = {"consequence": item_consequence(item), "clearance_cm": item.clearance_m * 100.0, **governing[item.id]}
+        found = item_flags(item, cases[cases["id"] == item.id], constants)
+        flags.extend(found)
+        decided["flags"] = tuple(flag.code for flag in found)
+        decided.update(decide_item(item, row, uplift[item.id], settings))
+        if item.id in at_mu_ends.index:
+            decided.update(mu_range_decision(at_mu_ends.loc[item.id], decided["risk"], row["demand_note"], settings))
+        by_item[item.id] = decided
+    table = pd.DataFrame({"id": list(by_item), **{column: [d.get(column, np.nan) for d in by_item.values()]
+                                                  for column in ("action_kind", "priority_score")}})
+    for item_id, rank in zip(table["id"], priorities(table)):
+        by_item[item_id]["priority"] = int(rank)
+    return Decisions(by_item, flags)
+
+
+#: The μ-range columns of an item without a range (or anchored).
+NO_MU_RANGE = {"mu_low": np.nan, "mu_high": np.nan, "risk_mu_low": "", "risk_mu_high": "",
+               "p_beyond_clearance_mu_low": np.nan, "p_beyond_clearance_mu_high": np.nan, "mu_range_note": ""}
+
+
+def mu_range_decision(end: pd.Series, risk: str, demand_note: str, settings: dict) -> dict:
+    """For an item with a range of friction: its risk class with every run at ``mu_low`` and at
+    ``mu_high`` (:func:`classify_risk` of the demand at each end, ``end``: its row of
+    :func:`assess.fragility.friction_range.demand_at_ends`), and
+    :func:`~assess.fragility.friction_range.mu_dependence_sentence` in ``mu_range_note`` and at the end
+    of ``demand_note``."""
+    classes = {side: classify_risk(float(end[f"p_beyond_clearance_{side}"]), float(end[f"p_overturn_{side}"]),
+                                   bool(end[f"demand_uplift_{side}"]), settings) for side in ("low", "high")}
+    chances = {side: float(end[f"p_beyond_clearance_{side}"]) for side in ("low", "high")}
+    low, high = float(end["mu_low"]), float(end["mu_high"])
+    sentence = mu_dependence_sentence(end.name, low, high, risk, classes["low"], classes["high"],
+                                      chances["low"], chances["high"])
+    return {"mu_low": low, "mu_high": high, "risk_mu_low": classes["low"], "risk_mu_high": classes["high"],
+            "p_beyond_clearance_mu_low": chances["low"], "p_beyond_clearance_mu_high": chances["high"],
+            "mu_range_note": sentence, "demand_note": f"{demand_note} {sentence}".strip()}
 
 
 def classify_risk(p_beyond_clearance: float, p_overturn: float, uplift: bool, settings: dict) -> str:
@@ -81,32 +148,6 @@ def decide_item(item, row: dict, uplift: bool, settings: dict) -> dict:
     decided["priority_score"] = priority_score(row["consequence"], row["p_overturn"], row["p_beyond_clearance"],
                                                uplift)
     return decided
-
-
-def mu_range_decisions(summary: pd.DataFrame, ends: pd.DataFrame, settings: dict) -> pd.DataFrame:
-    """The summary with, per item with a range of friction, its risk class with every run at ``mu_low``
-    and at ``mu_high`` (:func:`classify_risk` of the demand at each end, ``ends``:
-    :func:`assess.fragility.friction_range.demand_at_ends`), and
-    :func:`~assess.fragility.friction_range.mu_dependence_sentence` in ``mu_range_note`` and at the end
-    of ``demand_note``."""
-    out = summary.assign(mu_low=np.nan, mu_high=np.nan, risk_mu_low="", risk_mu_high="",
-                         p_beyond_clearance_mu_low=np.nan, p_beyond_clearance_mu_high=np.nan, mu_range_note="")
-    if ends.empty:
-        return out
-    for index, row in out.iterrows():
-        if row["id"] not in ends.index or row["risk"] == "anchored":
-            continue
-        end = ends.loc[row["id"]]
-        classes = {side: classify_risk(float(end[f"p_beyond_clearance_{side}"]), float(end[f"p_overturn_{side}"]),
-                                       bool(end[f"demand_uplift_{side}"]), settings) for side in ("low", "high")}
-        chances = {side: float(end[f"p_beyond_clearance_{side}"]) for side in ("low", "high")}
-        low, high = float(end["mu_low"]), float(end["mu_high"])
-        sentence = mu_dependence_sentence(row["id"], low, high, row["risk"], classes["low"], classes["high"],
-                                          chances["low"], chances["high"])
-        out.loc[index, list(MU_RANGE_COLUMNS)] = [low, high, classes["low"], classes["high"], chances["low"],
-                                                  chances["high"], sentence]
-        out.loc[index, "demand_note"] = f"{row['demand_note']} {sentence}".strip()
-    return out
 
 
 def action_kind(row: dict, uplift: bool) -> str:

@@ -17,6 +17,7 @@ from __future__ import annotations
 import functools
 from typing import Callable
 
+from assess import decisions
 from assess.assessment import cases as case_stage
 from assess.assessment import demand as demand_stage
 from assess.assessment import inputs, motions as motion_stage, run as run_stage, summary as result_stage
@@ -101,8 +102,12 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     # 5. demand
     demand = demand_stage.item_demand(ran.cases, ran.runs, ran.planar, simulated.kinds, constants, settings)
     at_mu = demand.cases[nominal]
-    # 6. decisions and 7. result
-    summary, flags = result_stage.summarise(inventory.equipment, at_mu, demand, constants, settings)
+    rows = demand_stage.item_rows(inventory.equipment, at_mu, demand)
+    # 6. decisions
+    decided = decisions.decide(inventory.equipment, rows.rows, rows.uplift, at_mu, demand.at_mu_ends, constants,
+                               settings)
+    # 7. result
+    summary = result_stage.summarise(inventory.equipment, rows, decided)
     summary_columns = SUMMARY_COLUMNS
     if curve is not None:
         summary = summary.merge(curve.table, on="id", how="left")
@@ -111,7 +116,7 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
         workbook=inventory.path, facility=str(settings.get("facility", "")),
         site=str(settings.get("site", "")), level=level.level, level_label=level.level_label,
         summary=summary[summary_columns], motions=result_stage.motion_table(with_planar_peaks(at_mu, ran.planar)),
-        flags=flags, regression=result_stage.regression_record(constants, settings),
+        flags=decided.flags, regression=result_stage.regression_record(constants, settings),
         settings=dict(settings), simulated=True, seed=seed, histories=histories, hazard_notes=level.notes,
         suite_runs=suite_runs(demand.cases, ran.runs, ran.planar),
         solver_runs={str(k): int(v) for k, v in ran.runs["solver"].value_counts().items()}, curve_risk=curve,

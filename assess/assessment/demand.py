@@ -22,6 +22,9 @@ from assess.fragility.governing import add_pulse_share, governing_demand, motion
 from assess.mechanics.modes import MODE_SEVERITY, ROCK, SLIDE, SLIDE_ROCK, initial_mode
 
 SLIDING_MODES = (SLIDE, SLIDE_ROCK)
+#: Columns of the governing case an item's row shows.
+GOVERNING_CASE_COLUMNS = ("alpha_rad", "p_rad_s", "b_over_h", "mode", "pta_g", "tp_s", "im", "edp_median",
+                          "sliding_median_cm", "sliding_p84_cm", "pf_sliding", "sim_sliding_max_cm")
 
 
 @dataclass
@@ -47,6 +50,33 @@ def item_demand(cases: pd.DataFrame, runs: pd.DataFrame, planar, simulated_as: d
     room_quantile = 1.0 - float(settings["risk_pf_moderate"])
     governing = governing_demand(cases, runs, constants, room_quantile=room_quantile, planar=planar)
     return Demand(cases, governing, demand_at_ends(cases, runs, planar, constants, room_quantile))
+
+
+@dataclass
+class ItemDemand:
+    """Per freestanding item (by id): its demand row (``rows``: the regression's numbers for its governing
+    case, :data:`GOVERNING_CASE_COLUMNS`, ``governing_direction``, ``governing_motion``, the governing demand
+    and ``overturn_fraction``) and whether it uplifts under any motion (``uplift``)."""
+
+    rows: dict
+    uplift: dict
+
+
+def item_rows(equipment: pd.DataFrame, cases: pd.DataFrame, demand: Demand) -> ItemDemand:
+    """Each freestanding item's demand row (:class:`ItemDemand`), ``cases`` those at the workbook's μ."""
+    governing = governing_case(cases).set_index("id") if len(cases) else pd.DataFrame()
+    rows, uplift = {}, {}
+    for item in equipment[~equipment["anchored"]].itertuples(index=False):
+        case = governing.loc[item.id]
+        row = {column: case[column] for column in GOVERNING_CASE_COLUMNS}
+        row["governing_direction"] = int(case["direction"])
+        row["governing_motion"] = case["motion"]
+        row.update(demand.governing.loc[item.id].to_dict())
+        row["overturn_fraction"] = row["p_overturn"]
+        rows[item.id] = row
+        uplift[item.id] = bool(cases.loc[cases["id"] == item.id, "sim_uplift"].any()) or bool(
+            row.get("demand_uplift", False))
+    return ItemDemand(rows, uplift)
 
 
 def regression_demand(cases: pd.DataFrame, constants: RegressionConstants) -> pd.DataFrame:

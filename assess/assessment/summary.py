@@ -1,9 +1,9 @@
 """Stage 7 of the assessment: the result, one row per item (``summary.csv``) and per case (``motions.csv``).
 
-:func:`summarise` lays out, per item, its geometry, the regression's numbers
-for its governing case, its governing demand (:mod:`assess.assessment.demand`)
-and the decisions that follow from it (:mod:`assess.decisions`); the columns
-are described in docs/outputs.md.
+:func:`summarise` lays out, per item, what it is, the regression's numbers
+for its governing case and its governing demand (:mod:`assess.assessment.demand`),
+and the decisions that follow from it (:mod:`assess.decisions`); it decides
+nothing. The columns are described in docs/outputs.md.
 """
 from __future__ import annotations
 
@@ -11,29 +11,22 @@ import numpy as np
 import pandas as pd
 
 from assess import decisions
-from assess.assessment.demand import governing_case
 from assess.data import default_settings
 from assess.fragility.regression import RegressionConstants
 from assess.mechanics.geometry import frequency_parameter, slenderness
-from assess.result import MOTION_COLUMNS, Flag
+from assess.result import MOTION_COLUMNS
 
 UPLIFT_MODES = decisions.UPLIFT_MODES
-#: Columns of the governing case an item's row shows.
-GOVERNING_CASE_COLUMNS = ("alpha_rad", "p_rad_s", "b_over_h", "mode", "pta_g", "tp_s", "im", "edp_median",
-                          "sliding_median_cm", "sliding_p84_cm", "pf_sliding", "sim_sliding_max_cm")
 
 
-def summarise(equipment: pd.DataFrame, cases: pd.DataFrame, demand, constants: RegressionConstants,
-              settings: dict) -> tuple[pd.DataFrame, list[Flag]]:
-    """One row per item and the flags: its geometry, the regression's numbers for its governing case
-    (``cases``: those at the workbook's μ), the governing demand over its suite (``demand``:
-    :class:`assess.assessment.demand.Demand`), and the decisions (:func:`assess.decisions.decide_item`,
-    :func:`assess.decisions.priorities`, :func:`assess.decisions.mu_range_decisions`)."""
-    governing = governing_case(cases).set_index("id") if len(cases) else pd.DataFrame()
-    rows, flags = [], []
+def summarise(equipment: pd.DataFrame, demand, decided) -> pd.DataFrame:
+    """One row per item: what it is (id, name, room, floor, quantity, consequence, μ, clearance), its
+    demand row (``demand``: :class:`assess.assessment.demand.ItemDemand`; an anchored item: its geometry
+    about the more slender direction) and its decisions (``decided``: :class:`assess.decisions.Decisions`)."""
+    rows = []
     for item in equipment.itertuples(index=False):
         row = {"id": item.id, "name": item.name, "room": item.room, "floor": item.floor,
-               "quantity": item.quantity, "consequence": str(getattr(item, "consequence", "") or "ordinary"),
+               "quantity": item.quantity, "consequence": decisions.item_consequence(item),
                "mu": item.mu, "clearance_cm": item.clearance_m * 100.0,
                "overturn_fraction": np.nan, "theta_max_over_alpha": np.nan}
         if item.anchored:
@@ -41,26 +34,12 @@ def summarise(equipment: pd.DataFrame, cases: pd.DataFrame, demand, constants: R
             row.update({"alpha_rad": float(slenderness(half_width_m, item.cg_height_m)),
                         "p_rad_s": float(frequency_parameter(half_width_m, item.cg_height_m, item.height_m)),
                         "b_over_h": half_width_m / item.cg_height_m,
-                        "governing_direction": 1 if item.width_m <= item.depth_m else 2,
-                        **decisions.ANCHORED})
-            rows.append(row)
-            continue
-        case = governing.loc[item.id]
-        item_cases = cases[cases["id"] == item.id]
-        row.update({column: case[column] for column in GOVERNING_CASE_COLUMNS})
-        row["governing_direction"] = int(case["direction"])
-        row["governing_motion"] = case["motion"]
-        row.update(demand.governing.loc[item.id].to_dict())
-        row["overturn_fraction"] = row["p_overturn"]
-        uplift = bool(item_cases["sim_uplift"].any()) or bool(row.get("demand_uplift", False))
-        item_flags = decisions.item_flags(item, item_cases, constants)
-        flags.extend(item_flags)
-        row["flags"] = tuple(flag.code for flag in item_flags)
-        row.update(decisions.decide_item(item, row, uplift, settings))
+                        "governing_direction": 1 if item.width_m <= item.depth_m else 2})
+        else:
+            row.update(demand.rows[item.id])
+        row.update(decided.by_item[item.id])
         rows.append(row)
-    summary = pd.DataFrame(rows)
-    summary["priority"] = decisions.priorities(summary)
-    return decisions.mu_range_decisions(summary, demand.at_mu_ends, settings), flags
+    return pd.DataFrame(rows)
 
 
 def motion_table(cases: pd.DataFrame) -> pd.DataFrame:
