@@ -53,9 +53,9 @@ from assess.errors import InputError, Problem, raise_if_any
 from assess.hazard.motions import select_level
 from assess.hazard.openquake import read_openquake_hazard
 from assess.hazard.records import check_record_location
-from assess.inventory import read_workbook, schema, xlsx
+from assess.inventory import read_workbook, schema
 from assess.inventory.schema import Column, SheetSpec
-from assess.inventory.workbook import SheetReport, read_table, sheet_cells
+from assess.inventory.workbook import SheetReport, open_book, read_table, sheet_cells
 from assess.folders import OUTPUT_NAMES, folder_mode, refuse_foreign_files, swap_folder, write_files
 from assess.tables import csv_text, restore_text
 
@@ -129,12 +129,7 @@ def read_portfolio(path, *, allow_outside: bool = False) -> list[Building]:
         return _folder_portfolio(path, given, allow_outside)
     problems: list[Problem] = []
     report = SheetReport(given, None, problems)
-    try:
-        book = xlsx.Book(path)
-    except xlsx.Unreadable as error:
-        report(error.message, error.fix)
-        raise InputError(problems) from None
-    with book:
+    with open_book(path, report) as book:
         by_lower = {title.strip().lower(): title for title in book.sheetnames}
         title = by_lower.get(BUILDINGS.name)
         if title is None or not book.is_table(title):

@@ -105,12 +105,7 @@ def read_workbook(path: str | Path) -> Inventory:
     path = Path(path)
     problems: list[Problem] = []
     report = SheetReport(given, None, problems)
-    try:
-        book = xlsx.Book(path)
-    except xlsx.Unreadable as error:
-        report(error.message, error.fix)
-        raise InputError(problems) from None
-    with book:
+    with open_book(path, report) as book:
         sheets = _find_sheets(book, report)
         reports = {name: SheetReport(given, title, problems) for name, title in sheets.items()}
         tables = {}
@@ -134,6 +129,15 @@ def read_workbook(path: str | Path) -> Inventory:
 
 
 # ---------------------------------------------------------------- the file
+
+def open_book(path: Path, report: SheetReport) -> xlsx.Book:
+    """The workbook at ``path``, open; one that cannot be read is reported and raised as an InputError."""
+    try:
+        return xlsx.Book(path)
+    except xlsx.Unreadable as error:
+        report(error.message, error.fix)
+        raise InputError(report.problems) from None
+
 
 def _find_sheets(book: xlsx.Book, report: SheetReport) -> dict[str, str]:
     """Sheet titles by spec name (matched case-insensitively); missing required sheets reported."""
