@@ -2,9 +2,10 @@
 
 The decisions stage of the assessment (:func:`decide`, after the demand
 stage :mod:`assess.assessment.demand`): every function here is a pure
-function of an item's governing demand and the settings. The risk rule is one function, :func:`classify_risk`, fed by the
-demand (``p_beyond_clearance``, ``p_overturn``, ``uplift``): replacing the
-rule means replacing that function. What the report says about an item is
+function of an item's governing demand and the settings. The risk rule is
+one function, :func:`classify_risk`, fed by the demand
+(``p_beyond_clearance``, ``p_overturn``, ``uplift``): replacing the rule
+means replacing that function. What the report says about an item is
 built from these fields (:mod:`assess.report.sentences`); the columns are
 those of ``summary.csv`` (docs/outputs.md).
 """
