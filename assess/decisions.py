@@ -49,7 +49,7 @@ class Decisions:
 def decide(equipment: pd.DataFrame, governing: dict, uplift: dict, cases: pd.DataFrame, at_mu_ends: pd.DataFrame,
            constants: RegressionConstants, settings: dict) -> Decisions:
     """Every item's decisions from its governing demand (``governing``: id -> its demand row,
-    :func:`assess.assessment.demand.governing_rows`; ``uplift``: id -> whether it uplifts; ``cases``: the
+    :func:`assess.assessment.demand.item_rows`; ``uplift``: id -> whether it uplifts; ``cases``: the
     cases at the workbook's μ; ``at_mu_ends``: the demand at the ends of a μ range).
 
     An anchored item is not analysed (:data:`ANCHORED`); a freestanding one gets :func:`item_flags`,
