@@ -27,6 +27,8 @@ from assess.mechanics.modes import ROCK, SLIDE_ROCK
 from assess.result import Flag
 
 UPLIFT_MODES = (ROCK, SLIDE_ROCK)
+
+
 def item_consequence(item) -> str:
     """What an item's failure costs (the workbook's ``consequence``; ``ordinary`` where not given)."""
     return str(getattr(item, "consequence", "") or "ordinary")
@@ -62,7 +64,8 @@ def decide(equipment: pd.DataFrame, governing: dict, uplift: dict, cases: pd.Dat
         if item.anchored:
             by_item[item.id] = {**ANCHORED, **decided}
             continue
-        row = {"consequence": item_consequence(item), "clearance_cm": item.clearance_m * 100.0, **governing[item.id]}
+        row = {"consequence": item_consequence(item), "clearance_cm": item.clearance_m * 100.0,
+               **governing[item.id]}
         found = item_flags(item, cases[cases["id"] == item.id], constants)
         flags.extend(found)
         decided["flags"] = tuple(flag.code for flag in found)

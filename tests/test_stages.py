@@ -72,7 +72,8 @@ def test_decisions_follow_the_thresholds_and_rank_the_items():
         "low", "moderate", "high", "high", "anchored"]
     assert [by_item[i]["action_kind"] for i in ("LOW", "MID", "HIGH", "TIPS")] == ["none", "room", "restrain", "anchor"]
     assert by_item["TIPS"]["action"] == "Anchor: it overturns under 1 of its 3 motions"
-    assert by_item["MID"]["action"].startswith("Give it room, or restrain it: it needs 42 cm to be low risk and has 30 cm")
+    assert by_item["MID"]["action"].startswith(
+        "Give it room, or restrain it: it needs 42 cm to be low risk and has 30 cm")
     # ordinary items: overturning 1/3 outranks 0.5 x 0.6 sliding, then 0.5 x 0.2; no action and anchored last, by id
     assert sorted(by_item, key=lambda i: by_item[i]["priority"]) == ["TIPS", "HIGH", "MID", "FIXED", "LOW"]
     assert decided.flags == [] and all(by_item[i]["flags"] == () for i in governing)
