@@ -56,7 +56,8 @@ from assess.hazard.records import check_record_location
 from assess.inventory import read_workbook, schema
 from assess.inventory.schema import Column, SheetSpec
 from assess.inventory.workbook import SheetReport, open_book, read_table, sheet_cells
-from assess.folders import OUTPUT_NAMES, folder_mode, refuse_foreign_files, swap_folder, write_files
+from assess.folders import (OUTPUT_NAMES, existing_folder, folder_mode, refuse_foreign_files, swap_folder,
+                            write_files)
 from assess.tables import csv_text, restore_text
 
 #: The sheet of a portfolio workbook (docs/workbook.md).
@@ -360,11 +361,8 @@ def check_portfolio_folder(out_dir: Path) -> None:
     main job writes (:data:`assess.folders.OUTPUT_NAMES`).
     """
     out_dir = Path(out_dir)
-    if not out_dir.exists() and not out_dir.is_symlink():
+    if not existing_folder(out_dir, "batch run"):
         return
-    if not out_dir.is_dir():
-        raise InputError([Problem(file=str(out_dir), message="the output folder is a file, not a folder.",
-                                  fix="give --out a new folder, or the folder of an earlier batch run.")])
     foreign = []
     for entry in sorted(out_dir.iterdir(), key=lambda p: p.name):
         name = entry.name

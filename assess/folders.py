@@ -32,13 +32,20 @@ def check_output_folder(out_dir: Path) -> None:
     of the user's own documents is refused before anything runs.
     """
     out_dir = Path(out_dir)
+    if existing_folder(out_dir, "run"):
+        foreign = sorted(entry.name for entry in out_dir.iterdir() if entry.name not in OUTPUT_NAMES)
+        refuse_foreign_files(out_dir, foreign)
+
+
+def existing_folder(out_dir: Path, run: str) -> bool:
+    """Whether the output folder exists (False: it will be made); one that is a file is refused, naming
+    what ``--out`` takes instead (a new folder, or that of an earlier ``run``)."""
     if not out_dir.exists() and not out_dir.is_symlink():
-        return
+        return False
     if not out_dir.is_dir():
         raise InputError([Problem(file=str(out_dir), message="the output folder is a file, not a folder.",
-                                  fix="give --out a new folder, or the folder of an earlier run.")])
-    foreign = sorted(entry.name for entry in out_dir.iterdir() if entry.name not in OUTPUT_NAMES)
-    refuse_foreign_files(out_dir, foreign)
+                                  fix=f"give --out a new folder, or the folder of an earlier {run}.")])
+    return True
 
 
 def refuse_foreign_files(out_dir: Path, foreign: list[str], command: str = "assess", run: str = "run") -> None:
