@@ -17,7 +17,7 @@ from typing import Callable, Iterator
 
 import numba
 
-from assess import batch, output, pipeline
+from assess import batch, output, pipeline, report
 from assess.assessment.inputs import check_inputs
 from assess.cache import CachingRunner
 from assess.calibration import read_measured, run_calibration
@@ -29,7 +29,6 @@ from assess.hazard.openquake import read_openquake_hazard
 from assess.inventory import read_workbook
 from assess.mechanics.runner import LocalRunner
 from assess.folders import check_output_folder
-from assess.report import render_pdf
 from assess.report.calibration import render_calibration_html
 from assess.result import AssessmentResult
 from assess.tables import csv_text, restore_text, summary_text
@@ -269,5 +268,5 @@ def run_calibrate(workbook: Path, measured_path: Path, out: Path | None, formats
         if "html" in formats:
             files["report.html"] = html.encode()
         if "pdf" in formats:
-            files["report.pdf"] = render_pdf(html)
+            files["report.pdf"] = report.render_pdf(html)
     return result, files, out_dir

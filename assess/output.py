@@ -6,8 +6,8 @@ formulas (:func:`assess.tables.neutralise_formulas`).
 """
 from __future__ import annotations
 
+from assess import report
 from assess.fragility.stripes import fragility_files
-from assess.report import render_html, render_pdf
 from assess.report.spreadsheet import summary_workbook
 from assess.result import AssessmentResult
 from assess.tables import csv_text, neutralise_formulas, restore_text, summary_text  # noqa: F401 (re-exported)
@@ -36,9 +36,9 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: st
     if result.comparison is not None:
         files["comparison.csv"] = csv_text(result.comparison).encode()
     if "html" in formats or "pdf" in formats:
-        html = render_html(result)
+        html = report.render_html(result)
         if "html" in formats:
             files["report.html"] = html.encode()
         if "pdf" in formats:
-            files["report.pdf"] = render_pdf(html)
+            files["report.pdf"] = report.render_pdf(html)
     return files
