@@ -31,6 +31,8 @@ from __future__ import annotations
 
 import contextlib
 import hashlib
+import importlib.metadata
+import io
 import json
 import os
 import re
@@ -43,13 +45,22 @@ from typing import Callable
 
 import pandas as pd
 
+import assess
+from assess import output, pipeline
+from assess.assessment.inputs import check_inputs
 from assess.batch_report import building_row, changes_between, portfolio_html
 from assess.errors import InputError, Problem, raise_if_any
-from assess.inventory import schema, xlsx
+from assess.hazard.motions import select_level
+from assess.hazard.openquake import read_openquake_hazard
+from assess.hazard.records import check_record_location
+from assess.inventory import read_workbook, schema
 from assess.inventory.schema import Column, SheetSpec
-from assess.output import swap_folder
+from assess.inventory.workbook import SheetReport, open_book, read_table, sheet_cells
+from assess.folders import (OUTPUT_NAMES, existing_folder, folder_mode, refuse_foreign_files, swap_folder,
+                            write_files)
+from assess.tables import csv_text, restore_text
 
-#: The sheet of a portfolio workbook (SPEC §6).
+#: The sheet of a portfolio workbook (docs/workbook.md).
 BUILDINGS = SheetSpec("buildings", (
     Column("building", "text", required=True, max_chars=80),
     Column("workbook", "text", required=True, max_chars=255),
@@ -118,14 +129,8 @@ def read_portfolio(path, *, allow_outside: bool = False) -> list[Building]:
     if path.is_dir():
         return _folder_portfolio(path, given, allow_outside)
     problems: list[Problem] = []
-    from assess.inventory.workbook import SheetReport, _read_table, _sheet_cells
     report = SheetReport(given, None, problems)
-    try:
-        book = xlsx.Book(path)
-    except xlsx.Unreadable as error:
-        report(error.message, error.fix)
-        raise InputError(problems) from None
-    with book:
+    with open_book(path, report) as book:
         by_lower = {title.strip().lower(): title for title in book.sheetnames}
         title = by_lower.get(BUILDINGS.name)
         if title is None or not book.is_table(title):
@@ -135,8 +140,8 @@ def read_portfolio(path, *, allow_outside: bool = False) -> list[Building]:
                    "oq_hazard and level (one row per building), or give a folder of workbooks.")
             raise InputError(problems)
         sheet_report = SheetReport(given, title, problems)
-        cells = _sheet_cells(book, title, sheet_report)
-        table = _read_table(BUILDINGS, cells, sheet_report) if cells is not None else None
+        cells = sheet_cells(book, title, sheet_report)
+        table = read_table(BUILDINGS, cells, sheet_report) if cells is not None else None
     raise_if_any(problems)
     if len(table.rows) > MAX_BUILDINGS:
         sheet_report(f"the sheet lists {len(table.rows):,} buildings; a portfolio is read up to "
@@ -189,7 +194,6 @@ def building_name_problem(name: str) -> str | None:
 def _portfolio_file(row, column: str, headers: dict, folder: Path, allow_outside: bool, report,
                     suffixes: tuple[str, ...] | None) -> Path | None:
     """The file a cell names, relative to the portfolio's folder; None after reporting it at the cell."""
-    from assess.hazard.records import check_record_location
     text = str(row.values[column])
     header = headers.get(column)
     what = "workbook" if column == "workbook" else "OpenQuake hazard curve"
@@ -227,7 +231,6 @@ def _portfolio_file(row, column: str, headers: dict, folder: Path, allow_outside
 
 def _folder_portfolio(folder: Path, given: str, allow_outside: bool) -> list[Building]:
     """Every ``*.xlsx`` directly in ``folder``, each a building named by its file's stem."""
-    from assess.hazard.records import check_record_location
     problems = []
     try:
         entries = sorted(folder.iterdir(), key=lambda p: p.name)
@@ -273,23 +276,22 @@ class PreparedBuilding:
     inventory: object
     level: str
     curve: object = None  # an OpenQuakeHazard, or None
+    allow_records_outside: bool = False
 
 
 def prepare_buildings(buildings: list[Building], *, level: str | None = None, oq_hazard=None,
-                      hazard_problems: Callable[[object], list[Problem]] = lambda inventory: [],
+                      allow_records_outside: bool = False,
                       say: Callable[[str], None] = lambda message: None) -> list[PreparedBuilding]:
     """Read every building's workbook and hazard curve and choose its level, before anything runs.
 
     A building's level is its row's ``level``, else ``level`` (``--hazard``),
     else the one level its workbook defines (a workbook with several needs one
     of the other two). A building's curve is its row's ``oq_hazard``, else
-    ``oq_hazard`` (``--oq-hazard``: a path, read once for all). ``hazard_problems``
-    is what the main command refuses in a hazard sheet (records outside the
-    workbook's folder...). Every problem of every building is raised together.
+    ``oq_hazard`` (``--oq-hazard``: a path, read once for all). What the main command
+    refuses in a hazard sheet is refused here too (:func:`assess.assessment.inputs.hazard_problems`:
+    records outside the workbook's folder unless ``allow_records_outside``, a vp of 0). Every problem of
+    every building is raised together.
     """
-    from assess.hazard.motions import select_level
-    from assess.hazard.openquake import read_openquake_hazard
-    from assess.inventory import read_workbook
     problems: list[Problem] = []
     curves: dict[Path, object] = {}
 
@@ -315,9 +317,7 @@ def prepare_buildings(buildings: list[Building], *, level: str | None = None, oq
         say(f"checking {building.name} ({building.workbook.name})")
         try:
             inventory = read_workbook(building.workbook)
-            found = hazard_problems(inventory)
-            if found:
-                raise InputError(found)
+            check_inputs(inventory, allow_records_outside)
             chosen = building.level or level
             if chosen is None:
                 levels = list(dict.fromkeys(inventory.hazard["level_label"]))
@@ -346,7 +346,7 @@ def prepare_buildings(buildings: list[Building], *, level: str | None = None, oq
         except InputError as error:
             problems.extend(error.problems)
             continue
-        prepared.append(PreparedBuilding(building, inventory, chosen, curve))
+        prepared.append(PreparedBuilding(building, inventory, chosen, curve, allow_records_outside))
     raise_if_any(problems)
     return prepared
 
@@ -358,15 +358,11 @@ def check_portfolio_folder(out_dir: Path) -> None:
 
     It may be new, or hold what a batch writes: :data:`PORTFOLIO_FILES`, the
     cache and previous summaries, and building folders holding only what the
-    main job writes (:data:`assess.output.OUTPUT_NAMES`).
+    main job writes (:data:`assess.folders.OUTPUT_NAMES`).
     """
-    from assess.output import OUTPUT_NAMES, refuse_foreign_files
     out_dir = Path(out_dir)
-    if not out_dir.exists() and not out_dir.is_symlink():
+    if not existing_folder(out_dir, "batch run"):
         return
-    if not out_dir.is_dir():
-        raise InputError([Problem(file=str(out_dir), message="the output folder is a file, not a folder.",
-                                  fix="give --out a new folder, or the folder of an earlier batch run.")])
     foreign = []
     for entry in sorted(out_dir.iterdir(), key=lambda p: p.name):
         name = entry.name
@@ -447,8 +443,6 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
     files are those that run wrote; the others are assessed, their simulations
     reused from the cache where their cases did not change.
     """
-    from assess.output import csv_text, render_outputs
-    from assess.pipeline import run_assessment
 
     out_dir = Path(out_dir)
     if out_dir.is_symlink():
@@ -460,7 +454,7 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
     staging = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}-new-", dir=out_dir.parent))
     staged = StagedPortfolio(out_dir, staging, pd.DataFrame(), pd.DataFrame())
     try:
-        os.chmod(staging, (out_dir.stat().st_mode & 0o7777) if out_dir.is_dir() else 0o777 & ~_umask())
+        os.chmod(staging, folder_mode(out_dir))
         rows, current, manifest = [], {}, {}
         version = code_version()
         total = len(prepared)
@@ -473,7 +467,7 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
             key = building_key(item, seed=seed, formats=formats, units=units, version=version)
             kept = _unchanged_folder(out_dir / building.name, before_manifest.get(building.name), key)
             if kept is not None:
-                _write_files(staging / building.name, kept)
+                write_files(staging / building.name, kept)
                 entry = dict(before_manifest[building.name])
                 summary = _restored_summary(kept["summary.csv"])
                 simulated, reused, level_label = 0, int(entry["cases"]), str(entry["level_label"])
@@ -483,11 +477,11 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
                 before = (runner.cases_simulated, runner.cases_reused)
                 # the curve integrates the fragilities into annual rates; it does not rescale the motions
                 # (that is the main command's --oq-hazard), so the level's simulations never depend on it
-                result = run_assessment(item.inventory, item.level, seed=seed, runner=runner,
-                                        hazard_curve=item.curve,
+                result = pipeline.run_assessment(item.inventory, item.level, seed=seed, runner=runner,
+                                        hazard_curve=item.curve, allow_records_outside=item.allow_records_outside,
                                         progress=lambda message, tag=tag: say(f"{tag}: {message}"))
-                files = render_outputs(result, formats, units=units)
-                _write_files(staging / building.name, files)
+                files = output.render_outputs(result, formats, units=units)
+                write_files(staging / building.name, files)
                 simulated, reused = runner.cases_simulated - before[0], runner.cases_reused - before[1]
                 summary, level_label = result.summary, result.level_label
                 entry = dict(key=key, cases=simulated + reused, level_label=level_label,
@@ -514,7 +508,7 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
                  MANIFEST: (json.dumps(manifest, indent=1, sort_keys=True) + "\n").encode()}
         for name, data in previous.values():
             files[f"{PREVIOUS_FOLDER}/{name}/summary.csv"] = data
-        _write_files(staging, files)
+        write_files(staging, files)
         staged.files = sorted(n for n in files if n != MANIFEST) + [f"{name}/" for name in current]
         return staged
     except BaseException:
@@ -526,9 +520,6 @@ def code_version() -> str:
     """Hash of the code an output folder depends on: every file of the ``assess`` package and the
     report templates, and the versions of the libraries that compute or draw (numpy, numba, pandas,
     matplotlib)."""
-    import importlib.metadata
-
-    import assess
     digest = hashlib.blake2b(digest_size=16)
     package = Path(assess.__file__).resolve().parent
     folders = [package, package.parent / "templates"]
@@ -610,24 +601,8 @@ def _unchanged_folder(folder: Path, entry: dict | None, key: str) -> dict[str, b
 
 def _restored_summary(data: bytes) -> pd.DataFrame:
     """summary.csv as the assessment's table: numbers as numbers, text as it was before neutralising."""
-    import io
-
-    from assess.output import restore_text
     return restore_text(pd.read_csv(io.BytesIO(data), dtype={"id": str, "name": str}, keep_default_na=False,
                                     na_values=[""]))
-
-
-def _write_files(folder: Path, files: dict[str, bytes]) -> None:
-    for name, content in files.items():
-        target = folder / name
-        target.parent.mkdir(parents=True, exist_ok=True)
-        target.write_bytes(content)
-
-
-def _umask() -> int:
-    umask = os.umask(0)
-    os.umask(umask)
-    return umask
 
 
 def _previous_summaries(out_dir: Path) -> dict[str, tuple[str, bytes]]:

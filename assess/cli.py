@@ -8,19 +8,18 @@ head``), as for any command stopped by a closed pipe.
 from __future__ import annotations
 
 import argparse
-import contextlib
-import os
-import signal
+import json
 import sys
 import traceback
 from pathlib import Path
 
 from assess import __version__
-from assess.errors import InputError, Problem, raise_if_any
+from assess.errors import InputError, Problem
+from assess.folders import write_file_atomically
+from assess.interrupts import (Interrupt, caused_by, held_back, interrupted, reader_gone, sigint_recorded,
+                               write_uninterrupted)
 
 EXIT_OK, EXIT_INTERNAL, EXIT_INPUT = 0, 1, 2
-#: 128 + the signal's number, as a shell reports a command a signal stopped.
-EXIT_INTERRUPTED, EXIT_BROKEN_PIPE = 128 + signal.SIGINT, 128 + 13
 EPILOG = ("Exit codes: 0 done; 2 the input is wrong (each problem is named); 1 internal error; "
           "130 interrupted (Ctrl-C).")
 FORMATS = ("html", "pdf")
@@ -199,7 +198,7 @@ def build_simulate_parser() -> argparse.ArgumentParser:
                           "general: Moreau-Jean time stepping; event-driven: the reference solver")
     run.add_argument("--history", metavar="CSV", type=Path,
                      help="also write time_s, floor_accel_g, sliding_cm, theta_over_alpha to CSV")
-    run.add_argument("--json", action="store_true", help="print one JSON object (SPEC section 4)")
+    run.add_argument("--json", action="store_true", help="print one JSON object (docs/commands.md)")
     return parser
 
 
@@ -266,101 +265,17 @@ def build_batch_parser() -> argparse.ArgumentParser:
     return parser
 
 
-class _Interrupt:
-    """Ctrl-C as the run sees it: whether it came, and whether it may stop the run now.
-
-    The SIGINT handler records the interrupt before raising KeyboardInterrupt,
-    so that an interrupt that a library swallows (an exception raised in a
-    cffi callback while WeasyPrint draws the PDF is printed and dropped) or
-    wraps (numba's threads turn it into a SystemError) is still seen. While
-    the output folder is swapped in, it is only recorded, and acted on after.
-    """
-
-    received = False
-    deferred = False
-    written_to: Path | None = None
-
-    @classmethod
-    def handler(cls, signum, frame):
-        cls.received = True
-        if not cls.deferred:
-            raise KeyboardInterrupt
-
-    @classmethod
-    def stop_if_received(cls):
-        if cls.received:
-            raise KeyboardInterrupt
-
-
-@contextlib.contextmanager
-def _sigint_recorded():
-    """Install :meth:`_Interrupt.handler` for the run (only the main thread may), then restore."""
-    _Interrupt.received, _Interrupt.deferred, _Interrupt.written_to = False, False, None
-    try:
-        previous = signal.signal(signal.SIGINT, _Interrupt.handler)
-    except ValueError:  # not the main thread: leave signals alone
-        previous = None
-    try:
-        yield
-    finally:
-        if previous is not None:
-            signal.signal(signal.SIGINT, previous)
-
-
-def _write_uninterrupted(files: dict[str, bytes], out_dir: Path) -> list[Path]:
-    """:func:`assess.output.write_atomically`, Ctrl-C held back until the folder is swapped in."""
-    from assess.output import write_atomically
-    _Interrupt.stop_if_received()  # an interrupt swallowed while rendering stops the run here
-    _Interrupt.deferred = True
-    try:
-        written = write_atomically(files, out_dir)
-        _Interrupt.written_to = Path(out_dir)
-    finally:
-        _Interrupt.deferred = False
-    _Interrupt.stop_if_received()
-    return written
-
-
-def _caused_by(error: BaseException, kind: type) -> bool:
-    """Whether ``error`` is ``kind`` or was raised while handling one (``__cause__``/``__context__``)."""
-    seen = set()
-    while error is not None and id(error) not in seen:
-        if isinstance(error, kind):
-            return True
-        seen.add(id(error))
-        error = error.__cause__ or error.__context__
-    return False
-
-
-def _interrupted() -> int:
-    if _Interrupt.written_to is not None:
-        print(f"assess: interrupted after the outputs were written to {_Interrupt.written_to}.", file=sys.stderr)
-    else:
-        print("assess: interrupted; nothing was written.", file=sys.stderr)
-    return EXIT_INTERRUPTED
-
-
-def _reader_gone() -> int:
-    """stdout's reader closed the pipe: send what is left to /dev/null (Python docs, 'Note on SIGPIPE')."""
-    try:
-        devnull = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(devnull, sys.stdout.fileno())
-    except (OSError, ValueError):
-        pass
-    return EXIT_BROKEN_PIPE
-
-
 def main(argv: list[str] | None = None) -> int:
     """Run one command; returns its exit code (module docstring). Ctrl-C anywhere exits 130, in one line."""
-    with _sigint_recorded():
+    with sigint_recorded():
         try:
             code = _main(argv)
             sys.stdout.flush()
             return code
         except KeyboardInterrupt:
-            return _interrupted()
+            return interrupted()
         except BrokenPipeError:
-            return _reader_gone()
+            return reader_gone()
 
 
 def _main(argv: list[str] | None) -> int:
@@ -378,7 +293,7 @@ def _main(argv: list[str] | None) -> int:
 
     def say(message: str) -> None:
         """Progress, to stderr; also where an interrupt a library swallowed stops the run."""
-        _Interrupt.stop_if_received()
+        Interrupt.stop_if_received()
         if not quiet:
             print(f"assess: {message}", file=sys.stderr)
 
@@ -389,10 +304,10 @@ def _main(argv: list[str] | None) -> int:
         print("Nothing was written.", file=sys.stderr)
         return EXIT_INPUT
     except Exception as error:  # noqa: BLE001 - the one place that turns a bug into exit code 1
-        if _Interrupt.received or _caused_by(error, KeyboardInterrupt):  # e.g. SystemError from numba
-            return _interrupted()
-        if _caused_by(error, BrokenPipeError):
-            return _reader_gone()
+        if Interrupt.received or caused_by(error, KeyboardInterrupt):  # e.g. SystemError from numba
+            return interrupted()
+        if caused_by(error, BrokenPipeError):
+            return reader_gone()
         traceback.print_exc()
         print("assess: internal error (a bug, not your input): please report it with the "
               "traceback above. Nothing was written.", file=sys.stderr)
@@ -400,116 +315,29 @@ def _main(argv: list[str] | None) -> int:
 
 
 def _assess(args: argparse.Namespace, say) -> int:
-    from assess.inventory import read_workbook
-    from assess.output import check_output_folder, render_outputs
-    from assess.pipeline import run_assessment
+    from assess import job  # the core: seconds to import, not needed for --help or a wrong option
 
-    levels = _levels(args.hazard)
-    if args.jobs is not None:
-        import numba
-        numba.set_num_threads(min(args.jobs, numba.config.NUMBA_NUM_THREADS))
-    out_dirs = [_level_out_dir(args.out, args.workbook, name, several=len(levels) > 1) for name, _ in levels]
-    for out_dir in out_dirs:
-        check_output_folder(out_dir)
-    say(f"reading {args.workbook}")
-    inventory = read_workbook(args.workbook)
-    raise_if_any(_hazard_problems(inventory, args.allow_records_outside))
-    oq_hazard = None
-    if args.oq_hazard is not None:
-        from assess.hazard.openquake import read_openquake_hazard
-        oq_hazard = read_openquake_hazard(args.oq_hazard, site=_oq_site(args.oq_site))
-        if oq_hazard.kind != "curve":
-            say(f"{args.oq_hazard.name} is a hazard map: the motions are scaled to it; annual rates need a "
-                "hazard curve")
-    calibration = None
-    if args.calibration is not None:
-        from assess.calibration.apply import read_calibration
-        calibration = read_calibration(args.calibration)
-    if args.scheduler is not None:
-        say(f"connecting to the Dask scheduler at {args.scheduler}")
-    runner = _engine_runner(args.scheduler)  # this machine's threads, or a Dask cluster
-    results = []
-    try:
-        for (_, text), out_dir in zip(levels, out_dirs):  # every level computed before any is written
-            result = run_assessment(inventory, text, seed=args.seed, progress=say, oq_hazard=oq_hazard,
-                                    derive_floors_roof=args.derive_floors, calibration=calibration, runner=runner,
-                                    hazard_curve=oq_hazard if oq_hazard is not None and oq_hazard.kind == "curve"
-                                    else None)
-            results.append(_with_comparison(result, args.compare_with, out_dir / "summary.csv", say))
-    finally:
-        close = getattr(runner, "close", None)  # a cluster's client
-        if close is not None:
-            close()
-    for result, out_dir in zip(results, out_dirs):
-        say(f"rendering {result.level_label}: " + ", ".join(["summary.csv", "motions.csv"] + [
-            "summary.xlsx" if f == "xlsx" else f"report.{f}" for f in args.format]
-            + (["fragility/"] if result.curve_risk is not None else [])))
-        others = tuple(other for other in results if other is not result)
-        files = render_outputs(result, args.format, units=args.units, other_levels=others)
-        written = _write_uninterrupted(files, out_dir)
-        counts = result.risk_counts()
-        say(f"{result.level_label}: {counts['high']} high, {counts['moderate']} moderate, {counts['low']} low risk, "
-            f"{counts['anchored']} anchored")
+    levels = job.run_job(job.AssessmentJob(
+        args.workbook, args.hazard, out=args.out, formats=args.format, units=args.units, jobs=args.jobs,
+        seed=args.seed, oq_hazard=args.oq_hazard, oq_site=args.oq_site, derive_floors=args.derive_floors,
+        calibration=args.calibration, compare_with=args.compare_with, scheduler=args.scheduler,
+        allow_records_outside=args.allow_records_outside), say)
+    for level in levels:
+        written = write_uninterrupted(level.files, level.out_dir)
+        counts = level.result.risk_counts()
+        say(f"{level.result.level_label}: {counts['high']} high, {counts['moderate']} moderate, {counts['low']} "
+            f"low risk, {counts['anchored']} anchored")
         for path in written:
             print(path)
     return EXIT_OK
 
 
-def _levels(text: str) -> list[tuple[str, str]]:
-    """``--hazard`` as (folder name, text) per level, in order; a level given twice is refused."""
-    from assess.hazard.levels import parse_level
-
-    levels, seen = [], {}
-    for part in [p.strip() for p in str(text).split(",")]:
-        try:
-            name = parse_level(part).name
-        except ValueError as error:
-            raise InputError([Problem(file="--hazard", message=str(error))]) from None
-        if name in seen:
-            raise InputError([Problem(file="--hazard", message=f"'{part}' is the level '{seen[name]}' again.",
-                                      fix="give each level once.")])
-        seen[name] = part
-        levels.append((name, part))
-    return levels
-
-
-def _level_out_dir(out: Path | None, workbook: Path, level_name: str, several: bool) -> Path:
-    """Where a level's files go: ``--out`` (one level), ``--out/<LEVEL>`` (several), else the default."""
-    if out is None:
-        return Path("reports") / f"{workbook.stem}-{level_name}"
-    return out / level_name if several else out
-
-
 def _calibrate(args: argparse.Namespace, say) -> int:
-    import json
+    from assess import job  # the core: seconds to import, not needed for --help or a wrong option
 
-    from assess.calibration import read_measured, run_calibration
-    from assess.inventory import read_workbook
-    from assess.output import check_output_folder, csv_text
-
-    out_dir = args.out or Path("reports") / f"{args.workbook.stem}-calibration"
-    check_output_folder(out_dir)
-    say(f"reading {args.workbook}")
-    inventory = read_workbook(args.workbook)
-    raise_if_any(_hazard_problems(inventory, args.allow_records_outside))
-    measured = read_measured(args.measured, inventory)
-    say(f"{len(measured)} measured tests; fitting the effects")
-    result = run_calibration(inventory, measured,
-                             progress=lambda done, total: say(f"fitted {done} of {total} candidate effects"))
-    tests = result.diagnosis.join(result.residuals_before.drop(columns=["specimen", "motion", "direction"])
-                                  .add_suffix("_before")).join(
-        result.residuals_after.drop(columns=["specimen", "motion", "direction"]).add_suffix("_after"))
-    files = {"calibration.json": (json.dumps(result.as_json(), indent=2) + "\n").encode(),
-             "calibration_tests.csv": csv_text(tests).encode()}
-    if args.format:
-        from assess.report import render_pdf
-        from assess.report.calibration import render_calibration_html
-        html = render_calibration_html(result, args.workbook.name, args.measured.name)
-        if "html" in args.format:
-            files["report.html"] = html.encode()
-        if "pdf" in args.format:
-            files["report.pdf"] = render_pdf(html)
-    written = _write_uninterrupted(files, out_dir)
+    result, files, out_dir = job.run_calibrate(args.workbook, args.measured, args.out, args.format,
+                                               args.allow_records_outside, say)
+    written = write_uninterrupted(files, out_dir)
     similar = f"; indistinguishable from {', '.join(result.indistinguishable_from)}" \
         if result.indistinguishable_from else ""
     say(f"selected: {result.selected} {result.parameters or ''}{similar}")
@@ -519,154 +347,28 @@ def _calibrate(args: argparse.Namespace, say) -> int:
 
 
 def _batch(args: argparse.Namespace, say) -> int:
-    from assess import batch
-    from assess.cache import CachingRunner
-    from assess.hazard.levels import parse_level
+    from assess import job  # the core: seconds to import, not needed for --help or a wrong option
 
-    if args.hazard is not None:
-        try:
-            parse_level(args.hazard)
-        except ValueError as error:
-            raise InputError([Problem(file="--hazard", message=str(error))]) from None
-    if args.jobs is not None:
-        import numba
-        numba.set_num_threads(min(args.jobs, numba.config.NUMBA_NUM_THREADS))
-    out_dir = args.out or batch.default_out_dir(args.portfolio)
-    batch.check_portfolio_folder(out_dir)
-    say(f"reading {args.portfolio}")
-    buildings = batch.read_portfolio(args.portfolio, allow_outside=args.allow_files_outside)
-    prepared = batch.prepare_buildings(
-        buildings, level=args.hazard, oq_hazard=args.oq_hazard,
-        hazard_problems=lambda inventory: _hazard_problems(inventory, args.allow_files_outside), say=say)
-    runner = CachingRunner(_engine_runner(args.scheduler), Path(out_dir) / batch.CACHE_FOLDER)
-    say(f"{len(prepared)} buildings; results are reused from {Path(out_dir) / batch.CACHE_FOLDER}")
+    staged, runner, out_dir = job.run_batch(job.BatchJob(
+        args.portfolio, out=args.out, hazard=args.hazard, oq_hazard=args.oq_hazard, scheduler=args.scheduler,
+        formats=args.format, seed=args.seed, jobs=args.jobs, allow_files_outside=args.allow_files_outside), say)
     try:
-        staged = batch.run_portfolio(prepared, out_dir, runner=runner, seed=args.seed, formats=args.format,
-                                     say=say)
-    finally:
-        close = getattr(runner.inner, "close", None)  # a cluster's client
-        if close is not None:
-            close()
-    try:
-        _Interrupt.stop_if_received()
-        _Interrupt.deferred = True
-        try:
+        with held_back(out_dir):
             staged.commit()
-            _Interrupt.written_to = Path(out_dir)
-        finally:
-            _Interrupt.deferred = False
     finally:
         staged.discard()
-    _Interrupt.stop_if_received()
     for message in runner.write_errors[:3]:
         say(f"could not store results in the cache ({message}); they will be simulated again next time")
     changed = staged.changes["change"].value_counts()
     say(f"{staged.cases_simulated} cases simulated, {staged.cases_reused} reused; changes since the previous "
         f"run: " + (", ".join(f"{n} {kind}" for kind, n in changed.items()) or "none"))
     for name in staged.files:
-        print(Path(out_dir) / name)
+        print(out_dir / name)
     return EXIT_OK
 
 
-def _engine_runner(scheduler):
-    """What simulates the cases the cache does not hold: this machine's threads, or a Dask cluster."""
-    from assess.mechanics.runner import LocalRunner
-    if scheduler is None:
-        return LocalRunner()
-    try:
-        import distributed  # noqa: F401 - Dask is the optional extra assess[cluster]
-    except ImportError:
-        raise InputError([Problem(file="--scheduler", message="running on a Dask cluster needs Dask, which this "
-                                  "installation of assess lacks.",
-                                  fix='pip install "assess[cluster]" (here and on the workers), or leave out '
-                                      "--scheduler to run on this machine's cores.")]) from None
-    from assess.mechanics.distributed import DaskRunner
-    return DaskRunner.connect(scheduler)
-
-
-def _with_comparison(result, explicit: Path | None, in_out_dir: Path, say):
-    """``result`` with its comparison against a previous summary.
-
-    An explicit ``--compare-with`` file must be a summary (else exit 2); the
-    summary.csv already in the output folder is used when it is one, and
-    skipped with a note when it is not.
-    """
-    from dataclasses import replace
-
-    from assess.comparison import compare_summaries, read_previous_summary
-    from assess.output import restore_text
-    if explicit is not None:
-        previous = read_previous_summary(explicit)
-    elif in_out_dir.is_file():
-        try:
-            previous = read_previous_summary(in_out_dir)
-        except InputError as error:
-            say(f"not comparing with {in_out_dir}: {error.problems[0].message}")
-            return result
-    else:
-        return result
-    previous = restore_text(previous)  # the text summary.csv protects from spreadsheet formulas
-    say(f"comparing with the previous run {explicit or in_out_dir}")
-    return replace(result, comparison=compare_summaries(previous, result.summary))
-
-
-def _hazard_problems(inventory, allow_records_outside: bool) -> list[Problem]:
-    """What in the hazard sheet the run must refuse before reading any record or simulating.
-
-    * a record outside the workbook's folder (:func:`assess.hazard.records.check_record_location`),
-      unless ``--allow-records-outside``;
-    * ``vp`` = 0: a velocity pulse has a non-zero amplitude (a pulse of
-      acceleration ap and period Tp reaches vp = ap Tp / 2 pi for Type B), so a
-      0 is a placeholder, not a measurement. Read as "no vp" it would silently
-      change how the motion is simulated (its pulse instead of synthetic
-      near-fault histories), so it is refused and the user says which is meant.
-    """
-    import math
-
-    from assess.hazard.records import check_record_location
-    workbook = Path(inventory.path)
-    problems = []
-    for row in inventory.hazard.itertuples(index=False):
-        for column in ("record", "record_2"):
-            record_path = str(getattr(row, f"{column}_path", "") or "")
-            why = check_record_location(record_path, workbook.parent) if record_path else None
-            if why and not allow_records_outside:
-                problems.append(Problem(file=workbook.name, sheet="hazard", row=int(row.row), column=column,
-                                        message=f"motion '{row.motion}': {why}",
-                                        fix="copy the record into the workbook's folder (or a subfolder) and "
-                                            "give its path relative to the workbook, or run with "
-                                            "--allow-records-outside if you trust this workbook."))
-        vp = float(row.vp_m_s)
-        if not math.isnan(vp) and vp == 0.0:
-            problems.append(Problem(file=workbook.name, sheet="hazard", row=int(row.row), column="vp_cm_s",
-                                    message=f"motion '{row.motion}': the pulse velocity vp is 0; a velocity "
-                                            "pulse has a non-zero amplitude.",
-                                    fix="give the pulse's peak velocity (e.g. -75 cm/s for Los Gatos), or "
-                                        "leave the cell empty to simulate the motion's pulse from PTA and Tp."))
-    return problems
-
-
-def _oq_site(text):
-    """--oq-site as read_openquake_hazard takes it: None, a row index, (lon, lat) or an id."""
-    if text is None:
-        return None
-    if text.strip().isdigit():
-        return int(text)
-    parts = text.split(",")
-    if len(parts) == 2:
-        try:
-            return (float(parts[0]), float(parts[1]))
-        except ValueError:
-            pass
-    return text
-
-
 def _simulate(args: argparse.Namespace, say) -> int:
-    import json
-
-    from assess.hazard.records import MIN_DURATION_S, pulse_record, read_record
-    from assess.mechanics.block import Block
-    from assess.simulation import simulate_item
+    from assess import simulation  # the engine: seconds to import, not needed for --help or a wrong option
 
     problems = []
     if (args.record is None) == (args.pulse is None):
@@ -694,60 +396,17 @@ def _simulate(args: argparse.Namespace, say) -> int:
                                 fix="give a file name, e.g. --history history.csv."))
     if problems:
         raise InputError(problems)
-    block = Block(half_width_m=args.width_cm / 200.0, cg_height_m=cg_cm / 100.0,
-                  height_m=args.height_cm / 100.0, mu=args.mu, mu_static=mu_static,
-                  restitution=args.restitution)
-    if args.record is not None:
-        motion, period = read_record(args.record, min_duration_s=MIN_DURATION_S, scale=args.scale), None
-    else:
-        motion, period = pulse_record(args.pulse, args.ap_g, args.tp_s, args.dt_s), args.tp_s
-    run = simulate_item(block, motion, pulse_period_s=period, tail_s=args.tail_s, solver=args.solver,
-                        return_history=args.history is not None)
+    block = simulation.Block(half_width_m=args.width_cm / 200.0, cg_height_m=cg_cm / 100.0,
+                             height_m=args.height_cm / 100.0, mu=args.mu, mu_static=mu_static,
+                             restitution=args.restitution)
+    motion, period = simulation.item_motion(args.record, args.scale, args.pulse, args.ap_g, args.tp_s, args.dt_s)
+    run = simulation.simulate_item(block, motion, pulse_period_s=period, tail_s=args.tail_s, solver=args.solver,
+                                   return_history=args.history is not None)
     if args.history is not None:
-        from assess.output import write_file_atomically
-        _Interrupt.stop_if_received()
-        write_file_atomically(args.history, _history_csv(run))
-    result = run.as_dict()
-    if args.json:
-        print(json.dumps(result, indent=2))
-    else:
-        print(_simulation_text(result))
+        Interrupt.stop_if_received()
+        write_file_atomically(args.history, run.history_csv())
+    print(json.dumps(run.as_dict(), indent=2) if args.json else run.as_text())
     return EXIT_OK
-
-
-def _history_csv(run) -> bytes:
-    import io
-
-    import numpy as np
-    r = run.response
-    floor = np.zeros(r.time_s.size)
-    floor[:min(run.motion.accel_g.size, floor.size)] = run.motion.accel_g[:floor.size]
-    table = np.column_stack([r.time_s, floor, r.sliding_m * 100.0, r.theta_rad / run.block.alpha_rad])
-    buffer = io.StringIO()
-    np.savetxt(buffer, table, delimiter=",", fmt="%.9g",
-               header="time_s,floor_accel_g,sliding_cm,theta_over_alpha", comments="")
-    return buffer.getvalue().encode()
-
-
-def _simulation_text(result: dict) -> str:
-    lines = [
-        f"item: alpha {result['alpha_rad']:.4f} rad, p {result['p_rad_s']:.3f} rad/s, b/h "
-        f"{result['b_over_h']:.3f}, mu {result['mu']:g} (static {result['mu_static']:g}), "
-        f"restitution {result['restitution']:.4f}",
-        f"motion: {result['motion']['name']}, PTA {result['motion']['pta_g']:.3f} g, "
-        f"{result['motion']['duration_s']:.2f} s at dt {result['motion']['dt_s']:g} s",
-        f"mode: {result['mode']} ({' -> '.join(m for _, m in result['mode_sequence'])}; "
-        f"solved by the {result['solver']})",
-        f"sliding: peak {result['sliding_max_cm']:.2f} cm, residual {result['sliding_residual_cm']:.2f} cm",
-        f"rocking: theta_max/alpha {result['theta_max_over_alpha']:.3f}, uplift "
-        f"{'yes' if result['uplift'] else 'no'}, overturned {'yes' if result['overturned'] else 'no'}"
-        + (f" at {result['overturn_time_s']:.2f} s" if result["overturned"] else ""),
-    ]
-    if "regression" in result:
-        reg = result["regression"]
-        lines.append(f"regression (eq. 21): IM {reg['im']:.3f}, median sliding "
-                     f"{reg['sliding_median_cm']:.2f} cm")
-    return "\n".join(lines)
 
 
 if __name__ == "__main__":

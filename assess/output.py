@@ -1,90 +1,16 @@
-"""Writing the run's files so that a failed run leaves nothing half-written.
+"""The files of a run, made in memory from its result (:func:`render_outputs`; docs/outputs.md).
 
-Everything is first produced in memory and written into a temporary folder
-next to the output folder; that folder then takes the output folder's place
-in one rename (:func:`write_atomically`). A run that fails leaves the previous
-folder as it was; one that succeeds leaves exactly its own files, no stale
-``report.pdf`` of an earlier ``--format html,pdf`` run.
-
-Text written to CSV is protected from spreadsheet formulas
-(:func:`neutralise_formulas`).
+They are written by :func:`assess.folders.write_atomically` (all of them, or
+the folder as it was). Text written to CSV is protected from spreadsheet
+formulas (:func:`assess.tables.neutralise_formulas`).
 """
 from __future__ import annotations
 
-import contextlib
-import os
-import re
-import shutil
-import tempfile
-from pathlib import Path
-
-import pandas as pd
-
-from assess.errors import InputError, Problem
+from assess import report
+from assess.fragility.stripes import fragility_files
+from assess.report.spreadsheet import summary_workbook
 from assess.result import AssessmentResult
-
-#: Everything assess writes into an output folder. A folder holding anything
-#: else is not swapped (it would be lost): the user is asked for another one.
-OUTPUT_NAMES = frozenset({
-    "summary.csv", "motions.csv", "comparison.csv", "summary.xlsx", "report.html", "report.pdf",
-    "calibration.json", "calibration_tests.csv", "fragility",
-    ".DS_Store", "Thumbs.db", "desktop.ini",  # what a file browser leaves in a folder it has shown
-})
-#: First characters that make a spreadsheet read a cell as a formula (OWASP, "CSV Injection"):
-#: = + - @, tab and carriage return; and the quote itself, so that the prefix can be undone exactly.
-_FORMULA_START = ("=", "+", "-", "@", "\t", "\r", "'")
-#: Text that is a plain number (e.g. an id "-5") is no formula and is left as it is.
-_PLAIN_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
-
-
-def neutralise_formulas(table: pd.DataFrame) -> pd.DataFrame:
-    """``table`` with every text cell that a spreadsheet would run as a formula made inert.
-
-    A cell written from user text (an item's name ``=HYPERLINK(...)``, a
-    motion ``-M1``) that starts with ``=``, ``+``, ``-``, ``@``, a tab or a
-    carriage return gets a single quote in front, as the OWASP "CSV
-    Injection" page recommends; a spreadsheet then shows it as text. A text
-    starting with a quote gets one more, so that :func:`restore_text` gives
-    back exactly what was written. Only text cells change: numbers (negative
-    ones included) and text that is a plain number (an id ``-5``) are left as
-    they are.
-
-    >>> table = pd.DataFrame({"name": ["=1+2", "-80 freezer", "fridge", "-5"], "x": [-1.5, 2.0, 3.0, 4.0]})
-    >>> neutralise_formulas(table).to_dict("list")
-    {'name': ["'=1+2", "'-80 freezer", 'fridge', '-5'], 'x': [-1.5, 2.0, 3.0, 4.0]}
-    """
-    out = table.copy()
-    for column in out.columns:
-        if _is_text(out[column]):
-            out[column] = out[column].map(_neutralised)
-    return out
-
-
-def _is_text(column: pd.Series) -> bool:
-    """Whether a column may hold text (object or string dtype); numeric columns never change."""
-    return column.dtype == object or pd.api.types.is_string_dtype(column.dtype)
-
-
-def _neutralised(value):
-    if isinstance(value, str) and value.startswith(_FORMULA_START) and not _PLAIN_NUMBER.fullmatch(value):
-        return "'" + value
-    return value
-
-
-def restore_text(table: pd.DataFrame) -> pd.DataFrame:
-    """The text cells of a CSV written through :func:`neutralise_formulas`, as they were."""
-    out = table.copy()
-    for column in out.columns:
-        if _is_text(out[column]):
-            out[column] = out[column].map(
-                lambda v: v[1:] if isinstance(v, str) and v.startswith("'") and v[1:].startswith(_FORMULA_START)
-                else v)
-    return out
-
-
-def csv_text(table: pd.DataFrame) -> str:
-    """A table as CSV text: formulas neutralised, fixed float format so that reruns compare byte for byte."""
-    return neutralise_formulas(table).to_csv(index=False, float_format="%.6g", lineterminator="\n")
+from assess.tables import csv_text, neutralise_formulas, restore_text, summary_text  # noqa: F401 (re-exported)
 
 
 def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: str = "si",
@@ -98,147 +24,21 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: st
     after this level's.
     """
     files = {
-        "summary.csv": csv_text(result.summary).encode(),
+        "summary.csv": csv_text(summary_text(result.summary)).encode(),
         "motions.csv": csv_text(result.motions).encode(),
     }
     if "xlsx" in formats:
-        from assess.report.spreadsheet import summary_workbook
-
-        sheets = {result.level_label: result.summary}
-        sheets.update({other.level_label: other.summary for other in other_levels})
+        sheets = {result.level_label: summary_text(result.summary)}
+        sheets.update({other.level_label: summary_text(other.summary) for other in other_levels})
         files["summary.xlsx"] = summary_workbook(sheets, units=units)
     if result.curve_risk is not None:
-        from assess.fragility.stripes import fragility_files
-
         files.update(fragility_files(result.curve_risk, result.summary))
     if result.comparison is not None:
         files["comparison.csv"] = csv_text(result.comparison).encode()
     if "html" in formats or "pdf" in formats:
-        from assess.report import render_html, render_pdf
-
-        html = render_html(result)
+        html = report.render_html(result)
         if "html" in formats:
             files["report.html"] = html.encode()
         if "pdf" in formats:
-            files["report.pdf"] = render_pdf(html)
+            files["report.pdf"] = report.render_pdf(html)
     return files
-
-
-def check_output_folder(out_dir: Path) -> None:
-    """Refuse an output folder that :func:`write_atomically` may not replace as a whole.
-
-    It may be new, empty, or hold only what assess writes (:data:`OUTPUT_NAMES`):
-    replacing the folder replaces everything in it, so ``--out .`` or a folder
-    of the user's own documents is refused before anything runs.
-    """
-    out_dir = Path(out_dir)
-    if not out_dir.exists() and not out_dir.is_symlink():
-        return
-    if not out_dir.is_dir():
-        raise InputError([Problem(file=str(out_dir), message="the output folder is a file, not a folder.",
-                                  fix="give --out a new folder, or the folder of an earlier run.")])
-    foreign = sorted(entry.name for entry in out_dir.iterdir() if entry.name not in OUTPUT_NAMES)
-    refuse_foreign_files(out_dir, foreign)
-
-
-def refuse_foreign_files(out_dir: Path, foreign: list[str], command: str = "assess", run: str = "run") -> None:
-    """Exit 2 (``InputError``) naming the files in ``out_dir`` that ``command`` did not write, if any."""
-    if foreign:
-        shown = ", ".join(name[:60] for name in foreign[:5]) + (f" and {len(foreign) - 5} more"
-                                                                 if len(foreign) > 5 else "")
-        raise InputError([Problem(
-            file=str(out_dir), message=f"the output folder holds files {command} did not write ({shown}); "
-            f"{command} replaces its output folder as a whole, so these would be lost.",
-            fix=f"give --out a new or empty folder, or the folder of an earlier {run}.")])
-
-
-def write_atomically(files: dict[str, bytes], out_dir: Path) -> list[Path]:
-    """Make ``out_dir`` hold exactly ``files``: all of them, or (on failure) the folder as it was.
-
-    The files are written into a temporary sibling folder, which then takes
-    ``out_dir``'s place: the old folder is renamed aside, the new one renamed
-    in, the old one deleted. A failure (or Ctrl-C) before the second rename
-    renames the old folder back. Only a crash of the machine between the two
-    renames leaves the old folder under its temporary name
-    (``.<name>-old-...`` beside it) instead of ``out_dir``. ``out_dir`` must
-    pass :func:`check_output_folder`. Names may contain ``/`` (a subfolder).
-    """
-    out_dir = Path(out_dir)
-    check_output_folder(out_dir)
-    if out_dir.is_symlink():
-        out_dir = out_dir.resolve()
-    out_dir.parent.mkdir(parents=True, exist_ok=True)
-    staging = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}-new-", dir=out_dir.parent))
-    aside = None
-    try:
-        os.chmod(staging, _folder_mode(out_dir))
-        for name, content in files.items():
-            target = staging / name
-            target.parent.mkdir(parents=True, exist_ok=True)
-            target.write_bytes(content)
-        aside = swap_folder(staging, out_dir)
-        staging = None
-        return [out_dir / name for name in files]
-    finally:
-        for leftover in (staging, aside):
-            if leftover is not None:
-                shutil.rmtree(leftover, ignore_errors=True)
-
-
-def swap_folder(staging: Path, out_dir: Path) -> Path | None:
-    """Put the folder ``staging`` in ``out_dir``'s place, or leave ``out_dir`` as it was.
-
-    The old folder is renamed aside, the new one renamed in; if the second
-    rename fails, the old folder is renamed back and the error raised. Returns
-    where the old folder now lies (the caller deletes it), or None if there was none.
-    """
-    aside = None
-    if out_dir.exists():
-        aside = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}-old-", dir=out_dir.parent))
-        try:
-            os.replace(out_dir, aside)  # aside is an empty folder: rename replaces it
-        except BaseException:
-            shutil.rmtree(aside, ignore_errors=True)
-            raise
-    try:
-        os.replace(staging, out_dir)
-    except BaseException:
-        if aside is not None:
-            os.replace(aside, out_dir)
-        raise
-    return aside
-
-
-def _folder_mode(out_dir: Path) -> int:
-    """Permissions of the new output folder: the old one's, else what the umask gives a new folder."""
-    if out_dir.is_dir():
-        return out_dir.stat().st_mode & 0o7777
-    return 0o777 & ~_umask()
-
-
-def write_file_atomically(path: Path, content: bytes) -> Path:
-    """Write one file (``assess simulate --history``): a temporary sibling renamed over ``path``.
-
-    Other files in its folder are left alone.
-    """
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    handle, temporary = tempfile.mkstemp(prefix=f".{path.name}-", dir=path.parent)
-    try:
-        with os.fdopen(handle, "wb") as stream:
-            stream.write(content)
-        os.chmod(temporary, 0o666 & ~_umask())
-        os.replace(temporary, path)
-        temporary = None
-        return path
-    finally:
-        if temporary is not None:
-            with contextlib.suppress(OSError):
-                os.unlink(temporary)
-
-
-def _umask() -> int:
-    """The process's umask (read by setting it, then put back)."""
-    umask = os.umask(0)
-    os.umask(umask)
-    return umask

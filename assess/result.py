@@ -59,7 +59,9 @@ class AssessmentResult:
     summary : DataFrame
         One row per item, :data:`SUMMARY_COLUMNS`; lengths in cm, accelerations in g.
         ``mode``, ``overturn_fraction``, ``theta_max_over_alpha`` and
-        ``sim_sliding_max_cm`` come from the time-history simulation.
+        ``sim_sliding_max_cm`` come from the time-history simulation. ``flags`` (the codes of the
+        item's :attr:`flags`) and ``demand_source`` (what its governing demand comes from) are tuples;
+        the files join them into text (:func:`assess.tables.summary_text`).
     motions : DataFrame
         One row per freestanding item x motion x direction, :data:`MOTION_COLUMNS`.
         ``direction`` is 1 (along width) or 2 (along depth); ``sim_*`` from the

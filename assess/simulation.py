@@ -7,14 +7,16 @@ item, and returns both in one :class:`ItemSimulation`.
 """
 from __future__ import annotations
 
+import io
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Optional
 
 import numpy as np
 
 from assess.data import default_settings
 from assess.fragility import RegressionConstants, intensity_measure, sliding_quantile
-from assess.hazard.records import Record
+from assess.hazard.records import MIN_DURATION_S, Record, pulse_record, read_record
 from assess.mechanics.block import Block, BlockResponse
 from assess.mechanics.gateway import DEFAULT_TAIL_S, run_responses
 
@@ -73,6 +75,48 @@ class ItemSimulation:
             out["regression"] = {"tp_s": self.pulse_period_s, "im": self.im,
                                  "sliding_median_cm": self.regression_sliding_median_m * M_TO_CM}
         return out
+
+    def as_text(self) -> str:
+        """What ``assess simulate`` prints without ``--json``: :meth:`as_dict` in five or six lines."""
+        result = self.as_dict()
+        lines = [
+            f"item: alpha {result['alpha_rad']:.4f} rad, p {result['p_rad_s']:.3f} rad/s, b/h "
+            f"{result['b_over_h']:.3f}, mu {result['mu']:g} (static {result['mu_static']:g}), "
+            f"restitution {result['restitution']:.4f}",
+            f"motion: {result['motion']['name']}, PTA {result['motion']['pta_g']:.3f} g, "
+            f"{result['motion']['duration_s']:.2f} s at dt {result['motion']['dt_s']:g} s",
+            f"mode: {result['mode']} ({' -> '.join(m for _, m in result['mode_sequence'])}; "
+            f"solved by the {result['solver']})",
+            f"sliding: peak {result['sliding_max_cm']:.2f} cm, residual {result['sliding_residual_cm']:.2f} cm",
+            f"rocking: theta_max/alpha {result['theta_max_over_alpha']:.3f}, uplift "
+            f"{'yes' if result['uplift'] else 'no'}, overturned {'yes' if result['overturned'] else 'no'}"
+            + (f" at {result['overturn_time_s']:.2f} s" if result["overturned"] else ""),
+        ]
+        if "regression" in result:
+            reg = result["regression"]
+            lines.append(f"regression (eq. 21): IM {reg['im']:.3f}, median sliding "
+                         f"{reg['sliding_median_cm']:.2f} cm")
+        return "\n".join(lines)
+
+    def history_csv(self) -> bytes:
+        """``--history``: time_s, floor_accel_g, sliding_cm, theta_over_alpha (needs ``return_history``)."""
+        r = self.response
+        floor = np.zeros(r.time_s.size)
+        floor[:min(self.motion.accel_g.size, floor.size)] = self.motion.accel_g[:floor.size]
+        table = np.column_stack([r.time_s, floor, r.sliding_m * 100.0, r.theta_rad / self.block.alpha_rad])
+        buffer = io.StringIO()
+        np.savetxt(buffer, table, delimiter=",", fmt="%.9g",
+                   header="time_s,floor_accel_g,sliding_cm,theta_over_alpha", comments="")
+        return buffer.getvalue().encode()
+
+
+def item_motion(record_path: Optional[Path], scale: float, pulse: Optional[str], ap_g: Optional[float],
+                tp_s: Optional[float], dt_s: Optional[float]) -> tuple[Record, Optional[float]]:
+    """The motion of ``assess simulate`` and its pulse period: the record at ``record_path`` times ``scale``
+    (period None), else the ``pulse`` of amplitude ``ap_g`` and period ``tp_s`` sampled at ``dt_s``."""
+    if record_path is not None:
+        return read_record(record_path, min_duration_s=MIN_DURATION_S, scale=scale), None
+    return pulse_record(pulse, ap_g, tp_s, dt_s), tp_s
 
 
 def simulate_item(block: Block, motion: Record, *, pulse_period_s: Optional[float] = None,

@@ -288,7 +288,8 @@ def test_the_hazard_curve_reaches_the_assessment_and_its_rates_the_portfolio(tmp
     seen = {}
 
     def with_curve(inventory, level_text, seed=0, progress=lambda m: None, oq_hazard=None,
-                   derive_floors_roof=None, calibration=None, runner=None, hazard_curve=None):
+                   derive_floors_roof=None, calibration=None, runner=None, hazard_curve=None,
+                   allow_records_outside=False):
         seen[inventory.path.name] = (hazard_curve, oq_hazard)
         result = real(inventory, level_text, seed=seed, progress=progress, runner=runner)
         rate = np.arange(1, len(result.summary) + 1) * 1e-4
@@ -400,8 +401,8 @@ def test_an_edited_record_reassesses_its_building(first_run):
     lines = record.read_text().splitlines()
     lines[20] = lines[20].split(",")[0] + ",0.65"  # one sample of the record
     record.write_text("\n".join(lines) + "\n")
-    import assess.pipeline
-    assess.pipeline._read_scaled.cache_clear()  # it keeps a record by path for the process's life
+    import assess.assessment.motions
+    assess.assessment.motions.read_scaled.cache_clear()  # it keeps a record by path for the process's life
     assert _batch(portfolio, "--out", out) == 0
     table = pd.read_csv(out / "portfolio.csv").set_index("building")
     # both buildings read this record: every case of each runs again

@@ -303,7 +303,7 @@ def test_an_output_folder_holding_other_files_is_refused_before_running(tmp_path
 
 
 def test_a_failed_swap_puts_the_previous_folder_back(tmp_path, monkeypatch):
-    from assess import output
+    from assess import folders as output
 
     out = tmp_path / "out"
     out.mkdir()

@@ -73,7 +73,7 @@ def sliding_suite(tmp_path_factory):
 def test_records_suite_gives_the_suite_statistics_of_the_exact_sliding(sliding_suite):
     result, peaks_cm = sliding_suite
     row = result.summary.set_index("id").loc["FORMA"]
-    assert row["demand_source"] == "records"
+    assert row["demand_source"] == ("records",)
     assert row["suite_motions"] == 4 and row["suite_histories"] == 4
     assert row["demand_median_cm"] == pytest.approx(np.quantile(peaks_cm, 0.5, method="hazen"), rel=1e-9)
     assert row["demand_p84_cm"] == pytest.approx(np.quantile(peaks_cm, 0.84, method="hazen"), rel=1e-9)
@@ -263,7 +263,8 @@ def test_every_item_is_in_one_action_group_and_no_advice_contradicts_its_numbers
     """A small inventory under three Table-3 pulses: page 1's groups add up to the freestanding items, and
     each item's sentence agrees with its own numbers (walks every item)."""
     from assess.report import render_html
-    from assess.report.render import _action_groups, report_context
+    from assess.report.render import report_context
+    from assess.report.sentences import action_groups as _action_groups
 
     motions = [{"level": "2in50", "level_label": "2in50", "motion": name, "all_floors": False, "floor": 0,
                 "pta_g": pta, "tp_s": tp, "vp_m_s": vp, "pulse": "B", "record_path": "", "scale": 1.0, "row": k + 2}

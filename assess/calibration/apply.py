@@ -44,6 +44,7 @@ import pandas as pd
 from assess.calibration.effects import EFFECTS, calibrated_block, theta_over_declared_alpha
 from assess.errors import InputError, Problem
 from assess.mechanics.block import Block
+from assess.result import Flag
 
 #: Largest calibration.json read [bytes] (a real one is a few kB).
 MAX_FILE_BYTES = 5_000_000
@@ -148,8 +149,6 @@ def with_declared(calibrated, declared, calibration: AppliedCalibration):
     calibration changed gets a :data:`FLAG_CODE` flag stating both; the notes
     say what was applied to which items and that the assessment ran twice.
     """
-    from assess.result import Flag
-
     if calibration.effect == "none":
         note = (f"Calibration {calibration.file}: the tests selected no effect (none), so the model is "
                 f"assessed as declared.")
@@ -157,7 +156,7 @@ def with_declared(calibrated, declared, calibration: AppliedCalibration):
     before = declared.summary.set_index("id")
     after = calibrated.summary.set_index("id")
     flags = list(calibrated.flags)
-    codes = calibrated.summary["flags"].fillna("").astype(str).tolist()
+    codes = list(calibrated.summary["flags"])
     changed = []
     for k, item_id in enumerate(calibrated.summary["id"]):
         if item_id not in before.index or after.loc[item_id, "risk"] == "anchored":
@@ -169,7 +168,7 @@ def with_declared(calibrated, declared, calibration: AppliedCalibration):
         flags.append(Flag(str(item_id), FLAG_CODE, (
             f"with the calibration ({calibration.describe()}, from {calibration.file}): "
             f"{_state(after.loc[item_id])}; as declared: {_state(before.loc[item_id])}.")))
-        codes[k] = "; ".join(c for c in (codes[k], FLAG_CODE) if c)
+        codes[k] = tuple(codes[k]) + (FLAG_CODE,)
     summary = calibrated.summary.assign(flags=codes)
     scope = ("every item" if calibration.applies_to is None or calibration.motion_scale != 1.0
              else f"{len(changed)} item(s) it was fitted on: {', '.join(changed)}" if changed

@@ -60,6 +60,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
+from assess.fragility.governing import governing_demand
 from assess.mechanics.gateway import pure_sliding_proved
 
 #: Intervals a side of the nominal μ for an item that cannot uplift anywhere in its range.
@@ -194,42 +195,32 @@ def mu_dependence_sentence(item_id: str, mu_low: float, mu_high: float, risk: st
             f"({p_high:.0%}); over the range, weighted, {risk}.")
 
 
-#: Columns :func:`with_mu_range` adds to the summary.
-SUMMARY_COLUMNS = ("mu_low", "mu_high", "risk_mu_low", "risk_mu_high", "p_beyond_clearance_mu_low",
-                   "p_beyond_clearance_mu_high", "mu_range_note")
+#: Columns the decisions add to the summary for an item with a range of friction
+#: (:func:`assess.decisions.mu_range_decisions`).
+MU_RANGE_COLUMNS = ("mu_low", "mu_high", "risk_mu_low", "risk_mu_high", "p_beyond_clearance_mu_low",
+                    "p_beyond_clearance_mu_high", "mu_range_note")
 
 
-def with_mu_range(summary: pd.DataFrame, cases: pd.DataFrame, runs: pd.DataFrame, planar, constants,
-                  settings: dict, room_quantile: float, classify) -> pd.DataFrame:
-    """The summary with, per item with a μ range, its risk class with every run at ``mu_low`` and at
-    ``mu_high`` (``classify(p_beyond_clearance, p_overturn, uplift, settings)``, the tool's own rule), and
-    :func:`mu_dependence_sentence` in ``mu_range_note`` and at the end of ``demand_note``."""
-    from assess.fragility.governing import governing_demand
-
-    out = summary.assign(mu_low=np.nan, mu_high=np.nan, risk_mu_low="", risk_mu_high="",
-                         p_beyond_clearance_mu_low=np.nan, p_beyond_clearance_mu_high=np.nan, mu_range_note="")
+def demand_at_ends(cases: pd.DataFrame, runs: pd.DataFrame, planar, constants,
+                   room_quantile: float) -> pd.DataFrame:
+    """Per item with a μ range (index ``id``): its range (``mu_low``, ``mu_high``) and its governing demand
+    with every run at each end (:func:`at_end`, :func:`assess.fragility.governing.governing_demand`):
+    ``p_beyond_clearance_<end>``, ``p_overturn_<end>``, ``demand_uplift_<end>`` for ``end`` in low, high.
+    Empty when no item gives a range."""
     ranged = cases[has_range(cases)]
+    columns = ["mu_low", "mu_high"] + [f"{name}_{end}" for end in ("low", "high")
+                                       for name in ("p_beyond_clearance", "p_overturn", "demand_uplift")]
     if ranged.empty:
-        return out
+        return pd.DataFrame(columns=columns)
     ranges = ranged.drop_duplicates("id").set_index("id")[["mu_low", "mu_high"]]
     at = {end: governing_demand(*at_end(cases, runs, end), constants, room_quantile=room_quantile, planar=planar)
           for end in ("low", "high")}
-    for index, row in out.iterrows():
-        if row["id"] not in ranges.index or row["id"] not in at["low"].index or row["risk"] == "anchored":
-            continue
-        low, high = (float(x) for x in ranges.loc[row["id"]])
-        classes, chances = {}, {}
-        for end in ("low", "high"):
-            demand = at[end].loc[row["id"]]
-            chances[end] = float(demand["p_beyond_clearance"])
-            classes[end] = classify(chances[end], float(demand["p_overturn"]), bool(demand["demand_uplift"]),
-                                    settings)
-        sentence = mu_dependence_sentence(row["id"], low, high, row["risk"], classes["low"], classes["high"],
-                                          chances["low"], chances["high"])
-        out.loc[index, list(SUMMARY_COLUMNS)] = [low, high, classes["low"], classes["high"], chances["low"],
-                                                 chances["high"], sentence]
-        out.loc[index, "demand_note"] = f"{row['demand_note']} {sentence}".strip()
-    return out
+    ids = [item_id for item_id in ranges.index if item_id in at["low"].index]
+    table = ranges.loc[ids].copy()
+    for end in ("low", "high"):
+        for name in ("p_beyond_clearance", "p_overturn", "demand_uplift"):
+            table[f"{name}_{end}"] = at[end].loc[ids, name].to_numpy()
+    return table[columns]
 
 
 def items_whose_class_changes(summary: pd.DataFrame) -> list[str]:

@@ -221,7 +221,7 @@ def _item_demand(item_cases: pd.DataFrame, histories: pd.DataFrame | None, regre
     intervals = _quantile_intervals(values, weights, sampled_weights, exact_weight)
     sources = [s for s in (RECORD, REGRESSION, SYNTHETIC, PULSE) if s in set(units["demand_source"])]
     return {
-        "demand_source": " + ".join("records" if s == RECORD else s for s in sources),
+        "demand_source": tuple("records" if s == RECORD else s for s in sources),
         "demand_median_cm": weighted_quantile(values, weights, 0.5),
         "demand_p84_cm": weighted_quantile(values, weights, 0.84),
         "demand_room_cm": weighted_quantile(values, weights, room_quantile),

@@ -106,21 +106,16 @@ def read_workbook(path: str | Path) -> Inventory:
     path = Path(path)
     problems: list[Problem] = []
     report = SheetReport(given, None, problems)
-    try:
-        book = xlsx.Book(path)
-    except xlsx.Unreadable as error:
-        report(error.message, error.fix)
-        raise InputError(problems) from None
-    with book:
+    with open_book(path, report) as book:
         sheets = _find_sheets(book, report)
         reports = {name: SheetReport(given, title, problems) for name, title in sheets.items()}
         tables = {}
         for name, spec in (("equipment", EQUIPMENT), ("hazard", HAZARD), ("settings", SETTINGS),
                            ("site", SITE), ("building", BUILDING)):
             if name in sheets:
-                cells = _sheet_cells(book, sheets[name], reports[name])
+                cells = sheet_cells(book, sheets[name], reports[name])
                 if cells is not None:
-                    tables[name] = _read_table(spec, cells, reports[name])
+                    tables[name] = read_table(spec, cells, reports[name])
     equipment = hazard = []
     if "equipment" in tables:
         equipment = _check_equipment(tables["equipment"], reports["equipment"])
@@ -138,6 +133,15 @@ def read_workbook(path: str | Path) -> Inventory:
 
 
 # ---------------------------------------------------------------- the file
+
+def open_book(path: Path, report: SheetReport) -> xlsx.Book:
+    """The workbook at ``path``, open; one that cannot be read is reported and raised as an InputError."""
+    try:
+        return xlsx.Book(path)
+    except xlsx.Unreadable as error:
+        report(error.message, error.fix)
+        raise InputError(report.problems) from None
+
 
 def _find_sheets(book: xlsx.Book, report: SheetReport) -> dict[str, str]:
     """Sheet titles by spec name (matched case-insensitively); missing required sheets reported."""
@@ -162,7 +166,7 @@ def _find_sheets(book: xlsx.Book, report: SheetReport) -> dict[str, str]:
     return found
 
 
-def _sheet_cells(book: xlsx.Book, title: str, report: SheetReport) -> xlsx.SheetCells | None:
+def sheet_cells(book: xlsx.Book, title: str, report: SheetReport) -> xlsx.SheetCells | None:
     """The sheet's non-empty cells, each cell that is a problem reported and made UNUSABLE;
     None after reporting a sheet that cannot be read."""
     try:
@@ -200,7 +204,7 @@ def _marker_problem(marker) -> tuple[str, str]:
 
 # ---------------------------------------------------------------- rows
 
-def _read_table(spec: SheetSpec, cells: xlsx.SheetCells, report: SheetReport) -> Table:
+def read_table(spec: SheetSpec, cells: xlsx.SheetCells, report: SheetReport) -> Table:
     """Headers recognised and every non-blank row parsed cell by cell."""
     title = cells.title
     rows = [(number, row) for number, row in cells.data_rows()

@@ -27,6 +27,11 @@ from markupsafe import Markup
 import assess
 from assess.report import figures
 from assess.report.curve import curve_context
+from assess.report.sentences import (
+    DASH, action_groups, case_outcomes, changes, cm_interval_text, finite, flag_groups, format_cm, format_percent,
+    format_significant, integer_text, interval_text, list_text, method_notes, risk_units, suite_text, text, total_units,
+    what_happens,
+)
 
 TEMPLATE_NAME = "report.html.j2"
 STYLESHEET_NAME = "report.css"
@@ -41,15 +46,6 @@ MODE_TEXT = {
     "slide-rock": "slides and rocks",
 }
 
-#: Headings for the flag codes the pipeline is known to emit; others get their code.
-FLAG_TITLES = {
-    "im_outside_fit": "Outside the range the regression was fitted on",
-    "uplift": "Uplifts and rocks",
-    "cg_not_mid_height": "Centre of mass not at mid-height",
-    "derived_floor_motion": "Floor motion derived from the ground motion",
-}
-
-DASH = "–"
 
 
 # --------------------------------------------------------------------------- templates
@@ -82,72 +78,6 @@ def make_environment() -> jinja2.Environment:
     return environment
 
 
-# --------------------------------------------------------------------------- formatting
-def _finite(value) -> float | None:
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        return None
-    return number if math.isfinite(number) else None
-
-
-def format_significant(value, digits: int = 2) -> str:
-    """``value`` to ``digits`` significant digits (0.30, 3.38, 12000), never in exponent form; NaN as "–"."""
-    number = _finite(value)
-    if number is None:
-        return DASH
-    if number == 0:
-        return "0"
-    decimals = digits - 1 - math.floor(math.log10(abs(number)))
-    rounded = round(number, decimals)
-    if rounded != 0:  # rounding may carry into the next decade (0.996 -> 1.0)
-        decimals = digits - 1 - math.floor(math.log10(abs(rounded)))
-        rounded = round(number, decimals)
-    return f"{rounded:.{max(decimals, 0)}f}".replace("-", "−")
-
-
-def format_cm(value) -> str:
-    """A length in cm as an integer; NaN as "–"."""
-    number = _finite(value)
-    if number is None:
-        return DASH
-    return f"{round(number):d}".replace("-", "−")
-
-
-def format_percent(value) -> str:
-    """A probability as a whole percentage ("<1%" and ">99%" at the ends); NaN as "–"."""
-    number = _finite(value)
-    if number is None:
-        return DASH
-    if number <= 0:
-        return "0%"
-    if number < 0.005:
-        return "<1%"
-    if number >= 1:
-        return "100%"
-    if number > 0.995:
-        return ">99%"
-    return f"{100 * number:.0f}%"
-
-
-def _text(value) -> str:
-    """Workbook text as a plain string ("" for missing)."""
-    if value is None:
-        return ""
-    if isinstance(value, float) and math.isnan(value):
-        return ""
-    if value is pd.NA or value is pd.NaT:
-        return ""
-    return str(value)
-
-
-def _integer_text(value) -> str:
-    number = _finite(value)
-    if number is None:
-        return _text(value) or DASH
-    return f"{number:.0f}" if number == int(number) else f"{number:g}"
-
-
 # --------------------------------------------------------------------------- context
 def _sorted_summary(summary: pd.DataFrame) -> pd.DataFrame:
     """Items by urgency: the pipeline's ``priority`` where there is one (what the failure costs times its
@@ -168,28 +98,18 @@ def _sorted_summary(summary: pd.DataFrame) -> pd.DataFrame:
     return summary.loc[order]
 
 
-def _what_happens(row: pd.Series) -> str:
-    mode = _text(row.get("mode"))
-    return {
-        "rock": "Rocks; may overturn",
-        "slide-rock": "Slides and rocks; may overturn",
-        "slide": "Slides",
-        "rest": "Stays put",
-    }.get(mode, mode.capitalize() or DASH)
-
-
 def _item_row(row: pd.Series) -> dict:
-    direction = _finite(row.get("governing_direction"))
-    motion = _text(row.get("governing_motion"))
-    quantity = _finite(row.get("quantity"))
+    direction = finite(row.get("governing_direction"))
+    motion = text(row.get("governing_motion"))
+    quantity = finite(row.get("quantity"))
     return {
-        "id": _text(row.get("id")),
-        "name": _text(row.get("name")),
+        "id": text(row.get("id")),
+        "name": text(row.get("name")),
         "quantity": int(quantity) if quantity is not None and quantity > 1 else None,
-        "room": _text(row.get("room")),
-        "floor": _integer_text(row.get("floor")),
-        "mode": _text(row.get("mode")) or DASH,
-        "what_happens": _what_happens(row),
+        "room": text(row.get("room")),
+        "floor": integer_text(row.get("floor")),
+        "mode": text(row.get("mode")) or DASH,
+        "what_happens": what_happens(row),
         "b_over_h": format_significant(row.get("b_over_h"), 2),
         "mu": format_significant(row.get("mu"), 2),
         "motion": motion or DASH,
@@ -204,27 +124,27 @@ def _item_row(row: pd.Series) -> dict:
         "overturn": format_percent(row.get("overturn_fraction")),
         "sim_sliding": format_cm(row.get("sim_sliding_max_cm")),
         "theta": format_significant(row.get("theta_max_over_alpha"), 2),
-        "risk": _text(row.get("risk")),
-        "risk_range": _text(row.get("risk_range")),
-        "action_kind": _text(row.get("action_kind")),
-        "consequence": _text(row.get("consequence")),
-        "anchor_force": format_significant(row.get("anchor_force_kn"), 2) if _finite(row.get("anchor_force_kn")) else "",
+        "risk": text(row.get("risk")),
+        "risk_range": text(row.get("risk_range")),
+        "action_kind": text(row.get("action_kind")),
+        "consequence": text(row.get("consequence")),
+        "anchor_force": format_significant(row.get("anchor_force_kn"), 2) if finite(row.get("anchor_force_kn")) else "",
         "anchor_moment": format_significant(row.get("anchor_moment_knm"), 2),
         "anchor_tension": format_significant(row.get("anchor_tension_kn"), 2),
-        "anchor_basis": _text(row.get("anchor_basis")),
-        "what_if": _text(row.get("what_if")),
-        "priority": _integer_text(row.get("priority")),
-        "action": _text(row.get("action")) or DASH,
-        "source": _text(row.get("demand_source")) or DASH,
-        "source_note": _text(row.get("demand_note")),
+        "anchor_basis": text(row.get("anchor_basis")),
+        "what_if": text(row.get("what_if")),
+        "priority": integer_text(row.get("priority")),
+        "action": text(row.get("action")) or DASH,
+        "source": list_text(row.get("demand_source"), " + ") or DASH,
+        "source_note": text(row.get("demand_note")),
         "demand_median": format_cm(row.get("demand_median_cm")),
         "demand_p84": format_cm(row.get("demand_p84_cm")),
         "p_beyond": format_percent(row.get("p_beyond_clearance")),
-        "p_beyond_interval": _interval_text(row.get("p_beyond_clearance_low"), row.get("p_beyond_clearance_high")),
-        "demand_interval": _cm_interval_text(row, "median") + " / " + _cm_interval_text(row, "p84"),
+        "p_beyond_interval": interval_text(row.get("p_beyond_clearance_low"), row.get("p_beyond_clearance_high")),
+        "demand_interval": cm_interval_text(row, "median") + " / " + cm_interval_text(row, "p84"),
         "p_overturn": format_percent(row.get("p_overturn")),
-        "p_overturn_interval": _interval_text(row.get("p_overturn_low"), row.get("p_overturn_high")),
-        "suite": _suite_text(row),
+        "p_overturn_interval": interval_text(row.get("p_overturn_low"), row.get("p_overturn_high")),
+        "suite": suite_text(row),
     }
 
 
@@ -267,7 +187,7 @@ def _item_details(rows: list[dict], summary: pd.DataFrame, runs: pd.DataFrame | 
         item = item.iloc[0] if isinstance(item, pd.DataFrame) else item
         strip = None
         if runs is not None and len(runs):
-            strip = _suite_strip(runs[runs["id"].astype(str) == row["id"]], _finite(item.get("clearance_cm")))
+            strip = _suite_strip(runs[runs["id"].astype(str) == row["id"]], finite(item.get("clearance_cm")))
         history = (histories or {}).get(row["id"])
         details.append({**row, "strip": strip, "spark": _history_spark(history) if history else None,
                         "theta": format_significant(item.get("theta_max_over_alpha"), 2),
@@ -300,7 +220,7 @@ def _history_spark(history: dict) -> dict:
             "theta": points(theta, theta_limit), "sliding_limit": format_significant(sliding_limit, 2),
             "theta_limit": format_significant(theta_limit, 2), "duration": f"{span:.0f}",
             "clearance_y": (half - (half - 4) * clearance / sliding_limit) if np.isfinite(clearance) else None,
-            "motion": _text(history.get("sim_motion")), "overturned": bool(history.get("overturned")),
+            "motion": text(history.get("sim_motion")), "overturned": bool(history.get("overturned")),
             "direction": history.get("direction")}
 
 
@@ -315,7 +235,7 @@ def _suite_strip(runs: pd.DataFrame, clearance_cm: float | None) -> dict | None:
     for k, key in enumerate(motions):
         mine = runs[runs["motion_key"] == key]
         y = 8 + STRIP_ROW * k
-        lines.append({"y": y, "label": _text(mine["motion"].iloc[0])[:34],
+        lines.append({"y": y, "label": text(mine["motion"].iloc[0])[:34],
                       "dots": [{"x": STRIP_LEFT + float(v) * scale, "overturned": bool(o)}
                                for v, o in zip(pd.to_numeric(mine["sliding_cm"], errors="coerce").fillna(0.0),
                                                mine["overturned"])]})
@@ -333,68 +253,6 @@ def _nice_ticks(top: float) -> list[float]:
     return [k * step for k in range(int(top // step) + 1)]
 
 
-#: Page 1's groups of actions, in the order a manager takes them.
-ACTION_GROUPS = (
-    ("anchor", "Anchor", "they overturn or rock in the design earthquake; moving them away from walls does not help"),
-    ("restrain", "Restrain (or give the room listed)", "they are likely to slide past their room"),
-    ("room", "Give room (or restrain)", "they may slide past their room"),
-    ("none", "No action", "they stay within their room"),
-)
-
-
-def _action_groups(rows: list[dict]) -> list[dict]:
-    """The items of each action kind (``action_kind`` of the summary), in the page's order."""
-    groups = []
-    for kind, title, why in ACTION_GROUPS:
-        members = [r for r in rows if r.get("action_kind") == kind]
-        if members:
-            groups.append({"kind": kind, "title": title, "why": why, "rows": members})
-    return groups
-
-
-def _interval_text(low, high) -> str:
-    """"10–60%" for a probability's interval; "" where it is exact (a model's, not a sample's)."""
-    low, high = _finite(low), _finite(high)
-    if low is None or high is None or high - low < 0.005:
-        return ""
-    return f"{format_percent(low)}–{format_percent(high)}"
-
-
-def _cm_interval_text(row: pd.Series, quantile: str) -> str:
-    """"12–30" for the 90 % interval of the demand's median or 84th percentile [cm]; "∞" where the
-    suite cannot bound it; "–" where the quantile is the regression's own (no interval)."""
-    low, high = _finite(row.get(f"demand_{quantile}_low_cm")), row.get(f"demand_{quantile}_high_cm")
-    value = _finite(row.get(f"demand_{quantile}_cm"))
-    try:
-        high = float(high)
-    except (TypeError, ValueError):
-        return DASH
-    if low is None or value is None or (math.isclose(low, value) and math.isclose(high, value)):
-        return DASH
-    return f"{format_cm(low)}–{'∞' if math.isinf(high) else format_cm(high)}"
-
-
-def _suite_text(row: pd.Series) -> str:
-    motions, histories = _finite(row.get("suite_motions")), _finite(row.get("suite_histories"))
-    if motions is None:
-        return ""
-    text = f"{motions:.0f} motion{'s' if motions != 1 else ''}"
-    if histories and histories != motions:
-        text += f", {histories:.0f} simulated histories"
-    return text
-
-
-def _flag_groups(flags) -> list[dict]:
-    groups: dict[str, list[dict]] = {}
-    for flag in flags:
-        groups.setdefault(flag.code, []).append({"item_id": flag.item_id,
-                                                 "message": flag.message})
-    return [{"code": code,
-             "title": FLAG_TITLES.get(code, code.replace("_", " ").capitalize()),
-             "entries": entries}
-            for code, entries in groups.items()]
-
-
 def _data_uri(svg: str) -> str:
     return "data:image/svg+xml;base64," + base64.b64encode(svg.encode("utf-8")).decode("ascii")
 
@@ -406,40 +264,36 @@ def report_context(result) -> dict:
     for row, anchor in zip(rows, item_anchors([r["id"] for r in rows])):
         row["anchor"] = anchor
     counts = result.risk_counts()
-    quantity = pd.to_numeric(summary.get("quantity", pd.Series(1, index=summary.index)),
-                             errors="coerce").fillna(1)
-    units = {risk: int(quantity[summary["risk"].astype(str) == risk].sum()) for risk in counts}
     zeta, eta, sigma, im_min, im_max = figures.regression_constants(result)
     settings = result.settings or {}
     sorted_result = _with_summary(result, summary)
     demand_svgs = figures.sliding_demand_figures(sorted_result)
     return {
         "version": assess.__version__,
-        "facility": _text(result.facility),
-        "site": _text(result.site),
+        "facility": text(result.facility),
+        "site": text(result.site),
         "level_description": result.level.description,
-        "level_label": _text(result.level_label),
+        "level_label": text(result.level_label),
         "workbook": Path(result.workbook).name if result.workbook else "",
         "simulated": bool(result.simulated),
         "seed": result.seed,
         "counts": counts,
-        "units": units,
+        "units": risk_units(summary),
         "total_items": len(rows),
-        "total_units": int(quantity.sum()),
-        "action_groups": _action_groups(rows),
-        "details": _item_details(rows, summary, getattr(result, "suite_runs", None),
-                                 {str(h["id"]): h for h in getattr(result, "histories", [])}),
+        "total_units": total_units(summary),
+        "action_groups": action_groups(rows),
+        "details": _item_details(rows, summary, result.suite_runs, {str(h["id"]): h for h in result.histories}),
         "high": [r for r in rows if r["risk"] == "high"],
         "moderate": [r for r in rows if r["risk"] == "moderate"],
         "rows": rows,
-        "flag_groups": _flag_groups(result.flags),
+        "flag_groups": flag_groups(result.flags),
         "flag_count": len(result.flags),
         "regression": {"zeta": zeta, "eta": eta, "sigma": sigma, "im_min": im_min,
                        "im_max": im_max,
-                       "source": _text((result.regression or {}).get("source"))
+                       "source": text((result.regression or {}).get("source"))
                        or "Konstantinidis & Makris (2010)"},
-        "thresholds": {"high": _finite(settings.get("risk_pf_high")),
-                       "moderate": _finite(settings.get("risk_pf_moderate"))},
+        "thresholds": {"high": finite(settings.get("risk_pf_high")),
+                       "moderate": finite(settings.get("risk_pf_moderate"))},
         "figures": {
             "demand": [_data_uri(svg) for svg in demand_svgs],
             "fragility": _data_uri(figures.fragility_figure(sorted_result)),
@@ -449,59 +303,15 @@ def report_context(result) -> dict:
             "histories": [{"uri": _data_uri(figures.history_figure(h)), "id": h["id"], "name": h["name"],
                            "motion": h["motion"], "sim_motion": h["sim_motion"], "solver": h["solver"],
                            "direction": h["direction"]}
-                          for h in list(getattr(result, "histories", []))[:HISTORY_FIGURES]],
+                          for h in list(result.histories)[:HISTORY_FIGURES]],
         },
-        "simulation": _simulation_counts(result),
-        "hazard_notes": list(getattr(result, "hazard_notes", [])),
-        "method_notes": _method_notes(summary),
-        "changes": _changes(getattr(result, "comparison", None)),
+        "simulation": case_outcomes(result),
+        "hazard_notes": list(result.hazard_notes),
+        "method_notes": method_notes(summary),
+        "changes": changes(result.comparison),
         "curve": curve_context(result),
         "stylesheet": Markup(template_text(STYLESHEET_NAME)),  # our own file, not user text
     }
-
-
-def _method_notes(summary: pd.DataFrame) -> list[str]:
-    """The method section's paragraphs on sliding in the plane and on μ ranges, where they apply."""
-    from assess.fragility import friction_range, planar
-
-    return [text for text in (planar.method_text(summary), friction_range.method_text(summary)) if text]
-
-
-def _changes(comparison) -> dict | None:
-    """The rows of a comparison with a previous run whose risk class changed, for the report."""
-    if comparison is None:
-        return None
-    changed = comparison[comparison["change"] != "same"]
-    return {"total": len(comparison), "same": int((comparison["change"] == "same").sum()),
-            "rows": [{"id": _text(r["id"]), "name": _text(r["name"]), "before": _text(r["risk_before"]) or DASH,
-                      "after": _text(r["risk_after"]) or DASH, "change": _text(r["change"]),
-                      "why": _text(r["why"]) or DASH} for _, r in changed.iterrows()]}
-
-
-def _simulation_counts(result) -> dict:
-    """How the simulated cases ended, in classes that add up, and how many runs each solver answered.
-
-    A case (item × motion × direction) counts once, by the worst of its runs:
-    ``overturned`` if any run overturns, else ``uplift`` if any uplifts, else
-    ``slid`` if it slides, else ``rest``; the four add up to ``cases``.
-    Solvers are counted per run (a case of several histories may use several).
-    """
-    motions = result.motions
-    if not result.simulated or "sim_solver" not in motions:
-        return {}
-    overturned = motions["sim_overturn_share"].fillna(0.0).astype(float) > 0.0 if "sim_overturn_share" in motions \
-        else motions["sim_overturned"].astype(bool)
-    uplift = motions["sim_uplift"].astype(bool) & ~overturned
-    slid = (pd.to_numeric(motions["sim_sliding_max_cm"], errors="coerce") > 0) & ~overturned & ~uplift
-    rest = ~(overturned | uplift | slid)
-    solvers = getattr(result, "solver_runs", None)
-    if solvers is None:  # a result built without the pipeline: one run per case
-        solvers = motions["sim_solver"].astype(object).where(motions["sim_solver"].notna(), "").astype(str) \
-            .value_counts().to_dict()
-    return {"cases": len(motions), "runs": int(sum(solvers.values())),
-            "solvers": sorted(solvers.items(), key=lambda kv: -kv[1]),
-            "overturned": int(overturned.sum()), "uplift": int(uplift.sum()), "slid": int(slid.sum()),
-            "rest": int(rest.sum())}
 
 
 def _with_summary(result, summary: pd.DataFrame):

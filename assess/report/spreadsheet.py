@@ -4,7 +4,7 @@ The same rows and columns as ``summary.csv`` (one sheet per hazard level),
 with a frozen bold header whose names carry their units, number formats that
 show what the numbers are (percent for probabilities, one decimal for
 lengths), widths that fit, and an autofilter. Text from the workbook is made
-inert as in the CSV (:func:`assess.output.neutralise_formulas`): a cell never
+inert as in the CSV (:func:`assess.tables.neutralise_formulas`): a cell never
 becomes a formula. With ``units="us"`` the lengths are also given in inches
 and the accelerations stay in g (a US engineer's unit for them), in columns
 named with their unit beside the SI ones.
@@ -16,6 +16,8 @@ import re
 
 import numpy as np
 import pandas as pd
+
+from assess.tables import neutralise_formulas
 
 #: Centimetres per inch (exact).
 CM_PER_IN = 2.54
@@ -67,8 +69,6 @@ def summary_workbook(tables: dict[str, pd.DataFrame], units: str = "si") -> byte
     from openpyxl import Workbook
     from openpyxl.styles import Alignment, Font, PatternFill
     from openpyxl.utils import get_column_letter
-
-    from assess.output import neutralise_formulas
 
     workbook = Workbook()
     workbook.remove(workbook.active)

@@ -1,0 +1,129 @@
+"""Stage 5 of the assessment: the demand on each item, from its cases and the engine's runs.
+
+Per case: the mode, IM and the paper's regression (Konstantinidis & Makris
+2010, eq. 21) for its sliding (:func:`regression_demand`). Per item: the case
+that its summary row shows (:func:`governing_case`) and the governing demand
+over its suite of motions (:func:`assess.fragility.governing.governing_demand`),
+at the workbook's μ and, for an item with a range of friction, at each end of
+it (:func:`assess.fragility.friction_range.demand_at_ends`).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+
+from assess.fragility import (
+    RegressionConstants, capacity_edp, intensity_measure, median_edp, probability_of_exceedance, sliding_quantile,
+)
+from assess.fragility.friction_range import demand_at_ends
+from assess.fragility.governing import add_pulse_share, governing_demand, motion_sources
+from assess.mechanics.modes import MODE_SEVERITY, ROCK, SLIDE, SLIDE_ROCK, initial_mode
+
+SLIDING_MODES = (SLIDE, SLIDE_ROCK)
+#: Columns of the governing case an item's row shows.
+GOVERNING_CASE_COLUMNS = ("alpha_rad", "p_rad_s", "b_over_h", "mode", "pta_g", "tp_s", "im", "edp_median",
+                          "sliding_median_cm", "sliding_p84_cm", "pf_sliding", "sim_sliding_max_cm")
+
+
+@dataclass
+class Demand:
+    """The demand stage's output.
+
+    ``cases``: every case with its regression columns, ``pulse_share`` and ``demand_source``;
+    ``governing``: per item (index ``id``), the governing demand over its suite
+    (:data:`assess.fragility.governing` columns); ``at_mu_ends``: per item with a μ range, the
+    demand at each end (:func:`~assess.fragility.friction_range.demand_at_ends`).
+    """
+
+    cases: pd.DataFrame
+    governing: pd.DataFrame
+    at_mu_ends: pd.DataFrame
+
+
+def item_demand(cases: pd.DataFrame, runs: pd.DataFrame, planar, simulated_as: dict,
+                constants: RegressionConstants, settings: dict) -> Demand:
+    """The regression per case and the governing demand per item (module docstring)."""
+    cases = add_pulse_share(regression_demand(cases, constants))
+    cases["demand_source"] = motion_sources(cases, simulated_as, constants)
+    room_quantile = 1.0 - float(settings["risk_pf_moderate"])
+    governing = governing_demand(cases, runs, constants, room_quantile=room_quantile, planar=planar)
+    return Demand(cases, governing, demand_at_ends(cases, runs, planar, constants, room_quantile))
+
+
+@dataclass
+class ItemDemand:
+    """Per freestanding item (by id): its demand row (``rows``: the regression's numbers for its governing
+    case, :data:`GOVERNING_CASE_COLUMNS`, ``governing_direction``, ``governing_motion``, the governing demand
+    and ``overturn_fraction``) and whether it uplifts under any motion (``uplift``)."""
+
+    rows: dict
+    uplift: dict
+
+
+def item_rows(equipment: pd.DataFrame, cases: pd.DataFrame, demand: Demand) -> ItemDemand:
+    """Each freestanding item's demand row (:class:`ItemDemand`), ``cases`` those at the workbook's μ."""
+    governing = governing_case(cases).set_index("id") if len(cases) else pd.DataFrame()
+    rows, uplift = {}, {}
+    for item in equipment[~equipment["anchored"]].itertuples(index=False):
+        case = governing.loc[item.id]
+        row = {column: case[column] for column in GOVERNING_CASE_COLUMNS}
+        row["governing_direction"] = int(case["direction"])
+        row["governing_motion"] = case["motion"]
+        row.update(demand.governing.loc[item.id].to_dict())
+        row["overturn_fraction"] = row["p_overturn"]
+        rows[item.id] = row
+        uplift[item.id] = bool(cases.loc[cases["id"] == item.id, "sim_uplift"].any()) or bool(
+            row.get("demand_uplift", False))
+    return ItemDemand(rows, uplift)
+
+
+def regression_demand(cases: pd.DataFrame, constants: RegressionConstants) -> pd.DataFrame:
+    """Mode, IM, and the regression's sliding demand and Pf for each case.
+
+    ``mode`` is the simulated one (``sim_mode``); ``mode_from_rest`` the mode
+    the block enters first, by Shenton's criteria (:func:`initial_mode`). The
+    regression's sliding demand applies where the simulation slides.
+    """
+    cases = cases.copy()
+    cases["mode_from_rest"] = initial_mode(cases["pta_g"], cases["mu_static"], cases["b_over_h"],
+                                           cases["inertia_ratio"])
+    cases["mode"] = cases["sim_mode"]
+    cases["im"] = intensity_measure(cases["pta_g"], cases["mu"])
+    slides = cases["mode"].isin(SLIDING_MODES).to_numpy()
+    im_sliding = np.where(slides, cases["im"], 0.0)  # no sliding from rest: zero demand
+    median_m = sliding_quantile(im_sliding, cases["pta_g"], cases["tp_s"], constants, 0.5)
+    p84_m = sliding_quantile(im_sliding, cases["pta_g"], cases["tp_s"], constants, 0.84)
+    capacity = capacity_edp(cases["clearance_m"], cases["pta_g"], cases["tp_s"])
+    pf = probability_of_exceedance(im_sliding, capacity, constants.zeta, constants.eta, constants.sigma)
+    rocks_only = (cases["mode"] == ROCK).to_numpy()
+    # A block that rocks without sliding has no sliding demand from this regression.
+    cases["edp_median"] = np.where(rocks_only, np.nan, median_edp(im_sliding, constants.zeta, constants.eta))
+    cases["sliding_median_cm"] = np.where(rocks_only, np.nan, median_m * 100.0)
+    cases["sliding_p84_cm"] = np.where(rocks_only, np.nan, p84_m * 100.0)
+    cases["capacity_edp"] = capacity
+    cases["pf_sliding"] = np.where(rocks_only, np.nan, pf)
+    cases["im_outside_fit"] = slides & ((cases["im"] < constants.im_min) | (cases["im"] > constants.im_max))
+    return cases
+
+
+def governing_case(cases: pd.DataFrame) -> pd.DataFrame:
+    """Per item: the case that governs its summary row.
+
+    Direction: the more slender one (smaller b/h). Motion: the one with the
+    largest median sliding; where nothing slides, the strongest mode, then the
+    largest PTA.
+    """
+    slender = cases.loc[cases.groupby("id")["b_over_h"].idxmin(), ["id", "direction"]]
+    in_direction = cases.merge(slender, on=["id", "direction"])
+    ranked = in_direction.assign(
+        _severity=in_direction["mode"].map(MODE_SEVERITY),
+        _sliding=in_direction["sliding_median_cm"].fillna(-1.0),
+    ).sort_values(["id", "_sliding", "_severity", "pta_g"], ascending=[True, False, False, False],
+                  kind="stable")
+    worst_mode = in_direction.assign(_severity=in_direction["mode"].map(MODE_SEVERITY)) \
+        .sort_values(["id", "_severity"], ascending=[True, False], kind="stable") \
+        .drop_duplicates("id")[["id", "mode"]]
+    governing = ranked.drop_duplicates("id").drop(columns=["_severity", "_sliding", "mode"])
+    return governing.merge(worst_mode, on="id")

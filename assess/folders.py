@@ -1,0 +1,156 @@
+"""Output folders written so that a failed run leaves nothing half-written.
+
+Everything is first produced in memory and written into a temporary folder
+next to the output folder; that folder then takes the output folder's place
+in one rename (:func:`write_atomically`). A run that fails leaves the previous
+folder as it was; one that succeeds leaves exactly its own files, no stale
+``report.pdf`` of an earlier ``--format html,pdf`` run. Only the standard
+library: the command line checks a folder before importing the core.
+"""
+from __future__ import annotations
+
+import contextlib
+import os
+import shutil
+import tempfile
+from pathlib import Path
+
+from assess.errors import InputError, Problem
+
+#: Everything assess writes into an output folder. A folder holding anything
+#: else is not swapped (it would be lost): the user is asked for another one.
+OUTPUT_NAMES = frozenset({
+    "summary.csv", "motions.csv", "comparison.csv", "summary.xlsx", "report.html", "report.pdf",
+    "calibration.json", "calibration_tests.csv", "fragility",
+    ".DS_Store", "Thumbs.db", "desktop.ini",  # what a file browser leaves in a folder it has shown
+})
+def check_output_folder(out_dir: Path) -> None:
+    """Refuse an output folder that :func:`write_atomically` may not replace as a whole.
+
+    It may be new, empty, or hold only what assess writes (:data:`OUTPUT_NAMES`):
+    replacing the folder replaces everything in it, so ``--out .`` or a folder
+    of the user's own documents is refused before anything runs.
+    """
+    out_dir = Path(out_dir)
+    if existing_folder(out_dir, "run"):
+        foreign = sorted(entry.name for entry in out_dir.iterdir() if entry.name not in OUTPUT_NAMES)
+        refuse_foreign_files(out_dir, foreign)
+
+
+def existing_folder(out_dir: Path, run: str) -> bool:
+    """Whether the output folder exists (False: it will be made); one that is a file is refused, naming
+    what ``--out`` takes instead (a new folder, or that of an earlier ``run``)."""
+    if not out_dir.exists() and not out_dir.is_symlink():
+        return False
+    if not out_dir.is_dir():
+        raise InputError([Problem(file=str(out_dir), message="the output folder is a file, not a folder.",
+                                  fix=f"give --out a new folder, or the folder of an earlier {run}.")])
+    return True
+
+
+def refuse_foreign_files(out_dir: Path, foreign: list[str], command: str = "assess", run: str = "run") -> None:
+    """Exit 2 (``InputError``) naming the files in ``out_dir`` that ``command`` did not write, if any."""
+    if foreign:
+        shown = ", ".join(name[:60] for name in foreign[:5]) + (f" and {len(foreign) - 5} more"
+                                                                 if len(foreign) > 5 else "")
+        raise InputError([Problem(
+            file=str(out_dir), message=f"the output folder holds files {command} did not write ({shown}); "
+            f"{command} replaces its output folder as a whole, so these would be lost.",
+            fix=f"give --out a new or empty folder, or the folder of an earlier {run}.")])
+
+
+def write_atomically(files: dict[str, bytes], out_dir: Path) -> list[Path]:
+    """Make ``out_dir`` hold exactly ``files``: all of them, or (on failure) the folder as it was.
+
+    The files are written into a temporary sibling folder, which then takes
+    ``out_dir``'s place: the old folder is renamed aside, the new one renamed
+    in, the old one deleted. A failure (or Ctrl-C) before the second rename
+    renames the old folder back. Only a crash of the machine between the two
+    renames leaves the old folder under its temporary name
+    (``.<name>-old-...`` beside it) instead of ``out_dir``. ``out_dir`` must
+    pass :func:`check_output_folder`. Names may contain ``/`` (a subfolder).
+    """
+    out_dir = Path(out_dir)
+    check_output_folder(out_dir)
+    if out_dir.is_symlink():
+        out_dir = out_dir.resolve()
+    out_dir.parent.mkdir(parents=True, exist_ok=True)
+    staging = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}-new-", dir=out_dir.parent))
+    aside = None
+    try:
+        os.chmod(staging, folder_mode(out_dir))
+        write_files(staging, files)
+        aside = swap_folder(staging, out_dir)
+        staging = None
+        return [out_dir / name for name in files]
+    finally:
+        for leftover in (staging, aside):
+            if leftover is not None:
+                shutil.rmtree(leftover, ignore_errors=True)
+
+
+def swap_folder(staging: Path, out_dir: Path) -> Path | None:
+    """Put the folder ``staging`` in ``out_dir``'s place, or leave ``out_dir`` as it was.
+
+    The old folder is renamed aside, the new one renamed in; if the second
+    rename fails, the old folder is renamed back and the error raised. Returns
+    where the old folder now lies (the caller deletes it), or None if there was none.
+    """
+    aside = None
+    if out_dir.exists():
+        aside = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}-old-", dir=out_dir.parent))
+        try:
+            os.replace(out_dir, aside)  # aside is an empty folder: rename replaces it
+        except BaseException:
+            shutil.rmtree(aside, ignore_errors=True)
+            raise
+    try:
+        os.replace(staging, out_dir)
+    except BaseException:
+        if aside is not None:
+            os.replace(aside, out_dir)
+        raise
+    return aside
+
+
+def write_files(folder: Path, files: dict[str, bytes]) -> None:
+    """Write ``files`` (name -> bytes; a name may contain ``/``) into ``folder``, making subfolders."""
+    for name, content in files.items():
+        target = Path(folder) / name
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_bytes(content)
+
+
+def folder_mode(out_dir: Path) -> int:
+    """Permissions of the new output folder: the old one's, else what the umask gives a new folder."""
+    if out_dir.is_dir():
+        return out_dir.stat().st_mode & 0o7777
+    return 0o777 & ~_umask()
+
+
+def write_file_atomically(path: Path, content: bytes) -> Path:
+    """Write one file (``assess simulate --history``): a temporary sibling renamed over ``path``.
+
+    Other files in its folder are left alone.
+    """
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    handle, temporary = tempfile.mkstemp(prefix=f".{path.name}-", dir=path.parent)
+    try:
+        with os.fdopen(handle, "wb") as stream:
+            stream.write(content)
+        os.chmod(temporary, 0o666 & ~_umask())
+        os.replace(temporary, path)
+        temporary = None
+        return path
+    finally:
+        if temporary is not None:
+            with contextlib.suppress(OSError):
+                os.unlink(temporary)
+
+
+def _umask() -> int:
+    """The process's umask (read by setting it, then put back)."""
+    umask = os.umask(0)
+    os.umask(umask)
+    return umask

@@ -1,0 +1,275 @@
+"""The jobs the commands run: ``assess WORKBOOK``, ``assess batch`` and ``assess calibrate``.
+
+A job reads its inputs, checks them (every rule before anything runs), runs
+the engine through one runner whose life it owns (this machine's threads or a
+Dask cluster, closed when the job ends), and returns the files to write, in
+memory. The command line (:mod:`assess.cli`) only parses the arguments into a
+job, writes what it returns and prints; the commands are described in
+docs/commands.md.
+"""
+from __future__ import annotations
+
+import contextlib
+import json
+from dataclasses import dataclass, replace
+from pathlib import Path
+from typing import Callable, Iterator
+
+import numba
+
+from assess import batch, output, pipeline, report
+from assess.assessment.inputs import check_inputs
+from assess.cache import CachingRunner
+from assess.calibration import read_measured, run_calibration
+from assess.calibration.apply import read_calibration
+from assess.comparison import compare_summaries, read_previous_summary
+from assess.errors import InputError, Problem
+from assess.hazard.levels import parse_level
+from assess.hazard.openquake import read_openquake_hazard
+from assess.inventory import read_workbook
+from assess.mechanics.runner import LocalRunner
+from assess.folders import check_output_folder
+from assess.report.calibration import render_calibration_html
+from assess.result import AssessmentResult
+from assess.tables import csv_text, restore_text, summary_text
+
+Say = Callable[[str], None]
+#: What the main job writes besides the CSV files: the report and summary.xlsx.
+JOB_FORMATS = ("html", "pdf", "xlsx")
+
+
+# ---------------------------------------------------------------- shared by every job
+
+def set_threads(jobs: int | None) -> None:
+    """Use ``jobs`` threads for the engine's cases (None: all cores); the numbers do not depend on it."""
+    if jobs is not None:
+        numba.set_num_threads(min(jobs, numba.config.NUMBA_NUM_THREADS))
+
+
+def engine_runner(scheduler: str | None):
+    """What simulates the cases: this machine's threads, or the Dask cluster at ``scheduler``."""
+    if scheduler is None:
+        return LocalRunner()
+    try:  # Dask is the optional extra assess[cluster]: imported only when a cluster is asked for
+        import distributed  # noqa: F401
+        from assess.mechanics.distributed import DaskRunner
+    except ImportError:
+        raise InputError([Problem(file="--scheduler", message="running on a Dask cluster needs Dask, which this "
+                                  "installation of assess lacks.",
+                                  fix='pip install "assess[cluster]" (here and on the workers), or leave out '
+                                      "--scheduler to run on this machine's cores.")]) from None
+    return DaskRunner.connect(scheduler)
+
+
+@contextlib.contextmanager
+def open_runner(scheduler: str | None, say: Say, cache_folder: Path | None = None) -> Iterator:
+    """The job's runner (:func:`engine_runner`, behind a cache in ``cache_folder`` if given), closed at
+    the end (a cluster's client)."""
+    if scheduler is not None:
+        say(f"connecting to the Dask scheduler at {scheduler}")
+    engine = engine_runner(scheduler)
+    try:
+        yield engine if cache_folder is None else CachingRunner(engine, cache_folder)
+    finally:
+        close = getattr(engine, "close", None)  # only a cluster's runner holds a client
+        if close is not None:
+            close()
+
+
+def parse_levels(text: str) -> list[tuple[str, str]]:
+    """``--hazard`` as (folder name, text) per level, in order; a level given twice is refused."""
+    levels, seen = [], {}
+    for part in [p.strip() for p in str(text).split(",")]:
+        try:
+            name = parse_level(part).name
+        except ValueError as error:
+            raise InputError([Problem(file="--hazard", message=str(error))]) from None
+        if name in seen:
+            raise InputError([Problem(file="--hazard", message=f"'{part}' is the level '{seen[name]}' again.",
+                                      fix="give each level once.")])
+        seen[name] = part
+        levels.append((name, part))
+    return levels
+
+
+def level_out_dir(out: Path | None, workbook: Path, level_name: str, several: bool) -> Path:
+    """Where a level's files go: ``--out`` (one level), ``--out/<LEVEL>`` (several), else the default."""
+    if out is None:
+        return Path("reports") / f"{workbook.stem}-{level_name}"
+    return out / level_name if several else out
+
+
+def oq_site(text: str | None):
+    """``--oq-site`` as :func:`~assess.hazard.openquake.read_openquake_hazard` takes it: None, a row
+    index, (lon, lat) or an id."""
+    if text is None:
+        return None
+    if text.strip().isdigit():
+        return int(text)
+    parts = text.split(",")
+    if len(parts) == 2:
+        try:
+            return (float(parts[0]), float(parts[1]))
+        except ValueError:
+            pass
+    return text
+
+
+def with_comparison(result: AssessmentResult, explicit: Path | None, in_out_dir: Path, say: Say) -> AssessmentResult:
+    """``result`` with its comparison against a previous summary.
+
+    An explicit ``--compare-with`` file must be a summary (else exit 2); the
+    summary.csv already in the output folder is used when it is one, and
+    skipped with a note when it is not.
+    """
+    if explicit is not None:
+        previous = read_previous_summary(explicit)
+    elif in_out_dir.is_file():
+        try:
+            previous = read_previous_summary(in_out_dir)
+        except InputError as error:
+            say(f"not comparing with {in_out_dir}: {error.problems[0].message}")
+            return result
+    else:
+        return result
+    previous = restore_text(previous)  # the text summary.csv protects from spreadsheet formulas
+    say(f"comparing with the previous run {explicit or in_out_dir}")
+    return replace(result, comparison=compare_summaries(previous, summary_text(result.summary)))
+
+
+# ---------------------------------------------------------------- assess WORKBOOK --hazard LEVEL[,LEVEL...]
+
+@dataclass
+class AssessmentJob:
+    """``assess WORKBOOK --hazard LEVEL[,LEVEL...]`` and its options (docs/commands.md)."""
+
+    workbook: Path
+    hazard: str
+    out: Path | None = None
+    formats: tuple[str, ...] = JOB_FORMATS
+    units: str = "si"
+    jobs: int | None = None
+    seed: int = 0
+    oq_hazard: Path | None = None
+    oq_site: str | None = None
+    derive_floors: int | None = None
+    calibration: Path | None = None
+    compare_with: Path | None = None
+    scheduler: str | None = None
+    allow_records_outside: bool = False
+
+
+@dataclass
+class LevelOutput:
+    """One level's result, its output folder and its files (name -> bytes), not yet written."""
+
+    result: AssessmentResult
+    out_dir: Path
+    files: dict[str, bytes]
+
+
+def run_job(job: AssessmentJob, say: Say = lambda message: None) -> Iterator[LevelOutput]:
+    """Assess every level of ``job``; yields each level's files, rendered once every level is computed.
+
+    Every input is checked before anything runs: the levels, the output folders, the workbook and its
+    hazard sheet's rules, the OpenQuake file and the calibration.
+    """
+    levels = parse_levels(job.hazard)
+    set_threads(job.jobs)
+    out_dirs = [level_out_dir(job.out, job.workbook, name, several=len(levels) > 1) for name, _ in levels]
+    for out_dir in out_dirs:
+        check_output_folder(out_dir)
+    say(f"reading {job.workbook}")
+    inventory = read_workbook(job.workbook)
+    check_inputs(inventory, job.allow_records_outside)
+    oq_hazard = None
+    if job.oq_hazard is not None:
+        oq_hazard = read_openquake_hazard(job.oq_hazard, site=oq_site(job.oq_site))
+        if oq_hazard.kind != "curve":
+            say(f"{job.oq_hazard.name} is a hazard map: the motions are scaled to it; annual rates need a "
+                "hazard curve")
+    calibration = read_calibration(job.calibration) if job.calibration is not None else None
+    hazard_curve = oq_hazard if oq_hazard is not None and oq_hazard.kind == "curve" else None
+    results = []
+    with open_runner(job.scheduler, say) as runner:
+        for (_, text), out_dir in zip(levels, out_dirs):  # every level computed before any is written
+            result = pipeline.run_assessment(inventory, text, seed=job.seed, progress=say, oq_hazard=oq_hazard,
+                                             derive_floors_roof=job.derive_floors, calibration=calibration,
+                                             runner=runner, hazard_curve=hazard_curve,
+                                             allow_records_outside=job.allow_records_outside)
+            results.append(with_comparison(result, job.compare_with, out_dir / "summary.csv", say))
+    for result, out_dir in zip(results, out_dirs):
+        say(f"rendering {result.level_label}: " + ", ".join(["summary.csv", "motions.csv"] + [
+            "summary.xlsx" if f == "xlsx" else f"report.{f}" for f in job.formats]
+            + (["fragility/"] if result.curve_risk is not None else [])))
+        others = tuple(other for other in results if other is not result)
+        files = output.render_outputs(result, job.formats, units=job.units, other_levels=others)
+        yield LevelOutput(result, out_dir, files)
+
+
+# ---------------------------------------------------------------- assess batch PORTFOLIO
+
+@dataclass
+class BatchJob:
+    """``assess batch PORTFOLIO`` and its options (docs/commands.md)."""
+
+    portfolio: Path
+    out: Path | None = None
+    hazard: str | None = None
+    oq_hazard: Path | None = None
+    scheduler: str | None = None
+    formats: tuple[str, ...] = JOB_FORMATS
+    seed: int = 0
+    jobs: int | None = None
+    allow_files_outside: bool = False
+
+
+def run_batch(job: BatchJob, say: Say = lambda message: None) -> tuple[batch.StagedPortfolio, CachingRunner, Path]:
+    """Assess every building of the portfolio (:mod:`assess.batch`), staged beside its output folder
+    (:meth:`~assess.batch.StagedPortfolio.commit` puts it in place); also returns the caching runner
+    (its counts and the cache's write errors) and the output folder as given."""
+    if job.hazard is not None:
+        try:
+            parse_level(job.hazard)
+        except ValueError as error:
+            raise InputError([Problem(file="--hazard", message=str(error))]) from None
+    set_threads(job.jobs)
+    out_dir = Path(job.out or batch.default_out_dir(job.portfolio))
+    batch.check_portfolio_folder(out_dir)
+    say(f"reading {job.portfolio}")
+    buildings = batch.read_portfolio(job.portfolio, allow_outside=job.allow_files_outside)
+    prepared = batch.prepare_buildings(buildings, level=job.hazard, oq_hazard=job.oq_hazard,
+                                       allow_records_outside=job.allow_files_outside, say=say)
+    with open_runner(job.scheduler, lambda message: None, out_dir / batch.CACHE_FOLDER) as runner:
+        say(f"{len(prepared)} buildings; results are reused from {out_dir / batch.CACHE_FOLDER}")
+        staged = batch.run_portfolio(prepared, out_dir, runner=runner, seed=job.seed, formats=job.formats, say=say)
+    return staged, runner, out_dir
+
+
+# ---------------------------------------------------------------- assess calibrate WORKBOOK --measured TESTS
+
+def run_calibrate(workbook: Path, measured_path: Path, out: Path | None, formats: tuple[str, ...],
+                  allow_records_outside: bool, say: Say = lambda message: None):
+    """Fit the effects the model may lack to the measured tests (:func:`assess.calibration.run_calibration`);
+    returns the result, its files (calibration.json, calibration_tests.csv, the report) and their folder."""
+    out_dir = out or Path("reports") / f"{workbook.stem}-calibration"
+    check_output_folder(out_dir)
+    say(f"reading {workbook}")
+    inventory = read_workbook(workbook)
+    check_inputs(inventory, allow_records_outside)
+    measured = read_measured(measured_path, inventory)
+    say(f"{len(measured)} measured tests; fitting the effects")
+    result = run_calibration(inventory, measured,
+                             progress=lambda done, total: say(f"fitted {done} of {total} candidate effects"))
+    tests = result.diagnosis.join(result.residuals_before.drop(columns=["specimen", "motion", "direction"])
+                                  .add_suffix("_before")).join(
+        result.residuals_after.drop(columns=["specimen", "motion", "direction"]).add_suffix("_after"))
+    files = {"calibration.json": (json.dumps(result.as_json(), indent=2) + "\n").encode(),
+             "calibration_tests.csv": csv_text(tests).encode()}
+    if formats:
+        html = render_calibration_html(result, workbook.name, measured_path.name)
+        if "html" in formats:
+            files["report.html"] = html.encode()
+        if "pdf" in formats:
+            files["report.pdf"] = report.render_pdf(html)
+    return result, files, out_dir
