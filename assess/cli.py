@@ -148,12 +148,24 @@ def build_parser() -> argparse.ArgumentParser:
                              "in --out, if any)")
     parser.add_argument("--scheduler", metavar="ADDRESS",
                         help="run the simulations on the Dask distributed cluster whose scheduler is at ADDRESS "
-                             "(e.g. tcp://10.0.0.5:8786); the numbers do not depend on where they ran "
-                             "(default: this machine's cores)")
+                             "(e.g. tcp://10.0.0.5:8786, or tls://... with --tls-*); the numbers do not depend on "
+                             "where they ran (default: this machine's cores). " + _SCHEDULER_TRUST)
+    _add_tls_options(parser)
     _add_allow_records_outside(parser)
     parser.add_argument("--quiet", action="store_true", help="do not print progress")
     parser.add_argument("--version", action="version", version=f"assess {__version__}")
     return parser
+
+
+_SCHEDULER_TRUST = ("A scheduler and its workers run code for you and send Python objects that assess opens: "
+                    "give only a scheduler you run or trust, as for any Dask client")
+
+
+def _add_tls_options(parser: argparse.ArgumentParser) -> None:
+    for option, what in (("--tls-ca-file", "certificate authority that signed the scheduler's certificate"),
+                         ("--tls-cert", "this client's certificate"), ("--tls-key", "this client's private key")):
+        parser.add_argument(option, metavar="PEM", help=f"for a tls:// --scheduler: the {what} (default: Dask's "
+                            "configuration, distributed.comm.tls.*)")
 
 
 def _add_allow_records_outside(parser: argparse.ArgumentParser) -> None:
@@ -251,7 +263,8 @@ def build_batch_parser() -> argparse.ArgumentParser:
                              "command's --oq-hazard, it does not rescale the level's motions)")
     parser.add_argument("--scheduler", metavar="ADDRESS",
                         help="run the simulations on the Dask distributed cluster at ADDRESS "
-                             "(default: this machine's cores); the numbers do not depend on it")
+                             "(default: this machine's cores); the numbers do not depend on it. " + _SCHEDULER_TRUST)
+    _add_tls_options(parser)
     parser.add_argument("--format", metavar="FORMATS", type=_job_formats, default=JOB_FORMATS,
                         help="what to write into each building's folder besides the CSV files: html, pdf, "
                              "xlsx (default: html,pdf,xlsx)")
@@ -427,7 +440,7 @@ def _assess(args: argparse.Namespace, say) -> int:
         calibration = read_calibration(args.calibration)
     if args.scheduler is not None:
         say(f"connecting to the Dask scheduler at {args.scheduler}")
-    runner = _engine_runner(args.scheduler)  # this machine's threads, or a Dask cluster
+    runner = _engine_runner(args.scheduler, args)  # this machine's threads, or a Dask cluster
     results = []
     try:
         for (_, text), out_dir in zip(levels, out_dirs):  # every level computed before any is written
@@ -538,7 +551,7 @@ def _batch(args: argparse.Namespace, say) -> int:
     prepared = batch.prepare_buildings(
         buildings, level=args.hazard, oq_hazard=args.oq_hazard,
         hazard_problems=lambda inventory: _hazard_problems(inventory, args.allow_files_outside), say=say)
-    runner = CachingRunner(_engine_runner(args.scheduler), Path(out_dir) / batch.CACHE_FOLDER)
+    runner = CachingRunner(_engine_runner(args.scheduler, args), Path(out_dir) / batch.CACHE_FOLDER)
     say(f"{len(prepared)} buildings; results are reused from {Path(out_dir) / batch.CACHE_FOLDER}")
     try:
         staged = batch.run_portfolio(prepared, out_dir, runner=runner, seed=args.seed, formats=args.format,
@@ -568,7 +581,7 @@ def _batch(args: argparse.Namespace, say) -> int:
     return EXIT_OK
 
 
-def _engine_runner(scheduler):
+def _engine_runner(scheduler, args=None):
     """What simulates the cases the cache does not hold: this machine's threads, or a Dask cluster."""
     from assess.mechanics.runner import LocalRunner
     if scheduler is None:
@@ -578,7 +591,8 @@ def _engine_runner(scheduler):
     except ImportError:
         raise InputError([Problem(file="--scheduler", message="this installation of assess cannot run on a Dask "
                                   "cluster.", fix="leave out --scheduler to run on this machine.")]) from None
-    return DaskRunner.connect(scheduler)
+    return DaskRunner.connect(scheduler, tls_ca_file=getattr(args, "tls_ca_file", None),
+                              tls_cert=getattr(args, "tls_cert", None), tls_key=getattr(args, "tls_key", None))
 
 
 def _with_comparison(result, explicit: Path | None, in_out_dir: Path, say):
