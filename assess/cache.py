@@ -26,23 +26,32 @@ written to a temporary file and renamed into place, so a reader never sees
 half a pack and two processes writing at once lose nothing; packs are never
 modified, only merged (when there are more than :data:`MAX_PACKS`) or
 deleted, least recently used first, when the folder passes ``max_bytes``. A
-pack that cannot be read (damaged, truncated, of another format) is treated
-as missing and removed: its cases are simulated again.
+pack that cannot be read (damaged, truncated, of another format, not a
+regular file, larger than :data:`MAX_PACK_BYTES` as a file or inflated) is
+treated as missing and removed: its cases are simulated again. Nothing read
+from a pack is trusted (an output folder copied from elsewhere brings its
+cache along): a stored row whose values the engine cannot have produced
+(a NaN or negative peak, an unknown mode or solver) is a miss.
 """
 from __future__ import annotations
 
 import contextlib
 import dataclasses
 import hashlib
+import math
 import os
+import stat
 import tempfile
 import time
+import zipfile
 from pathlib import Path
 from typing import Callable, Optional, Sequence
 
 import numpy as np
 
-from assess.mechanics.engine import DEFAULT_TAIL_S, CasePeaks, checked_record_index
+from assess.mechanics.block import MODES
+from assess.mechanics.engine import (DEFAULT_TAIL_S, ELASTIC_INTERFACE_KERNEL, EVENT_DRIVEN, GENERAL, ROCKING_KERNEL,
+                                     SLIDING_KERNEL, VELOCITY_FRICTION_KERNEL, CasePeaks, checked_record_index)
 
 #: Bump when the pack layout changes: packs of another format are not read.
 PACK_FORMAT = 1
@@ -54,10 +63,16 @@ MAX_PACKS = 64
 KEY_BYTES = 16
 #: Leftover temporary files (a writer killed mid-write) older than this are removed [s].
 STALE_TEMPORARY_S = 3600.0
+#: Largest pack read [bytes], as a file and inflated (all its arrays together; about 1.5 million cases):
+#: a pack past it is not read (its cases are simulated again), so a pack cannot make assess use more memory.
+MAX_PACK_BYTES = 256 << 20
+#: The engine's solvers, the only ``solver`` a stored row may name.
+SOLVERS = (SLIDING_KERNEL, VELOCITY_FRICTION_KERNEL, ELASTIC_INTERFACE_KERNEL, ROCKING_KERNEL, GENERAL, EVENT_DRIVEN)
 _MECHANICS = Path(__file__).resolve().parent / "mechanics"
 _FLOATS = ("sliding_max_m", "sliding_residual_m", "theta_max_over_alpha")
 _BOOLS = ("uplift", "overturned")
 _TEXTS = ("mode", "solver")
+_PACK_ARRAYS = ("format", "keys") + _FLOATS + _BOOLS + _TEXTS
 
 
 def engine_version(folder: Path = _MECHANICS) -> str:
@@ -352,19 +367,105 @@ def _write_pack(folder: Path, keys: np.ndarray, values: dict) -> str:
 
 
 def _read_pack(path: Path):
-    """``(keys, values)`` of a pack, or None when it cannot be read or is not a pack of this format."""
+    """``(keys, values)`` of a pack, or None when it cannot be read or is not a pack of this format.
+
+    Nothing in a pack is trusted (a copied output folder brings its ``.cache``
+    along): only a regular file of at most :data:`MAX_PACK_BYTES` is opened
+    (:func:`_open_regular`), its arrays are checked against their declared
+    sizes before any is inflated (:func:`_pack_arrays`), and every row is
+    checked (:func:`_plausible_rows`); a row that fails is left out, a miss.
+    """
+    stream = _open_regular(path)
+    if stream is None:
+        return None
     try:
-        with np.load(path, allow_pickle=False) as pack:
-            if int(pack["format"]) != PACK_FORMAT:
-                return None
-            keys = pack["keys"]
-            values = {name: pack[name] for name in _FLOATS + _BOOLS + _TEXTS}
+        with stream, zipfile.ZipFile(stream) as archive:
+            arrays = _pack_arrays(archive)
     except Exception:  # noqa: BLE001 - a damaged file raises many kinds (zip, zlib, value, key errors)
         return None
+    if arrays is None or arrays["format"].shape != () or arrays["format"].dtype.kind not in "iu" \
+            or int(arrays["format"]) != PACK_FORMAT:
+        return None
+    keys = arrays["keys"]
+    values = {name: arrays[name] for name in _FLOATS + _BOOLS + _TEXTS}
     n = keys.shape
     if keys.dtype != np.dtype(f"S{KEY_BYTES}") or keys.ndim != 1 or any(v.shape != n for v in values.values()):
         return None
     if any(values[f].dtype.kind != "f" for f in _FLOATS) or any(values[f].dtype.kind != "b" for f in _BOOLS) \
             or any(values[f].dtype.kind != "U" for f in _TEXTS):
         return None
-    return keys, values
+    kept = _plausible_rows(values)
+    return keys[kept], {name: column[kept] for name, column in values.items()}
+
+
+def _open_regular(path):
+    """``path`` opened for reading if it is a regular file of at most :data:`MAX_PACK_BYTES`; else None.
+
+    Opened without following a final link and without blocking (a FIFO named
+    ``*.npz`` would wait for a writer forever), then checked with ``fstat``,
+    so what is read is what was checked.
+    """
+    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_BINARY", 0)
+    try:
+        handle = os.open(path, flags)
+    except OSError:
+        return None
+    try:
+        status = os.fstat(handle)
+        if stat.S_ISREG(status.st_mode) and status.st_size <= MAX_PACK_BYTES:
+            return os.fdopen(handle, "rb")
+    except OSError:
+        pass
+    os.close(handle)
+    return None
+
+
+def _pack_arrays(archive: zipfile.ZipFile) -> dict | None:
+    """The pack's arrays, or None if a member is missing, not a plain array, or too large.
+
+    The members' inflated sizes (from the zip directory) must add up to at
+    most :data:`MAX_PACK_BYTES`, and each array's shape and type (from its
+    ``.npy`` header) must fit its member's size, before a byte is inflated;
+    the zip reader stops a member at its declared size.
+    """
+    members = archive.infolist()
+    if len(members) > 4 * len(_PACK_ARRAYS) or sum(m.file_size for m in members) > MAX_PACK_BYTES:
+        return None
+    by_name = {m.filename: m for m in members}
+    arrays = {}
+    for name in _PACK_ARRAYS:
+        member = by_name.get(name + ".npy")
+        if member is None:
+            return None
+        with archive.open(member) as stream:
+            version = np.lib.format.read_magic(stream)
+            if version == (1, 0):
+                shape, _, dtype = np.lib.format.read_array_header_1_0(stream)
+            elif version == (2, 0):
+                shape, _, dtype = np.lib.format.read_array_header_2_0(stream)
+            else:
+                return None
+        if dtype.hasobject or math.prod(shape) * dtype.itemsize > member.file_size:
+            return None
+        with archive.open(member) as stream:
+            arrays[name] = np.lib.format.read_array(stream, allow_pickle=False)
+    return arrays
+
+
+def _plausible_rows(values: dict) -> np.ndarray:
+    """Which stored rows could be the engine's: finite peaks in their ranges, known modes and solvers.
+
+    ``sliding_max_m`` and ``theta_max_over_alpha`` are finite and not
+    negative; the residual sliding is finite and no larger than the peak; the
+    mode is one of :data:`assess.mechanics.block.MODES` and the solver one of
+    the engine's. A row that fails is not used (its case is simulated again).
+    """
+    sliding = values["sliding_max_m"]
+    residual = values["sliding_residual_m"]
+    theta = values["theta_max_over_alpha"]
+    with np.errstate(invalid="ignore"):
+        kept = (np.isfinite(sliding) & (sliding >= 0.0) & np.isfinite(theta) & (theta >= 0.0)
+                & np.isfinite(residual) & (np.abs(residual) <= sliding * (1.0 + 1e-9) + 1e-12))
+    kept &= np.isin(values["mode"], np.array(MODES, dtype=str))
+    kept &= np.isin(values["solver"], np.array(SOLVERS, dtype=str))
+    return kept
