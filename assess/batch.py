@@ -68,6 +68,8 @@ _RESERVED = {name.lower() for name in PORTFOLIO_FILES + (CACHE_FOLDER, PREVIOUS_
 _BROWSER_FILES = {".DS_Store", "Thumbs.db", "desktop.ini"}
 #: Most buildings in one portfolio (a university campus has some hundreds).
 MAX_BUILDINGS = 2_000
+#: Bytes of a building name in UTF-8 (it names a folder: 255 bytes at most, less the temporary folders' additions).
+MAX_NAME_BYTES = 200
 #: A building's name becomes a folder name: letters, digits, space and . _ - ( ) +.
 _BUILDING_NAME = re.compile(r"[\w][\w .()+-]*")
 #: Largest previous summary.csv read for the change report [bytes].
@@ -183,6 +185,9 @@ def building_name_problem(name: str) -> str | None:
                 ". _ - ( ) +, starting with a letter or digit and not ending with a dot or a space.")
     if name.lower() in _RESERVED:
         return f"the building name {schema.quote(name)} is the name of a file the portfolio writes itself."
+    if len(name.encode("utf-8")) > MAX_NAME_BYTES:  # 80 characters may be 320 bytes; file names hold 255
+        return (f"the building name is {len(name.encode('utf-8'))} bytes in UTF-8; a folder name may have at most "
+                f"{MAX_NAME_BYTES} (letters outside ASCII take 2 to 4 bytes each).")
     return None
 
 
@@ -249,7 +254,9 @@ def _folder_portfolio(folder: Path, given: str, allow_outside: bool) -> list[Bui
         if why is None and name.lower() in seen:
             why = f"the building name '{name}' is also that of {seen[name.lower()]} (names ignore case)."
         outside = check_record_location(str(path), folder)
-        if outside and not allow_outside:
+        if why is None and xlsx.file_problem(path) is not None:  # a link loop, a FIFO: before any resolve or open
+            why = xlsx.file_problem(path)
+        elif outside and not allow_outside:
             why = (f"{path.name} is a link to a file outside the folder ({os.path.realpath(path)[:200]}); files "
                    "are read only from the portfolio's folder and its subfolders.")
         if why:
