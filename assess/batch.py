@@ -47,7 +47,7 @@ from assess.batch_report import building_row, changes_between, portfolio_html
 from assess.errors import InputError, Problem, raise_if_any
 from assess.inventory import schema, xlsx
 from assess.inventory.schema import Column, SheetSpec
-from assess.output import swap_folder
+from assess.output import machine_refusal, swap_folder
 
 #: The sheet of a portfolio workbook (SPEC §6).
 BUILDINGS = SheetSpec("buildings", (
@@ -417,10 +417,12 @@ class StagedPortfolio:
                 moved = True
             aside = swap_folder(staging, out_dir)
             self.staging = None
-        except BaseException:
+        except BaseException as error:
             if moved and staged_cache.is_dir():
                 with contextlib.suppress(OSError):
                     os.replace(staged_cache, cache)
+            if machine_refusal(error, out_dir) is not None:
+                raise machine_refusal(error, out_dir) from None
             raise
         finally:
             if aside is not None:
@@ -524,8 +526,10 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
         _write_files(staging, files)
         staged.files = sorted(n for n in files if n != MANIFEST) + [f"{name}/" for name in current]
         return staged
-    except BaseException:
+    except BaseException as error:
         staged.discard()
+        if machine_refusal(error, out_dir) is not None:  # a full disk, a quota: the machine's, not a bug
+            raise machine_refusal(error, out_dir) from None
         raise
 
 
