@@ -140,6 +140,14 @@ def _find_sheets(book: xlsx.Book, report: SheetReport) -> dict[str, str]:
     by_lower = {title.strip().lower(): title for title in book.sheetnames}
     found = {}
     for spec in (EQUIPMENT, HAZARD, SETTINGS):
+        same = same_name_sheets(book.sheetnames, spec.name)
+        if len(same) > 1:
+            shown = " and ".join("'" + title[:40] + "'" for title in same[:4])  # trailing spaces shown
+            report(f"the sheets {shown} all name the "
+                   f"{spec.name} sheet (sheet names are matched ignoring case and spaces around them), so "
+                   "which one holds the table is not clear.",
+                   f"keep one sheet named '{spec.name}': delete or rename the others.")
+            continue
         title = by_lower.get(spec.name)
         if title is not None and not book.is_table(title):
             report(f"sheet '{title}' is a chart, not a table.",
@@ -154,6 +162,15 @@ def _find_sheets(book: xlsx.Book, report: SheetReport) -> dict[str, str]:
                    f"{have}{more}.",
                    f"add a sheet named '{spec.name}' (or rename the sheet that holds its table).")
     return found
+
+
+def same_name_sheets(titles, name: str) -> list[str]:
+    """The sheet titles that name sheet ``name`` (ignoring case and surrounding spaces), in order.
+
+    >>> same_name_sheets(["equipment", "hazard", "EQUIPMENT "], "equipment")
+    ['equipment', 'EQUIPMENT ']
+    """
+    return [title for title in titles if title.strip().lower() == name]
 
 
 def _sheet_cells(book: xlsx.Book, title: str, report: SheetReport) -> xlsx.SheetCells | None:
