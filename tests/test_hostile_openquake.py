@@ -113,6 +113,10 @@ def test_a_steep_segment_against_the_closed_form():
     rate = segment_failure_rate(0.0, math.inf, 1.0, anchor_rate, k, median, beta)
     expected = cornell_failure_rate(anchor_rate, k, median, beta)  # 1e-4 · e^{k²β²/2} = 1e-4 · e^{112.5}
     assert math.isclose(rate, expected, rel_tol=1e-9)
+    # steeper still, k β = 60: e^{k²β²/2} = e^{1800} overflows a float, the rate does not. With θ = e^6 g,
+    # λ_f = c θ^-k e^{k²β²/2} = 1e-4 · e^{-1800} · e^{1800} = 1e-4 (Cornell's form, exponents added by hand)
+    rate = segment_failure_rate(0.0, math.inf, 1.0, anchor_rate, 300.0, math.exp(6.0), 0.2)
+    assert math.isclose(rate, 1e-4, rel_tol=1e-9)
 
 
 def test_a_curve_with_poe_1e400_through_the_cli_exits_2(tmp_path):

@@ -214,10 +214,12 @@ def segment_failure_rate(level_lo_g, level_hi_g, anchor_level_g, anchor_rate, sl
     z_hi = math.inf if math.isinf(level_hi_g) else (math.log(level_hi_g) - m) / beta
     shift = slope_k * beta
     first = math.exp(log_c + boundary(level_lo_g)) - math.exp(log_c + boundary(level_hi_g))
-    # in logarithms: for a steep segment e^{k²β²/2} overflows while the Φ difference underflows
-    log_difference = _log_phi_difference(z_lo + shift, z_hi + shift)
-    gauss = 0.0 if log_difference == -math.inf else math.exp(
-        log_c - slope_k * m + 0.5 * shift * shift + log_difference)
+    exponent = log_c - slope_k * m + 0.5 * shift * shift
+    if exponent < _LARGEST_EXPONENT:
+        gauss = math.exp(exponent) * _phi_difference(z_lo + shift, z_hi + shift)
+    else:  # a steep segment: e^{k²β²/2} overflows while the Φ difference underflows, so in logarithms
+        log_difference = _log_phi_difference(z_lo + shift, z_hi + shift)
+        gauss = 0.0 if log_difference == -math.inf else math.exp(exponent + log_difference)
     return max(first + gauss, 0.0)
 
 
@@ -337,6 +339,10 @@ def _phi_difference(lower, upper) -> float:
     if lower >= 0.0:
         return float(special.ndtr(-lower) - special.ndtr(-upper))
     return float(special.ndtr(upper) - special.ndtr(lower))
+
+
+#: Largest exponent whose exponential the risk integral takes directly (e^709 is the largest float's order).
+_LARGEST_EXPONENT = 700.0
 
 
 def _log_phi_difference(lower, upper) -> float:
