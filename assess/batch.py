@@ -53,11 +53,11 @@ from assess.errors import InputError, Problem, raise_if_any
 from assess.hazard.motions import select_level
 from assess.hazard.openquake import read_openquake_hazard
 from assess.hazard.records import check_record_location
-from assess.inventory import read_workbook, schema
+from assess.inventory import read_workbook, schema, xlsx
 from assess.inventory.schema import Column, SheetSpec
 from assess.inventory.workbook import SheetReport, open_book, read_table, sheet_cells
-from assess.folders import (OUTPUT_NAMES, existing_folder, folder_mode, refuse_foreign_files, swap_folder,
-                            write_files)
+from assess.folders import (OUTPUT_NAMES, existing_folder, folder_mode, machine_refusal, refuse_foreign_files,
+                            swap_folder, write_files)
 from assess.tables import csv_text, restore_text
 
 #: The sheet of a portfolio workbook (docs/workbook.md).
@@ -79,6 +79,8 @@ _RESERVED = {name.lower() for name in PORTFOLIO_FILES + (CACHE_FOLDER, PREVIOUS_
 _BROWSER_FILES = {".DS_Store", "Thumbs.db", "desktop.ini"}
 #: Most buildings in one portfolio (a university campus has some hundreds).
 MAX_BUILDINGS = 2_000
+#: Bytes of a building name in UTF-8 (it names a folder: 255 bytes at most, less the temporary folders' additions).
+MAX_NAME_BYTES = 200
 #: A building's name becomes a folder name: letters, digits, space and . _ - ( ) +.
 _BUILDING_NAME = re.compile(r"[\w][\w .()+-]*")
 #: Largest previous summary.csv read for the change report [bytes].
@@ -188,6 +190,9 @@ def building_name_problem(name: str) -> str | None:
                 ". _ - ( ) +, starting with a letter or digit and not ending with a dot or a space.")
     if name.lower() in _RESERVED:
         return f"the building name {schema.quote(name)} is the name of a file the portfolio writes itself."
+    if len(name.encode("utf-8")) > MAX_NAME_BYTES:  # 80 characters may be 320 bytes; file names hold 255
+        return (f"the building name is {len(name.encode('utf-8'))} bytes in UTF-8; a folder name may have at most "
+                f"{MAX_NAME_BYTES} (letters outside ASCII take 2 to 4 bytes each).")
     return None
 
 
@@ -252,7 +257,9 @@ def _folder_portfolio(folder: Path, given: str, allow_outside: bool) -> list[Bui
         if why is None and name.lower() in seen:
             why = f"the building name '{name}' is also that of {seen[name.lower()]} (names ignore case)."
         outside = check_record_location(str(path), folder)
-        if outside and not allow_outside:
+        if why is None and xlsx.file_problem(path) is not None:  # a link loop, a FIFO: before any resolve or open
+            why = xlsx.file_problem(path)
+        elif outside and not allow_outside:
             why = (f"{path.name} is a link to a file outside the folder ({os.path.realpath(path)[:200]}); files "
                    "are read only from the portfolio's folder and its subfolders.")
         if why:
@@ -406,10 +413,12 @@ class StagedPortfolio:
                 moved = True
             aside = swap_folder(staging, out_dir)
             self.staging = None
-        except BaseException:
+        except BaseException as error:
             if moved and staged_cache.is_dir():
                 with contextlib.suppress(OSError):
                     os.replace(staged_cache, cache)
+            if machine_refusal(error, out_dir) is not None:
+                raise machine_refusal(error, out_dir) from None
             raise
         finally:
             if aside is not None:
@@ -511,8 +520,10 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
         write_files(staging, files)
         staged.files = sorted(n for n in files if n != MANIFEST) + [f"{name}/" for name in current]
         return staged
-    except BaseException:
+    except BaseException as error:
         staged.discard()
+        if machine_refusal(error, out_dir) is not None:  # a full disk, a quota: the machine's, not a bug
+            raise machine_refusal(error, out_dir) from None
         raise
 
 

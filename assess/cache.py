@@ -40,9 +40,12 @@ from __future__ import annotations
 import contextlib
 import dataclasses
 import hashlib
+import math
 import os
+import stat
 import tempfile
 import time
+import zipfile
 from pathlib import Path
 from typing import Optional
 
@@ -51,8 +54,9 @@ import numpy as np
 import numba
 
 import assess
-from assess.mechanics.block import BlockResponse
-from assess.mechanics.gateway import PEAKS, RESPONSE, CasePeaks, Cases, LocalRunner, Progress, Result, RunnerBase
+from assess.mechanics.block import MODES, BlockResponse
+from assess.mechanics.gateway import (ENGINE_SOLVERS, PEAKS, RESPONSE, CasePeaks, Cases, LocalRunner, Progress, Result,
+                                     RunnerBase)
 
 #: Bump when the pack layout changes: packs of another format are not read.
 PACK_FORMAT = 1
@@ -72,6 +76,15 @@ _BOOLS = ("uplift", "overturned")
 _TEXTS = ("mode", "solver")
 _RESPONSE_FLOATS = ("sliding_max_m", "sliding_residual_m", "theta_max_over_alpha", "overturn_time_s")
 _HISTORIES = ("time_s", "sliding_m", "theta_rad")
+#: Largest pack read [bytes], as a file and inflated (all its arrays together; about 1.5 million cases):
+#: a pack past it is not read (its cases are simulated again), so a pack cannot make assess use more memory.
+MAX_PACK_BYTES = 256 << 20
+#: Arrays of a pack of each format.
+_PACK_ARRAYS = {
+    PACK_FORMAT: ("format", "keys") + _FLOATS + _BOOLS + _TEXTS,
+    RESPONSE_PACK_FORMAT: ("format", "keys") + _RESPONSE_FLOATS + _BOOLS + _HISTORIES
+    + ("solver", "mode_count", "mode_time", "mode_name", "history_length"),
+}
 
 
 def engine_version(folder: Path = _MECHANICS) -> str:
@@ -417,24 +430,118 @@ def _write_arrays(folder: Path, **arrays) -> str:
 
 def _read_pack(path: Path):
     """``(keys, values)`` of a pack of peaks, ``{key: BlockResponse}`` of a pack of responses, or None when
-    it cannot be read or is of neither format."""
+    it cannot be read or is of neither format.
+
+    Nothing in a pack is trusted (a copied output folder brings its ``.cache``
+    along): only a regular file of at most :data:`MAX_PACK_BYTES` is opened
+    (:func:`_open_regular`), its arrays are checked against their declared
+    sizes before any is inflated (:func:`_pack_arrays`), and every row is
+    checked (:func:`_plausible_rows`); a row that fails is left out, a miss.
+    """
+    stream = _open_regular(path)
+    if stream is None:
+        return None
     try:
-        with np.load(path, allow_pickle=False) as pack:
-            if int(pack["format"]) == RESPONSE_PACK_FORMAT:
-                return _responses_of(pack)
-            if int(pack["format"]) != PACK_FORMAT:
+        with stream, zipfile.ZipFile(stream) as archive:
+            head = _pack_arrays(archive, ("format",))
+            if head is None or head["format"].shape != () or head["format"].dtype.kind not in "iu" \
+                    or int(head["format"]) not in _PACK_ARRAYS:
                 return None
-            keys = pack["keys"]
-            values = {name: pack[name] for name in _FLOATS + _BOOLS + _TEXTS}
+            form = int(head["format"])
+            arrays = _pack_arrays(archive, _PACK_ARRAYS[form])
     except Exception:  # noqa: BLE001 - a damaged file raises many kinds (zip, zlib, value, key errors)
         return None
+    if arrays is None:
+        return None
+    if form == RESPONSE_PACK_FORMAT:
+        try:
+            return _responses_of(arrays)
+        except (ValueError, TypeError, IndexError):  # inconsistent columns: not a pack this code wrote
+            return None
+    keys = arrays["keys"]
+    values = {name: arrays[name] for name in _FLOATS + _BOOLS + _TEXTS}
     n = keys.shape
     if keys.dtype != np.dtype(f"S{KEY_BYTES}") or keys.ndim != 1 or any(v.shape != n for v in values.values()):
         return None
     if any(values[f].dtype.kind != "f" for f in _FLOATS) or any(values[f].dtype.kind != "b" for f in _BOOLS) \
             or any(values[f].dtype.kind != "U" for f in _TEXTS):
         return None
-    return keys, values
+    kept = _plausible_rows(values)
+    return keys[kept], {name: column[kept] for name, column in values.items()}
+
+
+def _open_regular(path):
+    """``path`` opened for reading if it is a regular file of at most :data:`MAX_PACK_BYTES`; else None.
+
+    Opened without following a final link and without blocking (a FIFO named
+    ``*.npz`` would wait for a writer forever), then checked with ``fstat``,
+    so what is read is what was checked.
+    """
+    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_BINARY", 0)
+    try:
+        handle = os.open(path, flags)
+    except OSError:
+        return None
+    try:
+        status = os.fstat(handle)
+        if stat.S_ISREG(status.st_mode) and status.st_size <= MAX_PACK_BYTES:
+            return os.fdopen(handle, "rb")
+    except OSError:
+        pass
+    os.close(handle)
+    return None
+
+
+def _pack_arrays(archive: zipfile.ZipFile, names) -> dict | None:
+    """The pack's arrays ``names``, or None if one is missing, not a plain array, or too large.
+
+    The members' inflated sizes (from the zip directory) must add up to at
+    most :data:`MAX_PACK_BYTES`, and each array's shape and type (from its
+    ``.npy`` header) must fit its member's size, before a byte is inflated;
+    the zip reader stops a member at its declared size.
+    """
+    members = archive.infolist()
+    if len(members) > 64 or sum(m.file_size for m in members) > MAX_PACK_BYTES:
+        return None
+    by_name = {m.filename: m for m in members}
+    arrays = {}
+    for name in names:
+        member = by_name.get(name + ".npy")
+        if member is None:
+            return None
+        with archive.open(member) as stream:
+            version = np.lib.format.read_magic(stream)
+            if version == (1, 0):
+                shape, _, dtype = np.lib.format.read_array_header_1_0(stream)
+            elif version == (2, 0):
+                shape, _, dtype = np.lib.format.read_array_header_2_0(stream)
+            else:
+                return None
+        if dtype.hasobject or math.prod(shape) * dtype.itemsize > member.file_size:
+            return None
+        with archive.open(member) as stream:
+            arrays[name] = np.lib.format.read_array(stream, allow_pickle=False)
+    return arrays
+
+
+def _plausible_rows(values: dict) -> np.ndarray:
+    """Which stored rows could be the engine's: finite peaks in their ranges, known modes and solvers.
+
+    ``sliding_max_m`` and ``theta_max_over_alpha`` are finite and not
+    negative; the residual sliding is finite and no larger than the peak; the
+    mode (where stored) is one of :data:`assess.mechanics.block.MODES` and the
+    solver one of the engine's. A row that fails is not used (its case is simulated again).
+    """
+    sliding = values["sliding_max_m"]
+    residual = values["sliding_residual_m"]
+    theta = values["theta_max_over_alpha"]
+    with np.errstate(invalid="ignore"):
+        kept = (np.isfinite(sliding) & (sliding >= 0.0) & np.isfinite(theta) & (theta >= 0.0)
+                & np.isfinite(residual) & (np.abs(residual) <= sliding * (1.0 + 1e-9) + 1e-12))
+    if "mode" in values:
+        kept &= np.isin(values["mode"], np.array(MODES, dtype=str))
+    kept &= np.isin(values["solver"], np.array(ENGINE_SOLVERS, dtype=str))
+    return kept
 
 
 def _responses_of(pack) -> dict | None:
@@ -452,8 +559,11 @@ def _responses_of(pack) -> dict | None:
         return None
     mode_start = np.concatenate([[0], np.cumsum(counts)])
     history_start = np.concatenate([[0], np.cumsum(lengths)])
+    kept = _plausible_rows(columns) & np.all(np.isin(mode_name, np.array(MODES, dtype=str)))
     out = {}
     for i, key in enumerate(keys.tolist()):
+        if not kept[i]:
+            continue  # not a response the engine gives: simulated again
         sequence = tuple((float(t), str(m)) for t, m in zip(mode_time[mode_start[i]:mode_start[i + 1]],
                                                              mode_name[mode_start[i]:mode_start[i + 1]]))
         history = {}

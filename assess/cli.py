@@ -147,12 +147,30 @@ def build_parser() -> argparse.ArgumentParser:
                              "in --out, if any)")
     parser.add_argument("--scheduler", metavar="ADDRESS",
                         help="run the simulations on the Dask distributed cluster whose scheduler is at ADDRESS "
-                             "(e.g. tcp://10.0.0.5:8786); the numbers do not depend on where they ran "
-                             "(default: this machine's cores)")
+                             "(e.g. tcp://10.0.0.5:8786, or tls://... with --tls-*); the numbers do not depend on "
+                             "where they ran (default: this machine's cores). " + _SCHEDULER_TRUST)
+    _add_tls_options(parser)
     _add_allow_records_outside(parser)
     parser.add_argument("--quiet", action="store_true", help="do not print progress")
     parser.add_argument("--version", action="version", version=f"assess {__version__}")
     return parser
+
+
+_SCHEDULER_TRUST = ("A scheduler and its workers run code for you and send Python objects that assess opens: "
+                    "give only a scheduler you run or trust, as for any Dask client")
+
+
+def _add_tls_options(parser: argparse.ArgumentParser) -> None:
+    for option, what in (("--tls-ca-file", "certificate authority that signed the scheduler's certificate"),
+                         ("--tls-cert", "this client's certificate"), ("--tls-key", "this client's private key")):
+        parser.add_argument(option, metavar="PEM", help=f"for a tls:// --scheduler: the {what} (default: Dask's "
+                            "configuration, distributed.comm.tls.*)")
+
+
+def _tls(args: argparse.Namespace) -> dict:
+    """The --tls-* files given, as :meth:`assess.mechanics.distributed.DaskRunner.connect` takes them."""
+    return {name: value for name, value in (("tls_ca_file", args.tls_ca_file), ("tls_cert", args.tls_cert),
+                                            ("tls_key", args.tls_key)) if value is not None}
 
 
 def _add_allow_records_outside(parser: argparse.ArgumentParser) -> None:
@@ -250,7 +268,8 @@ def build_batch_parser() -> argparse.ArgumentParser:
                              "command's --oq-hazard, it does not rescale the level's motions)")
     parser.add_argument("--scheduler", metavar="ADDRESS",
                         help="run the simulations on the Dask distributed cluster at ADDRESS "
-                             "(default: this machine's cores); the numbers do not depend on it")
+                             "(default: this machine's cores); the numbers do not depend on it. " + _SCHEDULER_TRUST)
+    _add_tls_options(parser)
     parser.add_argument("--format", metavar="FORMATS", type=_job_formats, default=JOB_FORMATS,
                         help="what to write into each building's folder besides the CSV files: html, pdf, "
                              "xlsx (default: html,pdf,xlsx)")
@@ -321,7 +340,7 @@ def _assess(args: argparse.Namespace, say) -> int:
         args.workbook, args.hazard, out=args.out, formats=args.format, units=args.units, jobs=args.jobs,
         seed=args.seed, oq_hazard=args.oq_hazard, oq_site=args.oq_site, derive_floors=args.derive_floors,
         calibration=args.calibration, compare_with=args.compare_with, scheduler=args.scheduler,
-        allow_records_outside=args.allow_records_outside), say)
+        scheduler_tls=_tls(args), allow_records_outside=args.allow_records_outside), say)
     for level in levels:
         written = write_uninterrupted(level.files, level.out_dir)
         counts = level.result.risk_counts()
@@ -351,7 +370,7 @@ def _batch(args: argparse.Namespace, say) -> int:
 
     staged, runner, out_dir = job.run_batch(job.BatchJob(
         args.portfolio, out=args.out, hazard=args.hazard, oq_hazard=args.oq_hazard, scheduler=args.scheduler,
-        formats=args.format, seed=args.seed, jobs=args.jobs, allow_files_outside=args.allow_files_outside), say)
+        scheduler_tls=_tls(args), formats=args.format, seed=args.seed, jobs=args.jobs, allow_files_outside=args.allow_files_outside), say)
     try:
         with held_back(out_dir):
             staged.commit()

@@ -16,13 +16,26 @@ MAX_PROBLEM_CHARS = 1000
 MAX_PROBLEMS_SHOWN = 50
 
 
+def printable(text: str) -> str:
+    r"""``text`` with every control character written as its escape (``\x1b``), so that text taken from
+    a file (an effect name, a cell) cannot move the cursor, recolour or clear the user's terminal.
+
+    >>> print(printable("slide" + chr(27) + "[2J" + chr(7) + " ok"))
+    slide\x1b[2J\x07 ok
+    """
+    text = str(text)
+    if text.isprintable():
+        return text
+    return "".join(c if c.isprintable() else repr(c)[1:-1] for c in text)
+
+
 def capped(text: str, limit: int = MAX_PROBLEM_CHARS) -> str:
-    """``text`` cut to ``limit`` characters, saying how much was left out.
+    """``text`` cut to ``limit`` characters, saying how much was left out, control characters escaped.
 
     >>> capped("x" * 30, 10)
     'xxxxxxxxxx… (20 more characters)'
     """
-    text = str(text)
+    text = printable(text)
     return text if len(text) <= limit else f"{text[:limit]}… ({len(text) - limit} more characters)"
 
 

@@ -10,6 +10,7 @@ library: the command line checks a folder before importing the core.
 from __future__ import annotations
 
 import contextlib
+import errno
 import os
 import shutil
 import tempfile
@@ -59,6 +60,49 @@ def refuse_foreign_files(out_dir: Path, foreign: list[str], command: str = "asse
             fix=f"give --out a new or empty folder, or the folder of an earlier {run}.")])
 
 
+#: Errors of the machine while writing (not of assess, not of the input), in words.
+MACHINE_ERRORS = {
+    errno.ENOSPC: "the disk is full (no space left on the device)",
+    errno.EDQUOT: "your disk quota is used up",
+    errno.EROFS: "the file system is read-only",
+    errno.EACCES: "you may not write there (permission denied)",
+    errno.EPERM: "you may not write there (operation not permitted)",
+    errno.EFBIG: "a file is too large for the file system",
+}
+
+
+def machine_refusal(error: BaseException, folder) -> InputError | None:
+    """The exit-2 refusal for ``error`` if the machine refused to write into ``folder`` (a full disk, a quota,
+    a read-only file system, no permission); None for anything else (then it is a bug).
+
+    Names the folder and says the previous output is left as it was (every
+    writer here writes beside it and swaps it in only when complete).
+
+    >>> print(machine_refusal(OSError(errno.ENOSPC, "No space left on device"), "reports/lab").problems[0])
+    reports/lab: the output could not be written: the disk is full (no space left on the device). The previous output in this folder, if any, is left as it was. Fix: free space on that disk (or give --out a folder on another disk), then run again.
+    """
+    if not isinstance(error, OSError) or error.errno not in MACHINE_ERRORS:
+        return None
+    return InputError([Problem(
+        file=str(folder), message=f"the output could not be written: {MACHINE_ERRORS[error.errno]}. The previous "
+        "output in this folder, if any, is left as it was.",
+        fix=("free space on that disk (or give --out a folder on another disk), then run again."
+             if error.errno in (errno.ENOSPC, errno.EDQUOT, errno.EFBIG) else
+             "give --out a folder you may write to, then run again."))])
+
+
+@contextlib.contextmanager
+def machine_errors(folder):
+    """Turn the machine's refusal to write (:func:`machine_refusal`) into an exit-2 :class:`InputError`."""
+    try:
+        yield
+    except OSError as error:
+        refusal = machine_refusal(error, folder)
+        if refusal is None:
+            raise
+        raise refusal from None
+
+
 def write_atomically(files: dict[str, bytes], out_dir: Path) -> list[Path]:
     """Make ``out_dir`` hold exactly ``files``: all of them, or (on failure) the folder as it was.
 
@@ -72,6 +116,11 @@ def write_atomically(files: dict[str, bytes], out_dir: Path) -> list[Path]:
     """
     out_dir = Path(out_dir)
     check_output_folder(out_dir)
+    with machine_errors(out_dir):
+        return _write_atomically(files, out_dir)
+
+
+def _write_atomically(files: dict[str, bytes], out_dir: Path) -> list[Path]:
     if out_dir.is_symlink():
         out_dir = out_dir.resolve()
     out_dir.parent.mkdir(parents=True, exist_ok=True)
@@ -134,6 +183,11 @@ def write_file_atomically(path: Path, content: bytes) -> Path:
     Other files in its folder are left alone.
     """
     path = Path(path)
+    with machine_errors(path.parent):
+        return _write_file_atomically(path, content)
+
+
+def _write_file_atomically(path: Path, content: bytes) -> Path:
     path.parent.mkdir(parents=True, exist_ok=True)
     handle, temporary = tempfile.mkstemp(prefix=f".{path.name}-", dir=path.parent)
     try:

@@ -32,12 +32,20 @@ class Interrupt:
     received = False
     deferred = False
     written_to: Path | None = None
+    unraisable_before = staticmethod(sys.__unraisablehook__)
 
     @classmethod
     def handler(cls, signum, frame):
         cls.received = True
         if not cls.deferred:
             raise KeyboardInterrupt
+
+    @staticmethod
+    def unraisable(unraisable):
+        """An interrupt raised where Python can only print it (a weakref callback, a ``__del__``): recorded
+        already, so said once by the run's exit (130), not as "Exception ignored in ..."."""
+        if not (isinstance(unraisable.exc_value, KeyboardInterrupt) and Interrupt.received):
+            Interrupt.unraisable_before(unraisable)
 
     @classmethod
     def stop_if_received(cls):
@@ -53,9 +61,11 @@ def sigint_recorded():
         previous = signal.signal(signal.SIGINT, Interrupt.handler)
     except ValueError:  # not the main thread: leave signals alone
         previous = None
+    Interrupt.unraisable_before, sys.unraisablehook = sys.unraisablehook, Interrupt.unraisable
     try:
         yield
     finally:
+        sys.unraisablehook = Interrupt.unraisable_before
         if previous is not None:
             signal.signal(signal.SIGINT, previous)
 

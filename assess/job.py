@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import contextlib
 import json
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Callable, Iterator
 
@@ -46,8 +46,9 @@ def set_threads(jobs: int | None) -> None:
         numba.set_num_threads(min(jobs, numba.config.NUMBA_NUM_THREADS))
 
 
-def engine_runner(scheduler: str | None):
-    """What simulates the cases: this machine's threads, or the Dask cluster at ``scheduler``."""
+def engine_runner(scheduler: str | None, tls: dict | None = None):
+    """What simulates the cases: this machine's threads, or the Dask cluster at ``scheduler`` (``tls``: the
+    certificates of a ``tls://`` scheduler, :meth:`assess.mechanics.distributed.DaskRunner.connect`)."""
     if scheduler is None:
         return LocalRunner()
     try:  # Dask is the optional extra assess[cluster]: imported only when a cluster is asked for
@@ -58,16 +59,17 @@ def engine_runner(scheduler: str | None):
                                   "installation of assess lacks.",
                                   fix='pip install "assess[cluster]" (here and on the workers), or leave out '
                                       "--scheduler to run on this machine's cores.")]) from None
-    return DaskRunner.connect(scheduler)
+    return DaskRunner.connect(scheduler, **(tls or {}))
 
 
 @contextlib.contextmanager
-def open_runner(scheduler: str | None, say: Say, cache_folder: Path | None = None) -> Iterator:
+def open_runner(scheduler: str | None, say: Say, cache_folder: Path | None = None,
+                tls: dict | None = None) -> Iterator:
     """The job's runner (:func:`engine_runner`, behind a cache in ``cache_folder`` if given), closed at
     the end (a cluster's client)."""
     if scheduler is not None:
         say(f"connecting to the Dask scheduler at {scheduler}")
-    engine = engine_runner(scheduler)
+    engine = engine_runner(scheduler, tls)
     try:
         yield engine if cache_folder is None else CachingRunner(engine, cache_folder)
     finally:
@@ -156,6 +158,7 @@ class AssessmentJob:
     calibration: Path | None = None
     compare_with: Path | None = None
     scheduler: str | None = None
+    scheduler_tls: dict = field(default_factory=dict)
     allow_records_outside: bool = False
 
 
@@ -191,7 +194,7 @@ def run_job(job: AssessmentJob, say: Say = lambda message: None) -> Iterator[Lev
     calibration = read_calibration(job.calibration) if job.calibration is not None else None
     hazard_curve = oq_hazard if oq_hazard is not None and oq_hazard.kind == "curve" else None
     results = []
-    with open_runner(job.scheduler, say) as runner:
+    with open_runner(job.scheduler, say, tls=job.scheduler_tls) as runner:
         for (_, text), out_dir in zip(levels, out_dirs):  # every level computed before any is written
             result = pipeline.run_assessment(inventory, text, seed=job.seed, progress=say, oq_hazard=oq_hazard,
                                              derive_floors_roof=job.derive_floors, calibration=calibration,
@@ -218,6 +221,7 @@ class BatchJob:
     hazard: str | None = None
     oq_hazard: Path | None = None
     scheduler: str | None = None
+    scheduler_tls: dict = field(default_factory=dict)
     formats: tuple[str, ...] = JOB_FORMATS
     seed: int = 0
     jobs: int | None = None
@@ -240,7 +244,8 @@ def run_batch(job: BatchJob, say: Say = lambda message: None) -> tuple[batch.Sta
     buildings = batch.read_portfolio(job.portfolio, allow_outside=job.allow_files_outside)
     prepared = batch.prepare_buildings(buildings, level=job.hazard, oq_hazard=job.oq_hazard,
                                        allow_records_outside=job.allow_files_outside, say=say)
-    with open_runner(job.scheduler, lambda message: None, out_dir / batch.CACHE_FOLDER) as runner:
+    with open_runner(job.scheduler, lambda message: None, out_dir / batch.CACHE_FOLDER,
+                     tls=job.scheduler_tls) as runner:
         say(f"{len(prepared)} buildings; results are reused from {out_dir / batch.CACHE_FOLDER}")
         staged = batch.run_portfolio(prepared, out_dir, runner=runner, seed=job.seed, formats=job.formats, say=say)
     return staged, runner, out_dir

@@ -43,6 +43,7 @@ import pandas as pd
 
 from assess.calibration.effects import EFFECTS, calibrated_block, theta_over_declared_alpha
 from assess.errors import InputError, Problem
+from assess.inventory.schema import clip
 from assess.mechanics.block import Block
 from assess.result import Flag
 
@@ -218,7 +219,7 @@ def read_calibration(path) -> AppliedCalibration:
             raise refuse(f"{name} is not a file.")
         if size > MAX_FILE_BYTES:
             raise refuse(f"{name} is {size} bytes, far more than a calibration (a few kB).")
-        text = path.read_text(encoding="utf-8")
+        text = path.read_text(encoding="utf-8-sig")  # a byte order mark (Windows editors) is not content
     except FileNotFoundError:
         raise refuse(f"the calibration file {name} does not exist.") from None
     except (OSError, UnicodeDecodeError) as error:
@@ -232,7 +233,7 @@ def read_calibration(path) -> AppliedCalibration:
         raise refuse(f'{name} has no "selected": {{"effect": ..., "parameters": ...}}.')
     effect_name = selected["effect"]
     if effect_name not in EFFECTS:
-        raise refuse(f"{name}: the selected effect '{effect_name[:60]}' is not one of {', '.join(EFFECTS)}.")
+        raise refuse(f"{name}: the selected effect '{clip(effect_name, 60)}' is not one of {', '.join(EFFECTS)}.")
     effect = EFFECTS[effect_name]
     given = selected.get("parameters", {})
     if not isinstance(given, dict):
@@ -246,14 +247,15 @@ def read_calibration(path) -> AppliedCalibration:
             continue
         if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
                 or not p.lower <= value <= p.upper:
-            raise refuse(f"{name}: parameter {p.name} of {effect_name} is {str(value)[:40]!s}, not a number "
+            raise refuse(f"{name}: parameter {p.name} of {effect_name} is {clip(value, 40)}, not a number "
                          f"from {p.lower:g} to {p.upper:g}.",
                          "give the value assess calibrate wrote, or re-run assess calibrate.")
         parameters[p.name] = float(value)
     applies = content.get("applies_to", "all")
     if applies == "all":
         applies_to = None
-    elif isinstance(applies, list) and applies and all(isinstance(i, (str, int)) for i in applies):
+    elif isinstance(applies, list) and applies and all(isinstance(i, (str, int)) and str(i).isprintable()
+                                                       for i in applies):
         applies_to = tuple(str(i) for i in applies)
     else:
         raise refuse(f'{name}: "applies_to" must be "all" or a list of equipment ids.',

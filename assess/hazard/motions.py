@@ -6,6 +6,7 @@ import pandas as pd
 
 from assess.errors import Problem, raise_if_any
 from assess.hazard.levels import HazardLevel, parse_level
+from assess.hazard.records import MAX_PLAUSIBLE_PGA_G
 
 
 def select_level(hazard: pd.DataFrame, level_text: str, workbook_name: str) -> tuple[HazardLevel, pd.DataFrame]:
@@ -112,11 +113,37 @@ def scale_to_pga(level_motions: pd.DataFrame, pga_g: float, workbook_name: str,
     for column in ("pta_g", "vp_m_s", "scale"):
         if column in scaled:
             scaled[column] = scaled[column] * factor
+    raise_if_any(_records_past_plausible(scaled, factor, pga_g, workbook_name, source))
     note = (f"Motions scaled by {factor:.3f} so that the geometric mean PTA of the level's "
             f"{len(ground_pta)} ground motion{'s' if len(ground_pta) != 1 else ''} "
             f"({reference_g:.3f} g in the workbook) equals the PGA {pga_g:.3f} g of the OpenQuake "
             f"hazard in {source} at this level; floor motions by the same factor.")
     return scaled, factor, note
+
+
+def _records_past_plausible(scaled: pd.DataFrame, factor: float, pga_g: float, workbook_name: str,
+                            source: str) -> list[Problem]:
+    """A problem for each record that the hazard curve's scaling pushes past the plausible peak (5 g).
+
+    The record itself and its ``scale`` cell are fine; the factor comes from
+    the curve (``source``), so the message names the curve and the factor.
+    """
+    if "record_path" not in scaled:
+        return []
+    problems = []
+    for _, row in scaled.iterrows():
+        peak_g = pd.to_numeric(pd.Series([row.get("pta_g")]), errors="coerce").iloc[0]
+        if not row.get("record_path") or not np.isfinite(peak_g) or peak_g <= MAX_PLAUSIBLE_PGA_G:
+            continue
+        where = f", row {int(row['row'])}" if np.isfinite(pd.to_numeric(row.get("row"), errors="coerce")) else ""
+        problems.append(Problem(
+            file=str(source),
+            message=f"--oq-hazard: the curve gives PGA {pga_g:.3g} g at this level, so the level's motions are "
+                    f"scaled by {factor:.3g}; that makes the record of motion '{row['motion']}' ({workbook_name}, "
+                    f"sheet 'hazard'{where}) peak at {peak_g:.3g} g, more than {MAX_PLAUSIBLE_PGA_G:g} g.",
+            fix="check the curve and its site (--oq-site) and the level; if the hazard is right, give the level "
+                "records whose ground motions are nearer its PGA, so that the factor stays moderate."))
+    return problems
 
 
 #: Cap of the floor amplification 1 + 2 z/h (ASCE 7-16 eq. 13.3-1 at the roof).

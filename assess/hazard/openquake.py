@@ -65,6 +65,13 @@ SITE_TOL_DEG = 1e-4
 #: A poe may rise along the curve by this relative amount before the curve is
 #: called non-monotone: the file rounds to 7 significant digits.
 POE_RISE_REL_TOL = 1e-5
+#: Plausible PGA levels of a curve's columns and values of a map [g]: OpenQuake's own demos and
+#: the published regional models sample PGA between about 1e-3 g and 5 g. Outside these
+#: bounds a level is taken for an edited or damaged file (1e-298 g would make everything low).
+MIN_PLAUSIBLE_PGA_G = 1e-5
+MAX_PLAUSIBLE_PGA_G = 10.0
+#: Text from the file is quoted in a message only when it looks like a header or a number.
+_QUOTABLE = re.compile(r"[A-Za-z0-9_.+\-()~/ ]{1,40}")
 _MAX_LISTED_SITES = 12
 _MAX_PROBLEMS = 20
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
@@ -264,6 +271,21 @@ def _comment_text(line: str) -> str:
     return line.strip()[1:]
 
 
+def _shown(text: str, quote: str = "'") -> str:
+    """``text`` of the file quoted, if it looks like a header name or a number; else only its length.
+
+    Messages never echo what a file holds beyond that (a file that is not a
+    hazard curve may be anything, /etc/passwd or the environment).
+
+    >>> _shown("poe-0.1"), _shown("root:x:0:0:root:/root:/bin/bash")
+    ("'poe-0.1'", '(a text of 31 characters, not shown)')
+    """
+    text = str(text)
+    if _QUOTABLE.fullmatch(text):
+        return f"{quote}{text}{quote}"
+    return f"(a text of {len(text)} characters, not shown)"
+
+
 def _fail(path, message, fix, line=None, column=None) -> InputError:
     return InputError([Problem(file=str(path), message=message, fix=fix, row=line,
                                column=column)])
@@ -343,8 +365,9 @@ def read_openquake_hazard(path, site=None) -> OpenQuakeHazard:
 def _layout(path, header, line, metadata) -> dict:
     """Which columns hold what: curve (``poe-<IML>``) or map (``<IMT>-<poe>``)."""
     if "lon" not in header or "lat" not in header:
-        raise _fail(path, f"line {line} should be a header with lon and lat columns, found "
-                    f"'{','.join(header)[:80]}'.", _NOT_OQ_FIX, line=line)
+        raise _fail(path, f"this is not an OpenQuake hazard curve or map: line {line} should be the header "
+                    "'lon,lat,...' followed by columns 'poe-<PGA level>' (curve) or 'PGA-<poe>' (map), and "
+                    f"it has no lon and lat columns (it has {len(header)} field(s)).", _NOT_OQ_FIX, line=line)
     data_cols = [i for i, name in enumerate(header) if name not in SITE_COLUMNS]
     if not data_cols:
         raise _fail(path, "the header has site columns but no hazard columns.", _NOT_OQ_FIX,
@@ -359,9 +382,9 @@ def _layout(path, header, line, metadata) -> dict:
     maps = [_MAP_COLUMN.match(name) for name in names]
     for name, is_curve, is_map in zip(names, curve, maps):
         if is_curve or not is_map or is_map["imt"] == "poe":
-            raise _fail(path, f"column '{name}' is neither a hazard-curve column 'poe-<level>' "
+            raise _fail(path, f"column {_shown(name)} is neither a hazard-curve column 'poe-<level>' "
                         "nor a hazard-map column '<IMT>-<poe>' (or the file mixes both).",
-                        _NOT_OQ_FIX, line=line, column=name)
+                        _NOT_OQ_FIX, line=line, column=name if _QUOTABLE.fullmatch(name) else None)
     return _map_layout(path, line, data_cols, names, maps)
 
 
@@ -377,13 +400,19 @@ def _curve_layout(path, header, line, metadata, data_cols, matches) -> dict:
         imt = PGA
         notes.append("the intensity measure (PGA) was taken from the file name.")
     if imt != PGA:
-        raise _fail(path, f"this hazard curve is for {imt}, not PGA.",
+        raise _fail(path, f"this hazard curve is for {_shown(imt, '')}, not PGA.",
                     "give the PGA curve of the same calculation (hazard_curve-mean-PGA_<id>.csv); "
                     "if there is none, add PGA to intensity_measure_types_and_levels and rerun.",
                     line=1)
     levels = [float(m["iml"]) for m in matches]
     for k, level in enumerate(levels):
-        if not level > 0.0 or (k and level <= levels[k - 1]):
+        if not MIN_PLAUSIBLE_PGA_G <= level <= MAX_PLAUSIBLE_PGA_G:
+            raise _fail(path, f"the PGA level of column '{header[data_cols[k]]}' is {level:g} g, outside "
+                        f"{MIN_PLAUSIBLE_PGA_G:g} to {MAX_PLAUSIBLE_PGA_G:g} g, the levels a PGA hazard curve "
+                        "samples: the file was edited or damaged.",
+                        "give the curve as exported by OpenQuake (its levels are the imls of the job.ini's "
+                        "intensity_measure_types_and_levels).", line=line, column=header[data_cols[k]])
+        if k and level <= levels[k - 1]:
             raise _fail(path, f"the PGA levels must be positive and increase from column to "
                         f"column; '{header[data_cols[k]]}' does not.",
                         "give the curve as exported by OpenQuake.", line=line,
@@ -393,14 +422,14 @@ def _curve_layout(path, header, line, metadata, data_cols, matches) -> dict:
 
 def _map_layout(path, line, data_cols, names, matches) -> dict:
     keep = [(i, float(m["poe"])) for i, m in zip(data_cols, matches) if m["imt"] == PGA]
-    others = sorted({m["imt"] for m in matches if m["imt"] != PGA})
+    others = sorted({_shown(m["imt"], "") for m in matches if m["imt"] != PGA})
     if not keep:
         raise _fail(path, f"the hazard map has no PGA column (it has {', '.join(others)}).",
                     "add PGA to intensity_measure_types_and_levels and rerun, or give the PGA "
                     "hazard curve instead.", line=line)
     for i, poe in keep:
         if not 0.0 < poe < 1.0:
-            raise _fail(path, f"column '{names[data_cols.index(i)]}': a probability of exceedance "
+            raise _fail(path, f"column {_shown(names[data_cols.index(i)])}: a probability of exceedance "
                         "must lie between 0 and 1.", "give the map as exported by OpenQuake.",
                         line=line, column=names[data_cols.index(i)])
     notes = [f"ignored the columns of {', '.join(others)}: only PGA is used."] if others else []
@@ -422,7 +451,7 @@ def _investigation_time(path, metadata, has_comment) -> float:
     except ValueError:
         value = float("nan")
     if not (math.isfinite(value) and value > 0.0):
-        raise _fail(path, f"investigation_time={text} is not a positive number of years.",
+        raise _fail(path, f"investigation_time={_shown(text)} is not a positive number of years.",
                     "give the file as exported by a classical or event-based calculation.", line=1)
     return value
 
@@ -441,9 +470,9 @@ def _rows(path, header, rows, layout):
         except ValueError:
             x = float("nan")
         if not math.isfinite(x):
-            problems.append(Problem(file=str(path), message=f"'{text}' is not a number.",
+            problems.append(Problem(file=str(path), message=f"{_shown(text)} is not a number.",
                                     fix="give the file as exported by OpenQuake.", row=line,
-                                    column=header[i]))
+                                    column=header[i] if _QUOTABLE.fullmatch(header[i]) else None))
         return x
 
     for line, cells in rows:
@@ -609,4 +638,9 @@ def pga_at_level(hazard: OpenQuakeHazard, level: HazardLevel) -> float:
                     f"{what}; OpenQuake writes 0 when the level lies below the hazard curve's "
                     "lowest PGA level.", "give the hazard curve, or rerun with lower PGA levels.",
                     line=site.line, column=f"PGA-{hazard.map_poes[k]:g}")
+    if not MIN_PLAUSIBLE_PGA_G <= value <= MAX_PLAUSIBLE_PGA_G:
+        raise _fail(hazard.path, f"site {site.label()}: the map gives PGA {value:g} g for {what}, outside "
+                    f"{MIN_PLAUSIBLE_PGA_G:g} to {MAX_PLAUSIBLE_PGA_G:g} g: the file was edited or damaged.",
+                    "give the map (or the hazard curve) as exported by OpenQuake.", line=site.line,
+                    column=f"PGA-{hazard.map_poes[k]:g}")
     return value

@@ -70,7 +70,10 @@ MAX_RECORD_BYTES = 32 * 1024 * 1024
 MIN_STEP_S, MAX_STEP_S = 1e-4, 0.1
 #: A header cell is named in a message only when it is a plain name like this one.
 _PLAIN_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,39}")
-_NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+_NUMBER = r"[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?"  # ASCII digits only
+#: A value of a record as written by a program: a decimal number in ASCII digits (or nan/inf, refused later,
+#: located). Python's float() also reads "0.1_0" (underscores) and other scripts' digits ("０.１").
+_PLAIN_NUMBER = re.compile(rf"\s*(?:{_NUMBER}|[-+]?(?:nan|inf|infinity))\s*", re.IGNORECASE)
 _LINE_END = re.compile(r"\r\n|\r|\n")
 _PYSLAMMER_HEADER = "time (s),acceleration (g"
 _HEADER_FIX = ("head the columns time_s,accel_g (or accel_m_s2, accel_cm_s2, accel_gal), or give a "
@@ -469,7 +472,7 @@ def _numbers_of(line) -> list[float] | None:
     if not text:
         return []
     try:
-        return [float(v) for v in text.split()]
+        return [plain_number(v) for v in text.split()]
     except ValueError:
         pass
     found = re.findall(_NUMBER, text)
@@ -530,10 +533,15 @@ def _read_csv(path, lines) -> _Samples:
             raise _problem(path, f"the file holds more than {MAX_RECORD_SAMPLES:,} samples (line {number}).",
                            "give one floor motion per file.", line=number)
         try:
-            accel.append(float(cells[layout.accel_col]))
+            accel.append(plain_number(cells[layout.accel_col]))
             if layout.time_col is not None:
-                times.append(float(cells[layout.time_col]))
+                times.append(plain_number(cells[layout.time_col]))
         except (ValueError, IndexError):
+            if any(_looks_numeric(c) for c in cells):
+                raise _problem(path, f"line {number} holds a value that is not a plain decimal number "
+                               "(underscores, or digits other than 0-9).",
+                               "write the values with the digits 0-9, a point and an exponent only "
+                               "(e.g. 0.10 or 1.0e-1).", line=number) from None
             raise _problem(path, f"line {number} is not a row of numbers (it holds other text).",
                            "remove the stray text or comment it out with #.", line=number) from None
         where.append(number)
@@ -548,11 +556,35 @@ def _read_csv(path, lines) -> _Samples:
 
 
 def _is_number(text) -> bool:
+    return _PLAIN_NUMBER.fullmatch(text) is not None
+
+
+def plain_number(text: str) -> float:
+    """The number ``text`` writes in plain decimal (ASCII digits, a point, an exponent); ValueError otherwise.
+
+    >>> plain_number(" -1.5e-3"), plain_number("nan") != plain_number("nan")
+    (-0.0015, True)
+    >>> for text in ("0.1_0", "\uff10.\uff11", "0x10"):
+    ...     try:
+    ...         plain_number(text)
+    ...     except ValueError:
+    ...         print("refused")
+    refused
+    refused
+    refused
+    """
+    if _PLAIN_NUMBER.fullmatch(text) is None:
+        raise ValueError("not a plain decimal number")
+    return float(text)
+
+
+def _looks_numeric(text: str) -> bool:
+    """Whether Python's float() reads ``text`` although it is no plain number (``0.1_0``, ``０.１``)."""
     try:
         float(text)
     except ValueError:
         return False
-    return True
+    return _PLAIN_NUMBER.fullmatch(text) is None
 
 
 def _cells(row) -> list[str]:

@@ -214,8 +214,12 @@ def segment_failure_rate(level_lo_g, level_hi_g, anchor_level_g, anchor_rate, sl
     z_hi = math.inf if math.isinf(level_hi_g) else (math.log(level_hi_g) - m) / beta
     shift = slope_k * beta
     first = math.exp(log_c + boundary(level_lo_g)) - math.exp(log_c + boundary(level_hi_g))
-    gauss = math.exp(log_c - slope_k * m + 0.5 * shift * shift) * _phi_difference(
-        z_lo + shift, z_hi + shift)
+    exponent = log_c - slope_k * m + 0.5 * shift * shift
+    if exponent < _LARGEST_EXPONENT:
+        gauss = math.exp(exponent) * _phi_difference(z_lo + shift, z_hi + shift)
+    else:  # a steep segment: e^{k²β²/2} overflows while the Φ difference underflows, so in logarithms
+        log_difference = _log_phi_difference(z_lo + shift, z_hi + shift)
+        gauss = 0.0 if log_difference == -math.inf else math.exp(exponent + log_difference)
     return max(first + gauss, 0.0)
 
 
@@ -335,6 +339,32 @@ def _phi_difference(lower, upper) -> float:
     if lower >= 0.0:
         return float(special.ndtr(-lower) - special.ndtr(-upper))
     return float(special.ndtr(upper) - special.ndtr(lower))
+
+
+#: Largest exponent whose exponential the risk integral takes directly (e^709 is the largest float's order).
+_LARGEST_EXPONENT = 700.0
+
+
+def _log_phi_difference(lower, upper) -> float:
+    """ln(Φ(upper) - Φ(lower)) for lower <= upper, also where the difference underflows a float.
+
+    By the tail on the side away from 0: ln Φ(b) + ln(1 - e^{ln Φ(a) - ln Φ(b)}) below 0,
+    the same with the survival function above it.
+
+    >>> round(_log_phi_difference(-1.0, 1.0), 6), round(_log_phi_difference(40.0, 41.0), 1)
+    (-0.381715, -804.6)
+    """
+    if not upper > lower:
+        return -math.inf
+    if lower >= 0.0:  # both above 0: Q(lower) - Q(upper), Q = 1 - Φ = Φ(-x)
+        high, low = float(special.log_ndtr(-lower)), float(special.log_ndtr(-upper))
+    elif upper <= 0.0:
+        high, low = float(special.log_ndtr(upper)), float(special.log_ndtr(lower))
+    else:
+        return math.log(_phi_difference(lower, upper))
+    if high == -math.inf:
+        return -math.inf
+    return high + math.log1p(-math.exp(low - high)) if low < high else -math.inf
 
 
 def _usable_curve(levels_g, annual_rates):

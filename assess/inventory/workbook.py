@@ -149,6 +149,14 @@ def _find_sheets(book: xlsx.Book, report: SheetReport) -> dict[str, str]:
     found = {}
     optional = (SETTINGS, SITE, BUILDING)  # hazard too, where a site sheet gives the hazard
     for spec in (EQUIPMENT, HAZARD, SETTINGS, SITE, BUILDING):
+        same = same_name_sheets(book.sheetnames, spec.name)
+        if len(same) > 1:
+            shown = " and ".join("'" + title[:40] + "'" for title in same[:4])  # trailing spaces shown
+            report(f"the sheets {shown} all name the "
+                   f"{spec.name} sheet (sheet names are matched ignoring case and spaces around them), so "
+                   "which one holds the table is not clear.",
+                   f"keep one sheet named '{spec.name}': delete or rename the others.")
+            continue
         title = by_lower.get(spec.name)
         if title is not None and not book.is_table(title):
             report(f"sheet '{title}' is a chart, not a table.",
@@ -164,6 +172,15 @@ def _find_sheets(book: xlsx.Book, report: SheetReport) -> dict[str, str]:
                    f"add a sheet named '{spec.name}' (or rename the sheet that holds its table)"
                    + (", or a 'site' sheet with the site's hazard." if spec is HAZARD else "."))
     return found
+
+
+def same_name_sheets(titles, name: str) -> list[str]:
+    """The sheet titles that name sheet ``name`` (ignoring case and surrounding spaces), in order.
+
+    >>> same_name_sheets(["equipment", "hazard", "EQUIPMENT "], "equipment")
+    ['equipment', 'EQUIPMENT ']
+    """
+    return [title for title in titles if title.strip().lower() == name]
 
 
 def sheet_cells(book: xlsx.Book, title: str, report: SheetReport) -> xlsx.SheetCells | None:

@@ -48,6 +48,9 @@ lacks any of these names.
 """
 from __future__ import annotations
 
+import errno
+import os
+import stat
 import zipfile
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -175,16 +178,57 @@ def is_blank(value: object) -> bool:
 
 # ---------------------------------------------------------------- the package
 
+def file_problem(path) -> str | None:
+    """What keeps ``path`` from being opened as a workbook file, in words; None for a regular file.
+
+    Never raises and never opens the file: a loop of symbolic links, a name
+    too long, a missing file, a folder, or something that is not a regular
+    file (a FIFO named ``bad.xlsx`` would make any open wait forever).
+
+    >>> file_problem("/nowhere/at/all.xlsx")
+    'the file does not exist.'
+    """
+    try:
+        mode = os.stat(path).st_mode
+    except OSError as error:
+        if error.errno == errno.ELOOP:
+            return "the path is a loop of symbolic links (a link that points back at itself)."
+        if error.errno == errno.ENAMETOOLONG:
+            return "the file name is too long for the file system."
+        if error.errno in (errno.ENOENT, errno.ENOTDIR):
+            return "the file does not exist."
+        return f"the file cannot be read ({error.strerror or type(error).__name__})."
+    except ValueError:
+        return "the path holds a NUL character."
+    if stat.S_ISDIR(mode):
+        return "this is a folder, not a workbook."
+    if not stat.S_ISREG(mode):
+        return "this is not a regular file (a pipe, a device or a socket), so not a workbook."
+    return None
+
+
+def _head(path: Path, size: int) -> bytes:
+    """The first ``size`` bytes of ``path``, opened without blocking and checked to be a regular file."""
+    descriptor = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_BINARY", 0))
+    with os.fdopen(descriptor, "rb") as handle:
+        if not stat.S_ISREG(os.fstat(descriptor).st_mode):
+            raise Unreadable("this is not a regular file (a pipe, a device or a socket), so not a workbook.",
+                             "give the path of the .xlsx file.")
+        return handle.read(size)
+
+
 def check_file(path: Path) -> None:
     """Raise :class:`Unreadable` unless ``path`` is a readable .xlsx package within the bounds."""
+    why = file_problem(path)
+    if why is not None and why != "the file does not exist." and not path.is_dir():
+        raise Unreadable(why, "give the path of the .xlsx file itself.")
     if not path.exists():
         raise Unreadable(f"the file '{path}' does not exist.",
                          "check the path and the file name (including its extension .xlsx).")
     if path.is_dir():
         raise Unreadable(f"'{path}' is a folder, not a workbook.", "give the path of the .xlsx file.")
     try:
-        with path.open("rb") as handle:
-            head = handle.read(8)
+        head = _head(path, 8)
         size = path.stat().st_size
     except OSError as error:
         raise Unreadable(f"the file cannot be read ({error.strerror or type(error).__name__}).",

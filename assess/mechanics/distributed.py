@@ -25,8 +25,15 @@ References
 """
 from __future__ import annotations
 
-import asyncio
+import contextlib
+import gc
+import logging
+import pickle
+import struct
+import sys
+import time
 from dataclasses import dataclass, field, replace
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -69,36 +76,238 @@ def _worker_version():
     return assess.__version__
 
 
-def _probe(address: str, timeout_s: float) -> None:
-    """Ask ``address`` who it is, within ``timeout_s``.
+#: Largest answer [bytes] the connection check reads from the address: a scheduler's identity is a few kB.
+MAX_PROBE_REPLY_BYTES = 1 << 20
+#: Address schemes of a scheduler this runner connects to: plain TCP, or TCP with TLS.
+SCHEMES = ("tcp", "tls")
+_FRAME_COUNT = struct.Struct("<Q")
 
-    Raises OSError, TimeoutError or ValueError unless a Dask scheduler answers
-    (a Client that fails to start waits long and complains again at exit).
+
+_OBJECTS = "it answers with serialised Python objects (which a connection check never opens)"
+
+
+class NotAScheduler(ValueError):
+    """What answers at the address is not a Dask scheduler (the message says why)."""
+
+
+def scheduler_security(address: str, *, ca_file=None, cert=None, key=None):
+    """Dask's security settings for ``address``: TLS from the files given, else from Dask's configuration.
+
+    ``tls://`` needs a certificate authority and this client's certificate
+    (Dask's TLS authenticates both sides): ``ca_file``, ``cert`` and ``key``
+    (PEM files) or Dask's ``distributed.comm.tls.ca-file``,
+    ``distributed.comm.tls.client.cert`` and ``.key`` settings. Returns a
+    ``distributed.Security``. Raises :class:`~assess.errors.InputError` when
+    they are missing, unreadable, or given for a ``tcp://`` address.
     """
-    from distributed.comm import connect  # the optional cluster extra
+    from distributed import Security
 
-    async def knock():
-        comm = await connect(address, timeout=timeout_s)
+    scheme = _scheme(address)
+    given = {name: value for name, value in (("tls_ca_file", ca_file), ("tls_client_cert", cert),
+                                             ("tls_client_key", key)) if value is not None}
+    given = {name: str(value) for name, value in given.items()}
+    if given and scheme != "tls":
+        raise _scheduler_problem(address, "certificates are given (--tls-*) but the address is not tls://",
+                                 "give the scheduler's tls:// address, or leave the --tls-* options out")
+    for option, path in given.items():
+        if not Path(path).is_file():
+            raise _scheduler_problem(address, f"the {_TLS_OPTIONS[option]} file {str(path)[:200]!r} does not exist",
+                                     "give the PEM file's path")
+    security = Security(**given, require_encryption=True) if given else Security()
+    if scheme == "tls":
         try:
-            await comm.write({"op": "identity", "reply": True})
-            return await comm.read()
-        finally:
-            comm.abort()
+            context = security.get_connection_args("client")["ssl_context"]
+        except (OSError, ValueError) as error:  # ssl.SSLError is an OSError
+            raise _scheduler_problem(address, f"the TLS certificates cannot be used ({_reason(error)})",
+                                     "give the certificate authority, this client's certificate and its key "
+                                     "as PEM files (--tls-ca-file, --tls-cert, --tls-key)") from None
+        if context is None:
+            raise _scheduler_problem(address, "a tls:// scheduler needs certificates, and none are given",
+                                     "give --tls-ca-file, --tls-cert and --tls-key (PEM files), or set Dask's "
+                                     "distributed.comm.tls.ca-file, .client.cert and .client.key")
+    return security
 
+
+_TLS_OPTIONS = {"tls_ca_file": "--tls-ca-file", "tls_client_cert": "--tls-cert", "tls_client_key": "--tls-key"}
+
+
+def _scheme(address: str) -> str:
+    scheme, _, rest = address.partition("://")
+    return scheme.lower() if rest else "tcp"
+
+
+def _reason(error: BaseException) -> str:
+    return " ".join(str(error).split())[:200] or type(error).__name__
+
+
+def _framed(message: dict) -> bytes:
+    """``message`` as Dask's TCP comm sends it: total length, frame count and lengths, one msgpack frame."""
+    import msgpack
+    frame = msgpack.dumps(message, use_bin_type=True)
+    prelude = struct.pack("<QQ", 1, len(frame))
+    return struct.pack("<Q", len(prelude) + len(frame)) + prelude + frame
+
+
+def _refuse_objects(mapping: dict) -> dict:
+    """A msgpack map as it is; a pickled or serialised object is refused, never opened."""
+    if "__Pickled__" in mapping or "__Serialized__" in mapping:
+        raise NotAScheduler(_OBJECTS)
+    return mapping
+
+
+def _received(sock, size: int) -> bytes:
+    chunks, left = [], size
+    while left:
+        chunk = sock.recv(min(left, 1 << 16))
+        if not chunk:
+            raise NotAScheduler("it closed the connection without answering as a Dask scheduler")
+        chunks.append(chunk)
+        left -= len(chunk)
+    return b"".join(chunks)
+
+
+def _message(sock) -> Any:
+    """One message of Dask's TCP comm, read as plain msgpack data: at most :data:`MAX_PROBE_REPLY_BYTES`."""
+    import msgpack
+    (size,) = _FRAME_COUNT.unpack(_received(sock, 8))
+    if not 16 <= size <= MAX_PROBE_REPLY_BYTES:
+        raise NotAScheduler("its answer is not a Dask message")
+    body = _received(sock, size)
+    (count,) = _FRAME_COUNT.unpack_from(body)
+    if count > 1:  # the frames after the first carry pickled or serialised objects
+        raise NotAScheduler(_OBJECTS)
+    if count != 1:
+        raise NotAScheduler("its answer is not a Dask message")
+    (length,) = _FRAME_COUNT.unpack_from(body, 8)
+    if length != size - 16:
+        raise NotAScheduler("its answer is not a Dask message")
     try:
-        reply = asyncio.run(asyncio.wait_for(knock(), timeout_s))
-    except asyncio.TimeoutError:
-        raise TimeoutError(f"something answers there, but not as a Dask scheduler within {timeout_s:g} s") from None
-    except (OSError, TimeoutError, ValueError, TypeError):
+        return msgpack.loads(body[16:], raw=False, use_list=False, strict_map_key=False,
+                             object_hook=_refuse_objects)
+    except NotAScheduler:
         raise
-    except Exception as error:  # noqa: BLE001 - whatever a stranger answered
-        raise OSError(f"something answers there, but not as a Dask scheduler ({type(error).__name__})") from None
-    if not (isinstance(reply, dict) and reply.get("type") == "Scheduler"):
-        raise ValueError("something answers there, but not as a Dask scheduler")
+    except Exception:  # noqa: BLE001 - whatever the bytes were
+        raise NotAScheduler("its answer is not a Dask message") from None
+
+
+def probe_scheduler(address: str, security, timeout_s: float) -> dict:
+    """Ask ``address`` who it is, reading the answer as plain data; its identity if it is a Dask scheduler.
+
+    Speaks Dask's TCP comm (a handshake, then ``{"op": "identity"}``) on a
+    plain socket, optionally wrapped in the TLS context of ``security``, and
+    reads each answer as msgpack only: a pickled or serialised object in it
+    is refused unopened (distributed's own comm unpickles what a peer sends,
+    so a stranger at the address could run code in this process). Reads at
+    most :data:`MAX_PROBE_REPLY_BYTES` per answer, all within ``timeout_s``.
+
+    Raises ConnectionRefusedError (nothing listens), socket.gaierror (unknown
+    host), TimeoutError, ssl.SSLError, OSError, or :class:`NotAScheduler`.
+    """
+    import socket
+    import ssl
+
+    from distributed.comm.addressing import parse_address, parse_host_port
+
+    scheme, location = parse_address(address)
+    if scheme not in SCHEMES:
+        raise NotAScheduler(f"assess connects to tcp:// or tls:// schedulers, not {scheme}://")
+    host, port = parse_host_port(location, default_port=8786)
+    deadline = time.monotonic() + timeout_s
+
+    def left() -> float:
+        remaining = deadline - time.monotonic()
+        if remaining <= 0:
+            raise TimeoutError(f"no answer as a Dask scheduler within {timeout_s:g} s")
+        return remaining
+
+    sock = socket.create_connection((host, port), timeout=left())
+    try:
+        if scheme == "tls":
+            context = security.get_connection_args("client")["ssl_context"]
+            sock = context.wrap_socket(sock, server_hostname=host if context.check_hostname else None)
+        handshake = {"compression": None, "python": tuple(sys.version_info)[:3],
+                     "pickle-protocol": pickle.HIGHEST_PROTOCOL}
+        sock.settimeout(left())
+        sock.sendall(_framed(handshake))
+        sock.settimeout(left())
+        theirs = _message(sock)
+        if not (isinstance(theirs, dict) and "pickle-protocol" in theirs):
+            raise NotAScheduler("it does not answer Dask's handshake")
+        sock.settimeout(left())
+        sock.sendall(_framed({"op": "identity", "reply": True}))
+        sock.settimeout(left())
+        identity = _message(sock)
+    except (socket.timeout, TimeoutError):
+        raise TimeoutError(f"it accepts connections but gives no answer as a Dask scheduler within "
+                           f"{timeout_s:g} s") from None
+    except ssl.SSLError:
+        raise
+    except ConnectionError:
+        raise NotAScheduler("it closed the connection without answering as a Dask scheduler") from None
+    finally:
+        with contextlib.suppress(OSError):
+            sock.close()
+    if not (isinstance(identity, dict) and identity.get("type") == "Scheduler"):
+        raise NotAScheduler("it answers, but not as a Dask scheduler")
+    return identity
 
 
 def _scheduler_problem(address: str, message: str, fix: str) -> InputError:
-    return InputError([Problem(file="--scheduler", message=f"{address!r}: {message}", fix=fix)])
+    return InputError([Problem(file="--scheduler", message=f"{address[:200]!r}: {message}", fix=fix)])
+
+
+_CONNECT_FIX = ("give the address the scheduler printed when it started (e.g. tcp://10.0.0.5:8786, "
+                "'dask scheduler' prints it), check that it is running and reachable from this machine, "
+                "or leave --scheduler out to run on this machine's cores")
+
+
+def _client(address: str, security, timeout_s: float):
+    """A ``distributed.Client`` of the scheduler at ``address``, after :func:`probe_scheduler` says it is one.
+
+    Every failure is an :class:`~assess.errors.InputError` of one line: nothing
+    listens (connection refused), unknown host, no answer in time, a TLS
+    failure, not a scheduler, or a listener that passed for one and then
+    failed the client (its half-made client is collected quietly).
+    """
+    import socket
+    import ssl
+
+    from distributed import Client
+
+    try:
+        probe_scheduler(address, security, timeout_s)
+    except ConnectionRefusedError:
+        raise _scheduler_problem(address, "nothing listens there (connection refused)", _CONNECT_FIX) from None
+    except socket.gaierror:
+        raise _scheduler_problem(address, "its host name is not known", _CONNECT_FIX) from None
+    except ssl.SSLError as error:
+        raise _scheduler_problem(address, f"the TLS handshake failed ({_reason(error)})",
+                                 "give the certificate authority that signed the scheduler's certificate and a "
+                                 "client certificate it accepts (--tls-ca-file, --tls-cert, --tls-key)") from None
+    except NotAScheduler as error:
+        hint = " (or a TLS scheduler: give its tls:// address)" if _scheme(address) == "tcp" else ""
+        raise _scheduler_problem(address, f"something listens there but is not a Dask scheduler: {error}{hint}",
+                                 _CONNECT_FIX) from None
+    except (OSError, ValueError, TypeError) as error:  # TimeoutError, unreachable network, a bad port
+        raise _scheduler_problem(address, f"no Dask scheduler could be reached there ({_reason(error)})",
+                                 _CONNECT_FIX) from None
+    failure = None
+    hook, log = sys.unraisablehook, logging.getLogger("distributed")
+    level = log.level
+    try:
+        try:
+            return Client(address, security=security, timeout=f"{timeout_s}s", set_as_default=False)
+        except Exception as error:  # noqa: BLE001 - whatever a listener that passed for a scheduler did
+            failure = _reason(error)
+        # the half-made client and its streams complain when collected: quietly, the refusal says it all
+        sys.unraisablehook = lambda unraisable: None
+        log.setLevel(logging.CRITICAL)
+        gc.collect()
+    finally:
+        sys.unraisablehook = hook
+        log.setLevel(level)
+    raise _scheduler_problem(address, f"it answered as a Dask scheduler, then failed as one ({failure})",
+                             _CONNECT_FIX)
 
 
 @dataclass
@@ -118,28 +327,26 @@ class DaskRunner(RunnerBase):
 
     @classmethod
     def connect(cls, address: str, *, timeout_s: float = CONNECT_TIMEOUT_S,
-                cases_per_task: int = CASES_PER_TASK) -> "DaskRunner":
-        """Connect to the scheduler at ``address`` (``tcp://host:8786``, ``host:8786``, ...).
+                cases_per_task: int = CASES_PER_TASK, tls_ca_file=None, tls_cert=None,
+                tls_key=None) -> "DaskRunner":
+        """Connect to the scheduler at ``address`` (``tcp://host:8786``, ``host:8786``, ``tls://...``).
+
+        A scheduler is trusted as code you run: Dask's client opens whatever
+        objects it sends. So the address is first asked who it is by
+        :func:`probe_scheduler`, which never opens an object, and only a Dask
+        scheduler gets a client. ``tls://`` uses Dask's TLS with the PEM files
+        given (or Dask's configuration), :func:`scheduler_security`.
 
         Raises :class:`~assess.errors.InputError` (the CLI's exit 2) within
-        about ``timeout_s`` seconds if the address is not one, nothing answers
-        there, no worker has joined, or the workers cannot run this version of
-        ``assess``.
+        about ``timeout_s`` seconds if the address is not one, nothing listens
+        there, what listens is not a Dask scheduler, no worker has joined, or
+        the workers cannot run this version of ``assess``.
         """
-        from distributed import Client  # the optional cluster extra
-
-        fix = ("give the address the scheduler printed when it started (e.g. tcp://10.0.0.5:8786, "
-               "'dask scheduler' prints it), check that it is running and reachable from this machine, "
-               "or leave --scheduler out to run on this machine's cores")
         text = str(address).strip()
         if not text:
-            raise _scheduler_problem(text, "is empty", fix)
-        try:
-            _probe(text, timeout_s)
-            client = Client(text, timeout=f"{timeout_s}s", set_as_default=False)
-        except (OSError, TimeoutError, ValueError, TypeError) as error:
-            reason = " ".join(str(error).split())[:300] or type(error).__name__
-            raise _scheduler_problem(text, f"no Dask scheduler could be reached there ({reason})", fix) from None
+            raise _scheduler_problem(text, "is empty", _CONNECT_FIX)
+        security = scheduler_security(text, ca_file=tls_ca_file, cert=tls_cert, key=tls_key)
+        client = _client(text, security, timeout_s)
         try:
             try:
                 client.wait_for_workers(1, timeout=timeout_s)

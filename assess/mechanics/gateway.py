@@ -40,7 +40,8 @@ from typing import Callable, Optional, Protocol, Sequence, Union
 import numpy as np
 
 from .block import Block
-from .engine import (DEFAULT_TAIL_S, EVENT_DRIVEN, GENERAL, ROCKING_KERNEL, SLIDING_KERNEL, BlockOnInterface,
+from .engine import (DEFAULT_TAIL_S, ELASTIC_INTERFACE_KERNEL, EVENT_DRIVEN, GENERAL, ROCKING_KERNEL, SLIDING_KERNEL,
+                     VELOCITY_FRICTION_KERNEL, BlockOnInterface,
                      CasePeaks, SlidingInterface, checked_record_index, pure_sliding_proved, simulate,
                      simulate_cases)
 from .modes import REST, SLIDE
@@ -49,7 +50,7 @@ from .sliding_2d import sliding_2d_peaks_batch
 __all__ = ["PEAKS", "PLANAR", "RESPONSE", "KINDS", "SOLVERS", "PLANAR_KERNEL", "DEFAULT_TAIL_S", "Cases",
            "CasePeaks", "Runner", "RunnerBase", "LocalRunner", "run_cases", "run_responses", "solver_installed",
            "pure_sliding_proved", "BlockOnInterface", "SlidingInterface", "SLIDING_KERNEL", "ROCKING_KERNEL",
-           "GENERAL", "EVENT_DRIVEN"]
+           "GENERAL", "EVENT_DRIVEN", "ENGINE_SOLVERS"]
 
 PEAKS = "peaks"
 PLANAR = "planar"
@@ -59,6 +60,9 @@ KINDS = (PEAKS, PLANAR, RESPONSE)
 #: ``auto``: the solver proved right for the block; the others force a general solver (``response`` only).
 SOLVERS = ("auto", "general", "event-driven")
 PLANAR_KERNEL = "sliding kernel (2-D)"
+#: Every solver a run may name as the one that gave its answer (what a stored result may say).
+ENGINE_SOLVERS = (SLIDING_KERNEL, VELOCITY_FRICTION_KERNEL, ELASTIC_INTERFACE_KERNEL, ROCKING_KERNEL, GENERAL,
+                  EVENT_DRIVEN, PLANAR_KERNEL)
 
 Progress = Optional[Callable[[int, int], None]]
 Result = Union[CasePeaks, list]
