@@ -47,18 +47,26 @@ def motion_name(record: str, pga_g: float) -> str:
     return f"{record} @ {pga_g:g} g"
 
 
-def true_responses(inset=INSET, records=None) -> list[dict]:
-    """Every test's noise-free response by the peer: specimen, motion, record, scale, θ/α declared, overturned."""
+def true_responses(inset=INSET, records=None, amplitude_jitter=0.0, seed=0) -> list[dict]:
+    """Every test's noise-free response by the peer: specimen, motion, record, scale, θ/α declared, overturned.
+
+    ``amplitude_jitter`` > 0: the table plays each test at its nominal amplitude × (1 + jitter·N(0, 1))
+    (seeded), as a real table does not reproduce the commanded amplitude exactly; ``scale`` stays the
+    nominal one (what the workbook says).
+    """
     records = pyslammer_records() if records is None else records
+    rng = np.random.default_rng(seed)
     rows = []
     for specimen, height_cm, width_cm in SPECIMENS:
         box = FootedBox(half_width_m=width_cm / 200.0, height_m=height_cm / 100.0, inset_fraction=inset)
         for name, (_, accel_g, dt_s) in records.items():
             for pga in PGAS_G:
                 scale = pga / float(np.max(np.abs(accel_g)))
-                response = footed_rocking(box, accel_g * scale, dt_s)
+                played = scale * (1.0 + amplitude_jitter * rng.standard_normal()) if amplitude_jitter else scale
+                response = footed_rocking(box, accel_g * played, dt_s)
                 rows.append(dict(specimen=specimen, motion=motion_name(name, pga), record=name, scale=scale,
-                                 theta=response.theta_over_declared_alpha(box), overturned=response.overturned))
+                                 played=played, theta=response.theta_over_declared_alpha(box),
+                                 overturned=response.overturned))
     return rows
 
 
@@ -104,8 +112,12 @@ def write_lab(folder: Path, truth: list[dict], seed: int, noise=NOISE) -> tuple[
     return workbook, measured
 
 
-#: The peer's noise-free responses, stored (``python tests/peers/footed_lab.py`` writes them again).
+#: The peer's noise-free responses, stored (``python tests/peers/footed_lab.py`` writes them again):
+#: the table playing each record exactly as commanded, and playing it × (1 + 0.01·N(0, 1)) (seed 11).
 TRUTH_CSV = Path(__file__).resolve().parents[1] / "data" / "footed_lab" / "truth.csv"
+TRUTH_JITTER_CSV = TRUTH_CSV.with_name("truth_jitter.csv")
+JITTER, JITTER_SEED = 0.01, 11
+_COLUMNS = ["specimen", "motion", "record", "scale", "played", "theta", "overturned"]
 
 
 def read_truth(path=TRUTH_CSV) -> list[dict]:
@@ -114,7 +126,8 @@ def read_truth(path=TRUTH_CSV) -> list[dict]:
 
     with open(path, newline="") as handle:
         return [dict(specimen=r["specimen"], motion=r["motion"], record=r["record"], scale=float(r["scale"]),
-                     theta=float(r["theta"]), overturned=r["overturned"] == "True") for r in csv.DictReader(handle)]
+                     played=float(r["played"]), theta=float(r["theta"]), overturned=r["overturned"] == "True")
+                for r in csv.DictReader(handle)]
 
 
 def write_truth(rows: list[dict], path=TRUTH_CSV) -> None:
@@ -122,16 +135,18 @@ def write_truth(rows: list[dict], path=TRUTH_CSV) -> None:
 
     Path(path).parent.mkdir(parents=True, exist_ok=True)
     with open(path, "w", newline="") as handle:
-        writer = csv.DictWriter(handle, ["specimen", "motion", "record", "scale", "theta", "overturned"])
+        writer = csv.DictWriter(handle, _COLUMNS)
         writer.writeheader()
         for row in rows:
-            writer.writerow({**row, "scale": repr(float(row["scale"])), "theta": repr(float(row["theta"])),
+            writer.writerow({**{k: row[k] for k in _COLUMNS}, "scale": repr(float(row["scale"])),
+                             "played": repr(float(row["played"])), "theta": repr(float(row["theta"])),
                              "overturned": str(bool(row["overturned"]))})
 
 
-if __name__ == "__main__":  # about 5 minutes: every test of the lab by the peer
+if __name__ == "__main__":  # about 10 minutes: every test of the lab by the peer, twice
     import sys
 
     sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
     write_truth(true_responses())
-    print(TRUTH_CSV)
+    write_truth(true_responses(amplitude_jitter=JITTER, seed=JITTER_SEED), TRUTH_JITTER_CSV)
+    print(TRUTH_CSV, TRUTH_JITTER_CSV)
