@@ -18,17 +18,19 @@ noise-free responses are stored in ``tests/data/footed_lab/truth.csv``
 from __future__ import annotations
 
 import json
-import os
-import subprocess
-import sys
+import tempfile
 from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
 import pytest
 
+from assess.calibration import fit as fit_module
+from assess.calibration import run_calibration
 from assess.calibration.effects import declared_alpha_rad, item_block, theta_over_declared_alpha
+from assess.calibration.measured import read_measured
 from assess.hazard.records import pulse_record
+from assess.inventory import read_workbook
 from assess.mechanics.block import Block
 from assess.mechanics.engine import simulate
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
@@ -37,7 +39,6 @@ from assess.mechanics.rocking import rocking_response
 from peers.footed_lab import INSET, NOISE, TRUTH_JITTER_CSV, measured_rows, read_truth, write_lab
 from peers.footed_rocking import FootedBox, footed_rocking
 
-ENV = {**os.environ, "PYTHONPATH": str(Path(__file__).resolve().parents[1])}
 #: (b, H, d): slender and squat boxes, on their edges and on feet.
 BOXES = [(0.2, 1.6, 0.0), (0.2, 1.6, 0.3), (0.4, 1.2, 0.5), (0.311, 2.286, 0.15)]
 
@@ -219,21 +220,30 @@ def _theta_rms(predicted, measured):
     return float(np.sqrt(np.mean((predicted[stood] - measured[stood]) ** 2)))
 
 
+#: Predictions of the lab's tests (they depend on the workbook, not on the measured values, so the
+#: labs below, which share the workbook, share them).
+CACHE: dict = {}
+
+
+def calibrate_lab(folder, truth_rows, seed, **options):
+    """What ``assess calibrate`` does with the lab written to ``folder``: read the workbook and the
+    measured tests as the command reads them, fit, select (in-process, sharing :data:`CACHE`)."""
+    workbook, measured_path = write_lab(Path(folder), truth_rows, seed=seed)
+    inventory = read_workbook(workbook)
+    measured = read_measured(measured_path, inventory)
+    return inventory, measured, run_calibration(inventory, measured, cache=CACHE, **options)
+
+
 @pytest.fixture(scope="module")
 def calibrated(truth, tmp_path_factory):
-    """``assess calibrate`` run as a user runs it, on the lab written with noise seed 1."""
-    folder = tmp_path_factory.mktemp("footed")
-    write_lab(folder, truth, seed=1)
-    done = subprocess.run([sys.executable, "-m", "assess", "calibrate", "footed.xlsx", "--measured", "measured.xlsx",
-                           "--out", "cal", "--format", "html", "--quiet"], cwd=folder, env=ENV,
-                          capture_output=True, text=True, timeout=900)
-    assert done.returncode == 0, done.stderr
-    return folder, json.loads((folder / "cal" / "calibration.json").read_text())
+    """The lab written with noise seed 1, calibrated; the result as calibration.json has it."""
+    _, _, result = calibrate_lab(tmp_path_factory.mktemp("footed"), truth, seed=1)
+    return json.loads(json.dumps(result.as_json()))
 
 
 def test_calibrate_names_the_feet_and_their_inset(truth, calibrated):
     """foot_inset selected, d = 0.30, θ rms after at the noise's own RMS (measured minus the peer's truth)."""
-    _, result = calibrated
+    result = calibrated
     rows = measured_rows(truth, seed=1)
     measured = np.array([np.nan if r["theta_max_over_alpha"] is None else r["theta_max_over_alpha"] for r in rows])
     noise_rms = _theta_rms([t["theta"] for t in truth], measured)
@@ -308,18 +318,8 @@ def test_a_table_off_by_one_percent_still_names_the_feet(truth_jitter):
     0.12 off the table in θ/α RMS. Compared at the nominal amplitude only (AMPLITUDE_BAND = 0, the
     measure before), that chaos chose input_scale s = 1.41, a wrong effect; charged only for what no
     amplitude within ±1 % explains, the selection names the feet and the inset."""
-    from assess.calibration import build_cases, run_calibration
-    from assess.calibration import fit as fit_module
-    from assess.inventory import read_workbook
-    from assess.calibration.measured import read_measured
-    import tempfile
-
     with tempfile.TemporaryDirectory() as folder:
-        workbook, measured_path = write_lab(Path(folder), truth_jitter, seed=2)
-        inventory = read_workbook(workbook)
-        measured = read_measured(measured_path, inventory)
-        cache = {}
-        result = run_calibration(inventory, measured, cache=cache)
+        inventory, measured, result = calibrate_lab(folder, truth_jitter, seed=2)
         scores = {f.effect.name: round(f.score, 4) for f in result.fits}
         assert result.selected == "foot_inset", scores
         assert result.parameters["d"] == pytest.approx(INSET, abs=0.015), result.parameters
@@ -332,7 +332,7 @@ def test_a_table_off_by_one_percent_still_names_the_feet(truth_jitter):
         original = fit_module.AMPLITUDE_BAND
         try:
             fit_module.AMPLITUDE_BAND = 0.0
-            nominal = run_calibration(inventory, measured, effects=["input_scale", "foot_inset"], cache=cache)
+            nominal = run_calibration(inventory, measured, effects=["input_scale", "foot_inset"], cache=CACHE)
         finally:
             fit_module.AMPLITUDE_BAND = original
         assert nominal.selected == "input_scale", {f.effect.name: f.score for f in nominal.fits}
