@@ -67,6 +67,8 @@ ERROR_SENTENCES = {
     "sliding_rms_log": "RMS of ln(predicted/measured) peak sliding",
     "overturn_misclassified": "Tests whose overturning (yes or no) the model gets wrong",
     "theta_rms": "RMS of predicted minus measured peak rotation θmax/α (both capped at 1)",
+    "theta_rms_band": "RMS of how far the measured θmax/α lies outside what the model predicts within ±1 % of "
+                      "the motion's amplitude",
     "objective": "Objective: mean squared standardised residual per measure",
     "tests_sliding": "Tests with a measured peak sliding",
     "tests_theta": "Tests with a measured peak rotation",
