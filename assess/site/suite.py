@@ -405,10 +405,6 @@ def baseline_corrected(accel_g, dt_s):
     return a - c0 - c1 * t
 
 
-#: Passes without a better match after which :func:`match_spectrum` stops (the Fourier scaling has stalled).
-PATIENCE = 8
-
-
 #: Periods of :func:`match_spectrum`'s band (log-spaced over 2.25 times the range's span in log period:
 #: about 39 per decade for 0.07-2.8 s). Measured on 22 motions (level DE's seeds 0-21, SDS 1.0 g,
 #: SD1 0.6 g, 0.07-2.8 s): 80 periods needed 176 realisations in all, 120 needed 59, 160 needed 53,
