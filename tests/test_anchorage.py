@@ -103,6 +103,7 @@ def test_component_names_aliases_and_refusal():
             assert component_coefficients(edition, name.upper()).component_type == name
         assert component_coefficients(edition, None).component_type == DEFAULT_COMPONENT_TYPE
         assert component_coefficients(edition, "  ").component_type == DEFAULT_COMPONENT_TYPE
+        assert component_coefficients(edition, float("nan")).component_type == DEFAULT_COMPONENT_TYPE
         assert component_coefficients(edition, "Server_Rack").component_type == "computer rack"
         assert component_coefficients(edition, "ultra-low freezer").component_type == "refrigeration"
     with pytest.raises(ValueError, match="unknown component_type"):
@@ -172,3 +173,9 @@ def test_us_units():
     assert us["anchor_tension_kip"] == pytest.approx(5450.0 / newton_per_lbf / 1000.0, rel=1e-12)
     assert us["overturning_moment_lbf_ft"] == pytest.approx(3600.0 / newton_per_lbf / 0.3048, rel=1e-12)
     assert us["weight_lbf"] == pytest.approx(1124.04, abs=0.01)  # 5000 N = 1124.04 lbf
+
+
+def test_without_base_geometry_no_tension():
+    forces = design_force("ASCE 7-22", None, 2000.0, 1.0, 0.5)
+    assert math.isnan(forces.tension_n) and math.isnan(forces.anchor_tension_n)
+    assert forces.force_n > 0.0 and forces.anchor_shear_n == pytest.approx(2.0 * forces.force_n)

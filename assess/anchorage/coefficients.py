@@ -105,7 +105,7 @@ def component_types() -> list[str]:
 def component_coefficients(edition, component_type=None) -> ComponentCoefficients:
     """The coefficients of ``component_type`` (a name or an alias, any case) under ``edition``.
 
-    ``None`` or an empty name gives :data:`DEFAULT_COMPONENT_TYPE`. An unknown name raises
+    ``None``, NaN (an empty workbook cell) or an empty name gives :data:`DEFAULT_COMPONENT_TYPE`. An unknown name raises
     ``ValueError`` listing the known types.
 
     >>> c = component_coefficients("ASCE 7-16", "Lab Equipment")
@@ -115,7 +115,8 @@ def component_coefficients(edition, component_type=None) -> ComponentCoefficient
     'battery rack'
     """
     edition = canonical_edition(edition)
-    name = DEFAULT_COMPONENT_TYPE if component_type is None or not str(component_type).strip() else component_type
+    missing = component_type is None or (isinstance(component_type, float) and component_type != component_type)
+    name = DEFAULT_COMPONENT_TYPE if missing or not str(component_type).strip() else component_type
     try:
         return _index()[(edition, _key(name))]
     except KeyError:
