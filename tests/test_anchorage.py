@@ -93,6 +93,8 @@ def test_importance_factor_rules_and_override():
     assert component_importance_factor("ordinary", "IV") == 1.0
     assert component_importance_factor("hazardous", "IV", ip=1.0) == 1.0
     assert component_importance_factor("ordinary", "I", ip=float("nan")) == 1.0
+    assert component_importance_factor("hazardous", "I", ip=" ") == 1.5
+    assert component_importance_factor("ordinary", "I", ip="1.5") == 1.5
     with pytest.raises(ValueError, match="1.0 or 1.5"):
         component_importance_factor("ordinary", "II", ip=1.25)
 

@@ -67,14 +67,16 @@ def component_importance_factor(consequence="ordinary", risk_category=None, ip=N
     1.5 for a component needed for life safety after an earthquake or holding hazardous contents
     (``consequence`` ``life-safety`` or ``hazardous``), and, in a Risk Category IV structure, for one
     needed for the continued operation of the facility (``critical``); 1.0 otherwise. A given ``ip``
-    overrides and must be 1.0 or 1.5 (the only values §13.1.3 assigns).
+    overrides and must be 1.0 or 1.5 (the only values §13.1.3 assigns); None, NaN or a blank string (an
+    empty workbook cell) does not.
 
     >>> component_importance_factor("critical", "IV"), component_importance_factor("critical", "II")
     (1.5, 1.0)
     >>> component_importance_factor("hazardous"), component_importance_factor("ordinary", "IV", ip=1.5)
     (1.5, 1.5)
     """
-    if ip is not None and not (isinstance(ip, float) and np.isnan(ip)):
+    blank = ip is None or (isinstance(ip, float) and np.isnan(ip)) or (isinstance(ip, str) and not ip.strip())
+    if not blank:
         value = float(ip)
         if value not in (1.0, 1.5):
             raise ValueError(f"ip {ip!r}: ASCE 7 §13.1.3 assigns I_p = 1.0 or 1.5 only")
