@@ -24,7 +24,11 @@ E_v = 0.2 S_DS D, §12.4.2.2): the tension the anchors on the far side carry is
 
 with 2b the base dimension in the direction considered, and the shear is F_p.
 Anchors in concrete are designed with the overstrength factor Ω0 (§13.4.2),
-which this tool does not apply: the engineer sizing them does.
+which these functions do not apply: the engineer sizing them does.
+
+Both editions (ASCE 7-16 and 7-22), component types, I_p from the Risk Category, Ω0 and US units are in
+:mod:`assess.anchorage` (:func:`assess.anchorage.design_force`), which gives these functions' numbers for
+the ASCE 7-16 laboratory-equipment case.
 
 References
 ----------
