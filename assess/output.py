@@ -35,6 +35,10 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: st
         files.update(fragility_files(result.curve_risk, result.summary))
     if result.comparison is not None:
         files["comparison.csv"] = csv_text(result.comparison).encode()
+    for name, table in (("ground_motions.csv", result.ground_motions), ("spectrum.csv", result.spectrum),
+                        ("floors.csv", result.floors)):
+        if table is not None:
+            files[name] = csv_text(table).encode()
     if "html" in formats or "pdf" in formats:
         html = report.render_html(result)
         if "html" in formats:

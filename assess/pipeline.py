@@ -84,12 +84,12 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     workbook_name = inventory.path.name
     settings = inventory.settings
     constants = RegressionConstants.from_settings(settings)
-    # 2. motions per floor
+    # 2. motions per floor (the site's ground suite and the building's floors included)
     level = motion_stage.level_motions(inventory, level_text, progress, oq_hazard, derive_floors_roof,
-                                       calibration)
+                                       calibration, seed)
+    simulated = motion_stage.simulated_motions(level, workbook_name, settings, seed, progress)
     # 3. cases
     cases = case_stage.build_cases(inventory.equipment, level, workbook_name, progress)
-    simulated = motion_stage.simulated_motions(level, workbook_name, settings, seed, progress)
     # 4. run (every engine call of the assessment)
     ran = run_stage.run_level(cases.table, simulated, runner, progress, calibration)
     nominal = ran.cases["mu_nominal"].to_numpy()
@@ -120,4 +120,6 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
         settings=dict(settings), simulated=True, seed=seed, histories=histories, hazard_notes=level.notes,
         suite_runs=suite_runs(demand.cases, ran.runs, ran.planar),
         solver_runs={str(k): int(v) for k, v in ran.runs["solver"].value_counts().items()}, curve_risk=curve,
+        ground_motions=None if level.site is None else level.site.suite.ground_motions,
+        spectrum=None if level.site is None else level.site.suite.spectrum, floors=simulated.floors,
     )

@@ -97,6 +97,12 @@ class AssessmentResult:
     curve_risk : CurveRisk or None
         With a hazard curve: each item's fragilities over stripes of floor acceleration and their
         annual rates (:class:`assess.fragility.stripes.CurveRisk`); its columns are also in ``summary``.
+    ground_motions, spectrum : DataFrame or None
+        With a ``site`` sheet that gives the level's ground suite: one row per ground motion, and one per
+        period of the suite's spectrum against its target (``ground_motions.csv``, ``spectrum.csv``).
+    floors : DataFrame or None
+        With a ``building`` sheet: the modes used and each floor's PFA and PFA/PGA over the suite
+        (``floors.csv``).
     """
 
     workbook: Path
@@ -117,6 +123,9 @@ class AssessmentResult:
     suite_runs: pd.DataFrame | None = None
     solver_runs: dict | None = None
     curve_risk: object | None = None
+    ground_motions: pd.DataFrame | None = None
+    spectrum: pd.DataFrame | None = None
+    floors: pd.DataFrame | None = None
 
     def risk_counts(self) -> dict[str, int]:
         """Number of items (rows, not quantity) in each risk class."""

@@ -20,9 +20,11 @@ import numpy as np
 import pandas as pd
 
 from assess.calibration.apply import scaled_motions
-from assess.errors import InputError
+from assess.errors import InputError, Problem
 from assess.fragility.governing import PULSE, RECORD, SYNTHETIC
 from assess.hazard.levels import HazardLevel
+from assess.assessment import floors as site_and_building
+from assess.hazard.levels import parse_level
 from assess.hazard.motions import derive_floor_motions, require_probability, scale_to_pga, select_level
 from assess.hazard.openquake import pga_at_level
 from assess.hazard.pulse_identification import identify_pulse
@@ -47,6 +49,12 @@ class LevelMotions:
     level_label: str
     table: pd.DataFrame
     notes: list[str] = field(default_factory=list)
+    #: Histories made in memory (the site's ground suite), by the key their rows give as ``record_path``.
+    records: dict[str, Record] = field(default_factory=dict)
+    #: The level's ground suite from the site sheet (``ground_motions.csv``, ``spectrum.csv``), or None.
+    site: site_and_building.SiteSuite | None = None
+    #: The building's modes, where a building sheet passes the ground motions to floors without motions.
+    building: object | None = None
 
 
 @dataclass
@@ -61,15 +69,34 @@ class SimulatedMotions:
     histories: dict[int, list[tuple[Record, str]]]
     kinds: dict[int, str]
     record_pairs: dict[int, tuple[Record, Record]]
+    #: ``floors.csv``: the building's modes and each floor's PFA over the ground suite (None: no building).
+    floors: pd.DataFrame | None = None
 
 
 def level_motions(inventory, level_text: str, progress: Progress, oq_hazard=None,
-                  derive_floors_roof: int | None = None, calibration=None) -> LevelMotions:
-    """The motions of level ``level_text`` at every floor that has freestanding items (module docstring)."""
+                  derive_floors_roof: int | None = None, calibration=None, seed: int = 0) -> LevelMotions:
+    """The motions of level ``level_text`` at every floor that has freestanding items (module docstring).
+
+    With a ``site`` sheet and no ground motion for the level in the ``hazard`` sheet, the level's
+    ground suite comes from the site; with a ``building`` sheet, every floor without motions gets the
+    ground motions through the building (:mod:`assess.assessment.floors`), and ``--derive-floors``
+    gives way to it.
+    """
     workbook_name = inventory.path.name
-    level, motions = select_level(inventory.hazard, level_text, workbook_name)
-    level_label = str(motions["level_label"].iloc[0])
-    motions, notes = _measure_pulse_parameters(motions, workbook_name)
+    level, motions = _level_rows(inventory, level_text, workbook_name)
+    level_label = str(motions["level_label"].iloc[0]) if len(motions) else (level.label or level.name)
+    freestanding = inventory.equipment[~inventory.equipment["anchored"]]
+    modes = site_and_building.building_modes_of(inventory.building) if inventory.building is not None else None
+    records, site, notes = {}, None, []
+    if inventory.site is not None and not _has_ground_motions(motions):
+        progress(f"making the ground suite of level {level_label} from the site sheet")
+        site = site_and_building.site_suite(inventory.site, level, freestanding, modes, workbook_name,
+                                           inventory.path.parent, seed)
+        rows, records = _site_rows(site, level, level_label)
+        motions = pd.concat([motions, rows], ignore_index=True) if len(motions) else rows
+        notes.append(site_and_building.site_note(site, inventory.site))
+    motions, measured = _measure_pulse_parameters(motions, workbook_name, records)
+    notes += measured
     for note in notes:
         progress(note)
     if oq_hazard is not None:
@@ -82,9 +109,15 @@ def level_motions(inventory, level_text: str, progress: Progress, oq_hazard=None
         motions, note = scaled_motions(motions, calibration)
         if note:
             notes.append(note)
-    if derive_floors_roof is not None:
-        equipment = inventory.equipment
-        freestanding = equipment[~equipment["anchored"]]
+    if modes is not None:
+        missing = _floors_without_motions(motions, freestanding, modes.storeys)
+        motions = motions.reset_index(drop=True).assign(motion_key=lambda m: np.arange(len(m)))
+        motions = _with_building_rows(motions, missing, workbook_name)
+        if missing:
+            note = site_and_building.building_note(modes, inventory.building, missing, derive_floors_roof)
+            notes.append(note)
+            progress(note)
+    elif derive_floors_roof is not None:
         motions = derive_floor_motions(motions, freestanding["floor"].unique(), derive_floors_roof, workbook_name)
         if motions["derived"].any():
             floors = sorted(set(int(f) for f in motions.loc[motions["derived"], "floor"]))
@@ -95,7 +128,85 @@ def level_motions(inventory, level_text: str, progress: Progress, oq_hazard=None
             progress(note)
     # one key per motion row: a motion named on several floors is a different motion on each
     motions = motions.reset_index(drop=True).assign(motion_key=lambda m: np.arange(len(m)))
-    return LevelMotions(level, level_label, motions, notes)
+    return LevelMotions(level, level_label, motions, notes, records, site, modes)
+
+
+def _level_rows(inventory, level_text: str, workbook_name: str) -> tuple[HazardLevel, pd.DataFrame]:
+    """The hazard sheet's rows of the level; with a site sheet, none is no error (the site gives them)."""
+    if inventory.site is None or (len(inventory.hazard) and _names_level(inventory.hazard, level_text)):
+        return select_level(inventory.hazard, level_text, workbook_name)
+    try:
+        level = parse_level(level_text)
+    except ValueError:
+        return select_level(inventory.hazard, level_text, workbook_name)  # its message names the level
+    return level, inventory.hazard.iloc[0:0].copy()
+
+
+def _names_level(hazard: pd.DataFrame, level_text: str) -> bool:
+    try:
+        wanted = parse_level(level_text)
+    except ValueError:
+        return True
+    return any(parse_level(label).same_as(wanted) for label in hazard["level_label"].unique())
+
+
+def _has_ground_motions(motions: pd.DataFrame) -> bool:
+    return bool(len(motions)) and bool((motions["all_floors"] | (motions["floor"] == 0)).any())
+
+
+#: Prefix of the key a row gives as ``record_path`` for a history made in memory (never a file's path:
+#: a workbook's record paths are absolute).
+MEMORY = "memory:"
+
+
+def _site_rows(site, level: HazardLevel, level_label: str) -> tuple[pd.DataFrame, dict[str, Record]]:
+    """The ground suite as hazard rows at floor 0, each naming its history by a :data:`MEMORY` key."""
+    records, rows = {}, []
+    for k, motion in enumerate(site.suite.motions):
+        key = f"{MEMORY}{level_label}/{k + 1}"
+        records[key] = motion.first
+        second = ""
+        if motion.second is not None:
+            second = f"{key}/2"
+            records[second] = motion.second
+        rows.append({"level": level.name, "level_label": level_label, "motion": motion.name, "all_floors": False,
+                     "floor": 0, "pta_g": np.nan, "tp_s": np.nan, "vp_m_s": np.nan, "pulse": "",
+                     "record_path": key, "scale": 1.0, "record_2_path": second, "azimuth_deg": 0.0, "row": 0})
+    table = pd.DataFrame(rows)
+    table["floor"] = table["floor"].astype("Int64")
+    return table, records
+
+
+def _floors_without_motions(motions: pd.DataFrame, freestanding: pd.DataFrame, storeys: int) -> list[int]:
+    """Floors above the ground with freestanding items and no motion of the level (the building gives theirs)."""
+    if motions["all_floors"].any():
+        return []
+    have = set(int(f) for f in motions["floor"].dropna())
+    return sorted(f for f in set(int(f) for f in freestanding["floor"]) if 0 < f <= storeys and f not in have)
+
+
+def _with_building_rows(motions: pd.DataFrame, floors: list[int], workbook_name: str) -> pd.DataFrame:
+    """``motions`` and, for every floor in ``floors``, one row per ground motion (floor 0) whose history the
+    building gives (``from_ground``: the ground row's ``motion_key``; PTA, Tp and vp are measured later)."""
+    motions = motions.assign(from_ground=-1)
+    if not floors:
+        return motions
+    ground = motions[(~motions["all_floors"]) & (motions["floor"] == 0)]
+    if ground.empty:
+        raise InputError([Problem(workbook_name, f"floors {floors} have no motion, and the level has no ground "
+                                  "motion (floor 0) to pass through the building.",
+                                  "add the level's ground motions (floor 0) to the hazard sheet, or a site sheet "
+                                  "with the site's hazard.", sheet="hazard", column="floor")])
+    rows = []
+    for floor in floors:
+        derived = ground.assign(floor=floor, from_ground=ground["motion_key"], record_path="", record_2_path="",
+                                scale=1.0, pta_g=np.nan, tp_s=np.nan, vp_m_s=np.nan, pulse="",
+                                pulse_source="measured from the floor's history through the building")
+        derived["motion"] = [f"{name} @ floor {floor}" for name in ground["motion"]]
+        rows.append(derived)
+    out = pd.concat([motions, *rows], ignore_index=True)
+    out["floor"] = out["floor"].astype("Int64")
+    return out.drop(columns="motion_key")
 
 
 def simulated_motions(motions: LevelMotions, workbook_name: str, settings: dict, seed: int,
@@ -103,13 +214,49 @@ def simulated_motions(motions: LevelMotions, workbook_name: str, settings: dict,
     """The accelerations the engine runs for every motion of the level (:class:`SimulatedMotions`);
     notes on turning a pair of records to the items' axes are added to ``motions.notes``."""
     progress("preparing the motions to simulate")
-    histories, kinds = _simulated_motions(motions.table, workbook_name, settings, seed)
-    pairs = _record_pairs(motions.table, histories, workbook_name, motions.notes, progress)
-    return SimulatedMotions(histories, kinds, pairs)
+    histories, kinds = _simulated_motions(motions.table, workbook_name, settings, seed, motions.records)
+    pairs = _record_pairs(motions.table, histories, workbook_name, motions.notes, progress, motions.records)
+    floors = None
+    if motions.building is not None and "from_ground" in motions.table:
+        progress("passing the ground motions through the building")
+        floors = _through_building(motions, histories, kinds, pairs)
+    return SimulatedMotions(histories, kinds, pairs, floors)
 
 
-def _motion_record(record_path: str, scale: float, motion: str, row: int, workbook_name: str) -> Record:
-    """The record of a hazard row, read (once per file and scale) and scaled; errors name the row."""
+def _through_building(motions: LevelMotions, histories: dict, kinds: dict, pairs: dict) -> pd.DataFrame:
+    """Every floor row's histories (``from_ground`` >= 0): its ground motion's through the building; the
+    row's PTA, Tp and vp measured from its first history (``motions.table`` is updated). Returns floors.csv."""
+    table, modes = motions.table, motions.building
+    derived = table[table["from_ground"] >= 0]
+    for ground_key, rows in derived.groupby("from_ground", sort=True):
+        ground_key = int(ground_key)
+        floors = sorted(int(f) for f in rows["floor"])
+        width = site_and_building.through_building(modes, [r for r, _ in histories[ground_key]], floors)
+        depth = None
+        if ground_key in pairs:
+            depth = site_and_building.through_building(modes, [pairs[ground_key][1]], floors)
+        for index, row in rows.iterrows():
+            k, floor = int(row["motion_key"]), int(row["floor"])
+            histories[k] = [(record, f"{label} @ floor {floor}, through the building")
+                            for record, (_, label) in zip(width[floor], histories[ground_key])]
+            kinds[k] = RECORD  # the engine under the floor's history governs (no pulse regression for it)
+            if depth is not None:
+                pairs[k] = (width[floor][0], depth[floor][0])
+            first = width[floor][0]
+            fit = identify_pulse(first.accel_g, first.dt_s, models=("B",))
+            table.loc[index, ["pta_g", "tp_s", "vp_m_s"]] = [first.pta_g, fit.tp_s, fit.vp_m_s]
+    ground = [histories[int(k)][0][0] for k in sorted(derived["from_ground"].unique())]
+    return site_and_building.floors_csv(modes, ground, sorted(int(f) for f in derived["floor"].unique()),
+                                        motions.level_label)
+
+
+def _motion_record(record_path: str, scale: float, motion: str, row: int, workbook_name: str,
+                   memory: dict | None = None) -> Record:
+    """The record of a hazard row, read (once per file and scale) and scaled; errors name the row.
+    A :data:`MEMORY` key names a history made in memory (``memory``)."""
+    if record_path.startswith(MEMORY):
+        record = memory[record_path]
+        return record if float(scale) == 1.0 else record.scaled(float(scale))
     try:
         return read_scaled(record_path, float(scale))
     except InputError as error:
@@ -123,7 +270,8 @@ def read_scaled(path: str, scale: float) -> Record:
     return read_record(path, min_duration_s=MIN_DURATION_S, scale=scale)
 
 
-def _measure_pulse_parameters(level_motions: pd.DataFrame, workbook_name: str) -> tuple[pd.DataFrame, list[str]]:
+def _measure_pulse_parameters(level_motions: pd.DataFrame, workbook_name: str,
+                              memory: dict | None = None) -> tuple[pd.DataFrame, list[str]]:
     """Fill PTA, Tp and vp that a motion with a record leaves empty, from the record.
 
     PTA is the record's peak absolute acceleration (after ``scale``); Tp and
@@ -138,7 +286,7 @@ def _measure_pulse_parameters(level_motions: pd.DataFrame, workbook_name: str) -
         missing = [c for c in ("pta_g", "tp_s", "vp_m_s") if not np.isfinite(row[c])]
         if not row["record_path"] or not missing:
             continue
-        record = _motion_record(row["record_path"], row["scale"], row["motion"], row["row"], workbook_name)
+        record = _motion_record(row["record_path"], row["scale"], row["motion"], row["row"], workbook_name, memory)
         measured = []
         if "pta_g" in missing:
             motions.at[index, "pta_g"] = record.pta_g
@@ -160,8 +308,8 @@ def _measure_pulse_parameters(level_motions: pd.DataFrame, workbook_name: str) -
     return motions, notes
 
 
-def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str, settings: dict,
-                       seed: int) -> tuple[dict[int, list[tuple[Record, str]]], dict[int, str]]:
+def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str, settings: dict, seed: int,
+                       memory: dict | None = None) -> tuple[dict[int, list[tuple[Record, str]]], dict[int, str]]:
     """Per motion (``motion_key``): the floor accelerations the engine simulates, each with how it
     was obtained; and how each motion was simulated (``record``, ``synthetic`` or ``pulse``).
 
@@ -178,8 +326,10 @@ def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str, settings
     motions, kinds = {}, {}
     for row in level_motions.itertuples(index=False):
         k = int(row.motion_key)
+        if getattr(row, "from_ground", -1) >= 0:
+            continue  # a floor's motion through the building (:func:`_through_building`)
         if row.record_path:
-            record = _motion_record(row.record_path, row.scale, row.motion, row.row, workbook_name)
+            record = _motion_record(row.record_path, row.scale, row.motion, row.row, workbook_name, memory)
             motions[k], kinds[k] = [(record, f"record {record.name} x {float(row.scale):g}")], RECORD
             continue
         pta, tp, vp = float(row.pta_g), float(row.tp_s), float(row.vp_m_s)
@@ -200,7 +350,7 @@ def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str, settings
 
 
 def _record_pairs(level_motions: pd.DataFrame, motions: dict, workbook_name: str, notes: list,
-                  progress: Progress) -> dict[int, tuple[Record, Record]]:
+                  progress: Progress, memory: dict | None = None) -> dict[int, tuple[Record, Record]]:
     """Per motion with ``record_2``: its accelerations along the items' width and depth
     (:func:`assess.hazard.record_pairs.item_axes_pair`); ``motions`` then holds the width one."""
     pairs = {}
@@ -209,9 +359,9 @@ def _record_pairs(level_motions: pd.DataFrame, motions: dict, workbook_name: str
         if not second_path or not row.record_path:
             continue
         k = int(row.motion_key)
-        first = _motion_record(row.record_path, row.scale, row.motion, row.row, workbook_name)
+        first = _motion_record(row.record_path, row.scale, row.motion, row.row, workbook_name, memory)
         try:
-            second = _motion_record(second_path, row.scale, row.motion, row.row, workbook_name)
+            second = _motion_record(second_path, row.scale, row.motion, row.row, workbook_name, memory)
         except InputError as error:  # say which of the two components it is
             raise InputError([replace(problem, message=f"record_2: {problem.message}")
                               for problem in error.problems]) from None

@@ -1,0 +1,172 @@
+"""Stage 2a of the assessment: from the site and the building to every floor's motion.
+
+With a ``site`` sheet, a level that the ``hazard`` sheet gives no ground motion for gets its ground
+suite from the site: the level's target spectrum (``DE``, ``MCE_R``: ASCE 7; a probability: the
+site's OpenQuake uniform-hazard spectrum) and records selected and scaled to it from the site's
+``records`` folder, or spectrum-compatible synthetic motions (:mod:`assess.site`). With a
+``building`` sheet, every floor that has no ``hazard`` rows at the level gets its motions by passing
+each ground motion through the building's elastic modes (:mod:`assess.building`): the floor's
+absolute acceleration in time. A floor with its own ``hazard`` rows keeps them: a structural
+engineer's floor motions govern. The sheets are described in docs/workbook.md.
+
+The functions here build those motions; :mod:`assess.assessment.motions` places them among the
+level's motions.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+
+from assess.building import BuildingModes, building_modes
+from assess.building.floors import floors_table
+from assess.building.response import floor_records
+from assess.errors import InputError, Problem
+from assess.hazard.levels import HazardLevel
+from assess.hazard.records import Record
+from assess.inventory.site_building import BuildingSheet, SiteSheet
+from assess.mechanics.geometry import frequency_parameter
+from assess.site.asce7 import DesignSpectrum, from_design_values, from_mapped_values
+from assess.site.suite import GroundSuite, ground_suite
+from assess.site.target import level_target
+from assess.site.uhs import parse_site_choice
+
+#: Shortest and longest period of an item's rocking 2π/p that the suite's period range follows [s].
+#: Below 0.05 s a target spectrum is PGA; beyond 4 s a block is so large that it does not rock.
+ITEM_PERIOD_RANGE_S = (0.05, 4.0)
+
+
+@dataclass(frozen=True)
+class SiteSuite:
+    """A level's ground suite from the site, and the building's modes it passes through (if any).
+
+    Attributes
+    ----------
+    suite : GroundSuite
+        The motions against their target (``ground_motions.csv``, ``spectrum.csv``).
+    design : DesignSpectrum or None
+        The site's ASCE 7 spectrum, where the site sheet gives one.
+    periods_s : ndarray
+        The periods that matter, which set the suite's period range [s].
+    """
+
+    suite: GroundSuite
+    design: DesignSpectrum | None
+    periods_s: np.ndarray
+
+
+def building_modes_of(building: BuildingSheet) -> BuildingModes:
+    """The building sheet's modes (:func:`assess.building.building_modes`), every mode kept."""
+    return building_modes(building.storeys, building.height_m / building.storeys, system=building.system,
+                          period_s=building.period_s, damping=building.damping)
+
+
+def design_spectrum_of(site: SiteSheet, workbook_name: str) -> DesignSpectrum | None:
+    """The site's ASCE 7 spectrum from SDS/SD1 or SS/S1/site class; None when the sheet gives neither.
+
+    Raises :class:`~assess.errors.InputError` at the site sheet's cells where the code cannot give
+    the spectrum from what is given (e.g. ASCE 7-22's site classes BC, CD and DE from SS and S1).
+    """
+    try:
+        if site.sds_g is not None:
+            return from_design_values(site.sds_g, site.sd1_g, site.tl_s, code=site.code)
+        if site.ss_g is not None:
+            return from_mapped_values(site.ss_g, site.s1_g, site.site_class, site.tl_s, code=site.code)
+    except ValueError as error:
+        row = site.rows.get("site_class", site.rows.get("ss", site.rows.get("sds")))
+        raise InputError([Problem(workbook_name, f"{error}.", "give sds_g and sd1_g from the site's hazard "
+                                  "lookup (the USGS service gives them for every site class).",
+                                  sheet=site.sheet, row=row)]) from None
+    return None
+
+
+def periods_that_matter_s(equipment: pd.DataFrame, modes: BuildingModes | None) -> tuple[np.ndarray, float | None]:
+    """The periods a level's ground suite is matched over, and the shortest 90 %-mass mode's [s].
+
+    The building's modes that carry 90 % of its mass (ASCE 7-22 §16.2.3.1), and for the items their
+    rocking period 2π/p (Housner 1963; p the frequency parameter), within
+    :data:`ITEM_PERIOD_RANGE_S`; on its own (no building) the items' periods.
+
+    >>> items = pd.DataFrame({"width_m": [0.6], "depth_m": [0.6], "cg_height_m": [0.8], "height_m": [1.6]})
+    >>> periods, mass_period = periods_that_matter_s(items, None)
+    >>> [round(float(t), 3) for t in periods], mass_period
+    ([1.947], None)
+    """
+    half = 0.5 * np.minimum(equipment["width_m"].to_numpy(float), equipment["depth_m"].to_numpy(float))
+    p = frequency_parameter(half, equipment["cg_height_m"].to_numpy(float), equipment["height_m"].to_numpy(float))
+    item_periods = np.clip(2.0 * np.pi / np.asarray(p, dtype=float), *ITEM_PERIOD_RANGE_S)
+    periods = [np.unique(np.round(item_periods, 6))]
+    mass_period = None
+    if modes is not None:
+        cumulative = np.cumsum(modes.effective_mass_ratio)
+        n90 = int(np.searchsorted(cumulative, 0.9 - 1e-12) + 1)
+        periods.insert(0, modes.periods_s[:n90])
+        mass_period = float(modes.periods_s[min(n90, modes.n_modes) - 1])
+    return np.concatenate(periods), mass_period
+
+
+def site_suite(site: SiteSheet, level: HazardLevel, equipment: pd.DataFrame, modes: BuildingModes | None,
+               workbook_name: str, workbook_folder, seed: int) -> SiteSuite:
+    """A level's ground suite from the site sheet (module docstring).
+
+    Raises :class:`~assess.errors.InputError` naming the site sheet where the level names no target
+    the sheet can give, or the suite cannot be made from the records folder.
+    """
+    design = design_spectrum_of(site, workbook_name)
+    target = level_target(level, design=design, uhs_path=site.uhs_path or None,
+                          oq_site=parse_site_choice(site.oq_site) if site.oq_site else None,
+                          workbook=workbook_name, sheet=site.sheet)
+    periods, mass_period = periods_that_matter_s(equipment, modes)
+    name = level.label or level.name
+    try:
+        suite = ground_suite(target, periods, level=name, records_folder=site.records_folder or None,
+                             workbook_folder=workbook_folder, suite_size=site.suite_size, base_seed=seed,
+                             mass_period_s=mass_period)
+    except ValueError as error:
+        key = "records" if site.records_folder else ("uhs" if level.has_probability else "suite_size")
+        raise InputError([Problem(workbook_name, f"the ground suite of level '{name}' cannot be made: {error}.",
+                                  "add records to the records folder, lower suite_size, or give the level's "
+                                  "motions in the hazard sheet.", sheet=site.sheet,
+                                  row=site.rows.get(key))]) from None
+    return SiteSuite(suite, design, periods)
+
+
+def through_building(modes: BuildingModes, histories: list[Record], floors) -> dict[int, list[Record]]:
+    """Each history (a ground motion's) through the building: ``{floor: [history per ground history]}``."""
+    return floor_records(modes, histories, floors=sorted(int(f) for f in floors))
+
+
+def floors_csv(modes: BuildingModes, ground: list[Record], floors, level_label: str) -> pd.DataFrame:
+    """``floors.csv`` of a level: the modes used and PFA, PFA/PGA per floor over the ground suite."""
+    wanted = sorted({0, *(int(f) for f in floors)})
+    return floors_table(modes, floor_records(modes, ground, floors=wanted), level=level_label)
+
+
+def site_note(site: SiteSuite, sheet: SiteSheet) -> str:
+    """Where the level's ground motions come from, in a sentence for the report."""
+    suite = site.suite
+    if site.design is not None:
+        where = (f"the {sheet.code} spectrum (S_DS {site.design.sds_g:.3g} g, S_D1 {site.design.sd1_g:.3g} g"
+                 + (f", site class {sheet.site_class}" if sheet.site_class else "") + ")")
+    else:
+        where = "the site's uniform-hazard spectrum"
+    how = ("records selected from the records folder and scaled to" if suite.method == "records"
+           else "spectrum-compatible synthetic ground motions matched to")
+    return (f"Ground floor: {len(suite.motions)} {how} {where} at level {suite.level}, over periods "
+            f"{suite.lower_s:.3g} to {suite.upper_s:.3g} s (the suite's mean is at least "
+            f"{suite.min_mean_ratio:.0%} of the target there; ground_motions.csv and spectrum.csv).")
+
+
+def building_note(modes: BuildingModes, building: BuildingSheet, floors, derive_floors_roof) -> str:
+    """Where the upper floors' motions come from, in a sentence for the report."""
+    source = "given" if building.period_s is not None else "ASCE 7 Table 12.8-2's estimate"
+    text = (f"Floors {', '.join(str(f) for f in floors)}: each ground motion through the building's elastic modes "
+            f"({building.storeys} storeys, {building.system}, T1 {modes.periods_s[0]:.2f} s ({source}), "
+            f"{building.damping:.0%} damping, {modes.n_modes} modes): the floor's absolute acceleration in time "
+            "(floors.csv). The building is taken as elastic: a building that yields has lower peak floor "
+            "accelerations than these, at longer periods; floor motions a structural engineer gives in the hazard "
+            "sheet govern.")
+    if derive_floors_roof is not None:
+        text += " --derive-floors gives way to the building sheet."
+    return text
