@@ -548,13 +548,20 @@ def code_version() -> str:
 
 def building_key(item: PreparedBuilding, *, seed: int, formats, units: str, version: str) -> str:
     """Hash of everything a building's folder depends on: the bytes of its workbook, of every record its
-    hazard sheet names and of its hazard curve; its level, the seed, formats and units; the code."""
+    hazard sheet names, of its site sheet's uniform-hazard spectrum and records folder, and of its hazard
+    curve; its level, the seed, formats and units; the code."""
     digest = hashlib.blake2b(digest_size=16)
     digest.update(f"{version}|{item.level}|{seed}|{sorted(formats)}|{units}|".encode())
     digest.update(_file_digest(item.building.workbook).encode())
     hazard = item.inventory.hazard
     records = sorted({str(p) for column in hazard.columns if column.endswith("_path")  # record_path, and
                       for p in hazard[column] if isinstance(p, str) and p})           # any other record column
+    site = item.inventory.site
+    if site is not None:
+        if site.uhs_path:
+            records.append(site.uhs_path)
+        if site.records_folder:
+            records += sorted(str(p) for p in Path(site.records_folder).rglob("*") if p.is_file())
     for record in records:
         digest.update(f"|{record}|{_file_digest(Path(record))}".encode())
     if item.curve is not None:
