@@ -304,7 +304,8 @@ def _measure_pulse_parameters(level_motions: pd.DataFrame, workbook_name: str,
         else:
             source = "PTA measured from the record"
         motions.at[index, "pulse_source"] = source
-        notes.append(f"Motion '{row['motion']}': {', '.join(measured)} {source}.")
+        if not row["record_path"].startswith(MEMORY):  # the site's motions are said once (floors.site_note)
+            notes.append(f"Motion '{row['motion']}': {', '.join(measured)} {source}.")
     return motions, notes
 
 
