@@ -1,6 +1,6 @@
 """A full engine assessment: N items x the 18 records x 2 directions, as the main job runs it.
 
-Run: python benchmarks/bench_assessment.py [--items 1000] [--threads N] [--baseline-blocks 2000]
+Run: python benchmarks/bench_assessment.py [--items 1000] [--threads N] [--baseline-blocks 2000] [--building STOREYS]
 
 Items are drawn from a seeded generator spanning a laboratory inventory:
 height 0.8-2.4 m, width and depth 0.4-1.2 m, centre of mass at mid-height,
@@ -18,6 +18,11 @@ the run is done twice and the second (compiled, cached) time is reported:
   solver, against a plain compiled loop (numba, one explicit stick-slip update
   per sample per block, threads over blocks; ``bench_sliding.py``): the
   baseline of what the hardware does with the simplest possible kernel.
+
+With ``--building STOREYS`` the items stand on the floors of a building of that many storeys (3.6 m
+each, a steel moment frame, T1 from ASCE 7 Table 12.8-2, 5 % damping: :mod:`assess.building`), item i
+on floor i mod (STOREYS + 1), and run under the 18 records passed through the building to their floor
+(the time to make the floor histories is printed apart).
 
 Not a test.
 """
@@ -69,25 +74,48 @@ def plain_loop_block_steps_per_s(records, dts, n_blocks, repeat=3):
     return n_blocks * int(lengths.sum()) / best
 
 
+def floor_histories(records, dts, storeys):
+    """The records through a building of ``storeys`` storeys: one list of every floor's histories (floor-major)."""
+    from assess.building import building_modes, floor_records
+    from assess.hazard.records import Record
+
+    modes = building_modes(storeys, 3.6, system="steel moment frame")
+    ground = [Record(np.asarray(r, dtype=float), dt, f"record {k}") for k, (r, dt) in enumerate(zip(records, dts))]
+    floor_records(modes, ground[:1], floors=[storeys])  # compile or load
+    start = time.perf_counter()
+    by_floor = floor_records(modes, ground)
+    seconds = time.perf_counter() - start
+    print(f"building: {storeys} storeys, T1 {modes.periods_s[0]:.2f} s, {modes.n_modes} modes; floor histories of "
+          f"{len(ground)} records x {storeys + 1} floors in {seconds:.3f} s")
+    out = [record for floor in sorted(by_floor) for record in by_floor[floor]]
+    return [r.accel_g for r in out], [r.dt_s for r in out], storeys + 1
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--items", type=int, default=1000)
     parser.add_argument("--threads", type=int, default=numba.config.NUMBA_NUM_THREADS)
     parser.add_argument("--baseline-blocks", type=int, default=2000,
                         help="blocks of the plain compiled loop (x the 18 records)")
+    parser.add_argument("--building", type=int, metavar="STOREYS",
+                        help="items on the floors of a building of STOREYS storeys, under the records through it")
     args = parser.parse_args()
     numba.set_num_threads(args.threads)
     names, records, dts = load_records()
+    n_records = len(records)
+    floors = 1
+    if args.building:
+        records, dts, floors = floor_histories(records, dts, args.building)
     height, width, depth, mu = draw_items(args.items)
     blocks, index = [], []
-    for j in range(len(records)):
+    for j in range(n_records):
         for i in range(args.items):
             for base in (width[i], depth[i]):
                 blocks.append(Block(half_width_m=base / 2, cg_height_m=height[i] / 2, height_m=height[i], mu=mu[i]))
-                index.append(j)
+                index.append((i % floors) * n_records + j)
     index = np.asarray(index)
     samples = np.array([r.size for r in records])
-    print(f"{args.items} items x {len(records)} records x 2 directions = {len(blocks)} cases; "
+    print(f"{args.items} items x {n_records} records x 2 directions = {len(blocks)} cases; "
           f"{samples.sum()} record samples; {args.threads} threads")
     for attempt in ("first run (includes compilation or cache load)", "second run"):
         by_solver = {}
