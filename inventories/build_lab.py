@@ -12,16 +12,15 @@ timestamps, so re-running it rewrites the same bytes.
 from __future__ import annotations
 
 import datetime
-import io
 import os
-import zipfile
 from decimal import ROUND_HALF_UP, Decimal
 from fractions import Fraction
 from pathlib import Path
 
 from openpyxl import Workbook
 from openpyxl.utils import get_column_letter
-from openpyxl.xml.functions import tostring
+
+from assess.report import spreadsheet
 
 OUT = Path(__file__).resolve().parent / "lab.xlsx"
 FIXED_DATE = datetime.datetime(2024, 1, 1, 0, 0, 0)
@@ -297,21 +296,8 @@ def write_sheet(ws, header, rows):
 
 
 def deterministic_bytes(wb: Workbook, creator: str) -> bytes:
-    """The .xlsx bytes of ``wb`` with fixed document dates and zip timestamps."""
-    wb.properties.creator = creator
-    wb.properties.created = wb.properties.modified = FIXED_DATE
-    raw = io.BytesIO()
-    wb.save(raw)  # openpyxl stamps `modified` and zip times with now(): rewrite both
-    wb.properties.modified = FIXED_DATE
-    out = io.BytesIO()
-    with zipfile.ZipFile(raw) as zin, zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as zout:
-        for info in zin.infolist():
-            data = zin.read(info.filename)
-            if info.filename == "docProps/core.xml":
-                data = tostring(wb.properties.to_tree())
-            zout.writestr(zipfile.ZipInfo(info.filename, FIXED_DATE.timetuple()[:6]), data,
-                          compress_type=zipfile.ZIP_DEFLATED)
-    return out.getvalue()
+    """The .xlsx bytes of ``wb`` with fixed document dates and zip timestamps (as assess writes summary.xlsx)."""
+    return spreadsheet.deterministic_bytes(wb, creator, FIXED_DATE)
 
 
 def build() -> bytes:

@@ -11,14 +11,19 @@ named with their unit beside the SI ones.
 """
 from __future__ import annotations
 
+import datetime
 import io
 import re
+import zipfile
 
 import numpy as np
 import pandas as pd
 
 from assess.tables import neutralise_formulas
 
+#: The date written into a workbook's document properties and zip entries: no time of day goes into a file,
+#: so the same inputs give the same bytes.
+FIXED_DATE = datetime.datetime(2024, 1, 1, 0, 0, 0)
 #: Centimetres per inch (exact).
 CM_PER_IN = 2.54
 _FORBIDDEN_IN_SHEET_NAMES = re.compile(r"[\[\]:*?/\\]")
@@ -92,9 +97,30 @@ def summary_workbook(tables: dict[str, pd.DataFrame], units: str = "si") -> byte
             sheet.column_dimensions[letter].width = min(max(9, longest * 0.9 + 2), 60)
         sheet.freeze_panes = "C2"  # the header, and the id and name columns
         sheet.auto_filter.ref = sheet.dimensions
-    buffer = io.BytesIO()
-    workbook.save(buffer)
-    return buffer.getvalue()
+    return deterministic_bytes(workbook, "assess")
+
+
+def deterministic_bytes(workbook, creator: str, date: datetime.datetime = FIXED_DATE) -> bytes:
+    """The .xlsx bytes of an openpyxl ``workbook`` with ``date`` as its document dates and zip timestamps.
+
+    openpyxl stamps the document's ``modified`` property and every zip entry with the time of saving;
+    both are rewritten here, so a workbook saved twice is the same bytes.
+    """
+    from openpyxl.xml.functions import tostring  # openpyxl is imported with the workbook it serialises
+
+    workbook.properties.creator = creator
+    workbook.properties.created = workbook.properties.modified = date
+    raw = io.BytesIO()
+    workbook.save(raw)
+    workbook.properties.modified = date
+    out = io.BytesIO()
+    with zipfile.ZipFile(raw) as zin, zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as zout:
+        for info in zin.infolist():
+            data = zin.read(info.filename)
+            if info.filename == "docProps/core.xml":
+                data = tostring(workbook.properties.to_tree())
+            zout.writestr(zipfile.ZipInfo(info.filename, date.timetuple()[:6]), data, compress_type=zipfile.ZIP_DEFLATED)
+    return out.getvalue()
 
 
 def _cell(value):
