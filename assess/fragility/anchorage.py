@@ -40,6 +40,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from assess.anchorage.equations import base_tension
+
 #: a_p of ASCE 7-16 Table 13.5-1, laboratory equipment and floor-supported storage cabinets.
 COMPONENT_AMPLIFICATION = 1.0
 #: R_p of the same rows.
@@ -101,7 +103,4 @@ def base_overturning(force_n, cg_height_m, weight_n, half_width_m, sds_g):
     >>> [round(float(x)) for x in base_overturning(1413.0, 0.9, 2943.0, 0.3, 1.0)]
     [1272, 1089]
     """
-    moment = np.asarray(force_n, dtype=float) * np.asarray(cg_height_m, dtype=float)
-    resisting = (0.9 - 0.2 * sds_g) * np.asarray(weight_n, dtype=float) * np.asarray(half_width_m, dtype=float)
-    tension = np.maximum(0.0, (moment - resisting) / (2.0 * np.asarray(half_width_m, dtype=float)))
-    return moment, tension
+    return base_tension(force_n, cg_height_m, weight_n, half_width_m, sds_g)
