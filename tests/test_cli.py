@@ -48,7 +48,8 @@ def lab_rerun(lab_run, tmp_path_factory):
     """The lab's first run (every format) copied to a fresh folder, then the lab rerun into it as HTML,
     the motions scaled down to an OpenQuake PGA: ``(the first run's folder, the folder rerun into, what
     the rerun returned)``."""
-    scratch, _ = lab_run
+    scratch, done = lab_run
+    assert done.returncode == 0, done.stderr
     first = scratch / "reports" / "lab-2in50"
     out = tmp_path_factory.mktemp("lab-rerun") / "lab"
     shutil.copytree(first, out)
