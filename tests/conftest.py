@@ -1,8 +1,10 @@
-"""Shared fixtures: workbooks built in a scratch folder (see ``tests/workbooks.py``)."""
+"""Shared fixtures: workbooks built in a scratch folder (see ``tests/workbooks.py``), the sample lab's
+run (see ``tests/commands.py``)."""
 from __future__ import annotations
 
 import pytest
 
+from commands import LAB, run
 from workbooks import RECORD_FILE, good_sheets, write_workbook
 
 #: A small acceleration record (2.5 s, the reader's minimum is 2 s), written next to every
@@ -23,3 +25,12 @@ def make_workbook(tmp_path):
         return write_workbook(tmp_path / name, chosen, cells, files)
 
     return make
+
+
+@pytest.fixture(scope="session")
+def lab_run(tmp_path_factory):
+    """The sample lab (``inventories/lab.xlsx``) at 2in50 in every format, run once for the session
+    as a user runs it in a scratch folder: ``(scratch, what the command returned)``, the outputs in
+    ``scratch/reports/lab-2in50``. Tests read them or copy them; none changes them."""
+    scratch = tmp_path_factory.mktemp("lab")
+    return scratch, run(LAB, "--hazard", "2in50", cwd=scratch)

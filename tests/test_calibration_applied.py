@@ -13,9 +13,6 @@ motions.csv and the measured sheet, not read from the tool.
 from __future__ import annotations
 
 import json
-import os
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -30,10 +27,9 @@ from assess.hazard.records import pulse_record
 from assess.mechanics.block import Block
 from assess.mechanics.engine import simulate
 
+import commands
 from workbooks import write_workbook
 
-#: The checkout under test, first on the path of the commands run (not an installed copy).
-ENV = {**os.environ, "PYTHONPATH": str(Path(__file__).resolve().parents[1])}
 TRUE_K = 0.7
 LEVEL = "2in50"
 #: (id, height cm, width cm, μ declared): they slide without uplifting (μ < b/h), or rock (SHELF).
@@ -81,8 +77,8 @@ def lab(tmp_path_factory):
 
 
 def run(folder: Path, *args):
-    done = subprocess.run([sys.executable, "-m", "assess", *args, "--quiet"], cwd=folder, capture_output=True,
-                          text=True, timeout=900, env=ENV)
+    """``assess ARGS --quiet`` run from ``folder`` (in this process, tests/commands.py), which must succeed."""
+    done = commands.run(*args, "--quiet", cwd=folder)
     assert done.returncode == 0, done.stderr[-3000:]
     return done
 
@@ -169,10 +165,11 @@ def test_cli_exits_2_on_a_calibration_naming_no_item_of_the_workbook(lab, tmp_pa
     folder, _, _ = lab
     other = tmp_path / "calibration.json"
     other.write_text('{"selected": {"effect": "friction_scale", "parameters": {"k": 0.7}}, "applies_to": ["X9"]}')
-    done = subprocess.run([sys.executable, "-m", "assess", str(folder / "table.xlsx"), "--hazard", LEVEL,
-                           "--calibration", str(other), "--out", str(tmp_path / "out"), "--quiet"],
-                          capture_output=True, text=True, timeout=600, env=ENV)
+    done = commands.run(folder / "table.xlsx", "--hazard", LEVEL, "--calibration", other, "--out", tmp_path / "out",
+                        "--quiet", cwd=tmp_path)
     assert done.returncode == 2, done.stderr
+    commands.assert_refused(done, "none of which is in this workbook", "Nothing was written.",
+                            places=["calibration.json: the calibration applies to the items X9"])
     assert "calibration.json" in done.stderr and '"applies_to": "all"' in done.stderr
     assert "Traceback" not in done.stderr and not (tmp_path / "out").exists()
 

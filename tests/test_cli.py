@@ -1,5 +1,14 @@
-"""The command as a user runs it, in a scratch folder."""
+"""The command as a user runs it, in a scratch folder.
+
+The sample lab is run end to end once per set of formats and its outputs shared: every format
+(``lab_run``, tests/conftest.py), HTML alone (``lab_html``), and a rerun with an OpenQuake curve
+into a copy of the first (``lab_rerun``). What a command does with its options, its refusals and
+its output folder is checked on small workbooks (tests/workbooks.py). The commands run in this
+process (tests/commands.py) except where the test is about the process: Ctrl-C, a closed pipe,
+the installed wheel.
+"""
 import os
+import shutil
 import subprocess
 import sys
 import zipfile
@@ -10,9 +19,15 @@ import pandas as pd
 import pytest
 
 from assess import cli
+from commands import LAB, ROOT, assert_refused, child_env, location, run
+from conftest import RECORD_TEXT
+from workbooks import RECORD_FILE, job_sheets, write_workbook
 
-ROOT = Path(__file__).resolve().parents[1]
-LAB = ROOT / "inventories" / "lab.xlsx"
+CURVE = ROOT / "tests" / "data" / "openquake" / "case_14-hazard_curve-rlz-000_PGA.csv"
+#: An OpenQuake hazard map of one site (the layout of tests/data/openquake/case_13-hazard_map-mean.csv):
+#: PGA 0.11 g at 2 % in 50 years, the PGA the curve above gives there. A map scales the motions without
+#: the curve's stripes.
+MAP_2IN50 = "# mean, investigation_time=50.0\nlon,lat,depth,PGA-0.02\n-122.50000,38.10000,0.00000,1.100000E-01\n"
 SPEC_SUMMARY = ["id", "name", "floor", "alpha_rad", "p_rad_s", "b_over_h", "mu", "mode", "pta_g", "im",
                 "sliding_median_cm", "sliding_p84_cm", "clearance_cm", "pf_sliding", "overturn_fraction",
                 "theta_max_over_alpha", "risk"]
@@ -20,21 +35,36 @@ SPEC_MOTIONS = ["id", "motion", "direction", "pta_g", "tp_s", "im", "edp_median"
                 "pf_sliding", "sim_sliding_max_cm", "sim_theta_max_over_alpha", "sim_overturned"]
 
 
-def cli_env() -> dict:
-    """The environment of a CLI run in a scratch folder: this checkout first on the path."""
-    return {**os.environ, "PYTHONPATH": os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")])}
-
-
-def run(*args, cwd):
-    return subprocess.run([sys.executable, "-m", "assess", *map(str, args)], cwd=cwd,
-                          capture_output=True, text=True, env=cli_env())
+@pytest.fixture(scope="module")
+def lab_html(tmp_path_factory):
+    """The lab again, at 2475yr (the same level as 2in50), HTML only, quiet, in a fresh folder."""
+    scratch = tmp_path_factory.mktemp("lab-html")
+    return scratch / "o", run(LAB, "--hazard", "2475yr", "--format", "html", "--out", scratch / "o", "--quiet",
+                              cwd=scratch)
 
 
 @pytest.fixture(scope="module")
-def lab_run(tmp_path_factory):
-    scratch = tmp_path_factory.mktemp("lab")
-    completed = run(LAB, "--hazard", "2in50", cwd=scratch)
-    return scratch, completed
+def lab_rerun(lab_run, tmp_path_factory):
+    """The lab's first run (every format) copied to a fresh folder, then the lab rerun into it as HTML,
+    the motions scaled down to an OpenQuake PGA: ``(the first run's folder, the folder rerun into, what
+    the rerun returned)``."""
+    scratch, done = lab_run
+    assert done.returncode == 0, done.stderr
+    first = scratch / "reports" / "lab-2in50"
+    out = tmp_path_factory.mktemp("lab-rerun") / "lab"
+    shutil.copytree(first, out)
+    hazard_map = tmp_path_factory.mktemp("map") / "hazard_map-mean.csv"
+    hazard_map.write_text(MAP_2IN50)
+    done = run(LAB, "--hazard", "2in50", "--oq-hazard", hazard_map, "--oq-site", "0", "--out", out, "--format", "html",
+               cwd=out.parent)
+    return first, out, done
+
+
+def job_workbook(folder: Path, sheets=None) -> Path:
+    """A small workbook the main job runs in seconds (``workbooks.job_sheets``), with its record file."""
+    folder.mkdir(parents=True, exist_ok=True)
+    return write_workbook(folder / "wb.xlsx", job_sheets() if sheets is None else sheets,
+                          files={RECORD_FILE: RECORD_TEXT})
 
 
 def test_main_job_writes_the_five_files(lab_run):
@@ -100,12 +130,19 @@ def test_summary_xlsx_has_the_rows_of_summary_csv(lab_run):
     assert all(cell.data_type != "f" for row in sheet.iter_rows() for cell in row)
 
 
-def test_same_inputs_give_the_same_files(lab_run, tmp_path):
+def test_same_inputs_give_the_same_files(lab_run, lab_html, odd_names_run, tmp_path):
+    """The lab at 2475yr gives the bytes of its run at 2in50 (the report's PDF: on the small workbook of
+    odd names, run again in every format)."""
     scratch, _ = lab_run
-    completed = run(LAB, "--hazard", "2475yr", "--out", tmp_path / "again", cwd=tmp_path)
+    again, completed = lab_html
+    assert completed.returncode == 0, completed.stderr
+    for name in ("summary.csv", "motions.csv", "report.html"):
+        assert (again / name).read_bytes() == (scratch / "reports" / "lab-2in50" / name).read_bytes()
+    book, first = odd_names_run
+    completed = run(book, "--hazard", "2475yr", "--out", tmp_path / "again", "--quiet", cwd=tmp_path)
     assert completed.returncode == 0, completed.stderr
     for name in ("summary.csv", "motions.csv", "report.html", "report.pdf"):
-        assert (tmp_path / "again" / name).read_bytes() == (scratch / "reports" / "lab-2in50" / name).read_bytes()
+        assert (tmp_path / "again" / name).read_bytes() == (first / name).read_bytes(), name
 
 
 def test_bad_workbook_exit_2_no_traceback_nothing_written(tmp_path):
@@ -114,6 +151,7 @@ def test_bad_workbook_exit_2_no_traceback_nothing_written(tmp_path):
     completed = run(bad, "--hazard", "2in50", "--out", tmp_path / "out", cwd=tmp_path)
     assert completed.returncode == 2
     assert "bad.xlsx" in completed.stderr and "Traceback" not in completed.stderr
+    assert_refused(completed, f"{bad}: the file is not a valid .xlsx workbook", "Nothing was written.")
     assert not (tmp_path / "out").exists()
 
 
@@ -121,21 +159,29 @@ def test_unknown_level_lists_the_levels(tmp_path):
     completed = run(LAB, "--hazard", "10in50", "--out", tmp_path / "out", cwd=tmp_path)
     assert completed.returncode == 2
     assert "'2in50'" in completed.stderr and "sheet 'hazard'" in completed.stderr
+    assert_refused(completed, "no motions for hazard level '10in50'", "it has: '2in50'",
+                   places=["lab.xlsx, sheet 'hazard', column 'level'"])
     assert "Traceback" not in completed.stderr and not (tmp_path / "out").exists()
 
 
-def test_wrong_option_values_exit_2(tmp_path):
-    for args in (["--hazard", "sometimes"], ["--hazard", "2in50", "--format", "docx"],
-                 ["--hazard", "2in50", "--jobs", "0"]):
-        completed = run(LAB, *args, cwd=tmp_path)
-        assert completed.returncode == 2, args
-        assert "Traceback" not in completed.stderr
+@pytest.mark.parametrize("args, place", [
+    (["--hazard", "sometimes"], "lab.xlsx, sheet 'hazard', column 'level'"),
+    (["--hazard", "2in50", "--format", "docx"], "argument --format: 'docx'"),
+    (["--hazard", "2in50", "--jobs", "0"], "argument --jobs: '0'"),
+])
+def test_wrong_option_values_exit_2(tmp_path, args, place):
+    """Each wrong value is refused naming where it is: the option, or the sheet column it is looked for in."""
+    completed = run(LAB, *args, cwd=tmp_path)
+    assert completed.returncode == 2, args
+    assert "Traceback" not in completed.stderr
+    assert_refused(completed, places=[place])
+    assert list(tmp_path.iterdir()) == []
 
 
-def test_html_only_format(tmp_path):
-    completed = run(LAB, "--hazard", "2in50", "--format", "html", "--out", tmp_path / "o", "--quiet", cwd=tmp_path)
+def test_html_only_format(lab_html):
+    out, completed = lab_html
     assert completed.returncode == 0, completed.stderr
-    assert sorted(p.name for p in (tmp_path / "o").iterdir()) == ["motions.csv", "report.html", "summary.csv"]
+    assert sorted(p.name for p in out.iterdir()) == ["motions.csv", "report.html", "summary.csv"]
     assert completed.stderr == ""
 
 
@@ -150,16 +196,16 @@ def test_failure_while_rendering_leaves_old_outputs_untouched(tmp_path, monkeypa
     import assess.report
 
     monkeypatch.setattr(assess.report, "render_pdf", broken)
-    code = cli.main([str(LAB), "--hazard", "2in50", "--out", str(out), "--quiet"])
+    code = cli.main([str(job_workbook(tmp_path / "in")), "--hazard", "2in50", "--out", str(out), "--quiet"])
     assert code == 1
     assert "internal error" in capsys.readouterr().err
     assert (out / "summary.csv").read_text() == "previous run\n"
     assert sorted(p.name for p in out.iterdir()) == ["summary.csv"]
-    assert [p.name for p in tmp_path.iterdir()] == ["out"]  # no staging folder left behind
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["in", "out"]  # no staging folder left behind
 
 
-def test_help_describes_every_option():
-    completed = subprocess.run([sys.executable, "-m", "assess", "--help"], capture_output=True, text=True)
+def test_help_describes_every_option(tmp_path):
+    completed = run("--help", cwd=tmp_path)
     assert completed.returncode == 0
     for option in ("--hazard", "--out", "--format", "--jobs", "--seed"):
         assert option in completed.stdout
@@ -192,9 +238,9 @@ def test_oq_hazard_scales_the_level_to_the_site_pga(tmp_path):
     The ground motions' geometric-mean PTA becomes that PGA (log-log interpolation
     between the curve's points written out here); every motion is scaled alike.
     """
-    curve = ROOT / "tests" / "data" / "openquake" / "case_14-hazard_curve-rlz-000_PGA.csv"
-    done = run(LAB, "--hazard", "2475yr", "--oq-hazard", curve, "--oq-site=-122.5,38.1", "--out", tmp_path / "oq", "--format", "html",
-               cwd=tmp_path)
+    curve = CURVE
+    done = run(job_workbook(tmp_path), "--hazard", "2475yr", "--oq-hazard", curve, "--oq-site=-122.5,38.1",
+               "--out", tmp_path / "oq", "--format", "html", cwd=tmp_path)
     assert done.returncode == 0, done.stderr
     # 2 % in 50 yr lies between (0.103 g, poe 2.703533e-2) and (0.145 g, 5.818043e-3) on the curve
     import math
@@ -208,22 +254,26 @@ def test_oq_hazard_scales_the_level_to_the_site_pga(tmp_path):
 
 
 def test_oq_hazard_without_the_level_is_refused(tmp_path):
+    """The map holds 10 % in 50 yr only: 2 % in 50 yr is refused naming the map and the levels it has
+    (its site chosen: without --oq-site a map of 21 sites is refused for that first)."""
     hazard_map = ROOT / "tests" / "data" / "openquake" / "case_13-hazard_map-mean.csv"  # 10 % in 50 yr only
-    done = run(LAB, "--hazard", "2in50", "--oq-hazard", hazard_map, "--out", tmp_path / "x", cwd=tmp_path)
+    done = run(job_workbook(tmp_path), "--hazard", "2in50", "--oq-hazard", hazard_map, "--oq-site", "0",
+               "--out", tmp_path / "x", cwd=tmp_path)
     assert done.returncode == 2 and "Traceback" not in done.stderr
     assert hazard_map.name in done.stderr and not (tmp_path / "x").exists()
+    assert_refused(done, "has no column for 2% in 50 years", "it has PGA-0.1 (return period 475 years)",
+                   places=[f"{hazard_map}: the hazard map"])
+    done = run(job_workbook(tmp_path), "--hazard", "2in50", "--oq-hazard", hazard_map, "--out", tmp_path / "x",
+               cwd=tmp_path)
+    assert_refused(done, "the file holds 21 sites", "--oq-site", places=[f"{hazard_map}: "])
+    assert not (tmp_path / "x").exists()
 
 
-def test_rerun_with_new_hazard_writes_a_comparison(tmp_path):
+def test_rerun_with_new_hazard_writes_a_comparison(lab_rerun):
     """Run, then rerun into the same folder with the motions scaled down (an OpenQuake PGA):
     comparison.csv lists the items whose risk class changed, with the PTA that moved."""
-    out = tmp_path / "lab"
-    first = run(LAB, "--hazard", "2in50", "--out", out, "--format", "html", cwd=tmp_path)
-    assert first.returncode == 0, first.stderr
-    assert not (out / "comparison.csv").exists()
-    curve = ROOT / "tests" / "data" / "openquake" / "case_14-hazard_curve-rlz-000_PGA.csv"
-    second = run(LAB, "--hazard", "2in50", "--oq-hazard", curve, "--oq-site", "0", "--out", out,
-                 "--format", "html", cwd=tmp_path)
+    first, out, second = lab_rerun
+    assert not (first / "comparison.csv").exists()
     assert second.returncode == 0, second.stderr
     comparison = pd.read_csv(out / "comparison.csv")
     summary = pd.read_csv(out / "summary.csv")
@@ -274,21 +324,18 @@ def test_calibrate_refuses_a_test_of_an_unknown_specimen(tmp_path):
     done = run("calibrate", KM2010, "--measured", measured, "--out", tmp_path / "cal", cwd=tmp_path)
     assert done.returncode == 2 and "Traceback" not in done.stderr
     assert "FROMA" in done.stderr and "cell A2" in done.stderr and not (tmp_path / "cal").exists()
+    assert_refused(done, "FROMA", places=[location("measured.xlsx", "tests", "A2")])
 
 
 # ------------------------------------------------------------------ writing the output folder
 
-def test_a_later_run_leaves_no_stale_file_of_an_earlier_one(lab_run, tmp_path):
+def test_a_later_run_leaves_no_stale_file_of_an_earlier_one(lab_rerun):
     """html,pdf then html into one folder: the folder holds this run's files only (no report.pdf)."""
-    import shutil
-
-    scratch, _ = lab_run
-    out = tmp_path / "lab"
-    shutil.copytree(scratch / "reports" / "lab-2in50", out)
-    done = run(LAB, "--hazard", "2in50", "--format", "html", "--out", out, "--quiet", cwd=tmp_path)
+    first, out, done = lab_rerun
+    assert {"report.pdf", "summary.xlsx"} <= {p.name for p in first.iterdir()}
     assert done.returncode == 0, done.stderr
     assert sorted(p.name for p in out.iterdir()) == ["comparison.csv", "motions.csv", "report.html", "summary.csv"]
-    assert [p.name for p in tmp_path.iterdir()] == ["lab"]  # no temporary folder left beside it
+    assert [p.name for p in out.parent.iterdir()] == ["lab"]  # no temporary folder left beside it
     umask = os.umask(0)
     os.umask(umask)
     assert out.stat().st_mode & 0o777 == 0o777 & ~umask  # a folder as mkdir makes it, not mkdtemp's 0700
@@ -299,6 +346,7 @@ def test_an_output_folder_holding_other_files_is_refused_before_running(tmp_path
     done = run(LAB, "--hazard", "2in50", "--out", tmp_path, cwd=tmp_path)
     assert done.returncode == 2 and "Traceback" not in done.stderr
     assert "holds files assess did not write (notes.txt)" in done.stderr and "reading" not in done.stderr
+    assert_refused(done, places=[f"{tmp_path}: the output folder holds files"])
     assert sorted(p.name for p in tmp_path.iterdir()) == ["notes.txt"]
 
 
@@ -329,19 +377,18 @@ def test_a_failed_swap_puts_the_previous_folder_back(tmp_path, monkeypatch):
 
 # ------------------------------------------------------------------ user text in CSV files and figures
 
-def test_formulas_are_neutralised_in_the_csv_files_and_mathtext_names_are_drawn(tmp_path):
-    """Names and ids a spreadsheet would run as formulas get a leading quote in summary.csv and
-    motions.csv; numbers, negative ones included, do not; a rerun compares the items by their real ids.
-    An item named with matplotlib mathtext is drawn as text (the run used to crash after simulating)."""
-    import csv
-
+@pytest.fixture(scope="module")
+def odd_names_run(tmp_path_factory):
+    """A small workbook of ids and names a spreadsheet would run as formulas or matplotlib as mathtext,
+    run once in every format: ``(the workbook, its output folder)``."""
     import openpyxl
 
-    from workbooks import good_sheets, write_workbook
+    from workbooks import good_sheets
+    folder = tmp_path_factory.mktemp("odd-names")
     sheets = good_sheets()
     sheets["hazard"] = [{"level": "2in50", "motion": "M1", "floor": "all", "pta_g": 0.5, "tp_s": 1.0}]
     sheets["equipment"][3]["name"], sheets["equipment"][3]["mu"] = "X", 0.9  # BSC-3: im = 0.5/0.9 - 1 < 0
-    book = write_workbook(tmp_path / "wb.xlsx", sheets)
+    book = write_workbook(folder / "wb.xlsx", sheets)
     workbook = openpyxl.load_workbook(book)
     texts = {("equipment", "A2"): "=1+1", ("equipment", "B2"): '=HYPERLINK("http://x.example","y")',
              ("equipment", "B3"): "@SUM(A1)", ("equipment", "B5"): r"Freezer $\foo$", ("hazard", "B2"): "+M1"}
@@ -349,9 +396,19 @@ def test_formulas_are_neutralised_in_the_csv_files_and_mathtext_names_are_drawn(
         workbook[sheet][ref].value = text
         workbook[sheet][ref].data_type = "s"  # text that starts with '=', not a formula
     workbook.save(book)
-
-    done = run(book, "--hazard", "2in50", "--out", tmp_path / "out", "--quiet", cwd=tmp_path)
+    done = run(book, "--hazard", "2in50", "--out", folder / "out", "--quiet", cwd=folder)
     assert done.returncode == 0, done.stderr
+    return book, folder / "out"
+
+
+def test_formulas_are_neutralised_in_the_csv_files_and_mathtext_names_are_drawn(odd_names_run, tmp_path):
+    """Names and ids a spreadsheet would run as formulas get a leading quote in summary.csv and
+    motions.csv; numbers, negative ones included, do not; a rerun compares the items by their real ids.
+    An item named with matplotlib mathtext is drawn as text (the run used to crash after simulating)."""
+    import csv
+
+    book, first = odd_names_run
+    shutil.copytree(first, tmp_path / "out")
     with open(tmp_path / "out" / "summary.csv", newline="") as stream:
         summary = {row["id"]: row for row in csv.DictReader(stream)}
     assert set(summary) == {"'=1+1", "FRZ-2", "BSC-3"}
@@ -388,7 +445,7 @@ def test_ctrl_c_in_every_phase_exits_130_in_one_line(tmp_path, phase):
     (out / "summary.csv").write_text("previous\n")
     process = subprocess.Popen([sys.executable, "-m", "assess", str(LAB), "--hazard", "2in50", "--out", str(out)],
                                cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                               env=cli_env())
+                               env=child_env())
     after = []
     for line in process.stderr:
         if after or phase in line:
@@ -422,7 +479,7 @@ def test_an_interrupt_a_library_swallows_still_stops_the_run(tmp_path, monkeypat
         return b"%PDF-1.7\n"
 
     monkeypatch.setattr(assess.report, "render_pdf", render_swallowing)
-    code = cli.main([str(LAB), "--hazard", "2in50", "--out", str(tmp_path / "out"), "--quiet"])
+    code = cli.main([str(job_workbook(tmp_path)), "--hazard", "2in50", "--out", str(tmp_path / "out"), "--quiet"])
     assert code == 130 and capsys.readouterr().err.splitlines() == [INTERRUPTED]
     assert not (tmp_path / "out").exists()
 
@@ -449,13 +506,13 @@ def test_a_closed_pipe_exits_quietly(tmp_path):
     try:
         done = subprocess.run([sys.executable, "-m", "assess", "simulate", "--height-cm", "200", "--width-cm", "80",
                                "--mu", "0.3", "--pulse", "B", "--ap-g", "0.5", "--tp-s", "1", "--json"],
-                              cwd=tmp_path, stdout=write_end, stderr=subprocess.PIPE, text=True, env=cli_env())
+                              cwd=tmp_path, stdout=write_end, stderr=subprocess.PIPE, text=True, env=child_env())
     finally:
         os.close(write_end)
     assert done.returncode == 141 and done.stderr == ""
     shell = subprocess.run("set -o pipefail; " + " ".join([sys.executable, "-m", "assess", "simulate",
                            "--height-cm", "200", "--width-cm", "80", "--mu", "0.3", "--pulse", "B", "--ap-g", "0.5",
                            "--tp-s", "1", "--json"]) + " | head -c 10", shell=True, executable="/bin/bash",
-                           cwd=tmp_path, capture_output=True, text=True, env=cli_env())
+                           cwd=tmp_path, capture_output=True, text=True, env=child_env())
     assert shell.stdout == '{\n  "alpha' and "Error" not in shell.stderr and "internal" not in shell.stderr
     assert shell.returncode in (0, 141)  # 0 when head read everything before closing

@@ -1,8 +1,8 @@
 """The engine on a Dask cluster (``--scheduler``): the numbers of a run on this machine, bit for bit.
 
 A scheduler and two worker processes are started on 127.0.0.1 (one thread
-each). The main job on inventories/lab.xlsx is run serially and through the
-scheduler and its summary.csv and motions.csv compared byte for byte; the
+each). The main job on inventories/lab.xlsx is run serially (the session's run, tests/conftest.py)
+and through the scheduler and its summary.csv and motions.csv compared byte for byte; the
 runner itself is compared with the engine on cases of every solver, cut into
 small tasks so that they spread over both workers and come back out of order.
 """
@@ -39,9 +39,11 @@ def _tasks_run(cluster) -> dict:
         return client.run(lambda dask_worker: dask_worker.state.executed_count)
 
 
-def test_main_job_through_the_scheduler_writes_the_serial_numbers(cluster, tmp_path):
-    serial, remote = tmp_path / "serial", tmp_path / "remote"
-    assert cli.main([str(LAB), "--hazard", "2in50", "--out", str(serial), "--format", "xlsx", "--quiet"]) == 0
+def test_main_job_through_the_scheduler_writes_the_serial_numbers(cluster, lab_run, tmp_path):
+    """The serial run is the session's run of the lab on this machine (tests/conftest.py)."""
+    scratch, done = lab_run
+    serial, remote = scratch / "reports" / "lab-2in50", tmp_path / "remote"
+    assert done.returncode == 0, done.stderr
     before = _tasks_run(cluster)
     assert cli.main([str(LAB), "--hazard", "2in50", "--out", str(remote), "--format", "xlsx", "--quiet",
                      "--scheduler", cluster.scheduler_address]) == 0

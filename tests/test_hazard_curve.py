@@ -8,9 +8,6 @@ own numbers, and pelicun reading the exported files.
 from __future__ import annotations
 
 import math
-import os
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -23,6 +20,8 @@ from assess.hazard.risk_integral import annual_rates_of_curve
 from assess.inventory import read_workbook
 from assess.mechanics.runner import LocalRunner
 from assess.pipeline import run_assessment
+
+import commands
 from workbooks import write_workbook
 
 REPO = Path(__file__).resolve().parents[1]
@@ -181,9 +180,8 @@ def test_stripes_run_through_the_runner(rect_run):
 
 
 def _cli(args, cwd):
-    env = dict(os.environ, PYTHONPATH=str(REPO))
-    return subprocess.run([sys.executable, "-m", "assess", *args], cwd=cwd, env=env, capture_output=True,
-                          text=True, timeout=600)
+    """``assess ARGS`` from ``cwd``, in this process (tests/commands.py)."""
+    return commands.run(*args, cwd=cwd)
 
 
 def test_several_levels_in_one_run_write_one_folder_each(tmp_path):
@@ -202,6 +200,8 @@ def test_several_levels_in_one_run_write_one_folder_each(tmp_path):
     assert book.sheetnames[:2] == ["10in50", "2in50"]  # its own level first, then the others
     again = _cli([str(path), "--hazard", "2in50,2%/50yr", "--out", str(tmp_path / "again")], tmp_path)
     assert again.returncode == 2 and "again" in again.stderr and "Traceback" not in again.stderr
+    commands.assert_refused(again, "Fix: give each level once.",
+                            places=["--hazard: '2%/50yr' is the level '2in50' again"])
     assert not (tmp_path / "again").exists()
 
 
@@ -273,6 +273,7 @@ def test_a_curve_with_nothing_to_integrate_exits_2_naming_it(tmp_path):
     done = _cli([str(path), "--hazard", "2in50", "--oq-hazard", str(flat), "--out", str(tmp_path / "out")], tmp_path)
     assert done.returncode == 2, done.stderr
     assert "hazard_curve-mean-PGA_1.csv" in done.stderr and "Traceback" not in done.stderr
+    commands.assert_refused(done, "lies above the curve's range", places=[f"{flat}, row 3: site #0"])
     assert not (tmp_path / "out").exists()
 
 

@@ -2,14 +2,12 @@
 
 Each case must end in exit 2 with a message that names the file and what is
 wrong, or exit 0; never a traceback, never the contents of a file that is not
-a record, and never unbounded time or memory. The CLI runs in a scratch folder
-(tests/test_cli.py does the same).
+a record, and never unbounded time or memory. The CLI runs in a scratch folder, in this process
+(tests/commands.py) unless the process is what is looked at (its environment, a hang).
 """
 from __future__ import annotations
 
 import os
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -21,6 +19,7 @@ from assess.hazard.pulses import pulse_acceleration
 from assess.hazard.records import (MAX_RECORD_BYTES, MAX_STEP_S, MIN_STEP_S, check_record_location,
                                    read_record, record_file_problem)
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2 as G
+from commands import child_env, location, run, run_in_child
 from workbooks import good_sheets, write_workbook
 
 #: Text that must never appear in a message: it stands for a secret in a file that is no record.
@@ -30,17 +29,8 @@ _T = np.arange(0.0, 10.0, 0.01)
 GOOD_RECORD = "time_s,accel_g\n" + "".join(f"{t:.2f},{a:.6f}\n" for t, a in
                                            zip(_T, 0.3 * np.sin(2 * np.pi * _T) * np.exp(-0.3 * _T)))
 SIMULATE = ["simulate", "--height-cm", "200", "--width-cm", "80", "--mu", "0.3"]
-#: The checkout under test, first on the path of the CLI run in a scratch folder.
+#: The checkout under test.
 ROOT = Path(__file__).resolve().parents[1]
-
-
-def cli_env(**extra) -> dict:
-    return {**os.environ, "PYTHONPATH": os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")]), **extra}
-
-
-def run(*args, cwd, timeout=600):
-    return subprocess.run([sys.executable, "-m", "assess", *map(str, args)], cwd=cwd,
-                          capture_output=True, text=True, timeout=timeout, env=cli_env())
 
 
 def workbook_naming(folder: Path, record: str, scale=None, files=None) -> Path:
@@ -51,10 +41,12 @@ def workbook_naming(folder: Path, record: str, scale=None, files=None) -> Path:
     return write_workbook(folder / "wb.xlsx", sheets, files=files)
 
 
-def assert_refused(done, *expected):
+def assert_refused(done, *expected, places=()):
+    """Exit 2, no traceback, a short message holding every text and naming every place (file, sheet,
+    cell or row, as ``assess.errors.Problem.location`` writes it)."""
     assert done.returncode == 2, done.stderr
     assert "Traceback" not in done.stderr and "internal error" not in done.stderr
-    for text in expected:
+    for text in (*places, *expected):
         assert text in done.stderr, done.stderr
     assert len(done.stderr) < 3000
 
@@ -71,20 +63,20 @@ def test_a_record_outside_the_workbooks_folder_is_refused_and_never_read(tmp_pat
     assert SECRET not in done.stderr and not (tmp_path / "out").exists()
     # opted in, the file is read as a record: refused as one, still without quoting it
     done = run(book, "--hazard", "2in50", "--out", tmp_path / "out", "--allow-records-outside", cwd=tmp_path)
-    assert_refused(done, "secret.txt", "does not name the acceleration with its unit")
+    assert_refused(done, "secret.txt", "does not name the acceleration with its unit",
+                   places=["secret.txt, row 1: the record of motion 'M1' (wb.xlsx, sheet 'hazard', row 2)"])
     assert SECRET not in done.stderr
 
 
 def test_proc_self_environ_is_refused_and_the_environment_never_printed(tmp_path):
     book = workbook_naming(tmp_path, "/proc/self/environ")
-    env = cli_env(ASSESS_TEST_SECRET=SECRET)
-    done = subprocess.run([sys.executable, "-m", "assess", str(book), "--hazard", "2in50", "--quiet"],
-                          cwd=tmp_path, capture_output=True, text=True, env=env)
-    assert_refused(done, "outside the workbook's folder")
+    env = child_env(ASSESS_TEST_SECRET=SECRET)  # in a child: /proc/self/environ is the one it started with
+    done = run_in_child(book, "--hazard", "2in50", "--quiet", cwd=tmp_path, env=env)
+    assert_refused(done, "outside the workbook's folder", places=["wb.xlsx, sheet 'hazard', row 2, column 'record'"])
     assert SECRET not in done.stderr
-    done = subprocess.run([sys.executable, "-m", "assess", str(book), "--hazard", "2in50", "--quiet",
-                           "--allow-records-outside"], cwd=tmp_path, capture_output=True, text=True, env=env)
-    assert_refused(done, "binary data (a NUL byte on line 1)")
+    done = run_in_child(book, "--hazard", "2in50", "--quiet", "--allow-records-outside", cwd=tmp_path, env=env)
+    assert_refused(done, "binary data (a NUL byte on line 1)",
+                   places=["/environ, row 1: the record of motion 'M1' (wb.xlsx, sheet 'hazard', row 2)"])
     assert SECRET not in done.stderr
 
 
@@ -117,7 +109,7 @@ def test_symlink_loop(tmp_path):
     assert_refused(done, "a.csv: the path is a loop of symbolic links")
     book = workbook_naming(tmp_path, "a.csv")
     assert_refused(run(book, "--hazard", "2in50", cwd=tmp_path), "wb.xlsx", "'a.csv' cannot be followed",
-                   "a link that leads back to itself")
+                   "a link that leads back to itself", places=[location("wb.xlsx", "hazard", "D2")])
 
 
 def test_a_200_mb_file_of_nul_bytes_gets_a_short_message(tmp_path):
@@ -125,18 +117,20 @@ def test_a_200_mb_file_of_nul_bytes_gets_a_short_message(tmp_path):
     with open(huge, "wb") as stream:
         stream.truncate(200 * 2**20)  # sparse: costs no disk
     done = run(*SIMULATE, "--record", huge, cwd=tmp_path)
-    assert_refused(done, "nul.csv", f"larger than {MAX_RECORD_BYTES // 2**20} MB")
+    assert_refused(done, "nul.csv", f"larger than {MAX_RECORD_BYTES // 2**20} MB", places=[f"{huge}: the file"])
     small = tmp_path / "small.csv"
     small.write_bytes(b"time_s,accel_g\n0,0.1\n" + b"\x00" * 1000)
-    assert_refused(run(*SIMULATE, "--record", small, cwd=tmp_path), "binary data (a NUL byte on line 3)")
+    assert_refused(run(*SIMULATE, "--record", small, cwd=tmp_path), "binary data (a NUL byte on line 3)",
+                   places=[f"{small}, row 3: "])
 
 
 def test_a_fifo_does_not_hang_the_run(tmp_path):
     fifo = tmp_path / "fifo.csv"
     os.mkfifo(fifo)
-    done = run(*SIMULATE, "--record", fifo, cwd=tmp_path, timeout=120)
-    assert_refused(done, "not a regular file")
-    assert_refused(run(*SIMULATE, "--record", tmp_path, cwd=tmp_path), "a folder, not a record file")
+    done = run_in_child(*SIMULATE, "--record", fifo, cwd=tmp_path, timeout=120)  # a hang fails, not waits
+    assert_refused(done, "not a regular file", places=[f"{fifo}: this is"])
+    assert_refused(run(*SIMULATE, "--record", tmp_path, cwd=tmp_path), "a folder, not a record file",
+                   places=[f"{tmp_path}: this is"])
 
 
 def test_record_text_is_never_quoted_in_messages(tmp_path):
@@ -175,6 +169,8 @@ def test_records_without_tp_that_cannot_be_fitted_exit_2_located(tmp_path, files
     done = run(book, "--hazard", "2in50", "--out", tmp_path / "out", cwd=tmp_path)
     assert_refused(done, "wb.xlsx", "sheet 'hazard'", *expected)
     assert "row 2" in done.stderr or "cell E2" in done.stderr
+    assert ("(wb.xlsx, sheet 'hazard', row 2)" in done.stderr  # the record's own place, and the row naming it
+            or location("wb.xlsx", "hazard", "E2") in done.stderr), done.stderr
     assert not (tmp_path / "out").exists()
 
 

@@ -1,6 +1,6 @@
 """Hostile and odd workbooks (issue 9): labels as hazard levels, numbers out of any physical
 range, damaged cells, bombs. Each reproducer is run as a user runs it, the command in a scratch
-folder: it ends in exit 2 with a located message (file, sheet, cell, a fix) and writes nothing,
+folder (in this process: tests/commands.py): it ends in exit 2 with a located message (file, sheet, cell, a fix) and writes nothing,
 or in exit 0; never a traceback, never a message that echoes a file.
 """
 from __future__ import annotations
@@ -8,8 +8,6 @@ from __future__ import annotations
 import json
 import math
 import os
-import subprocess
-import sys
 import tracemalloc
 from pathlib import Path
 
@@ -20,6 +18,7 @@ from assess.errors import InputError
 from assess.hazard.levels import parse_level
 from assess.hazard.motions import select_level
 from assess.inventory import read_workbook
+from commands import location, run
 from conftest import RECORD_TEXT
 from workbooks import (RECORD_FILE, good_sheets, replace_member_streamed, rewrite_member,
                        sheet_xml, sheet_xml_name, write_tests_workbook, write_workbook)
@@ -31,16 +30,12 @@ CURVE = ROOT / "tests" / "data" / "openquake" / "case_14-hazard_curve-rlz-000_PG
 MESSAGE_MAX_CHARS = 6000
 
 
-def run(*args, cwd):
-    """``python -m assess ARGS`` in ``cwd``, importing this checkout's ``assess``."""
-    env = {**os.environ, "PYTHONPATH": str(ROOT)}
-    return subprocess.run([sys.executable, "-m", "assess", *map(str, args)], cwd=cwd, env=env,
-                          capture_output=True, text=True)
-
-
-def assert_refused(completed, *fragments, max_chars=MESSAGE_MAX_CHARS):
-    """Exit 2, no traceback, a short message holding every fragment, nothing written."""
+def assert_refused(completed, *fragments, places=(), max_chars=MESSAGE_MAX_CHARS):
+    """Exit 2, no traceback, a short message holding every fragment and naming every place (file, sheet,
+    cell or row, as ``assess.errors.Problem.location`` writes it), nothing written."""
     err = completed.stderr
+    for place in places:
+        assert place in err, f"{place!r} not in {err!r}"
     assert completed.returncode == 2, err[-3000:]
     assert "Traceback" not in err and "internal error" not in err, err[-3000:]
     assert len(err) < max_chars, f"{len(err)} characters of message"
@@ -54,9 +49,9 @@ def workbook(folder: Path, sheets=None, cells=None, name="inventory.xlsx") -> Pa
                           {RECORD_FILE: RECORD_TEXT})
 
 
-def assess_refuses(folder: Path, path: Path, *fragments):
+def assess_refuses(folder: Path, path: Path, *fragments, places=()):
     completed = run(path, "--hazard", "2in50", "--out", folder / "out", cwd=folder)
-    assert_refused(completed, path.name, *fragments)
+    assert_refused(completed, path.name, *fragments, places=places)
     assert not (folder / "out").exists()
 
 
@@ -85,7 +80,8 @@ def test_oq_hazard_at_a_label_level_is_refused_naming_the_level(tmp_path):
     path = workbook(tmp_path, label_sheets())
     done = run(path, "--hazard", "MCE_R", "--oq-hazard", CURVE, "--oq-site", "0",
                "--out", tmp_path / "out", cwd=tmp_path)
-    assert_refused(done, "'MCE_R' is a label", "--oq-hazard", "sheet 'hazard'", "2in50")
+    assert_refused(done, "'MCE_R' is a label", "--oq-hazard", "sheet 'hazard'", "2in50",
+                   places=["inventory.xlsx, sheet 'hazard', column 'level'"])
     assert not (tmp_path / "out").exists()
 
 
@@ -192,7 +188,9 @@ def with_cell(sheet, index, column, value):
 ])
 def test_numbers_and_cells_out_of_range_are_refused_at_their_cell(tmp_path, sheet, index, column,
                                                                     value, fragments):
-    assess_refuses(tmp_path, workbook(tmp_path, with_cell(sheet, index, column, value)), *fragments)
+    cell = next(fragment for fragment in fragments if fragment.startswith("cell "))[len("cell "):]
+    assess_refuses(tmp_path, workbook(tmp_path, with_cell(sheet, index, column, value)), *fragments,
+                   places=[location("inventory.xlsx", sheet, cell)])
 
 
 def test_quantity_1e19_is_not_read_as_a_negative_count(tmp_path):
@@ -205,7 +203,7 @@ def test_400_digit_integer_in_a_numeric_cell(tmp_path):
     rewrite_member(path, sheet_xml_name(path, "equipment"),
                    lambda xml: xml.replace("<v>123456789</v>", "<v>" + "9" * 400 + "</v>"))
     assess_refuses(tmp_path, path, "cell H2", "column 'mass_lb'", "(a 400-digit number)",
-                   "not a finite number")
+                   "not a finite number", places=[location("inventory.xlsx", "equipment", "H2")])
 
 
 @pytest.mark.parametrize("key, value", [
@@ -215,9 +213,10 @@ def test_regression_settings_out_of_their_physical_range(tmp_path, key, value):
     sheets = good_sheets()
     sheets["settings"].append({"key": key, "value": value})  # Excel row 6
     if key == "zeta":
-        del sheets["settings"][2]  # the good sheet already sets zeta (row 4)
+        del sheets["settings"][2]  # the good sheet already sets zeta (row 4): the new row is row 5
     assess_refuses(tmp_path, workbook(tmp_path, sheets), "sheet 'settings'", "column 'value'",
-                   f"setting '{key}'", "it lies between", "delete the row to use the default")
+                   f"setting '{key}'", "it lies between", "delete the row to use the default",
+                   places=[location("inventory.xlsx", "settings", "B5" if key == "zeta" else "B6")])
 
 
 def test_long_cell_text_is_quoted_80_characters_at_most(tmp_path):
@@ -226,7 +225,8 @@ def test_long_cell_text_is_quoted_80_characters_at_most(tmp_path):
     sheets["equipment"][0]["mu"] = "y" * 40_000
     path = workbook(tmp_path, sheets)
     completed = run(path, "--hazard", "2in50", "--out", tmp_path / "out", cwd=tmp_path)
-    assert_refused(completed, "cell B2", "cell I2", "x" * 79 + "…", "y" * 79 + "…")
+    assert_refused(completed, "cell B2", "cell I2", "x" * 79 + "…", "y" * 79 + "…",
+                   places=[location("inventory.xlsx", "equipment", cell) for cell in ("B2", "I2")])
     assert "x" * 81 not in completed.stderr and "y" * 81 not in completed.stderr
     assert len(completed.stderr) < 1500
 
@@ -236,7 +236,8 @@ def test_problems_listed_are_capped(tmp_path):
     row = dict(sheets["equipment"][0], mu="low")
     sheets["equipment"] = [dict(row, id=f"I{k}") for k in range(300)]
     completed = run(workbook(tmp_path, sheets), "--hazard", "2in50", cwd=tmp_path)
-    assert_refused(completed, "300 problems in the input", "and 250 more; fix these first", max_chars=50 * 400)
+    assert_refused(completed, "300 problems in the input", "and 250 more; fix these first", max_chars=50 * 400,
+                   places=[location("inventory.xlsx", "equipment", f"I{row}") for row in range(2, 52)])
     assert completed.stderr.count("is not a number") == 50
 
 
@@ -249,7 +250,8 @@ def test_damaged_shared_string_index_is_located(tmp_path):
         end = xml.index("</c>", start)
         return xml[:start] + '<c r="B2" t="s"><v>99999</v>' + xml[end:]
     rewrite_member(path, member, break_b2)
-    assess_refuses(tmp_path, path, "cell B2", "shared-text index is not in the file")
+    assess_refuses(tmp_path, path, "cell B2", "shared-text index is not in the file",
+                   places=[location("inventory.xlsx", "equipment", "B2")])
 
 
 # ---------------------------------------------------------------- the measured tests
@@ -274,7 +276,7 @@ def test_calibrate_refuses_a_damaged_tests_sheet_at_its_cell(tmp_path, cell_xml,
     measured = km2010_tests_with(tmp_path, cell_xml)
     assert cell_xml in _member_text(measured, "xl/worksheets/sheet1.xml")
     done = run("calibrate", KM2010, "--measured", measured, "--out", tmp_path / "cal", cwd=tmp_path)
-    assert_refused(done, "measured.xlsx", "sheet 'tests'", *fragments)
+    assert_refused(done, "measured.xlsx", "sheet 'tests'", *fragments, places=[location("measured.xlsx", "tests", "C2")])
     assert not (tmp_path / "cal").exists()
 
 
@@ -311,7 +313,8 @@ def test_workbook_that_inflates_past_the_bound_is_refused_unread(tmp_path):
     replace_member_streamed(path, sheet_xml_name(path, "equipment"),
                             sheet_xml(chunk for _ in range(210)))
     assert path.stat().st_size < 5 * 2**20
-    assess_refuses(tmp_path, path, "inflate to", "MB of content", "200 MB", "Fix:")
+    assess_refuses(tmp_path, path, "inflate to", "MB of content", "200 MB", "Fix:",
+                   places=["inventory.xlsx: the workbook's"])
 
 
 def test_cell_bomb_is_refused_with_the_reason(tmp_path):
@@ -322,7 +325,7 @@ def test_cell_bomb_is_refused_with_the_reason(tmp_path):
     replace_member_streamed(path, sheet_xml_name(path, "equipment"),
                             sheet_xml([header, *rows]))
     assess_refuses(tmp_path, path, "sheet 'equipment'", "more than 500,000 cells",
-                   "delete the rows below")
+                   "delete the rows below", places=["inventory.xlsx, sheet 'equipment': "])
 
 
 def test_shared_strings_bomb_is_refused_before_openpyxl_parses_it(tmp_path):
@@ -336,7 +339,7 @@ def test_shared_strings_bomb_is_refused_before_openpyxl_parses_it(tmp_path):
         '<Override PartName="/xl/sharedStrings.xml" ContentType="application/vnd.openxmlformats-'
         'officedocument.spreadsheetml.sharedStrings+xml"/></Types>')))
     assess_refuses(tmp_path, path, "xl/sharedStrings.xml", "inflates to 17 MB",
-                   "a part is read up to 16 MB")
+                   "a part is read up to 16 MB", places=["inventory.xlsx: the part xl/sharedStrings.xml"])
 
 
 def test_element_bomb_is_refused_from_its_tag_count(tmp_path):
@@ -344,7 +347,8 @@ def test_element_bomb_is_refused_from_its_tag_count(tmp_path):
     path = workbook(tmp_path)
     replace_member_streamed(path, sheet_xml_name(path, "equipment"), sheet_xml(
         [b"</sheetData><cols>", *(b"<x/>" * 2**16 for _ in range(64)), b"</cols><sheetData>"]))
-    assess_refuses(tmp_path, path, "xl/worksheets/sheet1.xml", "more than 4,000,000 XML tags")
+    assess_refuses(tmp_path, path, "xl/worksheets/sheet1.xml", "more than 4,000,000 XML tags",
+                   places=["inventory.xlsx: the part xl/worksheets/sheet1.xml"])
 
 
 @pytest.mark.parametrize("bad_cell", ['<c r="ZZZZ2"><v>1</v></c>', '<c r="B9"><v>1</v></c>'])
@@ -357,7 +361,8 @@ def test_a_cell_address_that_does_not_fit_makes_the_sheet_unreadable(tmp_path, b
         end = xml.index("</c>", start) + len("</c>")
         return xml[:start] + bad_cell + xml[end:]
     rewrite_member(path, sheet_xml_name(path, "equipment"), break_b2)
-    assess_refuses(tmp_path, path, "sheet 'equipment' cannot be read", "damaged near row 2")
+    assess_refuses(tmp_path, path, "sheet 'equipment' cannot be read", "damaged near row 2",
+                   places=["inventory.xlsx, sheet 'equipment': "])
     completed = run(path, "--hazard", "2in50", cwd=tmp_path)
     assert "ZZZZ" not in completed.stderr and "B9" not in completed.stderr
 
@@ -367,14 +372,15 @@ def test_a_record_path_that_is_a_symlink_loop(tmp_path):
     path = workbook(tmp_path, sheets)
     os.symlink("loop.csv", tmp_path / "records" / "loop.csv")
     assess_refuses(tmp_path, path, "cell H4", "'records/loop.csv' cannot be followed",
-                   "a link that leads back to itself")
+                   "a link that leads back to itself", places=[location("inventory.xlsx", "hazard", "H4")])
 
 
 def test_calibrate_lists_at_most_50_problems(tmp_path):
     rows = [["specimen", "motion", "sliding_cm"]] + [["NOPE", "Nowhere", -1]] * 100
     measured = write_tests_workbook(tmp_path / "measured.xlsx", rows)
     done = run("calibrate", KM2010, "--measured", measured, "--out", tmp_path / "cal", cwd=tmp_path)
-    assert_refused(done, "and 250 more; fix these first", max_chars=50 * 400)
+    assert_refused(done, "and 250 more; fix these first", max_chars=50 * 400,
+                   places=[location("measured.xlsx", "tests", "A2"), location("measured.xlsx", "tests", "B2")])
     assert done.stderr.count("  - ") == 50
 
 
@@ -390,4 +396,5 @@ def test_consequence_column_is_read_and_a_wrong_value_is_located(tmp_path):
     assert consequences.iloc[0] == "life-safety" and consequences.iloc[-1] == "ordinary"
     sheets["equipment"][0]["consequence"] = "catastrophic"
     bad = workbook(tmp_path, sheets, name="bad.xlsx")
-    assess_refuses(tmp_path, bad, "'catastrophic' is not a consequence", "consequence")
+    assess_refuses(tmp_path, bad, "'catastrophic' is not a consequence", "consequence",
+                   places=[location("bad.xlsx", "equipment", "P2")])

@@ -12,6 +12,7 @@ from assess.errors import InputError
 from assess.inventory import Inventory
 from assess.mechanics.sliding import sliding_response
 from assess.pipeline import run_assessment
+from commands import location
 from test_hostile_workbooks import assert_refused, run, workbook
 from workbooks import good_sheets
 
@@ -116,18 +117,19 @@ def equipment_with(**columns):
     return sheets
 
 
-@pytest.mark.parametrize("columns, fragments", [
-    ({"mu_low": 0.2}, ["cell ", "column 'mu_low'", "without mu_high"]),
-    ({"mu_high": 0.4}, ["column 'mu_high'", "without mu_low"]),
-    ({"mu_low": 0.35, "mu_high": 0.5}, ["column 'mu_low'", "is above mu '0.3'"]),
-    ({"mu_low": 0.2, "mu_high": 0.25}, ["column 'mu_high'", "is below mu '0.3'"]),
-    ({"mu_low": 0.2, "mu_high": 3.0}, ["column 'mu_high'", "not plausible"]),
-    ({"mu_low": "best fit", "mu_high": 0.4}, ["column 'mu_low'", "is not a number"]),
+@pytest.mark.parametrize("columns, cell, fragments", [
+    # the new columns follow the good sheet's 15 (A-O): the first given is P, the second Q
+    ({"mu_low": 0.2}, "P2", ["cell ", "column 'mu_low'", "without mu_high"]),
+    ({"mu_high": 0.4}, "P2", ["column 'mu_high'", "without mu_low"]),
+    ({"mu_low": 0.35, "mu_high": 0.5}, "P2", ["column 'mu_low'", "is above mu '0.3'"]),
+    ({"mu_low": 0.2, "mu_high": 0.25}, "Q2", ["column 'mu_high'", "is below mu '0.3'"]),
+    ({"mu_low": 0.2, "mu_high": 3.0}, "Q2", ["column 'mu_high'", "not plausible"]),
+    ({"mu_low": "best fit", "mu_high": 0.4}, "P2", ["column 'mu_low'", "is not a number"]),
 ])
-def test_bad_mu_range_is_refused_at_its_cell(tmp_path, columns, fragments):
+def test_bad_mu_range_is_refused_at_its_cell(tmp_path, columns, cell, fragments):
     path = workbook(tmp_path, equipment_with(**columns))
     assert_refused(run(path, "--hazard", "2in50", "--out", tmp_path / "out", cwd=tmp_path), path.name,
-                   "sheet 'equipment'", *fragments)
+                   "sheet 'equipment'", *fragments, places=[location("inventory.xlsx", "equipment", cell)])
     assert not (tmp_path / "out").exists()
 
 
@@ -138,22 +140,22 @@ def hazard_with(**columns):
     return sheets
 
 
-@pytest.mark.parametrize("columns, fragments", [
-    ({"record": None, "pta_g": 0.5, "tp_s": 1.0, "record_2": "records/lg.csv"},
+@pytest.mark.parametrize("columns, where, fragments", [
+    ({"record": None, "pta_g": 0.5, "tp_s": 1.0, "record_2": "records/lg.csv"}, "L4",
      ["column 'record_2'", "record is empty"]),
-    ({"azimuth_deg": 30}, ["column 'azimuth_deg'", "has no record_2"]),
-    ({"record_2": "records/missing.csv"}, ["column 'record_2'", "was not found"]),
-    ({"record_2": "records/lg.csv", "azimuth_deg": 400}, ["column 'azimuth_deg'", "not plausible"]),
-    ({"record_2": "../outside.csv"}, ["column 'record_2'", "outside the workbook's folder"]),
+    ({"azimuth_deg": 30}, "K4", ["column 'azimuth_deg'", "has no record_2"]),
+    ({"record_2": "records/missing.csv"}, "K4", ["column 'record_2'", "was not found"]),
+    ({"record_2": "records/lg.csv", "azimuth_deg": 400}, "L4", ["column 'azimuth_deg'", "not plausible"]),
+    ({"record_2": "../outside.csv"}, 4, ["column 'record_2'", "outside the workbook's folder"]),
 ])
-def test_bad_second_component_is_refused_at_its_cell(tmp_path, columns, fragments):
+def test_bad_second_component_is_refused_at_its_cell(tmp_path, columns, where, fragments):
     folder = tmp_path / "site"
     folder.mkdir()
     (tmp_path / "outside.csv").write_text("time_s,accel_g\n0,0\n0.01,0.1\n")
     path = workbook(folder, hazard_with(**columns))
     completed = run(path, "--hazard", "10in50", "--out", folder / "out", cwd=folder)
     assert_refused(completed, path.name, "sheet 'hazard'", "row 4" if "outside" in fragments[-1] else "4",
-                   *fragments)
+                   *fragments, places=[location("inventory.xlsx", "hazard", where)])
     assert not (folder / "out").exists()
 
 
@@ -187,5 +189,7 @@ def test_a_second_component_that_is_not_a_record_is_refused_naming_record_2(tmp_
     path = workbook(tmp_path, hazard_with(record_2="records/bad.csv"))
     (tmp_path / "records" / "bad.csv").write_text("time_s,accel_g\n0,0\n0.01,nan\n0.02,0\n")
     completed = run(path, "--hazard", "10in50", "--out", tmp_path / "out", cwd=tmp_path)
-    assert_refused(completed, "bad.csv", "record_2:", "row 4")
+    assert_refused(completed, "bad.csv", "record_2:", "row 4",
+                   places=["bad.csv, row 3: record_2: the record of motion 'Los Gatos record' "
+                           "(inventory.xlsx, sheet 'hazard', row 4)"])
     assert not (tmp_path / "out").exists()

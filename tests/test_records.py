@@ -5,8 +5,6 @@ the line (``Problem.row``), says what is wrong and how to fix it.
 """
 from __future__ import annotations
 
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -16,6 +14,7 @@ from assess.errors import InputError
 from assess.hazard.records import (MAX_PLAUSIBLE_PGA_G, MIN_DURATION_S, Record, pulse_record,
                                    read_record)
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2 as G
+from commands import run
 
 ACCEL_G = np.array([0.0, 0.1, -0.25, 0.05, 0.0])
 
@@ -246,7 +245,7 @@ def test_short_at2(tmp_path):
 
 def test_a_unit_mistake_reaches_the_user_through_the_cli_without_traceback(tmp_path):
     path = write(tmp_path, two_columns(list(np.linspace(0.0, 30.0, 300)), unit="g"))
-    done = subprocess.run([sys.executable, "-m", "assess", "simulate", "--height-cm", "200", "--width-cm", "80",
-                           "--mu", "0.3", "--record", str(path)], capture_output=True, text=True)
+    done = run("simulate", "--height-cm", "200", "--width-cm", "80", "--mu", "0.3", "--record", path, cwd=tmp_path)
     assert done.returncode == 2 and "Traceback" not in done.stderr
+    assert f"  - {path}" in done.stderr, done.stderr  # the record file is where the problem is
     assert "probably a unit mistake" in done.stderr and "accel_m_s2" in done.stderr

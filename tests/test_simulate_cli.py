@@ -2,9 +2,6 @@
 from __future__ import annotations
 
 import json
-import os
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -14,19 +11,17 @@ import pytest
 from assess.errors import InputError
 from assess.hazard.records import read_record
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2 as G
+from commands import run
 
 SPEC_KEYS = {"alpha_rad", "p_rad_s", "mode", "sliding_max_cm", "sliding_residual_cm",
              "theta_max_over_alpha", "uplift", "overturned"}
 
 
-ROOT = Path(__file__).resolve().parents[1]
 
 
 def simulate(*args, cwd=None):
-    """The command run from ``cwd``, importing this checkout (not whatever assess is installed)."""
-    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")])}
-    return subprocess.run([sys.executable, "-m", "assess", "simulate", *map(str, args)],
-                          capture_output=True, text=True, cwd=cwd, env=env)
+    """``assess simulate ARGS`` run from ``cwd`` (default: this folder), in this process (tests/commands.py)."""
+    return run("simulate", *args, cwd=Path.cwd() if cwd is None else cwd)
 
 
 def test_rectangular_pulse_gives_newmark_closed_form():
@@ -77,24 +72,29 @@ def test_record_and_history(tmp_path):
     assert table["sliding_cm"].abs().max() == pytest.approx(out["sliding_max_cm"], rel=0.02)
 
 
-@pytest.mark.parametrize("args, expected", [
-    (["--pulse", "B", "--ap-g", 0.5], "needs --ap-g and --tp-s"),
-    ([], "either as --record FILE or as --pulse"),
-    (["--pulse", "B", "--ap-g", 0.5, "--tp-s", 1, "--record", "x.csv"], "exactly one"),
-    (["--record", "missing.csv"], "missing.csv: the record file does not exist"),
-    (["--pulse", "B", "--ap-g", 0.5, "--tp-s", 1, "--mu-static", 0.1], "--mu-static 0.1 is below --mu"),
-    (["--pulse", "B", "--ap-g", 0.5, "--tp-s", 1, "--cg-height-cm", 300], "above the top"),
-    (["--pulse", "B", "--ap-g", 0.5, "--tp-s", 1, "--history", "."], "--history names a folder"),
+@pytest.mark.parametrize("args, expected, place", [
+    (["--pulse", "B", "--ap-g", 0.5], "needs --ap-g and --tp-s", "command line: --pulse B"),
+    ([], "either as --record FILE or as --pulse", "command line: give the motion"),
+    (["--pulse", "B", "--ap-g", 0.5, "--tp-s", 1, "--record", "x.csv"], "exactly one", "command line: give the motion"),
+    (["--record", "missing.csv"], "missing.csv: the record file does not exist", "  - missing.csv: "),
+    (["--pulse", "B", "--ap-g", 0.5, "--tp-s", 1, "--mu-static", 0.1], "--mu-static 0.1 is below --mu",
+     "command line: --mu-static 0.1"),
+    (["--pulse", "B", "--ap-g", 0.5, "--tp-s", 1, "--cg-height-cm", 300], "above the top",
+     "command line: --cg-height-cm 300"),
+    (["--pulse", "B", "--ap-g", 0.5, "--tp-s", 1, "--history", "."], "--history names a folder", "  - .: --history"),
 ])
-def test_wrong_input_exits_2_without_traceback(args, expected, tmp_path):
+def test_wrong_input_exits_2_without_traceback(args, expected, place, tmp_path):
+    """Exit 2, the problem located where the user wrote it (the command line's option, or the file named)."""
     done = simulate("--height-cm", 200, "--width-cm", 80, "--mu", 0.3, *args, cwd=tmp_path)
     assert done.returncode == 2
     assert expected in done.stderr and "Traceback" not in done.stderr
+    assert place in done.stderr and "Nothing was written." in done.stderr, done.stderr
 
 
 def test_bad_option_value_exits_2():
     done = simulate("--height-cm", -5, "--width-cm", 80, "--mu", 0.3, "--pulse", "A", "--ap-g", 1, "--tp-s", 1)
     assert done.returncode == 2 and "must be a positive number" in done.stderr
+    assert "argument --height-cm: '-5'" in done.stderr
 
 
 def test_help_describes_every_option():

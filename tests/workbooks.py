@@ -61,6 +61,17 @@ def good_sheets() -> dict:
     return copy.deepcopy(_GOOD)
 
 
+def job_sheets() -> dict:
+    """A valid workbook the main job runs in seconds at level ``2in50``: the good sheets' three
+    items (FRZ-2 anchored) under one Type-B pulse on every floor (0.5 g, 1 s), the pulse alone
+    simulated (no synthetic motions)."""
+    sheets = good_sheets()
+    sheets["hazard"] = [{"level": "2in50", "motion": "M1", "floor": "all", "pta_g": 0.5, "tp_s": 1.0,
+                         "pulse": "B"}]
+    sheets["settings"].append({"key": "simulate_motions", "value": "pulse"})
+    return sheets
+
+
 def rename_column(rows: list[dict], old: str, new: str) -> None:
     """Rename a column of a list-of-dicts sheet in place, keeping its position."""
     for i, row in enumerate(rows):
