@@ -8,8 +8,15 @@ the site's spectrum and every floor's motion from the building (docs/workbook.md
 ``building``). Every item and number is invented but typical; do not use it for a real building.
 Deterministic (same bytes each run), like build_lab.py.
 
+The site's uniform-hazard spectra at 10 % and 2 % in 50 years, for levels named by a probability, are
+``hospital-uhs.csv`` in OpenQuake's export layout (``hazard_uhs-mean_*.csv``). They are illustrative,
+NOT an OpenQuake run: ASCE 7's two-period shape (S_a = 2.5 PGA on the plateau, T_S = 0.55 s) anchored
+at the PGAs of ``lab-hazard-curve.csv`` (0.40 g at 10 % and 0.62 g at 2 % in 50 years), so that the
+curve and the spectra agree.
+
     python inventories/build_hospital.py
     assess inventories/hospital.xlsx --hazard DE
+    assess inventories/hospital.xlsx --hazard 2in50,10in50 --oq-hazard inventories/lab-hazard-curve.csv
 """
 from __future__ import annotations
 
@@ -21,6 +28,12 @@ from openpyxl import Workbook
 from build_lab import deterministic_bytes, write_sheet
 
 OUT = Path(__file__).resolve().parent / "hospital.xlsx"
+UHS = OUT.with_name("hospital-uhs.csv")
+#: PGA [g] at each probability of exceedance in 50 years: the anchors of lab-hazard-curve.csv.
+UHS_PGA_G = {0.1: 0.40, 0.02: 0.62}
+UHS_PERIODS_S = (0.05, 0.1, 0.2, 0.3, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0)
+#: Plateau over PGA and the corner period T_S of the illustrative spectra (ASCE 7 two-period shape).
+PLATEAU_OVER_PGA, CORNER_S = 2.5, 0.55  # S_a(0) = 0.4 S_DS = PGA
 
 
 def item(id, name, room, floor, h_in, w_in, d_in, lb, mu, clearance_in, consequence, notes, cg_in=None,
@@ -75,7 +88,7 @@ EQUIPMENT = [
 #: The site as a hazard lookup gives it (invented values typical of a coastal California site).
 SITE = [
     ("code", "ASCE 7-22"), ("sds_g", 1.2), ("sd1_g", 0.7), ("tl_s", 8), ("site_class", "D"),
-    ("risk_category", "IV"),
+    ("risk_category", "IV"), ("uhs", UHS.name),
 ]
 #: The building as its drawings give it.
 BUILDING = [
@@ -85,6 +98,26 @@ SETTINGS = [
     ("facility", "Sample community hospital (4 storeys)"),
     ("site", "Sample site (invented)"),
 ]
+
+
+def spectral_acceleration_g(pga_g: float, period_s: float) -> float:
+    """The illustrative spectrum: ASCE 7's two-period shape through ``pga_g`` at T = 0 (S_DS = 2.5 PGA)."""
+    sds = PLATEAU_OVER_PGA * pga_g
+    t0 = 0.2 * CORNER_S
+    if period_s < t0:
+        return sds * (0.4 + 0.6 * period_s / t0)
+    return sds if period_s <= CORNER_S else sds * CORNER_S / period_s
+
+
+def uhs_text() -> str:
+    """hospital-uhs.csv in the layout of OpenQuake's ``hazard_uhs-mean_*.csv`` export."""
+    columns = [f"{poe}~{imt}" for poe in UHS_PGA_G for imt in ["PGA"] + [f"SA({t})" for t in UHS_PERIODS_S]]
+    values = [spectral_acceleration_g(pga, period) for pga in UHS_PGA_G.values()
+              for period in (0.0,) + UHS_PERIODS_S]
+    meta = ("\"generated_by='assess inventories/build_hospital.py (illustrative, not an OpenQuake run)', "
+            "kind='mean', investigation_time=50.0\"")
+    return "\n".join(["#," + "," * (len(columns) + 1) + meta, "custom_site_id,lon,lat," + ",".join(columns),
+                      "HOSP,-121.89000,37.34000," + ",".join(f"{v:.6E}" for v in values)]) + "\n"
 
 
 def build() -> bytes:
@@ -101,4 +134,5 @@ if __name__ == "__main__":
     tmp = OUT.with_suffix(".xlsx.tmp")
     tmp.write_bytes(build())
     os.replace(tmp, OUT)
+    UHS.write_text(uhs_text())
     print(f"wrote {OUT} ({len(EQUIPMENT)} items)")
