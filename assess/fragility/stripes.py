@@ -35,6 +35,11 @@ at every floor acceleration a. Multiple-stripe analysis ([1]) gives it:
    probability in 50 years follows (Poisson). Without a fit, the rate is
    bounded where the outcomes allow (:func:`item_rates`).
 
+Where a building sheet gives the floors' motions, the stripes are of ground
+acceleration passed through the building instead, and the fragility is in PGA
+(:mod:`assess.fragility.ground_stripes`; steps 2 to 4 are the same,
+:func:`fit_and_integrate`).
+
 The risk class and the advice stay those of the level (the design
 earthquake the facility plans for); the annual rates answer the owner's other
 question, "how likely over the building's life", beside them.
