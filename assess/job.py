@@ -195,11 +195,15 @@ def run_job(job: AssessmentJob, say: Say = lambda message: None) -> Iterator[Lev
     hazard_curve = oq_hazard if oq_hazard is not None and oq_hazard.kind == "curve" else None
     results = []
     with open_runner(job.scheduler, say, tls=job.scheduler_tls) as runner:
+        shared_curve = None  # stripes of ground acceleration through the building: one level's serve all
         for (_, text), out_dir in zip(levels, out_dirs):  # every level computed before any is written
             result = pipeline.run_assessment(inventory, text, seed=job.seed, progress=say, oq_hazard=oq_hazard,
                                              derive_floors_roof=job.derive_floors, calibration=calibration,
                                              runner=runner, hazard_curve=hazard_curve,
-                                             allow_records_outside=job.allow_records_outside)
+                                             allow_records_outside=job.allow_records_outside,
+                                             curve_risk=shared_curve)
+            if shared_curve is None and result.curve_risk is not None and result.curve_risk.intensity == "PGA":
+                shared_curve = result.curve_risk
             results.append(with_comparison(result, job.compare_with, out_dir / "summary.csv", say))
     for result, out_dir in zip(results, out_dirs):
         say(f"rendering {result.level_label}: " + ", ".join(["summary.csv", "motions.csv"] + [

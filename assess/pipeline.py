@@ -36,7 +36,7 @@ Progress = Callable[[str], None]
 def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
                    progress: Progress = lambda message: None, oq_hazard=None,
                    derive_floors_roof: int | None = None, calibration=None, runner=None,
-                   hazard_curve=None, allow_records_outside: bool = False) -> AssessmentResult:
+                   hazard_curve=None, allow_records_outside: bool = False, curve_risk=None) -> AssessmentResult:
     """Assess every item of ``inventory`` under the motions of hazard level ``level_text``.
 
     ``oq_hazard`` (an :class:`~assess.hazard.openquake.OpenQuakeHazard`)
@@ -55,7 +55,11 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
 
     ``hazard_curve`` (an OpenQuake hazard *curve*) adds each item's fragilities over stripes of floor
     acceleration and their annual rates over the curve (:mod:`assess.fragility.stripes`); it does not
-    change the level's motions (``oq_hazard`` does).
+    change the level's motions (``oq_hazard`` does). ``curve_risk`` (a
+    :class:`~assess.fragility.stripes.CurveRisk` of stripes of ground acceleration through the building,
+    from another level of the same workbook and curve) is taken as it is, simulating no stripe: the
+    stripes are fixed in ground acceleration, so one level's serve every level
+    (:mod:`assess.fragility.ground_stripes`).
 
     Raises :class:`~assess.errors.InputError` when the hazard sheet breaks a rule
     (:func:`assess.assessment.inputs.hazard_problems`: a record outside the workbook's folder unless
@@ -65,7 +69,7 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
     inputs.check_inputs(inventory, allow_records_outside)
     runner = runner if runner is not None else LocalRunner()
     step = functools.partial(_assess, inventory, level_text, seed, progress, oq_hazard, derive_floors_roof,
-                             runner=runner)
+                             runner=runner, given_curve=curve_risk)
     if calibration is None:
         return step(calibration=None, hazard_curve=hazard_curve)
     # a calibration (assess.calibration.apply): run twice, as declared and with the effect
@@ -79,7 +83,7 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
 
 
 def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, calibration,
-            runner, hazard_curve) -> AssessmentResult:
+            runner, hazard_curve, given_curve=None) -> AssessmentResult:
     """:func:`run_assessment` with ``calibration`` applied (None: as declared)."""
     workbook_name = inventory.path.name
     settings = inventory.settings
@@ -96,7 +100,8 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     curve = None
     if hazard_curve is not None:  # the whole curve: fragilities over stripes, annual rates (at the nominal mu)
         curve = run_stage.curve(ran.cases[nominal], simulated, level.table, hazard_curve, settings, runner,
-                                progress)
+                                progress, building=level.building, level_label=level.level_label,
+                                given=given_curve)
     histories = run_stage.worst_histories(ran.cases, ran.runs[nominal[ran.runs["case"].to_numpy()]],
                                           inventory.equipment, simulated, runner)
     # 5. demand

@@ -15,6 +15,7 @@ import numpy as np
 import pandas as pd
 
 from assess.calibration.apply import case_block, theta_over_declared
+from assess.fragility.ground_stripes import ground_curve_risk, ground_sources
 from assess.fragility.planar import planar_runs
 from assess.fragility.stripes import curve_risk
 from assess.hazard.records import Record
@@ -48,9 +49,21 @@ def run_level(cases: pd.DataFrame, motions, runner, progress: Progress, calibrat
 
 
 def curve(cases: pd.DataFrame, motions, level_motions: pd.DataFrame, hazard_curve, settings: dict, runner,
-          progress: Progress):
-    """The items' fragilities over stripes of floor acceleration of the hazard curve
-    (:func:`assess.fragility.stripes.curve_risk`), at the nominal μ."""
+          progress: Progress, building=None, level_label: str = "", given=None):
+    """The items' fragilities over stripes of the hazard curve, at the nominal μ: stripes of ground
+    acceleration through the building where ``building`` (the level's
+    :class:`~assess.building.BuildingModes`) gives every floor's motions from the ground suite
+    (:func:`assess.fragility.ground_stripes.ground_curve_risk`), else stripes of floor acceleration
+    (:func:`assess.fragility.stripes.curve_risk`). ``given``: another level's stripes of ground
+    acceleration through the same building, taken as they are where this level's would be of that kind."""
+    sources = ground_sources(cases, level_motions) if building is not None else None
+    if sources is not None and given is not None and given.intensity == "PGA":
+        progress(f"annual rates: the fragilities over stripes of ground acceleration of {given.curve} already "
+                 "computed for another level (the stripes do not depend on the level)")
+        return given
+    if sources is not None:
+        return ground_curve_risk(cases, motions.histories, sources, building, hazard_curve, runner, progress,
+                                 record_pairs=motions.record_pairs, level_label=level_label)
     return curve_risk(cases, motions.histories, level_motions, hazard_curve, settings, runner, progress,
                       record_pairs=motions.record_pairs)
 

@@ -11,7 +11,11 @@ This module writes each item as one component:
 * ``Demand-Type`` ``Peak Floor Acceleration`` in ``g``, ``Demand-Offset`` 0
   (the floor the item stands on; pelicun's default ``DemandOffset``
   ``{"PFA": -1}`` then reads the PFA of that floor's slab, as for the FEMA
-  P-58 unanchored contents ``E.20.22.*``);
+  P-58 unanchored contents ``E.20.22.*``); where the fragility was fitted on
+  stripes of ground acceleration passed through the building, ``Peak Ground
+  Acceleration`` (the library's ``PGA``, as its Hazus ground-intensity
+  fragilities), the demand at location 0 (the ground) whatever floor the item
+  stands on: the building is inside the fragility;
 * ``Demand-Directional`` 1 by default: the fragility was fitted on the floor
   acceleration along the direction simulated, so pelicun must feed it the PFA
   of the direction the user gives the component. With 0 (as the FEMA P-58
@@ -79,6 +83,9 @@ from assess import __version__
 from assess.fragility.msa import FragilityFit
 
 DEMAND_TYPE = "Peak Floor Acceleration"
+#: The library's demand types by the acceleration the fragility is in: the floor's, or the ground's where
+#: the stripes were ground motions passed through the building (:mod:`assess.fragility.ground_stripes`).
+DEMAND_TYPES = {"PFA": DEMAND_TYPE, "PGA": "Peak Ground Acceleration"}
 DEMAND_UNIT = "g"
 FAMILY = "lognormal"
 #: The library's columns up to LS2, in its order (the FEMA P-58 table goes on to LS4).
@@ -155,7 +162,7 @@ def pelicun_component_id(name) -> str:
     return text
 
 
-def fragility_table(items, directional=True) -> pd.DataFrame:
+def fragility_table(items, directional=True, demand="PFA") -> pd.DataFrame:
     """The rows of ``fragility.csv``: one component per item, columns :data:`COLUMNS`.
 
     >>> item = ItemFragilities("cabinet_1", "Cabinet", LimitStateFragility(0.35, 0.4),
@@ -168,7 +175,7 @@ def fragility_table(items, directional=True) -> pd.DataFrame:
     _check_ids(items)
     rows = []
     for item in items:
-        row = {"ID": item.component_id, "Incomplete": 0, "Demand-Type": DEMAND_TYPE,
+        row = {"ID": item.component_id, "Incomplete": 0, "Demand-Type": DEMAND_TYPES[demand],
                "Demand-Unit": DEMAND_UNIT, "Demand-Offset": 0,
                "Demand-Directional": 1 if directional else 0}
         for (ls, _ds, _mode, _text, _repair), state in zip(
@@ -184,7 +191,7 @@ def fragility_table(items, directional=True) -> pd.DataFrame:
     return pd.DataFrame(rows, columns=list(COLUMNS))
 
 
-def fragility_metadata(items, directional=True) -> dict:
+def fragility_metadata(items, directional=True, demand="PFA") -> dict:
     """The content of ``fragility.json``: ``_GeneralInformation`` and one entry per component."""
     items = list(items)
     _check_ids(items)
@@ -193,7 +200,9 @@ def fragility_metadata(items, directional=True) -> dict:
         "Description": (
             "Fragilities of freestanding (unanchored) items, fitted by assess "
             f"{__version__} by maximum likelihood on rigid-body simulations over stripes of "
-            "peak floor acceleration (multiple-stripe analysis, Baker 2015, Earthquake "
+            + ("peak floor acceleration" if demand == "PFA" else
+               "peak ground acceleration, each ground motion passed through the building to the item's floor")
+            + " (multiple-stripe analysis, Baker 2015, Earthquake "
             "Spectra 31(1):579-599). LS1: the item slides past its clearance; LS2: it "
             "overturns. pelicun takes the highest limit state exceeded, with the two "
             "capacities fully correlated: DS2 is overturning; DS1 is sliding past the "
@@ -210,7 +219,7 @@ def fragility_metadata(items, directional=True) -> dict:
                 states[ls] = {ds: {"Description": text, "RepairAction": repair}}
         meta[item.component_id] = {
             "Description": item.description,
-            "Comments": _comments(item, directional),
+            "Comments": _comments(item, directional, demand),
             "SuggestedComponentBlockSize": "1 EA",
             "RoundUpToIntegerQuantity": "True",
             "LimitStates": states,
@@ -218,11 +227,12 @@ def fragility_metadata(items, directional=True) -> dict:
     return meta
 
 
-def pelicun_fragility_files(items, directional=True) -> dict[str, bytes]:
-    """``fragility.csv`` and ``fragility.json`` as bytes, by name (nothing written)."""
+def pelicun_fragility_files(items, directional=True, demand="PFA") -> dict[str, bytes]:
+    """``fragility.csv`` and ``fragility.json`` as bytes, by name (nothing written); ``demand``: ``PFA`` or
+    ``PGA``, the acceleration the fragilities are in (:data:`DEMAND_TYPES`)."""
     items = list(items)
-    csv_text = fragility_table(items, directional).to_csv(index=False, lineterminator="\n")
-    json_text = json.dumps(fragility_metadata(items, directional), indent=2, ensure_ascii=False) + "\n"
+    csv_text = fragility_table(items, directional, demand).to_csv(index=False, lineterminator="\n")
+    json_text = json.dumps(fragility_metadata(items, directional, demand), indent=2, ensure_ascii=False) + "\n"
     return {CSV_NAME: csv_text.encode("utf-8"), JSON_NAME: json_text.encode("utf-8")}
 
 
@@ -257,7 +267,7 @@ def _check_ids(items) -> None:
         seen.add(item.component_id)
 
 
-def _comments(item: ItemFragilities, directional: bool) -> str:
+def _comments(item: ItemFragilities, directional: bool, demand: str = "PFA") -> str:
     lines = []
     for (ls, _ds, mode, _text, _repair), state in zip(
             _LIMIT_STATES, (item.beyond_clearance, item.overturn)):
@@ -272,7 +282,12 @@ def _comments(item: ItemFragilities, directional: bool) -> str:
     if a.defined and b.defined and not (b.beta == a.beta and b.median_g >= a.median_g):
         lines.append("The two fragilities cross or overturning comes first: in pelicun "
                      "P(DS>=1) = max(P(LS1), P(LS2)).")
-    lines.append("Demand: peak floor acceleration of the floor the item stands on, "
-                 + ("along the component's direction (Demand-Directional 1)." if directional
-                    else "non-directional (pelicun: 1.2 x the larger direction)."))
+    direction = ("along the component's direction (Demand-Directional 1)." if directional
+                 else "non-directional (pelicun: 1.2 x the larger direction).")
+    if demand == "PGA":
+        lines.append("Fragility in PGA (ground), through the building: the ground motions were scaled to "
+                     "each stripe of peak ground acceleration and passed through the building to the floor "
+                     "the item stands on. Demand: peak ground acceleration (PGA, location 0), " + direction)
+    else:
+        lines.append("Demand: peak floor acceleration of the floor the item stands on, " + direction)
     return "\n".join(lines)

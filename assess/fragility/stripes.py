@@ -35,6 +35,11 @@ at every floor acceleration a. Multiple-stripe analysis ([1]) gives it:
    probability in 50 years follows (Poisson). Without a fit, the rate is
    bounded where the outcomes allow (:func:`item_rates`).
 
+Where a building sheet gives the floors' motions, the stripes are of ground
+acceleration passed through the building instead, and the fragility is in PGA
+(:mod:`assess.fragility.ground_stripes`; steps 2 to 4 are the same,
+:func:`fit_and_integrate`).
+
 The risk class and the advice stay those of the level (the design
 earthquake the facility plans for); the annual rates answer the owner's other
 question, "how likely over the building's life", beside them.
@@ -106,6 +111,8 @@ class CurveRisk:
         About the curve as a whole (e.g. shaking beyond the top stripe).
     fit_p : dict
         ``{(id, mode): p}``: the p-value of each fitted lognormal's deviance (:func:`lognormal_fit_p`).
+    intensity : str
+        ``PFA`` or ``PGA``: the acceleration the stripes and the fragilities are in.
     """
 
     table: pd.DataFrame
@@ -116,6 +123,9 @@ class CurveRisk:
     runs: int
     notes: list = field(default_factory=list)
     fit_p: dict = field(default_factory=dict)
+    #: What the fragilities are in: ``PFA`` (stripes of floor acceleration) or ``PGA`` (stripes of ground
+    #: acceleration passed through the building, :mod:`assess.fragility.ground_stripes`).
+    intensity: str = "PFA"
 
 
 def curve_rates_per_yr(hazard: OpenQuakeHazard) -> tuple[np.ndarray, np.ndarray]:
@@ -447,9 +457,9 @@ def _rate_at_pga(levels_g, rates_per_yr, pga_g: float) -> float:
     return float(math.exp(np.interp(t, x, y)))
 
 
-def curve_risk(cases: pd.DataFrame, motions: dict, level_motions: pd.DataFrame, hazard: OpenQuakeHazard,
-               settings: dict, runner, progress=lambda message: None, record_pairs: dict | None = None) -> CurveRisk:
-    """Fragility per item and failure mode over stripes, integrated over ``hazard`` (module docstring)."""
+def checked_curve(hazard: OpenQuakeHazard) -> tuple[np.ndarray, np.ndarray]:
+    """The curve's usable levels [g] and annual rates [1/yr] (:func:`curve_rates_per_yr`); a curve with
+    nothing to integrate over is refused (:class:`~assess.errors.InputError`)."""
     if hazard.kind != "curve":
         raise ValueError("a hazard map has no curve to integrate")
     levels_g, rates_per_yr = curve_rates_per_yr(hazard)
@@ -459,6 +469,13 @@ def curve_risk(cases: pd.DataFrame, motions: dict, level_motions: pd.DataFrame, 
             "the hazard curve has fewer than two levels with a probability of exceedance between 0 and 1, "
             "or does not fall with the level: there is no curve to integrate the fragilities over."),
             fix="export the site's mean PGA hazard curve from OpenQuake with levels spanning 0.005 to 3 g.")])
+    return levels_g, rates_per_yr
+
+
+def curve_risk(cases: pd.DataFrame, motions: dict, level_motions: pd.DataFrame, hazard: OpenQuakeHazard,
+               settings: dict, runner, progress=lambda message: None, record_pairs: dict | None = None) -> CurveRisk:
+    """Fragility per item and failure mode over stripes, integrated over ``hazard`` (module docstring)."""
+    levels_g, rates_per_yr = checked_curve(hazard)
     suite_pta_g = {int(f): group["pta_g"].to_numpy(dtype=float)
                    for f, group in level_motions.groupby("floor")}
     floors = {}
@@ -470,6 +487,23 @@ def curve_risk(cases: pd.DataFrame, motions: dict, level_motions: pd.DataFrame, 
     total = sum(len(v) for v in stripes_by_floor.values())
     progress(f"fragilities over the hazard curve: {total} stripes of floor acceleration "
              f"({N_STRIPES} per floor, for ground accelerations of {STRIPE_PGA_G[0]:g} to {STRIPE_PGA_G[1]:g} g)")
+
+    def run_plan(plan, report=None):
+        return stripe_runs(cases, motions, plan, runner, progress=report, record_pairs=record_pairs)
+
+    return fit_and_integrate(cases, hazard, levels_g, rates_per_yr, floors, stripes_by_floor, run_plan, progress)
+
+
+def fit_and_integrate(cases: pd.DataFrame, hazard: OpenQuakeHazard, levels_g, rates_per_yr, floors: dict,
+                      stripes_by_floor: dict, run_plan, progress, intensity: str = "PFA",
+                      note_prefix: str = "") -> CurveRisk:
+    """Steps 2 to 4 of the module docstring over the stripes ``stripes_by_floor`` (floor -> its stripes [g]).
+
+    ``run_plan(plan, report)`` simulates a plan of ``(floor, x_g, ids)`` (:func:`stripe_runs`'s table);
+    ``floors`` gives each floor's ``pfa_per_pga``, the ratio that moves its stripes to the curve's PGA (1
+    where the stripes are already of ground acceleration, ``intensity`` ``PGA``). ``note_prefix`` opens
+    every item's ``curve_note``.
+    """
     curve_notes = []
     rarest_g = pga_at_rate_g(levels_g, rates_per_yr, RAREST_RATE_PER_YR)
     if rarest_g > STRIPE_PGA_G[1]:
@@ -483,18 +517,20 @@ def curve_risk(cases: pd.DataFrame, motions: dict, level_motions: pd.DataFrame, 
             progress(f"stripes: simulated {done} of {total_runs} runs")
 
     plan = [(floor, float(x), None) for floor, levels in stripes_by_floor.items() for x in levels]
-    runs = stripe_runs(cases, motions, plan, runner, progress=report, record_pairs=record_pairs)
+    runs = run_plan(plan, report)
     clearance_cm = cases.drop_duplicates("id").set_index("id")["clearance_m"] * 100.0
     floor_of = cases.drop_duplicates("id").set_index("id")["floor"]
     fits, stripes = fit_items(stripe_outcomes(runs, clearance_cm))
     # floor acceleration [g] below which the item stays at rest: it slides from μ_s g, uplifts from g b/h
     onset_g = cases.assign(onset=np.minimum(cases["mu_static"], cases["b_over_h"])).groupby("id")["onset"].min()
+    if intensity != "PFA":  # stripes of ground acceleration: the floor's onset moved to the ground by the
+        # largest floor/ground peak ratio of the floor's histories (below it, no history moves the item)
+        onset_g = onset_g / floor_of.reindex(onset_g.index).map(lambda f: floors[int(f)]["max_peak_ratio"])
     refine = refinement_plan(stripes, floor_of)
     if refine:  # steep rises between two stripes: look inside them
         progress(f"stripes: {len(refine)} more where the failures of {len({p[2][0] for p in refine})} items "
                  "rise steeply")
-        runs = pd.concat([runs, stripe_runs(cases, motions, refine, runner, record_pairs=record_pairs)],
-                         ignore_index=True)
+        runs = pd.concat([runs, run_plan(refine)], ignore_index=True)
         fits, stripes = fit_items(stripe_outcomes(runs, clearance_cm))
     rows, fit_p = [], {}
     outcomes_of = {key: group for key, group in stripes.groupby(["id", "mode"], sort=False)}
@@ -514,11 +550,12 @@ def curve_risk(cases: pd.DataFrame, motions: dict, level_motions: pd.DataFrame, 
             notes.append(rates.pop("note"))
             fit_p[(item_id, mode)] = rates.pop("fit_p")
             row.update(rates)
-        row["curve_note"] = "; ".join(notes)
+        row["curve_note"] = note_prefix + "; ".join(notes)
         rows.append(row)
     name = f"{_file_name(hazard.path)}, site {hazard.site.label()}"
     return CurveRisk(table=pd.DataFrame(rows)[["id"] + CURVE_COLUMNS], fits=fits, stripes=stripes,
-                     floors=floors, curve=name, runs=len(runs), notes=curve_notes, fit_p=fit_p)
+                     floors=floors, curve=name, runs=len(runs), notes=curve_notes, fit_p=fit_p,
+                     intensity=intensity)
 
 
 def _file_name(path) -> str:
@@ -554,11 +591,13 @@ def export_items(curve: CurveRisk, summary: pd.DataFrame) -> list:
 
 def fragility_files(curve: CurveRisk, summary: pd.DataFrame) -> dict[str, bytes]:
     """``fragility/fragility.csv`` + ``.json`` (pelicun's format) and ``fragility/stripes.csv`` (the outcomes
-    the fits rest on), by path, as bytes."""
+    the fits rest on; its stripes ``pga_g`` where they are of ground acceleration), by path, as bytes."""
     from assess.fragility.pelicun_export import pelicun_fragility_files
 
     files = {f"fragility/{name}": content
-             for name, content in pelicun_fragility_files(export_items(curve, summary)).items()}
-    files["fragility/stripes.csv"] = curve.stripes.to_csv(index=False, float_format="%.6g",
-                                                          lineterminator="\n").encode()
+             for name, content in pelicun_fragility_files(export_items(curve, summary),
+                                                          demand=curve.intensity).items()}
+    stripes = curve.stripes if curve.intensity == "PFA" else curve.stripes.rename(columns={"pfa_g": "pga_g"})
+    files["fragility/stripes.csv"] = stripes.to_csv(index=False, float_format="%.6g",
+                                                    lineterminator="\n").encode()
     return files

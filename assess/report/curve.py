@@ -99,4 +99,7 @@ def _stripes_sentence(curve) -> str:
     extra = int((per_item - N_STRIPES).clip(lower=0).sum())
     more = f" ({extra} more where an item's failures rise steeply)" if extra else ""
     return (f"{N_STRIPES} stripes per floor{more}, from {curve.stripes['pfa_g'].min():.2f} g to "
-            f"{curve.stripes['pfa_g'].max():.2f} g of floor acceleration; {curve.runs} simulations")
+            f"{curve.stripes['pfa_g'].max():.2f} g of "
+            + ("floor acceleration" if getattr(curve, "intensity", "PFA") == "PFA" else
+               "ground acceleration, passed through the building to each floor")
+            + f"; {curve.runs} simulations")

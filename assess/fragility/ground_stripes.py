@@ -1,0 +1,195 @@
+"""Stripes of ground acceleration through the building: one fragility in PGA per item, whatever the level.
+
+Where a building sheet gives the floors' motions (each floor's history is a
+ground history of the level's suite through the building's elastic modes,
+:mod:`assess.building.response`), the stripes of the hazard curve
+(:mod:`assess.fragility.stripes`) are stripes of *ground* acceleration:
+
+1. every ground history of the suite is scaled to a PGA x_j, for the
+   :data:`~assess.fragility.stripes.N_STRIPES` values of
+   :data:`~assess.fragility.stripes.STRIPE_PGA_G` evenly spaced in ln x
+   (a pair of records by one factor that brings the larger peak to x_j, as at
+   the floor);
+2. the scaled ground histories pass through the building
+   (:func:`assess.building.response.floor_records`, the level's modes) to the
+   floors the items stand on; the items of a floor run under its histories,
+   the ground floor's under the scaled ground histories (the engine, both base
+   directions, as for the floor stripes);
+3. the fragility is fitted in PGA directly, refined where the failures jump,
+   and integrated over the curve with PFA/PGA = 1: the building's
+   amplification, its frequency content and the record-to-record scatter of
+   the floor are all inside the simulated outcomes, rather than a median
+   ratio moving a floor's fragility to the ground.
+
+The stripes are fixed in PGA, so they depend neither on the curve (a new curve
+re-integrates the same outcomes: the cache answers every run) nor on the
+amplitude of the level's suite: the same ground histories give the same
+fragilities at any level, which is why the job computes them once, from its
+first level's suite, and gives every level the same rates
+(:func:`assess.job.run_job`).
+
+A building is linear, so a floor history under a scaled ground history is
+the scaled floor history; the histories are still passed through the
+building at each stripe, as documented, and equal the scaled ones to rounding.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from assess.building.response import floor_records
+from assess.fragility.stripes import (N_STRIPES, STRIPE_PGA_G, CurveRisk, checked_curve, fit_and_integrate,
+                                      stripe_levels_g)
+from assess.mechanics.gateway import Cases
+
+#: Opens every item's ``curve_note`` when its fragility is in ground acceleration.
+NOTE = "fragility in PGA (ground), through the building"
+
+
+def ground_sources(cases: pd.DataFrame, level_table: pd.DataFrame) -> dict[int, int] | None:
+    """``{motion_key: ground motion_key}`` for every motion of ``cases`` when each is either a ground motion
+    of the level (floor 0) that the building passes to the floors, or a floor's motion through the building
+    (``from_ground`` >= 0); None otherwise (no building, or a floor with its own motions: the stripes stay
+    stripes of floor acceleration, :func:`assess.fragility.stripes.curve_risk`)."""
+    if "from_ground" not in level_table or not (level_table["from_ground"] >= 0).any():
+        return None
+    table = level_table.set_index("motion_key")
+    sources = set(int(k) for k in table.loc[table["from_ground"] >= 0, "from_ground"])
+    out = {}
+    for key in set(int(k) for k in cases["motion_key"]):
+        from_ground = int(table.at[key, "from_ground"])
+        if from_ground >= 0:
+            out[key] = from_ground
+        elif key in sources:
+            out[key] = key
+        else:
+            return None
+    return out
+
+
+def ground_histories(cases: pd.DataFrame, floor: int, motions: dict, sources: dict,
+                     record_pairs: dict) -> list:
+    """The ground histories behind a floor's motions, in the order of its motions (``motion_key``) and
+    their histories: ``(width, depth)`` per history (the same record twice without a pair)."""
+    keys = sorted(set(int(k) for k in cases.loc[cases["floor"] == floor, "motion_key"]))
+    out = []
+    for key in keys:
+        ground = sources[key]
+        if ground in record_pairs:
+            out.append(record_pairs[ground])
+        else:
+            out.extend((record, record) for record, _ in motions[ground])
+    return out
+
+
+def stripe_histories(modes, ground: list, pga_g: float, floors) -> dict[int, list]:
+    """Per floor of ``floors``: ``(width, depth)`` histories under each ground history of ``ground`` scaled
+    to PGA ``pga_g`` [g] (a pair by one factor: its larger peak at ``pga_g``) and passed through the
+    building (:func:`assess.building.response.floor_records`); floor 0 gets the scaled ground histories."""
+    scaled = []
+    for first, second in ground:
+        factor = pga_g / max(float(np.max(np.abs(first.accel_g))), float(np.max(np.abs(second.accel_g))))
+        scaled.append((first.scaled(factor), second.scaled(factor) if second is not first else None))
+    wanted = sorted(set(int(f) for f in floors))
+    upper = [f for f in wanted if f > 0]
+    width = floor_records(modes, [w for w, _ in scaled], floors=upper) if upper else {}
+    paired = [k for k, (_, d) in enumerate(scaled) if d is not None]
+    depth = floor_records(modes, [scaled[k][1] for k in paired], floors=upper) if upper and paired else {}
+    out = {}
+    for floor in wanted:
+        histories = []
+        for k, (w, d) in enumerate(scaled):
+            first = w if floor == 0 else width[floor][k]
+            if d is None:
+                histories.append((first, first))
+            else:
+                histories.append((first, d if floor == 0 else depth[floor][paired.index(k)]))
+        out[floor] = histories
+    return out
+
+
+def ground_stripe_runs(cases: pd.DataFrame, motions: dict, sources: dict, modes, plan, runner,
+                       progress=None, record_pairs: dict | None = None) -> pd.DataFrame:
+    """Simulate items under their floor's histories for the ground suite scaled to stripes of PGA.
+
+    ``plan``: ``(floor, pga_g, ids)`` as for :func:`assess.fragility.stripes.stripe_runs` (``pga_g`` in
+    place of the floor's PFA); the same columns are returned, ``pfa_g`` holding the stripe's PGA [g].
+    """
+    record_pairs = record_pairs or {}
+    per_item = cases.drop_duplicates(["id", "direction"])
+    ground_of = {}
+    at_stripe = {}
+    for floor, pga_g, _ in plan:
+        at_stripe.setdefault(pga_g, set()).add(floor)
+    histories_at = {}
+    for pga_g, floors in at_stripe.items():
+        for floor in floors:
+            if floor not in ground_of:
+                ground_of[floor] = ground_histories(cases, floor, motions, sources, record_pairs)
+        by_ground = {}  # floors under the same ground histories pass through the building together
+        for floor in floors:
+            by_ground.setdefault(tuple(id(w) for w, _ in ground_of[floor]), []).append(floor)
+        for group in by_ground.values():
+            through = stripe_histories(modes, ground_of[group[0]], pga_g, group)
+            for floor in group:
+                histories_at[(floor, pga_g)] = through[floor]
+    blocks, records, dts, index, rows = [], [], [], [], []
+    for floor, pga_g, ids in plan:
+        on_floor = per_item[per_item["floor"] == floor]
+        if ids is not None:
+            on_floor = on_floor[on_floor["id"].isin(ids)]
+        for h, (first, second) in enumerate(histories_at[(floor, pga_g)]):
+            slot = {1: len(records)}
+            records.append(first.accel_g)
+            dts.append(first.dt_s)
+            if second is first:
+                slot[2] = slot[1]
+            else:
+                slot[2] = len(records)
+                records.append(second.accel_g)
+                dts.append(second.dt_s)
+            for case in on_floor.itertuples(index=False):
+                blocks.append(case.block)
+                index.append(slot[int(case.direction)])
+                rows.append((case.id, int(case.direction), float(pga_g), h))
+    if not blocks:
+        return pd.DataFrame(columns=["id", "direction", "pfa_g", "history", "sliding_max_cm", "overturned"])
+    peaks = runner.run(Cases.peaks(blocks, records, dts, np.asarray(index)), progress=progress)
+    runs = pd.DataFrame(rows, columns=["id", "direction", "pfa_g", "history"])
+    runs["sliding_max_cm"] = peaks.sliding_max_m * 100.0
+    runs["overturned"] = peaks.overturned
+    return runs
+
+
+def max_peak_ratio(modes, ground: list, floor: int) -> float:
+    """The largest peak of the floor's histories over the peak of their ground history (a pair: its larger
+    component) [-]; 1 at the ground for a single record. A linear building: the same at every stripe."""
+    through = stripe_histories(modes, ground, 1.0, [floor])[floor]
+    return max(max(float(np.max(np.abs(w.accel_g))), float(np.max(np.abs(d.accel_g)))) for w, d in through)
+
+
+def ground_curve_risk(cases: pd.DataFrame, motions: dict, sources: dict, modes, hazard, runner,
+                      progress=lambda message: None, record_pairs: dict | None = None,
+                      level_label: str = "") -> CurveRisk:
+    """Fragility per item and failure mode over stripes of ground acceleration through the building
+    (module docstring), integrated over ``hazard``; ``sources`` from :func:`ground_sources`."""
+    levels_g, rates_per_yr = checked_curve(hazard)
+    record_pairs = record_pairs or {}
+    floors, stripes_by_floor = {}, {}
+    for floor in sorted(set(int(f) for f in cases["floor"])):
+        ground = ground_histories(cases, floor, motions, sources, record_pairs)
+        floors[floor] = {"pfa_per_pga": 1.0, "max_peak_ratio": max_peak_ratio(modes, ground, floor),
+                         "basis": (f"floor {floor}: stripes of ground acceleration, the ground suite of level "
+                                   f"{level_label} scaled and passed through the building")}
+        stripes_by_floor[floor] = stripe_levels_g(1.0)
+    progress(f"fragilities over the hazard curve: {N_STRIPES} stripes of ground acceleration "
+             f"({STRIPE_PGA_G[0]:g} to {STRIPE_PGA_G[1]:g} g) passed through the building to "
+             f"{len(floors)} floors")
+
+    def run_plan(plan, report=None):
+        return ground_stripe_runs(cases, motions, sources, modes, plan, runner, progress=report,
+                                  record_pairs=record_pairs)
+
+    prefix = f"{NOTE}, from the stripes of level {level_label}'s suite; " if level_label else f"{NOTE}; "
+    return fit_and_integrate(cases, hazard, levels_g, rates_per_yr, floors, stripes_by_floor, run_plan, progress,
+                             intensity="PGA", note_prefix=prefix)
