@@ -38,9 +38,8 @@ import numpy as np
 import pandas as pd
 
 from assess.building.response import floor_records
-from assess.fragility.stripes import (N_STRIPES, STRIPE_PGA_G, CurveRisk, checked_curve, fit_and_integrate,
-                                      stripe_levels_g)
-from assess.mechanics.gateway import Cases
+from assess.fragility.stripes import (N_STRIPES, STRIPE_PGA_G, CurveRisk, StripeBatch, checked_curve,
+                                      fit_and_integrate, stripe_levels_g)
 
 #: Opens every item's ``curve_note`` when its fragility is in ground acceleration.
 NOTE = "fragility in PGA (ground), through the building"
@@ -133,32 +132,14 @@ def ground_stripe_runs(cases: pd.DataFrame, motions: dict, sources: dict, modes,
             through = stripe_histories(modes, ground_of[group[0]], pga_g, group)
             for floor in group:
                 histories_at[(floor, pga_g)] = through[floor]
-    blocks, records, dts, index, rows = [], [], [], [], []
+    batch = StripeBatch()
     for floor, pga_g, ids in plan:
         on_floor = per_item[per_item["floor"] == floor]
         if ids is not None:
             on_floor = on_floor[on_floor["id"].isin(ids)]
         for h, (first, second) in enumerate(histories_at[(floor, pga_g)]):
-            slot = {1: len(records)}
-            records.append(first.accel_g)
-            dts.append(first.dt_s)
-            if second is first:
-                slot[2] = slot[1]
-            else:
-                slot[2] = len(records)
-                records.append(second.accel_g)
-                dts.append(second.dt_s)
-            for case in on_floor.itertuples(index=False):
-                blocks.append(case.block)
-                index.append(slot[int(case.direction)])
-                rows.append((case.id, int(case.direction), float(pga_g), h))
-    if not blocks:
-        return pd.DataFrame(columns=["id", "direction", "pfa_g", "history", "sliding_max_cm", "overturned"])
-    peaks = runner.run(Cases.peaks(blocks, records, dts, np.asarray(index)), progress=progress)
-    runs = pd.DataFrame(rows, columns=["id", "direction", "pfa_g", "history"])
-    runs["sliding_max_cm"] = peaks.sliding_max_m * 100.0
-    runs["overturned"] = peaks.overturned
-    return runs
+            batch.add(first, second, on_floor, pga_g, h)
+    return batch.run(runner, progress)
 
 
 def max_peak_ratio(modes, ground: list, floor: int) -> float:

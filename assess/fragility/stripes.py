@@ -205,7 +205,7 @@ def stripe_runs(cases: pd.DataFrame, motions: dict, plan, runner,
     floor), ``sliding_max_cm``, ``overturned``.
     """
     record_pairs = record_pairs or {}
-    blocks, records, dts, index, rows = [], [], [], [], []
+    batch = StripeBatch()
     per_item = cases.drop_duplicates(["id", "direction"])
     histories_of = {}
     for floor, pfa_g, ids in plan:
@@ -218,26 +218,44 @@ def stripe_runs(cases: pd.DataFrame, motions: dict, plan, runner,
             on_floor = on_floor[on_floor["id"].isin(ids)]
         for h, (first, second) in enumerate(histories_of[floor]):
             factor = pfa_g / max(float(np.max(np.abs(first.accel_g))), float(np.max(np.abs(second.accel_g))))
-            slot = {1: len(records)}
-            records.append(first.accel_g * factor)
-            dts.append(first.dt_s)
-            if second is first:
-                slot[2] = slot[1]
-            else:
-                slot[2] = len(records)
-                records.append(second.accel_g * factor)
-                dts.append(second.dt_s)
-            for case in on_floor.itertuples(index=False):
-                blocks.append(case.block)
-                index.append(slot[int(case.direction)])
-                rows.append((case.id, int(case.direction), float(pfa_g), h))
-    if not blocks:
-        return pd.DataFrame(columns=["id", "direction", "pfa_g", "history", "sliding_max_cm", "overturned"])
-    peaks = runner.run(Cases.peaks(blocks, records, dts, np.asarray(index)), progress=progress)
-    runs = pd.DataFrame(rows, columns=["id", "direction", "pfa_g", "history"])
-    runs["sliding_max_cm"] = peaks.sliding_max_m * 100.0
-    runs["overturned"] = peaks.overturned
-    return runs
+            batch.add(first, second, on_floor, pfa_g, h, factor)
+    return batch.run(runner, progress)
+
+
+class StripeBatch:
+    """The stripe runs of every item, gathered into one batch for the runner (both stripe routes)."""
+
+    def __init__(self):
+        self.blocks, self.records, self.dts, self.index, self.rows = [], [], [], [], []
+
+    def add(self, first, second, on_floor: pd.DataFrame, level_g: float, history: int, factor: float = 1.0):
+        """The items ``on_floor`` under one history at a stripe: direction 1 under ``first``, 2 under
+        ``second`` (the same record where the history is one component), both times ``factor``."""
+        slot = {1: len(self.records)}
+        self.records.append(first.accel_g * factor if factor != 1.0 else first.accel_g)
+        self.dts.append(first.dt_s)
+        if second is first:
+            slot[2] = slot[1]
+        else:
+            slot[2] = len(self.records)
+            self.records.append(second.accel_g * factor if factor != 1.0 else second.accel_g)
+            self.dts.append(second.dt_s)
+        for case in on_floor.itertuples(index=False):
+            self.blocks.append(case.block)
+            self.index.append(slot[int(case.direction)])
+            self.rows.append((case.id, int(case.direction), float(level_g), history))
+
+    def run(self, runner, progress=None) -> pd.DataFrame:
+        """One row per run: ``id``, ``direction``, ``pfa_g`` (the stripe), ``history``, ``sliding_max_cm``,
+        ``overturned``."""
+        if not self.blocks:
+            return pd.DataFrame(columns=["id", "direction", "pfa_g", "history", "sliding_max_cm", "overturned"])
+        peaks = runner.run(Cases.peaks(self.blocks, self.records, self.dts, np.asarray(self.index)),
+                           progress=progress)
+        runs = pd.DataFrame(self.rows, columns=["id", "direction", "pfa_g", "history"])
+        runs["sliding_max_cm"] = peaks.sliding_max_m * 100.0
+        runs["overturned"] = peaks.overturned
+        return runs
 
 
 #: Stripes added inside a gap between two stripes where the failure share jumps.
