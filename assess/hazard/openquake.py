@@ -296,6 +296,28 @@ _NOT_OQ_FIX = ("give the hazard curve (hazard_curve-mean-PGA_<calc_id>.csv) or h
                "unchanged.")
 
 
+def export_lines(lines) -> tuple[list, list | None, int | None, list]:
+    """An OpenQuake CSV export's lines split into its ``#`` comment lines (before the header), its header
+    (stripped names; None when there is none), the header's line number and its rows as
+    ``(line number, cells)``; blank lines are skipped.
+
+    >>> export_lines(["#,,'kind=mean'", "", "lon,lat, poe-0.1", "1,2,0.5"])
+    (["#,,'kind=mean'"], ['lon', 'lat', 'poe-0.1'], 3, [(4, ['1', '2', '0.5'])])
+    """
+    comments, header, header_line, rows = [], None, None, []
+    for number, line in enumerate(lines, start=1):
+        if not line.strip():
+            continue
+        if header is None and line.lstrip().startswith("#"):
+            comments.append(line)
+            continue
+        if header is None:
+            header, header_line = [c.strip() for c in next(csv.reader([line]))], number
+        else:
+            rows.append((number, next(csv.reader([line]))))
+    return comments, header, header_line, rows
+
+
 def read_openquake_hazard(path, site=None) -> OpenQuakeHazard:
     """Read an OpenQuake hazard-curve or hazard-map CSV for PGA.
 
@@ -321,17 +343,7 @@ def read_openquake_hazard(path, site=None) -> OpenQuakeHazard:
                     "check the path given to --oq-hazard.")
     lines = path.read_text(encoding="utf-8-sig", errors="replace").splitlines()
 
-    comments, header, header_line, rows = [], None, None, []
-    for number, line in enumerate(lines, start=1):
-        if not line.strip():
-            continue
-        if header is None and line.lstrip().startswith("#"):
-            comments.append(line)
-            continue
-        if header is None:
-            header, header_line = [c.strip() for c in next(csv.reader([line]))], number
-        else:
-            rows.append((number, next(csv.reader([line]))))
+    comments, header, header_line, rows = export_lines(lines)
     if header is None:
         raise _fail(path, "the file is empty: no header line.", _NOT_OQ_FIX)
 

@@ -36,7 +36,6 @@ column (by number), never quoting the file's cells.
 """
 from __future__ import annotations
 
-import csv
 import math
 import re
 from dataclasses import dataclass
@@ -46,7 +45,7 @@ import numpy as np
 
 from assess.errors import InputError, Problem
 from assess.hazard.levels import HazardLevel
-from assess.hazard.openquake import (RATE_REL_TOL, Site, _choose_site, _comment_text,
+from assess.hazard.openquake import (RATE_REL_TOL, Site, _choose_site, _comment_text, export_lines,
                                      loglog_interpolate_level, parse_openquake_comment,
                                      poe_in_investigation_time)
 
@@ -163,18 +162,11 @@ def _read(path):
         raise _fail(path, "the file is larger than 64 MB.", "export the site's hazard only (oq_site) or a "
                     "smaller region.")
     lines = path.read_text(encoding="utf-8-sig", errors="replace").splitlines()
-    metadata, header, header_line, rows = {}, None, None, []
-    for number, line in enumerate(lines, start=1):
-        if not line.strip():
-            continue
-        if header is None and line.lstrip().startswith("#"):
-            for key, value in parse_openquake_comment(_comment_text(line)).items():
-                metadata.setdefault(key, value)
-            continue
-        if header is None:
-            header, header_line = [c.strip() for c in next(csv.reader([line]))], number
-        else:
-            rows.append((number, next(csv.reader([line]))))
+    comments, header, header_line, rows = export_lines(lines)
+    metadata = {}
+    for line in comments:
+        for key, value in parse_openquake_comment(_comment_text(line)).items():
+            metadata.setdefault(key, value)
     if header is None:
         raise _fail(path, "the file is empty: no header line.")
     if "lon" not in header or "lat" not in header:
