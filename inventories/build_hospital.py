@@ -26,6 +26,7 @@ from pathlib import Path
 from openpyxl import Workbook
 
 from build_lab import deterministic_bytes, write_sheet
+from build_pharmacy import item  # an item in inches and pounds, as the pharmacy writes them
 
 OUT = Path(__file__).resolve().parent / "hospital.xlsx"
 UHS = OUT.with_name("hospital-uhs.csv")
@@ -34,13 +35,6 @@ UHS_PGA_G = {0.1: 0.40, 0.02: 0.62}
 UHS_PERIODS_S = (0.05, 0.1, 0.2, 0.3, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0)
 #: Plateau over PGA and the corner period T_S of the illustrative spectra (ASCE 7 two-period shape).
 PLATEAU_OVER_PGA, CORNER_S = 2.5, 0.55  # S_a(0) = 0.4 S_DS = PGA
-
-
-def item(id, name, room, floor, h_in, w_in, d_in, lb, mu, clearance_in, consequence, notes, cg_in=None,
-         anchored=False, qty=1):
-    return dict(id=id, name=name, room=room, floor=floor, height_in=h_in, width_in=w_in, depth_in=d_in,
-                mass_lb=lb, mu=mu, clearance_in=clearance_in, cg_height_in=cg_in,
-                anchored="yes" if anchored else "no", quantity=qty, consequence=consequence, notes=notes)
 
 
 EQUIPMENT = [
