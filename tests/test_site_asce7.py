@@ -88,23 +88,18 @@ def test_asce7_22_mapped_values_state_the_coefficients_or_refuse():
 
 
 def test_site_sheet_values_and_refusals():
-    s = asce7.site_design_spectrum({"sds_g": 1.0, "sd1_g": "0.6", "tl_s": 8}, file="hospital.xlsx")
+    """The site sheet's values become the spectrum (assess.assessment.floors.design_spectrum_of); the
+    sheet's own refusals are tested with its reader (tests/test_site_building_sheets.py)."""
+    from assess.assessment.floors import design_spectrum_of
+    from assess.inventory.site_building import SiteSheet
+
+    s = design_spectrum_of(SiteSheet(sds_g=1.0, sd1_g=0.6, tl_s=8.0), "hospital.xlsx")
     assert (s.code, s.sds_g, s.sd1_g, s.tl_s) == ("ASCE 7-22", 1.0, 0.6, 8.0)
-    assert asce7.site_design_spectrum({"risk_category": "IV"}, file="x.xlsx") is None
+    assert design_spectrum_of(SiteSheet(risk_category="IV"), "x.xlsx") is None
     with pytest.raises(InputError) as error:
-        asce7.site_design_spectrum({"sds_g": 1.0}, file="hospital.xlsx")
-    assert "sd1_g" in str(error.value)
-    secret = "=HYPERLINK(secret-content)"
-    with pytest.raises(InputError) as error:
-        asce7.site_design_spectrum({"sds_g": secret, "sd1_g": 0.5}, file="hospital.xlsx", cells={"sds_g": "B2"})
-    text = str(error.value)
-    assert "cell B2" in text and "secret" not in text and "hospital.xlsx" in text
-    with pytest.raises(InputError) as error:
-        asce7.site_design_spectrum({"ss_g": 1.2, "s1_g": 0.5, "site_class": "CD"}, file="h.xlsx",
-                                   cells={"site_class": "B4"})
-    assert "USGS" in str(error.value) and "cell B4" in str(error.value)
-    with pytest.raises(InputError):
-        asce7.site_design_spectrum({"code": "Eurocode 8", "sds_g": 1, "sd1_g": 0.5}, file="h.xlsx")
+        design_spectrum_of(SiteSheet(ss_g=1.2, s1_g=0.5, site_class="CD", rows={"site_class": 4}), "h.xlsx")
+    problem = error.value.problems[0]
+    assert "USGS" in str(problem) and problem.sheet == "site" and problem.row == 4
 
 
 def test_tabulated_target_refuses_extrapolation():

@@ -37,12 +37,10 @@ used), which is conservative, and the notes say so.
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from assess.errors import InputError, Problem
 
 ASCE_7_16 = "ASCE 7-16"
 ASCE_7_22 = "ASCE 7-22"
@@ -329,92 +327,7 @@ def from_mapped_values(ss_g, s1_g, site_class, tl_s=None, code=ASCE_7_22) -> Des
                           fa=fa, fv=fv, ss_g=float(ss_g), s1_g=float(s1_g), notes=tuple(notes))
 
 
-# --------------------------------------------------------------------------- the site sheet
-
-_DESIGN_KEYS = ("sds_g", "sd1_g")
-_MAPPED_KEYS = ("ss_g", "s1_g", "site_class")
-#: Upper bounds of plausible values [g] (the largest mapped SS in the U.S. is about 3 g).
-_MAX_G = 5.0
-
-
-def _number(values, key, file, sheet, cells, problems, *, low=0.0, high=_MAX_G, unit="g"):
-    raw = values.get(key)
-    if raw is None or (isinstance(raw, str) and not raw.strip()):
-        return None
-    try:
-        x = float(raw)
-    except (TypeError, ValueError):
-        x = math.nan
-    if not (math.isfinite(x) and low < x <= high):
-        problems.append(Problem(file, f"'{key}' must be a number above {low:g} and at most {high:g} {unit}.",
-                                f"give '{key}' in {unit}, as the site's hazard lookup gives it.",
-                                sheet=sheet, cell=(cells or {}).get(key)))
-        return None
-    return x
-
-
-def site_design_spectrum(values, *, file: str, sheet: str = "site", cells=None) -> DesignSpectrum | None:
-    """The design spectrum a ``site`` sheet describes, or None when it gives neither route.
-
-    Parameters
-    ----------
-    values : Mapping[str, object]
-        The sheet's ``key`` → ``value`` (keys lower-case): ``code``, ``sds_g``, ``sd1_g``,
-        ``tl_s``, ``ss_g``, ``s1_g``, ``site_class``.
-    file, sheet : str
-        Where the values came from, for the messages.
-    cells : Mapping[str, str], optional
-        The Excel cell of each key's value (e.g. ``{"sds_g": "B3"}``).
-
-    Raises
-    ------
-    InputError
-        A value is not a number in range, both or neither of the routes is half given, the
-        code or site class is unknown, or the edition gives no coefficients for the class.
-        Messages name the file, sheet and cell, never echo the cell's text.
-    """
-    problems: list[Problem] = []
-    cells = cells or {}
-    code_text = str(values.get("code") or ASCE_7_22).strip()
-    code = {"ASCE 7-22": ASCE_7_22, "ASCE7-22": ASCE_7_22, "7-22": ASCE_7_22,
-            "ASCE 7-16": ASCE_7_16, "ASCE7-16": ASCE_7_16, "7-16": ASCE_7_16}.get(code_text.upper())
-    if code is None:
-        problems.append(Problem(file, "'code' must be 'ASCE 7-22' or 'ASCE 7-16'.",
-                                "write ASCE 7-22 (the default) or ASCE 7-16.", sheet=sheet, cell=cells.get("code")))
-    tl = _number(values, "tl_s", file, sheet, cells, problems, low=0.0, high=100.0, unit="s")
-    design = {k: _number(values, k, file, sheet, cells, problems) for k in _DESIGN_KEYS}
-    mapped = {k: _number(values, k, file, sheet, cells, problems) for k in ("ss_g", "s1_g")}
-    site_class = values.get("site_class")
-    site_class = None if site_class is None or not str(site_class).strip() else str(site_class).strip()
-    given_design = [k for k, v in design.items() if v is not None]
-    given_mapped = [k for k, v in mapped.items() if v is not None]
-    if problems:
-        raise InputError(problems)
-    if given_design:
-        if len(given_design) < 2:
-            missing = [k for k in _DESIGN_KEYS if k not in given_design]
-            raise InputError([Problem(file, f"'{missing[0]}' is missing: SDS and SD1 are needed together.",
-                                      "give both sds_g and sd1_g (a USGS hazard lookup for the site gives "
-                                      "them), or instead ss_g, s1_g and site_class.", sheet=sheet)])
-        return from_design_values(design["sds_g"], design["sd1_g"], tl, code)
-    if given_mapped or site_class is not None:
-        missing = [k for k in _MAPPED_KEYS if (k == "site_class" and site_class is None)
-                   or (k != "site_class" and mapped.get(k) is None)]
-        if missing:
-            raise InputError([Problem(file, f"{', '.join(repr(m) for m in missing)} missing: SS, S1 and the site "
-                                      "class are needed together.", "give ss_g, s1_g and site_class, or instead "
-                                      "sds_g and sd1_g.", sheet=sheet, cell=cells.get(missing[0]))])
-        try:
-            return from_mapped_values(mapped["ss_g"], mapped["s1_g"], site_class, tl, code)
-        except ValueError as error:
-            classes = SITE_CLASSES_7_22 if code == ASCE_7_22 else SITE_CLASSES_7_16
-            raise InputError([Problem(file, f"site_class: {error}.",
-                                      f"give sds_g and sd1_g from the site's hazard lookup, or a site class of "
-                                      f"{', '.join(c for c in classes if c != 'F')}"
-                                      + ("" if code == ASCE_7_22 else " (or 'D (default)', 'B (unmeasured)')")
-                                      + ".", sheet=sheet, cell=cells.get("site_class"))]) from None
-    return None
-
+# --------------------------------------------------------------------------- a spectrum given as points
 
 def tabulated_target(period_s, sa_g):
     """A target spectrum given as points (e.g. ASCE 7-22's multi-period spectrum from the USGS

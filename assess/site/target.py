@@ -26,7 +26,7 @@ def level_target(level: HazardLevel, *, design: DesignSpectrum | None = None, uh
     ----------
     level : HazardLevel
     design : DesignSpectrum, optional
-        The site's ASCE 7 spectrum (:func:`assess.site.asce7.site_design_spectrum`).
+        The site's ASCE 7 spectrum (:func:`assess.assessment.floors.design_spectrum_of`).
     uhs_path : path, optional
         The ``uhs`` file, already resolved against the workbook's folder.
     oq_site : optional
