@@ -1,0 +1,92 @@
+"""Quantities as a reader sees them, in the unit system of the report (``'si'`` or ``'us'``).
+
+Every length, force and moment a sentence, table or plot shows goes through these functions, so that
+a report asked for in US units (``--units us``, or a workbook written in inches) says inches, pounds
+and kips everywhere, and one in SI centimetres and kilonewtons. Values are always held in SI (the
+result object); only their text changes. Exact conversions: 1 in = 2.54 cm (by definition),
+1 lbf = 4.4482216152605 N (g = 9.80665 m/s²), 1 kip = 1000 lbf.
+"""
+from __future__ import annotations
+
+import math
+
+#: The unit systems a report can be written in.
+SYSTEMS = ("si", "us")
+CM_PER_IN = 2.54
+N_PER_LBF = 4.4482216152605
+KG_PER_LB = 0.45359237
+
+
+def system_of(settings_or_system) -> str:
+    """``'si'`` or ``'us'`` from a settings mapping (its ``units``) or a system name; ``'si'`` by default."""
+    if isinstance(settings_or_system, dict):
+        settings_or_system = settings_or_system.get("units", "si")
+    system = str(settings_or_system or "si").strip().lower()
+    return system if system in SYSTEMS else "si"
+
+
+def _rounded(value: float, rounding: str) -> float:
+    return {"up": math.ceil, "down": math.floor}.get(rounding, round)(value)
+
+
+def length_value(value_cm: float, system="si") -> float:
+    """A length given in cm, in the system's unit (cm or in)."""
+    return float(value_cm) / CM_PER_IN if system_of(system) == "us" else float(value_cm)
+
+
+def length_unit(system="si") -> str:
+    """``'cm'`` or ``'in'``."""
+    return "in" if system_of(system) == "us" else "cm"
+
+
+def length_text(value_cm: float, system="si", rounding: str = "nearest") -> str:
+    """A length (given in cm) as ``'55 cm'`` or ``'22 in'``, rounded to a whole unit (``rounding``:
+    ``'nearest'``, ``'up'`` for a room to give, ``'down'`` for a room the item has).
+
+    >>> length_text(54.2, "si", "up"), length_text(54.2, "us", "up"), length_text(20.0, "us", "down")
+    ('55 cm', '22 in', '7 in')
+    """
+    if value_cm is None or not math.isfinite(float(value_cm)):
+        return "-"
+    return f"{_rounded(length_value(value_cm, system), rounding):.0f} {length_unit(system)}"
+
+
+def force_text(value_kn: float, system="si") -> str:
+    """A force (given in kN) as ``'3.4 kN'``, or in US units ``'760 lb'`` below 1 kip and ``'2.3 kip'`` above.
+
+    >>> force_text(3.4, "si"), force_text(3.4, "us"), force_text(12.0, "us")
+    ('3.4 kN', '764 lb', '2.70 kip')
+    """
+    if value_kn is None or not math.isfinite(float(value_kn)):
+        return "-"
+    if system_of(system) != "us":
+        return f"{float(value_kn):.3g} kN" if abs(value_kn) < 100 else f"{float(value_kn):.0f} kN"
+    pounds = float(value_kn) * 1000.0 / N_PER_LBF
+    return f"{pounds:.0f} lb" if abs(pounds) < 1000.0 else f"{pounds / 1000.0:.2f} kip"
+
+
+def moment_text(value_knm: float, system="si") -> str:
+    """A moment (given in kN·m) as ``'1.2 kN·m'`` or ``'0.89 kip·ft'``.
+
+    >>> moment_text(1.2, "si"), moment_text(1.2, "us")
+    ('1.2 kN·m', '0.885 kip·ft')
+    """
+    if value_knm is None or not math.isfinite(float(value_knm)):
+        return "-"
+    if system_of(system) != "us":
+        return f"{float(value_knm):.3g} kN·m"
+    kip_ft = float(value_knm) * 1000.0 / N_PER_LBF / 1000.0 / 0.3048
+    return f"{kip_ft:.3g} kip·ft"
+
+
+def mass_text(value_kg: float, system="si") -> str:
+    """A mass (given in kg) as ``'250 kg'`` or ``'551 lb'``.
+
+    >>> mass_text(250, "si"), mass_text(250, "us")
+    ('250 kg', '551 lb')
+    """
+    if value_kg is None or not math.isfinite(float(value_kg)):
+        return "-"
+    if system_of(system) != "us":
+        return f"{float(value_kg):.0f} kg"
+    return f"{float(value_kg) / KG_PER_LB:.0f} lb"
