@@ -16,13 +16,9 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from assess.fragility.anchorage import (
-    COMPONENT_AMPLIFICATION, COMPONENT_RESPONSE_MODIFICATION, base_overturning, component_design_force,
-    importance_factor,
-)
+from assess.anchorage import AnchorageSite, anchorage_site, item_anchorage
 from assess.fragility.friction_range import mu_dependence_sentence
 from assess.fragility.regression import RegressionConstants
-from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
 from assess.mechanics.modes import ROCK, SLIDE_ROCK
 from assess.result import Flag
 
@@ -49,27 +45,30 @@ class Decisions:
 
 
 def decide(equipment: pd.DataFrame, governing: dict, uplift: dict, cases: pd.DataFrame, at_mu_ends: pd.DataFrame,
-           constants: RegressionConstants, settings: dict) -> Decisions:
+           constants: RegressionConstants, settings: dict, site: AnchorageSite | None = None) -> Decisions:
     """Every item's decisions from its governing demand (``governing``: id -> its demand row,
     :func:`assess.assessment.demand.item_rows`; ``uplift``: id -> whether it uplifts; ``cases``: the
     cases at the workbook's μ; ``at_mu_ends``: the demand at the ends of a μ range).
 
     An anchored item is not analysed (:data:`ANCHORED`); a freestanding one gets :func:`item_flags`,
     :func:`decide_item` and, with a μ range, :func:`mu_range_decision`; then every item its
-    :func:`priorities` rank.
+    :func:`priorities` rank. ``site``: what the anchorage force takes from the site and building sheets
+    (:func:`assess.anchorage.anchorage_site`; None: from the settings alone).
     """
+    site = site if site is not None else anchorage_site(None, None, settings)
     by_item, flags = {}, []
     for item in equipment.itertuples(index=False):
         decided = dict(NO_MU_RANGE)
         if item.anchored:
-            by_item[item.id] = {**ANCHORED, **decided}
+            by_item[item.id] = {**ANCHORED, **decided,
+                                **item_anchorage(item, item_consequence(item), ANCHORED["action_kind"], site)}
             continue
         row = {"consequence": item_consequence(item), "clearance_cm": item.clearance_m * 100.0,
                **governing[item.id]}
         found = item_flags(item, cases[cases["id"] == item.id], constants)
         flags.extend(found)
         decided["flags"] = tuple(flag.code for flag in found)
-        decided.update(decide_item(item, row, uplift[item.id], settings))
+        decided.update(decide_item(item, row, uplift[item.id], settings, site))
         if item.id in at_mu_ends.index:
             decided.update(mu_range_decision(at_mu_ends.loc[item.id], decided["risk"], row["demand_note"], settings))
         by_item[item.id] = decided
@@ -131,14 +130,14 @@ def risk_range(risk: str, classes: set) -> str:
     return f"{spanned[0]} to {spanned[-1]}"
 
 
-def decide_item(item, row: dict, uplift: bool, settings: dict) -> dict:
+def decide_item(item, row: dict, uplift: bool, settings: dict, site: AnchorageSite | None = None) -> dict:
     """The decisions for one freestanding item from its governing demand ``row`` (a dict holding
     ``p_beyond_clearance`` and its interval, ``p_overturn``, ``demand_room_cm``, ``clearance_cm``,
     ``consequence``, ``theta_max_over_alpha``, ``suite_motions``, ``suite_histories``) and whether it
     uplifts under any motion (``uplift``).
 
     Returns ``risk``, ``risk_range``, ``action``, ``action_kind``, the anchorage columns
-    (:func:`anchorage_demand`), ``what_if`` and ``priority_score``.
+    (:func:`assess.anchorage.item_anchorage` in ``site``), ``what_if`` and ``priority_score``.
     """
     decided = {"risk": classify_risk(row["p_beyond_clearance"], row["p_overturn"], uplift, settings)}
     bounds = {classify_risk(p, row["p_overturn"], uplift, settings)
@@ -147,7 +146,8 @@ def decide_item(item, row: dict, uplift: bool, settings: dict) -> dict:
     row = {**row, **decided}
     decided["action"] = recommended_action(row, uplift, settings)
     decided["action_kind"] = row["action_kind"] = action_kind(row, uplift)
-    decided.update(anchorage_demand(item, row, settings))
+    site = site if site is not None else anchorage_site(None, None, settings)
+    decided.update(item_anchorage(item, row["consequence"], decided["action_kind"], site))
     decided["what_if"] = what_if(row, settings)
     decided["priority_score"] = priority_score(row["consequence"], row["p_overturn"], row["p_beyond_clearance"],
                                                uplift)
@@ -214,38 +214,6 @@ def what_if(row: dict, settings: dict) -> str:
     room = float(np.ceil(row["demand_room_cm"]))
     return (f"{anchored} Given {room:.0f} cm of room (it has {np.floor(row['clearance_cm']):.0f} cm), its chance of "
             f"sliding past it would be {float(settings['risk_pf_moderate']):.0%}: low risk.")
-
-
-def anchorage_demand(item, row: dict, settings: dict) -> dict:
-    """For an item to anchor or restrain: the ASCE 7-16 §13.3.1 design force and what it does at the base
-    (:mod:`assess.fragility.anchorage`), about the base edge of the more slender direction.
-
-    ``anchor_force_kn`` (F_p, per unit), ``anchor_moment_knm``, ``anchor_tension_kn`` and
-    ``anchor_basis`` (the factors used, in words); NaN and a sentence saying what is missing where
-    ``sds_g`` is not in the settings.
-    """
-    empty = {"anchor_force_kn": np.nan, "anchor_moment_knm": np.nan, "anchor_tension_kn": np.nan,
-             "anchor_basis": ""}
-    if row.get("action_kind") not in ("anchor", "restrain"):
-        return empty
-    sds_g = float(settings.get("sds_g", 0.0))
-    if not sds_g > 0.0:
-        return {**empty, "anchor_basis": "add sds_g (and roof_floor) to the settings for the ASCE 7-16 design force"}
-    roof = float(settings.get("roof_floor", 0.0))
-    z_over_h = min(max(float(item.floor) / roof, 0.0), 1.0) if roof > 0.0 else 1.0
-    importance = importance_factor(row.get("consequence", "ordinary"))
-    weight_n = float(item.mass_kg) * STANDARD_GRAVITY_M_S2
-    force_n = float(component_design_force(weight_n, sds_g, z_over_h, importance))
-    half_width_m = min(float(item.width_m), float(item.depth_m)) / 2.0
-    moment_nm, tension_n = (float(x) for x in base_overturning(force_n, float(item.cg_height_m), weight_n,
-                                                               half_width_m, sds_g))
-    basis = (f"ASCE 7-16 eqs. 13.3-1 to 13.3-3: a_p {COMPONENT_AMPLIFICATION:g}, R_p "
-             f"{COMPONENT_RESPONSE_MODIFICATION:g} (Table 13.5-1), I_p {importance:g} (§13.1.3), S_DS {sds_g:g} g, "
-             f"z/h {z_over_h:.2f}{'' if roof > 0.0 else ' (roof_floor not given: z/h = 1)'}; W_p "
-             f"{weight_n / 1000:.2f} kN per unit; tension from 0.9D - 1.0E with E_v = 0.2 S_DS D, "
-             "without the overstrength factor for anchors in concrete (§13.4.2)")
-    return {"anchor_force_kn": force_n / 1000.0, "anchor_moment_knm": moment_nm / 1000.0,
-            "anchor_tension_kn": tension_n / 1000.0, "anchor_basis": basis}
 
 
 #: Weight of what an item's failure costs (the workbook's ``consequence``), for the order of action.

@@ -18,6 +18,7 @@ import functools
 from typing import Callable
 
 from assess import decisions
+from assess.anchorage import anchorage_site
 from assess.assessment import cases as case_stage
 from assess.assessment import demand as demand_stage
 from assess.assessment import inputs, motions as motion_stage, run as run_stage, summary as result_stage
@@ -110,7 +111,7 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     rows = demand_stage.item_rows(inventory.equipment, at_mu, demand)
     # 6. decisions
     decided = decisions.decide(inventory.equipment, rows.rows, rows.uplift, at_mu, demand.at_mu_ends, constants,
-                               settings)
+                               settings, anchorage_site(inventory.site, inventory.building, settings))
     # 7. result
     summary = result_stage.summarise(inventory.equipment, rows, decided)
     summary_columns = SUMMARY_COLUMNS

@@ -18,7 +18,9 @@ SUMMARY_COLUMNS = [
     "demand_room_cm", "demand_median_low_cm", "demand_median_high_cm", "demand_p84_low_cm", "demand_p84_high_cm",
     "p_beyond_clearance_low", "p_beyond_clearance_high", "p_overturn_low", "p_overturn_high",
     "risk_range", "suite_motions", "suite_histories", "demand_note", "action_kind", "priority", "consequence",
-    "priority_score", "anchor_force_kn", "anchor_moment_knm", "anchor_tension_kn", "anchor_basis", "what_if",
+    "priority_score", "component_type", "ip", "anchor_force_kn", "anchor_force_kip", "anchor_moment_knm",
+    "anchor_moment_kip_ft", "anchor_tension_kn", "anchor_tension_kip", "anchor_omega0", "anchor_shear_omega_kn",
+    "anchor_shear_omega_kip", "anchor_tension_omega_kn", "anchor_tension_omega_kip", "anchor_basis", "what_if",
     "demand_planar", "mu_low", "mu_high", "risk_mu_low", "risk_mu_high", "p_beyond_clearance_mu_low",
     "p_beyond_clearance_mu_high", "mu_range_note",
 ]

@@ -17,7 +17,6 @@ from assess.anchorage import (
 from assess.anchorage.equations import (
     ductility_reduction, force_asce7_16, force_asce7_22, force_bounds, height_factor,
 )
-from assess.fragility.anchorage import base_overturning, component_design_force, importance_factor
 
 DATA = Path(__file__).parent / "data" / "anchorage"
 
@@ -73,14 +72,19 @@ def test_published_asce7_16_calculations(row):
 @pytest.mark.parametrize("consequence", ["ordinary", "valuable", "critical", "hazardous", "life-safety"])
 @pytest.mark.parametrize("z_over_h", [0.0, 0.2, 0.5, 0.9, 1.0, 1.3])
 @pytest.mark.parametrize("sds_g", [0.3, 1.0, 1.7])
-def test_asce7_16_default_is_todays_numbers(consequence, z_over_h, sds_g):
-    """The sample jobs' numbers stay: 7-16, no component type, I_p from consequence alone (no Risk Category)."""
+def test_asce7_16_laboratory_equipment_written_out(consequence, z_over_h, sds_g):
+    """7-16, no component type (laboratory equipment, a_p 1.0, R_p 2.5), I_p from consequence alone (no Risk
+    Category): eq. 13.3-1 within 13.3-2/3 and the tension, written out here."""
     weight_n, cg_height_m, half_width_m = 2943.0, 0.9, 0.3
-    today = float(component_design_force(weight_n, sds_g, z_over_h, importance_factor(consequence)))
-    _, today_tension = base_overturning(today, cg_height_m, weight_n, half_width_m, sds_g)
+    ip = 1.5 if consequence in ("hazardous", "life-safety") else 1.0
+    z = min(max(z_over_h, 0.0), 1.0)
+    force = min(max(0.4 * 1.0 * sds_g * weight_n / (2.5 / ip) * (1 + 2 * z), 0.3 * sds_g * ip * weight_n),
+                1.6 * sds_g * ip * weight_n)
+    tension = max(0.0, (force * cg_height_m - (0.9 - 0.2 * sds_g) * weight_n * half_width_m) / (2 * half_width_m))
     forces = design_force("ASCE 7-16", None, weight_n, sds_g, z_over_h, consequence=consequence,
                           cg_height_m=cg_height_m, half_width_m=half_width_m)
-    assert forces.force_n == today and forces.tension_n == float(today_tension)
+    assert forces.force_n == pytest.approx(force, rel=1e-12)
+    assert forces.tension_n == pytest.approx(tension, rel=1e-12, abs=1e-9)
     assert forces.component_type == DEFAULT_COMPONENT_TYPE
 
 

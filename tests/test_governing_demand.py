@@ -294,13 +294,17 @@ def test_every_item_is_in_one_action_group_and_no_advice_contradicts_its_numbers
     assert {"TIGHT": "restrain", "ROOMY": "none", "RACK": "anchor", "BOX": "none"} == \
         {i: summary.loc[i, "action_kind"] for i in ("TIGHT", "ROOMY", "RACK", "BOX")}
     assert sum(result.risk_counts().values()) == len(summary)
-    # ASCE 7-16 by hand for the rack on the ground floor (z/h = 0, I_p = 1): 0.4·1·1.0·W/2.5 = 0.16 W is below
-    # the floor of eq. 13.3-3, 0.3·S_DS·W; W = 200 kg · g. Tension: (F·h_cg − 0.7·W·b) / 2b, b = 0.2, h_cg = 1.0.
+    # ASCE 7-22 (no site sheet) by hand for the rack on the ground floor (z/h = 0, I_p = 1, laboratory equipment
+    # C_AR 1.0, R_po 1.5, H_f 1, R_mu 1.0 at grade): 0.4·1.0·W·1·(1/1.5) = 0.267 W is below the floor of
+    # eq. 13.3-2, 0.3·S_DS·W; W = 200 kg · g. Tension: (F·h_cg − 0.7·W·b) / 2b, b = 0.2, h_cg = 1.0.
     weight_kn = 200 * 9.80665 / 1000
     rack = summary.loc["RACK"]
     assert rack["anchor_force_kn"] == pytest.approx(0.3 * weight_kn, rel=1e-12)
     assert rack["anchor_tension_kn"] == pytest.approx((0.3 * weight_kn * 1.0 - 0.7 * weight_kn * 0.2) / 0.4, rel=1e-12)
     assert np.isnan(summary.loc["ROOMY", "anchor_force_kn"])  # no action, no force
+    assert rack["anchor_force_kip"] == pytest.approx(0.3 * weight_kn / 4.4482216152605, rel=1e-12)
+    assert rack["anchor_shear_omega_kn"] == pytest.approx(2.0 * 0.3 * weight_kn, rel=1e-12)  # Omega_0p 2.0
+    assert summary.loc["ANCH", "anchor_force_kn"] == pytest.approx(0.3 * weight_kn, rel=1e-12)  # to check it
     assert "low risk" in summary.loc["TIGHT", "what_if"] and summary.loc["RACK", "what_if"].startswith("Anchored")
     assert "What to do first" in render_html(result)
 

@@ -4,8 +4,8 @@
 - :mod:`assess.anchorage.coefficients`: the component table (``assess/data/components.csv``).
 - :mod:`assess.anchorage.design`: :func:`design_force`, one call with every term kept, and US units.
 
-:mod:`assess.fragility.anchorage` keeps the functions the pipeline calls today (ASCE 7-16, laboratory
-equipment); :func:`design_force` gives the same numbers for that case.
+- :mod:`assess.anchorage.item`: an item of the workbook (its component type, I_p, floor) in its site and
+  building (:class:`AnchorageSite`): the anchorage columns of ``summary.csv`` (:func:`item_anchorage`).
 """
 from assess.anchorage.coefficients import (
     DEFAULT_COMPONENT_TYPE, EDITIONS, ComponentCoefficients, canonical_edition, component_coefficients,
@@ -13,7 +13,9 @@ from assess.anchorage.coefficients import (
 )
 from assess.anchorage.design import AnchorageForces, design_force, in_us_units
 from assess.anchorage.equations import component_importance_factor
+from assess.anchorage.item import AnchorageSite, anchorage_sentence, anchorage_site, item_anchorage
 
-__all__ = ["AnchorageForces", "ComponentCoefficients", "DEFAULT_COMPONENT_TYPE", "EDITIONS", "canonical_edition",
+__all__ = ["AnchorageForces", "AnchorageSite", "ComponentCoefficients", "anchorage_sentence", "anchorage_site",
+           "item_anchorage", "DEFAULT_COMPONENT_TYPE", "EDITIONS", "canonical_edition",
            "component_coefficients", "component_importance_factor", "component_types", "design_force",
            "in_us_units"]

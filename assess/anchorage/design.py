@@ -85,8 +85,10 @@ class AnchorageForces:
             equation = "ASCE 7-22 eqs. 13.3-1 to 13.3-6"
         omega = (f"anchors in concrete with Omega_0 {self.overstrength:g} (section 13.4.2)" if self.overstrength_applied
                  else "without Omega_0 (ductile anchorage claimed, or not anchored in concrete)")
-        checked = {"yes": "", "partly": "; Omega_0 to be checked against the standard",
-                   "no": "; coefficients to be checked against the standard"}[self.coefficients_confirmed]
+        checked = {"yes": "",
+                   "partly": "; coefficients from public transcriptions of the table, to be checked against the "
+                             "standard",
+                   "no": "; coefficients not confirmed, to be checked against the standard"}[self.coefficients_confirmed]
         return (f"{equation}: {self.component_type} ({self.row}): {terms}, I_p {self.importance:g}, "
                 f"S_DS {self.sds_g:g} g, z/h {self.z_over_h:.2f}; F_p {self.force_n / 1000:.2f} kN "
                 f"({self.governs} governs); {omega}{checked}")
@@ -127,8 +129,8 @@ def design_force(edition, component_type, weight_n, sds_g, z_over_h, ip=None, pe
 
     Examples
     --------
-    Today's default (7-16, laboratory equipment): a 300 kg freezer on the roof, S_DS 1.0 g:
-    0.4·1·1·2942/2.5·3 = 1412 N, as :func:`assess.fragility.anchorage.component_design_force`:
+    ASCE 7-16, laboratory equipment (a_p 1, R_p 2.5): a 300 kg freezer on the roof, S_DS 1.0 g:
+    0.4·1·1·2942/2.5·3 = 1412 N:
 
     >>> round(design_force("ASCE 7-16", None, 300 * 9.80665, 1.0, 1.0).force_n)
     1412

@@ -165,9 +165,8 @@ def base_tension(horizontal_n, cg_height_m, weight_n, half_width_m, sds_g):
     """Overturning moment [N·m] of a horizontal force about the base edge and the anchors' tension [N].
 
     Strength combination 7 of §2.3.6 (0.9D − 1.0E, E_v = 0.2 S_DS D, §12.4.2.2):
-    T = max(0, (F h_cg − (0.9 − 0.2 S_DS) W_p b) / (2b)), 2b the base dimension. The same as
-    :func:`assess.fragility.anchorage.base_overturning`, for one edition or the other (the combination is
-    the same in 7-16 and 7-22).
+    T = max(0, (F h_cg − (0.9 − 0.2 S_DS) W_p b) / (2b)), 2b the base dimension, for one edition or the
+    other (the combination is the same in 7-16 and 7-22).
 
     >>> [round(float(x)) for x in base_tension(1413.0, 0.9, 2943.0, 0.3, 1.0)]
     [1272, 1089]

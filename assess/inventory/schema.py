@@ -140,6 +140,10 @@ EQUIPMENT = SheetSpec("equipment", (
     # holds some 10^4 racks) and keeps every count exact in 64-bit integers and floats
     Column("quantity", "integer", default=1, low=1, high=1_000_000),
     Column("consequence", "consequence", default="ordinary"),
+    # the row of ASCE 7 Table 13.5-1 / 13.6-1 for the anchorage force (empty: laboratory equipment)
+    Column("component_type", "component_type", default=""),
+    # I_p of ASCE 7 section 13.1.3, 1.0 or 1.5 (empty: from the consequence and the Risk Category)
+    Column("ip", "importance", default=math.nan),
     # the range mu may take (e.g. the paper's best-fit and slow-pull values); both or neither
     Column("mu_low", "number", low=0.01, high=1.5, positive=True, hint=_MU_HINT),
     Column("mu_high", "number", low=0.01, high=1.5, positive=True, hint=_MU_HINT),
@@ -488,6 +492,40 @@ def parse_consequence(value: object, column: Column) -> str:
     return text
 
 
+def parse_component_type(value: object, column: Column) -> str:
+    """A component type of ASCE 7 Tables 13.5-1 / 13.6-1 (``assess/data/components.csv``), by its name or an
+    alias in any case, as the table names it.
+
+    >>> parse_component_type(" UPS ", None), parse_component_type("Server_Rack", None)
+    ('battery rack', 'computer rack')
+    """
+    from assess.anchorage.coefficients import component_coefficients, component_types
+    try:
+        return component_coefficients("ASCE 7-22", str(value)).component_type
+    except ValueError:
+        raise CellError(f"{quote(value)} is not a component type.",
+                        "write one of " + ", ".join(component_types()) + " (or an alias such as freezer, UPS, "
+                        "server rack, switchgear), or leave the cell empty for laboratory equipment.") from None
+
+
+def parse_importance(value: object, column: Column) -> float:
+    """I_p of ASCE 7 section 13.1.3: 1.0 or 1.5, the only values it assigns.
+
+    >>> parse_importance("1.5", None), parse_importance(1, None)
+    (1.5, 1.0)
+    """
+    try:
+        number = float(str(value).strip())
+    except ValueError:
+        number = math.nan
+    if number not in (1.0, 1.5):
+        raise CellError(f"{quote(value)} is not a component importance factor.",
+                        "write 1.5 (needed for life safety, hazardous contents, or needed to operate a Risk "
+                        "Category IV facility: ASCE 7 section 13.1.3) or 1.0, or leave the cell empty to have it "
+                        "from the consequence and the site's risk category.")
+    return number
+
+
 def parse_level_cell(value: object, column: Column) -> HazardLevel:
     try:
         return parse_hazard_level(parse_text(value, column))
@@ -510,6 +548,8 @@ PARSERS = {
     "floor_or_all": parse_floor_or_all,
     "pulse": parse_pulse,
     "consequence": parse_consequence,
+    "component_type": parse_component_type,
+    "importance": parse_importance,
     "level": parse_level_cell,
     "raw": parse_raw,
 }

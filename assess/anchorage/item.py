@@ -1,0 +1,202 @@
+"""An item of the workbook in its building: the anchorage columns of ``summary.csv`` (:func:`item_anchorage`).
+
+What the design force of ASCE 7 Chapter 13 (:func:`assess.anchorage.design_force`) needs from the workbook,
+and where each comes from (:func:`anchorage_site` says it in ``AnchorageSite.basis``):
+
+- the edition: the ``site`` sheet's ``code`` (ASCE 7-22 when it has none, or there is no site sheet);
+- S_DS: the site sheet (``sds_g``, or from ``ss_g``, ``s1_g`` and ``site_class``), else the settings' ``sds_g``;
+- the Risk Category: the site sheet's ``risk_category`` (II when not given);
+- z/h: the item's floor over the building sheet's ``storeys`` (the roof is floor ``storeys``), else over the
+  settings' ``roof_floor``; neither: z/h = 1 (the roof's force, an upper bound);
+- T_a for H_f (ASCE 7-22 eq. 13.3-4): the building's approximate period C_t h_n^x (§12.8.2.1, eq. 12.8-7,
+  :func:`assess.building.period.approximate_period`), as §13.3.1.1 asks ("the lowest approximate fundamental
+  period"), from the building sheet's ``height`` and ``system``; without a building sheet H_f = 1 + 2.5 z/h
+  (eq. 13.3-5);
+- R_μ: 1.3, eq. 13.3-6's least value (the workbook does not give the building's R, Ω0 and I_e): the largest
+  force the equation allows; R_μ = 1.0 at grade.
+
+Per item: ``component_type`` (a row of Table 13.5-1 / 13.6-1, or an alias; empty: laboratory equipment,
+:data:`~assess.anchorage.coefficients.DEFAULT_COMPONENT_TYPE`), ``ip`` (1.0 or 1.5; empty: from the
+``consequence`` and the Risk Category, §13.1.3), W_p its mass times g (one unit), and the base about its
+narrower side for the anchors' tension. Ω0 is applied to the anchors' shear and tension (anchors in
+concrete, §13.4.2), in their own columns beside those without it.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from assess.anchorage.coefficients import DEFAULT_COMPONENT_TYPE, canonical_edition
+from assess.building.period import approximate_period
+from assess.anchorage.design import AnchorageForces, design_force, in_us_units
+from assess.anchorage.equations import component_importance_factor
+from assess.quantity_text import force_text, moment_text
+from assess.site.asce7 import from_mapped_values
+
+#: ``g`` [m/s²] (the one in assess.mechanics.geometry; repeated so this package stays free of the engine's).
+STANDARD_GRAVITY_M_S2 = 9.80665
+#: Edition when the workbook names none (the current edition).
+DEFAULT_EDITION = "ASCE 7-22"
+DEFAULT_RISK_CATEGORY = "II"
+#: Action kinds (``action_kind``) whose item gets the design force: it is anchored, restrained or tethered
+#: (its restraint carries the force), or already anchored (its anchorage to be checked against it).
+ANCHORAGE_KINDS = ("anchor", "restrain", "tether", "anchored")
+
+#: The anchorage columns of ``summary.csv`` (docs/outputs.md), in order.
+COLUMNS = ("component_type", "ip", "anchor_force_kn", "anchor_force_kip", "anchor_moment_knm", "anchor_moment_kip_ft",
+           "anchor_tension_kn", "anchor_tension_kip", "anchor_omega0", "anchor_shear_omega_kn",
+           "anchor_shear_omega_kip", "anchor_tension_omega_kn", "anchor_tension_omega_kip", "anchor_basis")
+
+
+@dataclass(frozen=True)
+class AnchorageSite:
+    """What the design force takes from the site, the building and the settings, and where it came from.
+
+    ``sds_g`` is NaN when nothing gives it; ``storeys`` is the roof's floor number (NaN: z/h = 1);
+    ``period_s`` T_a [s] for H_f (None: eq. 13.3-5). ``basis`` says where each came from, in words.
+    """
+
+    edition: str = DEFAULT_EDITION
+    risk_category: str = DEFAULT_RISK_CATEGORY
+    sds_g: float = math.nan
+    storeys: float = math.nan
+    period_s: float | None = None
+    basis: str = ""
+
+    def z_over_h(self, floor) -> float:
+        """z/h of an item on ``floor``: floor / roof floor within 0..1; 1 where the roof floor is not known."""
+        if not self.storeys > 0.0:
+            return 1.0
+        return min(max(float(floor) / float(self.storeys), 0.0), 1.0)
+
+
+def _sds_from_site(site) -> tuple[float, str]:
+    if site is None:
+        return math.nan, ""
+    if site.sds_g is not None:
+        return float(site.sds_g), "the site sheet's sds_g"
+    if site.ss_g is not None:
+        try:
+            spectrum = from_mapped_values(site.ss_g, site.s1_g, site.site_class, site.tl_s, code=site.code)
+        except ValueError:
+            return math.nan, ""
+        return float(spectrum.sds_g), "the site sheet's ss_g, s1_g and site class"
+    return math.nan, ""
+
+
+def anchorage_site(site=None, building=None, settings=None) -> AnchorageSite:
+    """The :class:`AnchorageSite` of a workbook from its ``site`` and ``building`` sheets
+    (:class:`~assess.inventory.site_building.SiteSheet`, :class:`~assess.inventory.site_building.BuildingSheet`,
+    None where absent) and its settings (``sds_g``, ``roof_floor`` where the sheets do not give them).
+
+    >>> s = anchorage_site(None, None, {"sds_g": 1.0, "roof_floor": 4})
+    >>> s.edition, s.risk_category, s.sds_g, s.z_over_h(2), s.period_s
+    ('ASCE 7-22', 'II', 1.0, 0.5, None)
+    """
+    settings = settings or {}
+    notes = []
+    edition = canonical_edition(site.code) if site is not None else DEFAULT_EDITION
+    risk = str(site.risk_category) if site is not None else DEFAULT_RISK_CATEGORY
+    notes.append(f"{edition} from the site sheet" if site is not None else f"{edition} (no site sheet)")
+    notes.append(f"Risk Category {risk}" + ("" if site is not None else " (no site sheet)"))
+    sds_g, source = _sds_from_site(site)
+    if not math.isfinite(sds_g):
+        given = float(settings.get("sds_g", 0.0) or 0.0)
+        sds_g, source = (given, "the settings' sds_g") if given > 0.0 else (math.nan, "")
+    if source:
+        notes.append(f"S_DS {sds_g:g} g from {source}")
+    period_s = None
+    if building is not None:
+        storeys = float(building.storeys)
+        period_s = float(approximate_period(building.height_m, building.system))
+        notes.append(f"z/h = floor / {building.storeys} storeys; T_a = {period_s:.3f} s (eq. 12.8-7, "
+                     f"{building.system}, h_n {building.height_m:.1f} m)")
+    else:
+        roof = float(settings.get("roof_floor", 0.0) or 0.0)
+        storeys = roof if roof > 0.0 else math.nan
+        notes.append(f"z/h = floor / roof_floor {roof:g}" if roof > 0.0 else "z/h = 1 (no building sheet or "
+                     "roof_floor: the roof's force)")
+        if edition == "ASCE 7-22":
+            notes.append("H_f = 1 + 2.5 z/h (eq. 13.3-5: no building period)")
+    if edition == "ASCE 7-22":
+        notes.append("R_mu 1.3 (eq. 13.3-6, the building's R not given; 1.0 at grade)")
+    return AnchorageSite(edition=edition, risk_category=risk, sds_g=sds_g, storeys=storeys, period_s=period_s,
+                         basis="; ".join(notes))
+
+
+def _empty(item, consequence: str, site: AnchorageSite) -> dict:
+    out = {column: math.nan for column in COLUMNS}
+    out["component_type"] = _type_name(item)
+    out["ip"] = component_importance_factor(consequence, site.risk_category, getattr(item, "ip", None))
+    out["anchor_basis"] = ""
+    return out
+
+
+def _type_name(item) -> str:
+    name = getattr(item, "component_type", None)
+    if name is None or (isinstance(name, float) and name != name) or not str(name).strip():
+        return DEFAULT_COMPONENT_TYPE
+    return str(name)
+
+
+def item_forces(item, consequence: str, site: AnchorageSite) -> AnchorageForces:
+    """The design forces of one workbook item (``item``: a row of the equipment table, with ``floor``,
+    ``mass_kg``, ``width_m``, ``depth_m``, ``cg_height_m`` and, where given, ``component_type``, ``ip``)."""
+    return design_force(
+        site.edition, _type_name(item), float(item.mass_kg) * STANDARD_GRAVITY_M_S2, site.sds_g,
+        site.z_over_h(item.floor), ip=getattr(item, "ip", None), period_s=site.period_s,
+        consequence=consequence, risk_category=site.risk_category, cg_height_m=float(item.cg_height_m),
+        half_width_m=min(float(item.width_m), float(item.depth_m)) / 2.0)
+
+
+def item_anchorage(item, consequence: str, action_kind: str, site: AnchorageSite) -> dict:
+    """The anchorage columns (:data:`COLUMNS`) of one item: its component type and I_p always; for an item
+    whose ``action_kind`` is one of :data:`ANCHORAGE_KINDS`, F_p per unit and what it does at the base, in
+    kN and kip, without and with Ω0, and ``anchor_basis`` (the factors used, in words); NaN and a sentence
+    saying what to add where S_DS is not known.
+    """
+    out = _empty(item, consequence, site)
+    if action_kind not in ANCHORAGE_KINDS:
+        return out
+    if not site.sds_g > 0.0:
+        out["anchor_basis"] = ("add sds_g to the site sheet (or the settings) for the ASCE 7 design force of its "
+                               "anchorage")
+        return out
+    forces = item_forces(item, consequence, site)
+    us = in_us_units(forces)
+    omega = forces.overstrength if forces.overstrength_applied else 1.0
+    out.update({
+        "component_type": forces.component_type, "ip": forces.importance,
+        "anchor_force_kn": forces.force_n / 1000.0, "anchor_force_kip": us["force_kip"],
+        "anchor_moment_knm": forces.overturning_moment_nm / 1000.0,
+        "anchor_moment_kip_ft": us["overturning_moment_lbf_ft"] / 1000.0,
+        "anchor_tension_kn": forces.tension_n / 1000.0, "anchor_tension_kip": us["tension_kip"],
+        "anchor_omega0": omega,
+        "anchor_shear_omega_kn": forces.anchor_shear_n / 1000.0, "anchor_shear_omega_kip": us["anchor_shear_kip"],
+        "anchor_tension_omega_kn": forces.anchor_tension_n / 1000.0,
+        "anchor_tension_omega_kip": us["anchor_tension_kip"],
+        "anchor_basis": f"{forces.basis()}; W_p {forces.weight_n / 1000.0:.2f} kN per unit; {site.basis}",
+    })
+    return out
+
+
+def anchorage_sentence(row, system="si") -> str:
+    """What the report says about an item's anchorage, from its summary row (``row``: a mapping with the
+    :data:`COLUMNS`), forces in SI or US units (:mod:`assess.quantity_text`); "" without a force.
+
+    >>> anchorage_sentence({"anchor_force_kn": 4.0, "anchor_moment_knm": 4.8, "anchor_tension_kn": 1.2,
+    ...                     "anchor_omega0": 2.0, "anchor_shear_omega_kn": 8.0, "anchor_tension_omega_kn": 5.2})
+    'design force F_p 4 kN per unit at its centre of mass; overturning moment 4.8 kN·m and uplift (tension) 1.2 kN on the far edge of its narrower base; anchors in concrete, with Omega_0 2: shear 8 kN, tension 5.2 kN'
+    """
+    force = row.get("anchor_force_kn")
+    if force is None or not math.isfinite(float(force)):
+        return ""
+    text = (f"design force F_p {force_text(force, system)} per unit at its centre of mass; overturning moment "
+            f"{moment_text(row.get('anchor_moment_knm'), system)} and uplift (tension) "
+            f"{force_text(row.get('anchor_tension_kn'), system)} on the far edge of its narrower base")
+    omega = row.get("anchor_omega0")
+    if omega is not None and math.isfinite(float(omega)) and float(omega) > 1.0:
+        text += (f"; anchors in concrete, with Omega_0 {float(omega):g}: shear "
+                 f"{force_text(row.get('anchor_shear_omega_kn'), system)}, tension "
+                 f"{force_text(row.get('anchor_tension_omega_kn'), system)}")
+    return text
