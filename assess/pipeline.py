@@ -110,8 +110,9 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     at_mu = demand.cases[nominal]
     rows = demand_stage.item_rows(inventory.equipment, at_mu, demand)
     # 6. decisions
+    anchorage = anchorage_site(inventory.site, inventory.building, settings)
     decided = decisions.decide(inventory.equipment, rows.rows, rows.uplift, at_mu, demand.at_mu_ends, constants,
-                               settings, anchorage_site(inventory.site, inventory.building, settings))
+                               settings, anchorage)
     # 7. result
     summary = result_stage.summarise(inventory.equipment, rows, decided)
     summary_columns = SUMMARY_COLUMNS
@@ -128,4 +129,5 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
         solver_runs={str(k): int(v) for k, v in ran.runs["solver"].value_counts().items()}, curve_risk=curve,
         ground_motions=None if level.site is None else level.site.suite.ground_motions,
         spectrum=None if level.site is None else level.site.suite.spectrum, floors=simulated.floors,
+        anchorage=anchorage,
     )

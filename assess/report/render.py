@@ -25,6 +25,9 @@ import pandas as pd
 from markupsafe import Markup
 
 import assess
+from assess.anchorage.item import anchorage_sentence
+from assess.anchorage.method import anchorage_method
+from assess.quantity_text import system_of
 from assess.report import figures
 from assess.report.curve import curve_context
 from assess.report.sentences import (
@@ -98,7 +101,7 @@ def _sorted_summary(summary: pd.DataFrame) -> pd.DataFrame:
     return summary.loc[order]
 
 
-def _item_row(row: pd.Series) -> dict:
+def _item_row(row: pd.Series, system: str = "si") -> dict:
     direction = finite(row.get("governing_direction"))
     motion = text(row.get("governing_motion"))
     quantity = finite(row.get("quantity"))
@@ -128,9 +131,7 @@ def _item_row(row: pd.Series) -> dict:
         "risk_range": text(row.get("risk_range")),
         "action_kind": text(row.get("action_kind")),
         "consequence": text(row.get("consequence")),
-        "anchor_force": format_significant(row.get("anchor_force_kn"), 2) if finite(row.get("anchor_force_kn")) else "",
-        "anchor_moment": format_significant(row.get("anchor_moment_knm"), 2),
-        "anchor_tension": format_significant(row.get("anchor_tension_kn"), 2),
+        "anchor_sentence": anchorage_sentence(row, system),
         "anchor_basis": text(row.get("anchor_basis")),
         "what_if": text(row.get("what_if")),
         "priority": integer_text(row.get("priority")),
@@ -260,7 +261,8 @@ def _data_uri(svg: str) -> str:
 def report_context(result) -> dict:
     """Everything the template shows, formatted (pure: no clock, no I/O)."""
     summary = _sorted_summary(result.summary)
-    rows = [_item_row(row) for _, row in summary.iterrows()]
+    system = system_of(result.settings or {})
+    rows = [_item_row(row, system) for _, row in summary.iterrows()]
     for row, anchor in zip(rows, item_anchors([r["id"] for r in rows])):
         row["anchor"] = anchor
     counts = result.risk_counts()
@@ -292,6 +294,7 @@ def report_context(result) -> dict:
                        "im_max": im_max,
                        "source": text((result.regression or {}).get("source"))
                        or "Konstantinidis & Makris (2010)"},
+        "anchorage": anchorage_method(result.anchorage, summary),
         "thresholds": {"high": finite(settings.get("risk_pf_high")),
                        "moderate": finite(settings.get("risk_pf_moderate"))},
         "figures": {
