@@ -79,6 +79,19 @@ EQUIPMENT = [
          "bolted to its housekeeping pad", anchored=True),
 ]
 
+#: The row of ASCE 7 Table 13.5-1 / 13.6-1 each item's anchorage is designed to (the ``component_type`` column,
+#: names or aliases of assess/data/components.csv); the others are left empty: laboratory equipment.
+COMPONENT_TYPES = {
+    "ED-0-02": "storage shelving", "LB-1-01": "freezer", "LB-1-02": "refrigerator", "LB-1-03": "laboratory equipment",
+    "RX-2-01": "medical equipment", "RX-2-02": "storage shelving", "RX-2-03": "refrigerator", "IT-3-01": "server rack",
+    "IT-3-02": "UPS", "MP-4-01": "mechanical equipment", "MP-4-02": "storage shelving",
+    "MP-4-03": "mechanical equipment",
+}
+for _row in EQUIPMENT:  # after consequence, before notes
+    _notes = _row.pop("notes")
+    _row["component_type"] = COMPONENT_TYPES.get(_row["id"])
+    _row["notes"] = _notes
+
 #: The site as a hazard lookup gives it (invented values typical of a coastal California site).
 SITE = [
     ("code", "ASCE 7-22"), ("sds_g", 1.2), ("sd1_g", 0.7), ("tl_s", 8), ("site_class", "D"),

@@ -26,7 +26,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from assess.anchorage.coefficients import DEFAULT_COMPONENT_TYPE, canonical_edition
+from assess.anchorage.coefficients import DEFAULT_COMPONENT_TYPE, canonical_edition, component_coefficients
 from assess.building.period import approximate_period
 from assess.anchorage.design import AnchorageForces, design_force, in_us_units
 from assess.anchorage.equations import component_importance_factor
@@ -126,7 +126,7 @@ def anchorage_site(site=None, building=None, settings=None) -> AnchorageSite:
 
 def _empty(item, consequence: str, site: AnchorageSite) -> dict:
     out = {column: math.nan for column in COLUMNS}
-    out["component_type"] = _type_name(item)
+    out["component_type"] = component_coefficients(site.edition, _type_name(item)).component_type
     out["ip"] = component_importance_factor(consequence, site.risk_category, getattr(item, "ip", None))
     out["anchor_basis"] = ""
     return out
