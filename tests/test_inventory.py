@@ -41,8 +41,8 @@ def test_good_workbook_reads_to_documented_si_columns(make_workbook):
     equipment = inventory.equipment
     assert list(equipment.columns) == [
         "id", "name", "room", "floor", "height_m", "width_m", "depth_m", "mass_kg", "mu",
-        "mu_static", "clearance_m", "cg_height_m", "anchored", "quantity", "consequence", "mu_low", "mu_high",
-        "row"]
+        "mu_static", "clearance_m", "cg_height_m", "anchored", "quantity", "consequence", "component_type", "ip",
+        "mu_low", "mu_high", "row"]
     assert list(equipment["id"]) == ["INC-1", "FRZ-2", "BSC-3"]
     assert list(equipment["row"]) == [2, 3, 5]  # blank row 4 skipped
     first = equipment.iloc[0]
@@ -276,6 +276,22 @@ def test_bad_anchored_value(make_workbook):
     sheets["equipment"][0]["anchored"] = "bolted"
     problem = only_problem(make_workbook(sheets))
     assert_mentions(problem, "cell M2", "column 'anchored'", "'bolted' is not yes or no")
+
+
+def test_component_type_and_ip_are_read_and_checked(make_workbook):
+    sheets = good_sheets()
+    sheets["equipment"][0]["component_type"] = " UPS "
+    sheets["equipment"][0]["ip"] = 1.5
+    equipment = read_workbook(make_workbook(sheets)).equipment
+    assert list(equipment["component_type"]) == ["battery rack", "", ""]  # as the table names it; empty: default
+    assert equipment["ip"].iloc[0] == 1.5 and equipment["ip"].iloc[1:].isna().all()
+    sheets["equipment"][0]["component_type"] = "toaster"
+    assert_mentions(only_problem(make_workbook(sheets)), "column 'component_type'", "'toaster' is not a component type",
+                    "laboratory equipment")
+    sheets["equipment"][0]["component_type"] = "freezer"
+    sheets["equipment"][1]["ip"] = 1.25
+    assert_mentions(only_problem(make_workbook(sheets)), "cell", "column 'ip'",
+                    "'1.25' is not a component importance factor", "13.1.3")
 
 
 def test_static_friction_below_kinetic(make_workbook):
