@@ -162,3 +162,41 @@ def test_settings_alone_as_before_the_site_sheet():
     # 0.4·1.0·1.0·980.665·((1 + 2.5·0.5)/1.3)·(1.0/1.5) = 392.266·1.730769·0.666667 = 452.61 N
     assert out["ip"] == 1.0 and out["anchor_force_kn"] * 1000 == pytest.approx(452.61, abs=0.01)
     assert "eq. 13.3-5" in site.basis and "roof_floor 4" in site.basis
+
+
+def test_the_sample_hospital_workbook():
+    """inventories/hospital.xlsx (Risk Category IV, ASCE 7-22): every critical, hazardous and life-safety item has
+    I_p 1.5 and the others 1.0; the component types typed in its rows are the table's; the roof item (floor 4)
+    has z/h 1. The workbook is what build_hospital.py writes."""
+    import importlib.util
+    import sys
+    from pathlib import Path
+
+    from assess.decisions import item_consequence
+    from assess.inventory import read_workbook
+
+    folder = Path(__file__).resolve().parents[1] / "inventories"
+    sys.path.insert(0, str(folder))
+    try:
+        spec = importlib.util.spec_from_file_location("build_hospital", folder / "build_hospital.py")
+        module = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(module)
+        assert module.build() == (folder / "hospital.xlsx").read_bytes()
+    finally:
+        sys.path.remove(str(folder))
+    inventory = read_workbook(folder / "hospital.xlsx")
+    site = anchorage_site(inventory.site, inventory.building, inventory.settings)
+    assert (site.edition, site.risk_category, site.sds_g, site.storeys) == ("ASCE 7-22", "IV", 1.2, 4.0)
+    typed = {row.id: row.component_type for row in inventory.equipment.itertuples() if row.component_type}
+    assert typed == {"ED-0-02": "storage shelving", "LB-1-01": "refrigeration", "LB-1-02": "refrigeration",
+                     "LB-1-03": "laboratory equipment", "RX-2-01": "medical equipment",
+                     "RX-2-02": "storage shelving", "RX-2-03": "refrigeration", "IT-3-01": "computer rack",
+                     "IT-3-02": "battery rack", "MP-4-01": "mechanical equipment", "MP-4-02": "storage shelving",
+                     "MP-4-03": "mechanical equipment"}
+    for item in inventory.equipment.itertuples(index=False):
+        out = item_anchorage(item, item_consequence(item), "anchor", site)
+        expected_ip = 1.5 if item_consequence(item) in ("critical", "hazardous", "life-safety") else 1.0
+        assert out["ip"] == expected_ip, item.id
+        assert out["component_type"] == (typed.get(item.id) or "laboratory equipment")
+        if item.floor == 4:
+            assert "z/h 1.00" in out["anchor_basis"]
