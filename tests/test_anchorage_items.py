@@ -200,3 +200,22 @@ def test_the_sample_hospital_workbook():
         assert out["component_type"] == (typed.get(item.id) or "laboratory equipment")
         if item.floor == 4:
             assert "z/h 1.00" in out["anchor_basis"]
+
+
+def test_the_method_include_lays_out_the_equations_and_the_rows_used():
+    import pandas as pd
+
+    from assess.anchorage.method import anchorage_method
+    from assess.report.render import make_environment
+
+    summary = pd.DataFrame({"action_kind": ["anchor", "restrain", "none"],
+                            "component_type": ["refrigeration", "computer rack", "storage shelving"],
+                            "anchor_force_kn": [1.0, 2.0, float("nan")]})
+    html = make_environment().get_template("_anchorage_method.html.j2").render(
+        anchorage=anchorage_method(_site("ASCE 7-22"), summary))
+    for text in ("ASCE 7-22</b> (eqs. 13.3-1 to 13.3-6)", "ASCE 7-16</b> (eqs. 13.3-1 to 13.3-3)",
+                 "(H<sub>f</sub>/R<sub>μ</sub>)(C<sub>AR</sub>/R<sub>po</sub>)", "Ω<sub>0p</sub>",
+                 "(2 items with a force)", "T_a = 0.665 s", "Risk Category IV", "C_AR 1.4 at or below grade"):
+        assert text in html, text
+    assert "storage shelving" not in html.split("<tbody>")[1]  # no force, not listed
+    assert "built-in" not in html

@@ -31,14 +31,14 @@ def _coefficients_text(row) -> str:
 
 def anchorage_method(site: AnchorageSite | None, summary: pd.DataFrame) -> dict:
     """``edition``, ``basis`` (where each input came from), ``types`` (one dict per component type with a
-    force in this run: ``name``, ``row``, ``coefficients``, ``confirmed``, ``source``) and ``items`` (how
+    force in this run: ``name``, ``row``, ``coefficients``, ``confirmed``, ``source``) and ``item_count`` (how
     many items have a force); an empty dict without a site (a result from before this field existed).
 
     >>> from assess.anchorage.item import anchorage_site
     >>> table = pd.DataFrame({"action_kind": ["anchor", "none"], "component_type": ["freezer", "lab"],
     ...                       "anchor_force_kn": [1.0, float("nan")]})
     >>> m = anchorage_method(anchorage_site(None, None, {"sds_g": 1.0}), table)
-    >>> m["edition"], [t["name"] for t in m["types"]], m["items"]
+    >>> m["edition"], [t["name"] for t in m["types"]], m["item_count"]
     ('ASCE 7-22', ['refrigeration'], 1)
     """
     if site is None:
@@ -53,5 +53,5 @@ def anchorage_method(site: AnchorageSite | None, summary: pd.DataFrame) -> dict:
             continue
         types.append({"name": row.component_type, "row": row.row, "coefficients": _coefficients_text(row),
                       "confirmed": CONFIRMATION_TEXT[row.confirmed], "source": row.source})
-    return {"edition": site.edition, "basis": site.basis, "types": types, "items": int(len(with_force)),
+    return {"edition": site.edition, "basis": site.basis, "types": types, "item_count": int(len(with_force)),
             "sds_known": bool(site.sds_g > 0.0)}
