@@ -60,6 +60,8 @@ def _number_format(column: str) -> str | None:
         return "0.00E+00"
     if column.endswith(("_cm", "_in")):
         return "0.0"
+    if column.endswith(("_kn", "_knm", "_kip", "_kip_ft")):  # the anchorage forces and moments
+        return "0.00"
     if column.endswith(("_g", "_rad", "_rad_s", "_s")) or column in ("b_over_h", "mu", "im", "edp_median",
                                                                       "theta_max_over_alpha"):
         return "0.000"
