@@ -8,6 +8,7 @@ import math
 from pathlib import Path
 
 import numpy as np
+import pandas as pd
 import pytest
 
 from assess.anchorage import (
@@ -185,3 +186,15 @@ def test_without_base_geometry_no_tension():
     forces = design_force("ASCE 7-22", None, 2000.0, 1.0, 0.5)
     assert math.isnan(forces.tension_n) and math.isnan(forces.anchor_tension_n)
     assert forces.force_n > 0.0 and forces.anchor_shear_n == pytest.approx(2.0 * forces.force_n)
+
+
+def test_asce7_22_rows_as_public_calculators_transcribe_them():
+    """components.csv's ASCE 7-22 rows against tests/data/anchorage/public_tables_7_22.csv (two public
+    calculators' transcriptions of Tables 13.5-1 / 13.6-1; not the standard's text)."""
+    table = pd.read_csv(DATA / "public_tables_7_22.csv", comment="#")
+    for row in table.itertuples(index=False):
+        ours = component_coefficients("ASCE 7-22", row.component_type)
+        where = f"{row.component_type} vs {row.source} {row.source_row}"
+        assert (ours.resonance_at_or_below_grade, ours.resonance_above_grade, ours.strength, ours.overstrength) == \
+            (row.car_at_or_below_grade, row.car_above_grade, row.r_po, row.omega_0p), where
+        assert row.source in ours.source and ours.confirmed == "partly", where

@@ -7,11 +7,14 @@ were confirmed in a public copy of the standard (``confirmed``: ``yes``, ``partl
 each came from (``source``). The file's header lists the sources read.
 
 What could be confirmed (Nov 2026): a_p and R_p of the mechanical and electrical rows, read in a public
-copy of ASCE 7-10 Table 13.6-1 (rows unchanged in 7-16), and a_p = 1.0, R_p = 2.5 for laboratory
-equipment (7-16 Table 13.5-1, the values this tool has always used). Not confirmed: every Ω0p, and
-every ASCE 7-22 C_AR and R_po — no public copy of the 7-22 tables was found; four of those rows agree
-with one public calculator's lookup table (not the standard). :class:`ComponentCoefficients` carries
-``confirmed`` so that a report can say which numbers an engineer must check before signing.
+copy of ASCE 7-10 Table 13.6-1 (rows unchanged in 7-16). Every ASCE 7-22 C_AR, R_po and Ω0p, and the
+7-16 Ω0p of the Table 13.5-1 rows, agree with the public FpCalc calculator's transcription of the tables
+(its row numbers are quoted in ``source``), and four 7-22 rows also with a second, independent public
+calculator; that transcription corrected two of our earlier readings (computer racks: C_AR 1.0/1.0,
+R_po 1.5, not 1.4/2.2, 2.0; other mechanical or electrical components: R_po 1.5, not 1.3). No public copy
+of the standard's own 7-22 tables was found, so no row is ``yes``; the 7-16 Ω0p of the mechanical and
+electrical rows have no source. :class:`ComponentCoefficients` carries ``confirmed`` so that a report
+can say which numbers an engineer must check before signing.
 
 Names are matched case-insensitively, with the aliases of the table (``UPS``, ``freezer``,
 ``switchgear``, ...); no type given means :data:`DEFAULT_COMPONENT_TYPE`.

@@ -88,7 +88,8 @@ class AnchorageForces:
         checked = {"yes": "",
                    "partly": "; coefficients from public transcriptions of the table, to be checked against the "
                              "standard",
-                   "no": "; coefficients not confirmed, to be checked against the standard"}[self.coefficients_confirmed]
+                   "no": "; coefficients not confirmed, to be checked against the standard",
+                   }[self.coefficients_confirmed]
         return (f"{equation}: {self.component_type} ({self.row}): {terms}, I_p {self.importance:g}, "
                 f"S_DS {self.sds_g:g} g, z/h {self.z_over_h:.2f}; F_p {self.force_n / 1000:.2f} kN "
                 f"({self.governs} governs); {omega}{checked}")
