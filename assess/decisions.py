@@ -20,6 +20,7 @@ from assess.anchorage import AnchorageSite, anchorage_site, item_anchorage
 from assess.fragility.friction_range import mu_dependence_sentence
 from assess.fragility.regression import RegressionConstants
 from assess.mechanics.modes import ROCK, SLIDE_ROCK
+from assess.quantity_text import system_of
 from assess.result import Flag
 
 UPLIFT_MODES = (ROCK, SLIDE_ROCK)
@@ -61,7 +62,8 @@ def decide(equipment: pd.DataFrame, governing: dict, uplift: dict, cases: pd.Dat
         decided = dict(NO_MU_RANGE)
         if item.anchored:
             by_item[item.id] = {**ANCHORED, **decided,
-                                **item_anchorage(item, item_consequence(item), ANCHORED["action_kind"], site)}
+                                **item_anchorage(item, item_consequence(item), ANCHORED["action_kind"], site,
+                                                 system_of(settings))}
             continue
         row = {"consequence": item_consequence(item), "clearance_cm": item.clearance_m * 100.0,
                **governing[item.id]}
@@ -147,7 +149,7 @@ def decide_item(item, row: dict, uplift: bool, settings: dict, site: AnchorageSi
     decided["action"] = recommended_action(row, uplift, settings)
     decided["action_kind"] = row["action_kind"] = action_kind(row, uplift)
     site = site if site is not None else anchorage_site(None, None, settings)
-    decided.update(item_anchorage(item, row["consequence"], decided["action_kind"], site))
+    decided.update(item_anchorage(item, row["consequence"], decided["action_kind"], site, system_of(settings)))
     decided["what_if"] = what_if(row, settings)
     decided["priority_score"] = priority_score(row["consequence"], row["p_overturn"], row["p_beyond_clearance"],
                                                uplift)

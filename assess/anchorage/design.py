@@ -24,6 +24,7 @@ from assess.anchorage.equations import (
     MINIMUM_DUCTILITY_REDUCTION, base_tension, component_importance_factor, ductility_reduction,
     force_asce7_16, force_asce7_22, force_bounds, govern, height_factor,
 )
+from assess.quantity_text import force_text
 
 
 @dataclass(frozen=True)
@@ -74,8 +75,9 @@ class AnchorageForces:
         """The shear at the base [N]: F_p."""
         return self.force_n
 
-    def basis(self) -> str:
-        """The factors used, in words (for the report's method or an item's note)."""
+    def basis(self, system: str = "si") -> str:
+        """The factors used, in words (for the report's method or an item's note); forces in ``system``'s
+        units (``'si'`` or ``'us'``, :func:`assess.quantity_text.force_text`)."""
         if self.edition == "ASCE 7-16":
             terms = f"a_p {self.amplification:g}, R_p {self.response_modification:g}"
             equation = "ASCE 7-16 eqs. 13.3-1 to 13.3-3"
@@ -91,8 +93,8 @@ class AnchorageForces:
                    "no": "; coefficients not confirmed, to be checked against the standard",
                    }[self.coefficients_confirmed]
         return (f"{equation}: {self.component_type} ({self.row}): {terms}, I_p {self.importance:g}, "
-                f"S_DS {self.sds_g:g} g, z/h {self.z_over_h:.2f}; F_p {self.force_n / 1000:.2f} kN "
-                f"({self.governs} governs); {omega}{checked}")
+                f"S_DS {self.sds_g:g} g, z/h {self.z_over_h:.2f}; F_p {force_text(self.force_n / 1000.0, system)} "
+                f"({self.governs} governs) for W_p {force_text(self.weight_n / 1000.0, system)}; {omega}{checked}")
 
 
 def design_force(edition, component_type, weight_n, sds_g, z_over_h, ip=None, period_s=None, building_r=None,

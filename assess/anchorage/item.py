@@ -149,11 +149,12 @@ def item_forces(item, consequence: str, site: AnchorageSite) -> AnchorageForces:
         half_width_m=min(float(item.width_m), float(item.depth_m)) / 2.0)
 
 
-def item_anchorage(item, consequence: str, action_kind: str, site: AnchorageSite) -> dict:
+def item_anchorage(item, consequence: str, action_kind: str, site: AnchorageSite, system: str = "si") -> dict:
     """The anchorage columns (:data:`COLUMNS`) of one item: its component type and I_p always; for an item
     whose ``action_kind`` is one of :data:`ANCHORAGE_KINDS`, F_p per unit and what it does at the base, in
     kN and kip, without and with Ω0, and ``anchor_basis`` (the factors used, in words); NaN and a sentence
-    saying what to add where S_DS is not known.
+    saying what to add where S_DS is not known. The forces in ``anchor_basis`` are in ``system``'s units
+    (``'si'`` or ``'us'``); the columns carry both.
     """
     out = _empty(item, consequence, site)
     if action_kind not in ANCHORAGE_KINDS:
@@ -175,7 +176,7 @@ def item_anchorage(item, consequence: str, action_kind: str, site: AnchorageSite
         "anchor_shear_omega_kn": forces.anchor_shear_n / 1000.0, "anchor_shear_omega_kip": us["anchor_shear_kip"],
         "anchor_tension_omega_kn": forces.anchor_tension_n / 1000.0,
         "anchor_tension_omega_kip": us["anchor_tension_kip"],
-        "anchor_basis": f"{forces.basis()}; W_p {forces.weight_n / 1000.0:.2f} kN per unit; {site.basis}",
+        "anchor_basis": f"{forces.basis(system)}; forces per unit; {site.basis}",
     })
     return out
 
