@@ -198,3 +198,31 @@ def test_asce7_22_rows_as_public_calculators_transcribe_them():
         assert (ours.resonance_at_or_below_grade, ours.resonance_above_grade, ours.strength, ours.overstrength) == \
             (row.car_at_or_below_grade, row.car_above_grade, row.r_po, row.omega_0p), where
         assert row.source in ours.source and ours.confirmed == "partly", where
+
+
+PUBLISHED_7_22 = pd.read_csv(DATA / "published_7_22.csv", comment="#")
+
+
+@pytest.mark.parametrize("case", list(PUBLISHED_7_22.itertuples(index=False)), ids=list(PUBLISHED_7_22["case"]))
+def test_published_asce7_22_calculations(case):
+    """Two hand-worked ASCE 7-22 cases of a public calculator (tests/data/anchorage/published_7_22.csv), through
+    the equations and through design_force (the transformer is our 'battery rack' row, the chiller 'mechanical
+    equipment': C_AR 1.0, R_po 1.5 in both)."""
+    z = float(case.in_z_over_h)
+    height = float(height_factor(z, None if math.isnan(case.in_period_s) else case.in_period_s))
+    known = not math.isnan(case.in_building_r)
+    ductility = 1.0 if z == 0.0 else ductility_reduction(case.in_building_r if known else None,
+                                                         case.in_building_ie, case.in_building_omega0 if known else None)
+    assert height == pytest.approx(case.expected_height_factor, abs=5e-4)
+    assert ductility == pytest.approx(case.expected_ductility_reduction, abs=5e-4)
+    equation = float(force_asce7_22(case.in_weight_lb, case.in_sds_g, case.in_importance, height, ductility,
+                                    case.in_resonance, case.in_strength))
+    minimum, maximum = (float(x) for x in force_bounds(case.in_weight_lb, case.in_sds_g, case.in_importance))
+    assert equation == pytest.approx(case.expected_force_equation_lb, abs=case.tolerance_lb), case.case
+    assert (minimum, maximum) == pytest.approx((case.expected_force_minimum_lb, case.expected_force_maximum_lb))
+    component = "transformer" if z > 0 else "mechanical equipment"
+    forces = design_force("ASCE 7-22", component, case.in_weight_lb, case.in_sds_g, z, ip=case.in_importance,
+                          building_r=case.in_building_r if known else None,
+                          building_omega0=case.in_building_omega0 if known else None,
+                          building_ie=case.in_building_ie)
+    assert forces.force_n == pytest.approx(case.expected_force_lb, abs=case.tolerance_lb), case.case

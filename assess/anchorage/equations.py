@@ -34,7 +34,8 @@ the 7-16 form reproduces two published worked examples to their printed precisio
 
 Not confirmed from the standard's text: R_μ = 1.0 for a component supported at or below grade (z = 0).
 It is how we read ASCE 7-22 §13.3.1 (the ductility of the structure does not reduce the ground's
-motion) and how one public 7-22 calculator treats grade (its ``calculateRmu`` takes the height); it is
+motion) and how one public 7-22 calculator treats grade (its ``calculateRmu`` takes the height, and its
+hand-worked chiller case takes R_μ = 1.0 at grade, ``tests/data/anchorage/published_7_22.csv``); it is
 a keyword (``at_or_below_grade_unreduced``) so the lead can switch it off if the text says otherwise.
 
 References
