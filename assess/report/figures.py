@@ -20,7 +20,6 @@ import math
 import sys
 
 import matplotlib
-import matplotlib.font_manager
 import matplotlib.ticker
 import matplotlib.transforms
 
@@ -140,11 +139,13 @@ def _place_labels(axes, points, labels, colours, fontsize=6.5) -> None:
     near = [(5, 4), (5, -9), (-5, 4), (-5, -9)]
     rings = [(r * np.cos(a), r * np.sin(a)) for r in (16, 26, 38, 52)
              for a in np.deg2rad([30, -30, 150, -150, 90, -90, 0, 180, 60, -60, 120, -120])]
-    font = matplotlib.font_manager.FontProperties(size=fontsize)
     placed = []
     for (x, y), label, colour in zip(points, labels, colours):
         label = plain_text(label)
-        width, height, _ = renderer.get_text_width_height_descent(label, font, ismath=False)
+        probe = axes.text(0.0, 0.0, label, fontsize=fontsize, transform=None)  # its box as matplotlib lays it out
+        extent = probe.get_window_extent(renderer)
+        width, height = extent.width, extent.height
+        probe.remove()
         px, py = axes.transData.transform((x, y))
         for k, (dx, dy) in enumerate(near + rings):
             x0 = px + dx * pixels_per_point - (0.0 if dx >= 0 else width)
