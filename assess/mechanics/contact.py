@@ -169,7 +169,10 @@ def _both_stick(vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu_s):
     return violation, pnm, ptm, pnp, t
 
 
-@njit(cache=True, inline="always")
+# Not inlined at numba's IR level (inline="always"): it is called at six sites, inside functions that are
+# themselves inlined, and retyping each copy made compiling the general solver take ~4x longer (100 s vs 26 s
+# under load; benchmarks/bench_assessment.py: the runs cost 4 % more CPU without it). LLVM still inlines it.
+@njit(cache=True)
 def contact_candidate(st_m, st_p, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s):
     """Velocity and impulses for assumed corner states; returns (violation, v⁺, P_N−, P_T−, P_N+, P_T+)."""
     if act_m and act_p and st_m == STICK and st_p == STICK:

@@ -3,8 +3,11 @@
 Every figure is a pure function of an :class:`~assess.result.AssessmentResult`
 (and, for the regression figure, the paper's Table 3) returning an SVG
 document as ``str``. The same result gives byte-identical SVG: the SVG hash
-salt is fixed, the date and creator are left out of the metadata, glyphs are
-written as paths (no font is needed to display them) and nothing depends on
+salt is fixed, the date and creator are left out of the metadata, text is
+written as SVG text in DejaVu Sans (``svg.fonttype`` ``none``: a glyph drawn as
+a path is a node the PDF renderer must parse at every use, and those nodes took
+a quarter of the PDF's time), lines are simplified below a pixel
+(``path.simplify``: the time histories shrink to a third) and nothing depends on
 the clock or on global matplotlib state (each figure is drawn inside its own
 ``rc_context`` on a :class:`~matplotlib.figure.Figure`, never through pyplot).
 
@@ -18,6 +21,7 @@ import sys
 
 import matplotlib
 import matplotlib.ticker
+import matplotlib.transforms
 
 if "matplotlib.pyplot" not in sys.modules:  # headless; never switch an interactive session
     matplotlib.use("Agg")
@@ -51,7 +55,7 @@ ITEMS_PER_DEMAND_FIGURE = 36
 
 _RC = {
     "svg.hashsalt": "assess-report",
-    "svg.fonttype": "path",
+    "svg.fonttype": "none",
     "font.family": "DejaVu Sans",
     "font.size": 8.0,
     "axes.titlesize": 8.5,
@@ -64,7 +68,7 @@ _RC = {
     "axes.grid": True,
     "grid.color": "#dddddd",
     "grid.linewidth": 0.5,
-    "path.simplify": False,
+    "path.simplify": True,
 }
 
 
@@ -123,26 +127,41 @@ def _freestanding(result) -> pd.DataFrame:
 def _place_labels(axes, points, labels, colours, fontsize=6.5) -> None:
     """Label points by id where a label fits: offsets on rings of growing radius around the point (a thin
     leader line beyond the first ring), never over another label or outside the axes; a point whose
-    label fits nowhere stays unlabelled (every item is in the report's tables)."""
+    label fits nowhere stays unlabelled (every item is in the report's tables).
+
+    Each label is measured once and its box at every candidate offset is computed, not drawn: only the
+    offset chosen becomes an annotation (drawing and removing a trial annotation with its leader for
+    every offset took most of the report's figure time).
+    """
     renderer = axes.figure.canvas.get_renderer()
     frame = axes.get_window_extent(renderer)
+    pixels_per_point = axes.figure.dpi / 72.0
     near = [(5, 4), (5, -9), (-5, 4), (-5, -9)]
     rings = [(r * np.cos(a), r * np.sin(a)) for r in (16, 26, 38, 52)
              for a in np.deg2rad([30, -30, 150, -150, 90, -90, 0, 180, 60, -60, 120, -120])]
     placed = []
     for (x, y), label, colour in zip(points, labels, colours):
         label = plain_text(label)
+        probe = axes.text(0.0, 0.0, label, fontsize=fontsize, transform=None)  # its box as matplotlib lays it out
+        extent = probe.get_window_extent(renderer)
+        width, height = extent.width, extent.height
+        probe.remove()
+        px, py = axes.transData.transform((x, y))
         for k, (dx, dy) in enumerate(near + rings):
-            leader = {"arrowstyle": "-", "color": colour, "lw": 0.4} if k >= len(near) else None
-            text = axes.annotate(label, (x, y), xytext=(dx, dy), textcoords="offset points",
-                                 fontsize=fontsize, color=colour, ha="left" if dx >= 0 else "right",
-                                 va="bottom" if dy >= 0 else "top", arrowprops=leader)
-            box = text.get_window_extent(renderer).expanded(1.05, 1.1)
+            x0 = px + dx * pixels_per_point - (0.0 if dx >= 0 else width)
+            y0 = py + dy * pixels_per_point - (0.0 if dy >= 0 else height)
+            box = matplotlib.transforms.Bbox([[x0, y0], [x0 + width, y0 + height]])
+            if k >= len(near):  # the leader runs from the point to the label
+                box = matplotlib.transforms.Bbox.union([box, matplotlib.transforms.Bbox([[px, py], [px, py]])])
+            box = box.expanded(1.05, 1.1)
             inside = frame.x0 <= box.x0 and box.x1 <= frame.x1 and frame.y0 <= box.y0 and box.y1 <= frame.y1
             if inside and not any(box.overlaps(other) for other in placed):
+                leader = {"arrowstyle": "-", "color": colour, "lw": 0.4} if k >= len(near) else None
+                axes.annotate(label, (x, y), xytext=(dx, dy), textcoords="offset points", fontsize=fontsize,
+                              color=colour, ha="left" if dx >= 0 else "right", va="bottom" if dy >= 0 else "top",
+                              arrowprops=leader)
                 placed.append(box)
                 break
-            text.remove()
 
 
 def plain_log_ticks(*axes_axis) -> None:
