@@ -512,6 +512,13 @@ SETTING_BOUNDS = {
     "sds_g": (0.01, 5.0, "sds_g is S_DS of ASCE 7-16 §11.4.5, the design spectral acceleration at short "
               "periods, 0.01 to about 2.5 g on any mapped site"),
     "roof_floor": (1.0, 200.0, "roof_floor is the roof's floor number, for z/h in ASCE 7-16 eq. 13.3-1"),
+    # costs (assess/costs.py)
+    "discount_rate": (0.0, 0.3, "discount_rate is a real rate per year as a fraction: 0.07 for 7 % "
+                      "(OMB Circular A-94), 0.02 to 0.1 in practice"),
+    "remaining_life_yr": (1.0, 100.0, "remaining_life_yr is the years the action protects the item"),
+    **{f"mitigation_cost_{kind}": (0.0, 1e12, f"mitigation_cost_{kind} is what '{kind}' costs per unit, "
+                                   "0 or more (0: not given)")
+       for kind in ("anchor", "tether", "lock_casters", "restrain", "room", "lower_contents", "relocate")},
 }
 #: Longest text of a text setting (facility, site): it heads the report.
 SETTING_TEXT_MAX_CHARS = 200
@@ -611,7 +618,7 @@ _EQUIPMENT_TYPES = {"id": "str", "name": "str", "room": "str", "floor": "int64",
                     "mass_kg": "float64", "mu": "float64", "mu_static": "float64",
                     "clearance_m": "float64", "cg_height_m": "float64", "anchored": "bool",
                     "quantity": "int64", "consequence": "str", "mu_low": "float64", "mu_high": "float64",
-                    "row": "int64"}
+                    "value": "float64", "mitigation_cost": "float64", "row": "int64"}
 _HAZARD_TYPES = {"level": "str", "level_label": "str", "motion": "str", "all_floors": "bool",
                  "floor": "Int64", "pta_g": "float64", "tp_s": "float64", "vp_m_s": "float64",
                  "pulse": "str", "record_path": "str", "scale": "float64", "record_2_path": "str",

@@ -26,6 +26,7 @@ from markupsafe import Markup
 
 import assess
 from assess.report import figures
+from assess.report.costs import costs_context
 from assess.report.curve import curve_context
 from assess.report.sentences import (
     DASH, action_groups, case_outcomes, changes, cm_interval_text, finite, flag_groups, format_cm, format_percent,
@@ -310,6 +311,7 @@ def report_context(result) -> dict:
         "method_notes": method_notes(summary),
         "changes": changes(result.comparison),
         "curve": curve_context(result),
+        "costs": costs_context(result),
         "stylesheet": Markup(template_text(STYLESHEET_NAME)),  # our own file, not user text
     }
 
