@@ -199,3 +199,45 @@ def test_an_assessment_with_values_gives_the_hand_expected_loss_and_page_one_ran
     assert per_cost == sorted(per_cost, reverse=True) and order == acting["id"].tolist()
     html = render_html(result)
     assert "Where money avoids most loss" in html and "No benefit-cost ratio" in html
+
+
+# ----------------------------------------------------------------- the workbook's columns and settings
+
+def test_value_and_mitigation_cost_are_read_per_item(make_workbook):
+    from assess.inventory import read_workbook
+    from workbooks import good_sheets
+
+    sheets = good_sheets()
+    sheets["equipment"][0].update({"value": 12_000, "mitigation_cost": None})
+    sheets["equipment"][1].update({"value": None, "mitigation_cost": 350.5})
+    sheets["settings"] += [{"key": "currency", "value": "EUR"}, {"key": "discount_rate", "value": 0.03},
+                           {"key": "mitigation_cost_anchor", "value": 900}]
+    inventory = read_workbook(make_workbook(sheets))
+    equipment = inventory.equipment.set_index("id")
+    assert equipment.loc["INC-1", "value"] == 12_000.0 and math.isnan(equipment.loc["INC-1", "mitigation_cost"])
+    assert math.isnan(equipment.loc["FRZ-2", "value"]) and equipment.loc["FRZ-2", "mitigation_cost"] == 350.5
+    assert math.isnan(equipment.loc["BSC-3", "value"])
+    assert (inventory.settings["currency"], inventory.settings["discount_rate"],
+            inventory.settings["mitigation_cost_anchor"]) == ("EUR", 0.03, 900.0)
+
+
+@pytest.mark.parametrize("column, text", [("value", "$12,000"), ("value", -5), ("mitigation_cost", -1)])
+def test_a_bad_amount_is_reported_at_its_cell(make_workbook, column, text):
+    from test_inventory import assert_mentions, only_problem
+    from workbooks import good_sheets
+
+    sheets = good_sheets()
+    sheets["equipment"][0][column] = text
+    problem = only_problem(make_workbook(sheets))
+    assert problem.row == 2
+    assert_mentions(problem, "sheet 'equipment'", f"column '{column}'")
+    assert "plain number" in problem.fix or "not a number" in str(problem)
+
+
+def test_a_discount_rate_in_percent_is_refused(make_workbook):
+    from test_inventory import assert_mentions, only_problem
+    from workbooks import good_sheets
+
+    sheets = good_sheets()
+    sheets["settings"].append({"key": "discount_rate", "value": 7})
+    assert_mentions(only_problem(make_workbook(sheets)), "setting 'discount_rate' is", "0.07 for 7 %")

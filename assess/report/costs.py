@@ -99,17 +99,17 @@ def lead_sentence(summary: pd.DataFrame, settings: dict, has_curve: bool) -> str
     ...                       "expected_annual_loss": [float("nan")] * 2, "expected_annual_loss_after": [float("nan")] * 2,
     ...                       "value": [1000.0, 500.0], "action_kind": ["anchor", "none"]})
     >>> lead_sentence(table, {"currency": "USD"}, False)  # doctest: +NORMALIZE_WHITESPACE
-    'If this earthquake happens, the 3 units with a value are expected to lose USD 200 (USD 100 after the
+    'If this earthquake happens, the 3 freestanding units with a value are expected to lose USD 200 (USD 100 after the
     recommended actions, which cost USD 40 where a cost is given). No benefit-cost ratio: this level is one
     earthquake, not how often it happens; give a hazard curve (--oq-hazard) for one.'
     """
     currency = str(settings.get("currency") or "")
-    valued = pd.to_numeric(summary["value"], errors="coerce").notna()
+    valued = pd.to_numeric(summary["expected_loss"], errors="coerce").notna()  # a value, and analysed
     units = int(pd.to_numeric(summary.loc[valued, "quantity"], errors="coerce").sum())
     loss, after = _total(summary, "expected_loss", valued), _total(summary, "expected_loss_after", valued)
     acting = valued & ~summary["action_kind"].astype(str).isin(NO_ACTION)
     cost = _total(summary, "mitigation_cost", acting)
-    sentence = (f"If this earthquake happens, the {units} unit{'s' if units != 1 else ''} with a value "
+    sentence = (f"If this earthquake happens, the {units} freestanding unit{'s' if units != 1 else ''} with a value "
                 f"{'are' if units != 1 else 'is'} expected to lose {money_text(loss, currency)} "
                 f"({money_text(after, currency)} after the recommended actions, which cost "
                 f"{money_text(cost, currency)} where a cost is given).")
