@@ -199,6 +199,8 @@ def test_an_assessment_with_values_gives_the_hand_expected_loss_and_page_one_ran
     assert per_cost == sorted(per_cost, reverse=True) and order == acting["id"].tolist()
     html = render_html(result)
     assert "Where money avoids most loss" in html and "No benefit-cost ratio" in html
+    costs_block = html.split("Where money avoids most loss")[1].split("</table>")[0]
+    assert costs_block.index('href="#item-TALL"') < costs_block.index('href="#item-SLIDE"')  # 20 before 8.3
 
 
 # ----------------------------------------------------------------- the workbook's columns and settings
@@ -241,3 +243,15 @@ def test_a_discount_rate_in_percent_is_refused(make_workbook):
     sheets = good_sheets()
     sheets["settings"].append({"key": "discount_rate", "value": 7})
     assert_mentions(only_problem(make_workbook(sheets)), "setting 'discount_rate' is", "0.07 for 7 %")
+
+
+def test_page_one_ranks_by_the_ratio_then_the_scenario_ratio_then_priority():
+    nan = math.nan
+    summary = pd.DataFrame({
+        "id": ["P1", "B-low", "B-high", "S", "NONE", "P2"],
+        "action_kind": ["anchor", "anchor", "restrain", "room", "none", "anchor"],
+        "benefit_cost_ratio": [nan, 0.5, 3.0, nan, nan, nan],
+        "loss_avoided_per_cost": [nan, 9.0, 1.0, 2.0, nan, nan],
+        "priority": [2, 5, 6, 4, 1, 3]})
+    # with a ratio (highest first), then with only the scenario's, then by priority; no action: not listed
+    assert ranked(summary)["id"].tolist() == ["B-high", "B-low", "S", "P1", "P2"]

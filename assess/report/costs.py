@@ -58,8 +58,9 @@ def ranked(summary: pd.DataFrame) -> pd.DataFrame:
     return acting.loc[order]
 
 
-def costs_context(result) -> dict | None:
-    """What page 1 shows of costs; None where no item has a ``value`` (nothing changes in the report)."""
+def costs_context(result, anchors: dict | None = None) -> dict | None:
+    """What page 1 shows of costs; None where no item has a ``value`` (nothing changes in the report).
+    ``anchors``: each item's HTML anchor (id -> anchor), to link the rows to the items' blocks."""
     summary = result.summary
     if "value" not in summary or not pd.to_numeric(summary["value"], errors="coerce").notna().any():
         return None
@@ -71,6 +72,7 @@ def costs_context(result) -> dict | None:
         quantity = finite(row.get("quantity"))
         rows.append({
             "rank": rank, "id": text(row.get("id")), "name": text(row.get("name")),
+            "anchor": (anchors or {}).get(text(row.get("id")), ""),
             "quantity": int(quantity) if quantity is not None and quantity > 1 else None,
             "action": ACTION_WORDS.get(str(row.get("action_kind")), text(row.get("action_kind"))),
             "value": money_text(row.get("value")), "cost": money_text(row.get("mitigation_cost")),

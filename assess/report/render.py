@@ -311,7 +311,7 @@ def report_context(result) -> dict:
         "method_notes": method_notes(summary),
         "changes": changes(result.comparison),
         "curve": curve_context(result),
-        "costs": costs_context(result),
+        "costs": costs_context(result, {r["id"]: r["anchor"] for r in rows}),
         "stylesheet": Markup(template_text(STYLESHEET_NAME)),  # our own file, not user text
     }
 
