@@ -16,16 +16,16 @@ Loss model (FEMA P-58 style: damage states, each with the share of the item's va
   :data:`LOSS_RATIO_ROCKING_HARM`.
 
 An earthquake costs the loss of the worst state it causes. The summary gives each mode's probability,
-not their joint one; the states are taken as sequential (FEMA P-58-1 §7.2: P(DS_i) = P(D ≥ ds_i) −
+not their joint one; the states are taken as sequential (FEMA P-58-1: P(DS_i) = P(D ≥ ds_i) −
 P(D ≥ ds_i+1)), each cumulative probability the largest of the modes at or above it
 (:func:`expected_loss_ratio`). That is the smallest expected loss the per-mode probabilities allow (exact
-where the modes nest, e.g. every run that overturns also slid past its room), so the benefit of an
-action is never overstated by the way the modes are combined.
+where the modes nest, e.g. every run that overturns also slid past its room), so the loss avoided by an
+action that holds the item in place is never overstated by the way the modes are combined.
 
 References
 ----------
-FEMA P-58-1 (2018), Seismic Performance Assessment of Buildings, Vol. 1 - Methodology, 2nd ed., ch. 7
-    (damage states and consequence functions).
+FEMA P-58-1 (2018), Seismic Performance Assessment of Buildings, Vol. 1 - Methodology, 2nd ed.
+    (fragility and consequence functions; sequential damage states).
 OMB Circular A-94 (1992), Guidelines and Discount Rates for Benefit-Cost Analysis of Federal Programs,
     §8 and Appendix A (present value of a uniform series; 7 % real discount rate).
 FEMA Benefit-Cost Analysis: benefits are the present value of the avoided annual losses over the
@@ -90,7 +90,7 @@ def present_value_factor(discount_rate: float, years: float) -> float:
 def expected_loss_ratio(p_overturn: float, p_beyond_clearance: float, p_rocking_harm: float = 0.0) -> float:
     """Expected share of the value lost, from the probabilities of each mode (or their annual rates).
 
-    Sequential damage states, worst first (FEMA P-58-1 §7.2), each cumulative probability the largest of
+    Sequential damage states, worst first (FEMA P-58-1), each cumulative probability the largest of
     the modes at or above it:
 
     .. math::

@@ -83,7 +83,8 @@ def costs_context(result, anchors: dict | None = None) -> dict | None:
             "note": text(row.get("cost_note")),
         })
     return {"currency": currency or "the workbook's currency", "has_curve": has_curve, "rows": rows,
-            "lead": lead_sentence(summary, settings, has_curve), "basis": basis_sentence(settings, has_curve),
+            "lead": lead_sentence(summary, settings, has_curve),
+            "basis": basis_sentence(settings, has_curve, "p_overturn_after" in summary),
             "ratio_heading": "Benefit / cost" if has_curve else "Loss avoided per 1 spent"}
 
 
@@ -129,8 +130,9 @@ def lead_sentence(summary: pd.DataFrame, settings: dict, has_curve: bool) -> str
             f"and avoid {money_text(avoided, currency)} of expected loss a year.")
 
 
-def basis_sentence(settings: dict, has_curve: bool) -> str:
-    """How the amounts are computed, in one paragraph (the loss model, and the discounting with a curve).
+def basis_sentence(settings: dict, has_curve: bool, own_after: bool = False) -> str:
+    """How the amounts are computed, in one paragraph (the loss model, and the discounting with a curve);
+    ``own_after``: the summary gives each action's probabilities after it (``p_overturn_after``).
 
     >>> basis_sentence({"discount_rate": 0.07, "remaining_life_yr": 15.0}, True).split("avoided, ")[-1]
     'over 15 years at 7 % a year (present value factor 9.11, as in FEMA benefit-cost analysis), divided by its cost.'
@@ -138,8 +140,10 @@ def basis_sentence(settings: dict, has_curve: bool) -> str:
     text_ = (f"Amounts per unit. Expected loss: the item's value times the share its worst outcome costs "
              f"(overturning {LOSS_RATIO_OVERTURN:.0%}, sliding past its room {LOSS_RATIO_BEYOND_CLEARANCE:.0%}, "
              f"rocking that harms it {LOSS_RATIO_ROCKING_HARM:.0%}), weighed by its chances under this "
-             f"earthquake; after: with the chances the action leaves (none for anchoring, tethering, "
-             f"restraining or locking casters).")
+             "earthquake; after: with the chances the action leaves"
+             + (" (its what-if)." if own_after else
+                " (none for anchoring, tethering, restraining or locking casters; for giving room, the chance "
+                "of sliding past the room given)."))
     if not has_curve:
         return text_ + (" Loss avoided per 1 spent: the expected loss the action avoids if this earthquake "
                         "happens once, over its cost.")
