@@ -242,7 +242,9 @@ def test_a_discount_rate_in_percent_is_refused(make_workbook):
 
     sheets = good_sheets()
     sheets["settings"].append({"key": "discount_rate", "value": 7})
-    assert_mentions(only_problem(make_workbook(sheets)), "setting 'discount_rate' is", "0.07 for 7 %")
+    problem = only_problem(make_workbook(sheets))
+    assert_mentions(problem, "setting 'discount_rate' is", "0.07 for 7 %", "use the default 0.07.")
+    assert "Konstantinidis" not in str(problem)  # the paper gives regression constants, not discount rates
 
 
 def test_page_one_ranks_by_the_ratio_then_the_scenario_ratio_then_priority():

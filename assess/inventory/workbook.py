@@ -520,6 +520,8 @@ SETTING_BOUNDS = {
                                    "0 or more (0: not given)")
        for kind in ("anchor", "tether", "lock_casters", "restrain", "room", "lower_contents", "relocate")},
 }
+#: The settings whose defaults are the paper's (the others cite their own source in defaults.toml).
+_REGRESSION_SETTINGS = ("zeta", "eta", "sigma", "im_min", "im_max")
 #: Longest text of a text setting (facility, site): it heads the report.
 SETTING_TEXT_MAX_CHARS = 200
 _ORDERED_SETTINGS = (("risk_pf_moderate", "risk_pf_high"), ("im_min", "im_max"))
@@ -581,8 +583,8 @@ def _check_settings(merged: dict, user: dict, header: Header | None, report: She
             bad.add(key)
             report.at(user[key][1], header, f"setting '{key}' is {schema.quote(merged[key])}; "
                       f"it lies between {low:g} and {high:g}: {why}.",
-                      f"correct it, or delete the row to use the default {defaults[key]:g} "
-                      "(Konstantinidis & Makris 2010).")
+                      f"correct it, or delete the row to use the default {defaults[key]:g}"
+                      + (" (Konstantinidis & Makris 2010)." if key in _REGRESSION_SETTINGS else "."))
     for key in _ORDERED_SETTINGS[0]:
         if key in user and not 0 < merged[key] < 1:
             bad.add(key)
