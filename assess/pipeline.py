@@ -9,6 +9,8 @@
 6. decisions: risk class, action, priority, anchorage, what-if, flags (:mod:`assess.decisions`)
 7. result: the summary and motion tables in an :class:`~assess.result.AssessmentResult`
    (:mod:`assess.assessment.summary`)
+8. costs: expected loss, expected annual loss and the actions' benefit-cost ratios where the equipment
+   gives a ``value`` (:mod:`assess.costs`)
 
 The outputs (CSV, xlsx, report) are made from the result by :mod:`assess.output`.
 """
@@ -17,7 +19,9 @@ from __future__ import annotations
 import functools
 from typing import Callable
 
-from assess import decisions
+import pandas as pd
+
+from assess import costs, decisions
 from assess.anchorage import anchorage_site
 from assess.assessment import cases as case_stage
 from assess.assessment import demand as demand_stage
@@ -119,6 +123,9 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     if curve is not None:
         summary = summary.merge(curve.table, on="id", how="left")
         summary_columns = SUMMARY_COLUMNS + CURVE_COLUMNS
+    # 8. costs: expected losses and the actions' benefit-cost ratios, where the equipment gives a value
+    summary = pd.concat([summary, costs.cost_table(summary, inventory.equipment, settings, curve is not None)],
+                        axis=1)
     return AssessmentResult(
         workbook=inventory.path, facility=str(settings.get("facility", "")),
         site=str(settings.get("site", "")), level=level.level, level_label=level.level_label,

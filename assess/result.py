@@ -6,6 +6,7 @@ from pathlib import Path
 
 import pandas as pd
 
+from assess.costs import COST_COLUMNS
 from assess.hazard.levels import HazardLevel
 
 #: Columns of ``summary.csv`` in order, each documented in docs/outputs.md (tests/test_docs.py).
@@ -23,7 +24,7 @@ SUMMARY_COLUMNS = [
     "anchor_shear_omega_kip", "anchor_tension_omega_kn", "anchor_tension_omega_kip", "anchor_basis", "what_if",
     "demand_planar", "mu_low", "mu_high", "risk_mu_low", "risk_mu_high", "p_beyond_clearance_mu_low",
     "p_beyond_clearance_mu_high", "mu_range_note",
-]
+] + COST_COLUMNS  # what failures cost and actions buy (assess/costs.py); empty where no value is given
 
 #: Columns of ``motions.csv`` in order, each documented in docs/outputs.md (tests/test_docs.py).
 MOTION_COLUMNS = [

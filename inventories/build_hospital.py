@@ -92,6 +92,18 @@ for _row in EQUIPMENT:  # after consequence, before notes
     _row["component_type"] = COMPONENT_TYPES.get(_row["id"])
     _row["notes"] = _notes
 
+#: What each item's failure costs per unit (replacement, contents, downtime) and, for some, what its action costs
+#: per unit, in US dollars: our estimates for the example, not quotes (the settings give the other actions' costs).
+COSTS = {
+    "ED-0-01": (25_000, None), "ED-0-02": (15_000, None), "ED-0-03": (8_000, None), "ED-0-04": (20_000, None),
+    "LB-1-01": (150_000, 1_200), "LB-1-02": (120_000, None), "LB-1-03": (250_000, 2_500), "LB-1-04": (10_000, None),
+    "RX-2-01": (60_000, None), "RX-2-02": (40_000, None), "RX-2-03": (30_000, None),
+    "IT-3-01": (200_000, 3_000), "IT-3-02": (50_000, None), "PT-3-03": (2_000, None),
+    "MP-4-01": (40_000, None), "MP-4-02": (15_000, None), "MP-4-03": (80_000, None),
+}
+for row in EQUIPMENT:
+    row["value"], row["mitigation_cost"] = COSTS[row["id"]]
+
 #: The site as a hazard lookup gives it (invented values typical of a coastal California site).
 SITE = [
     ("code", "ASCE 7-22"), ("sds_g", 1.2), ("sd1_g", 0.7), ("tl_s", 8), ("site_class", "D"),
@@ -104,6 +116,11 @@ BUILDING = [
 SETTINGS = [
     ("facility", "Sample community hospital (4 storeys)"),
     ("site", "Sample site (invented)"),
+    # costs per unit of each kind of action where an item gives none (our estimates, in US dollars)
+    ("currency", "USD"),
+    ("mitigation_cost_anchor", 1_500), ("mitigation_cost_restrain", 800), ("mitigation_cost_tether", 300),
+    ("mitigation_cost_lock_casters", 150), ("mitigation_cost_room", 500), ("mitigation_cost_lower_contents", 200),
+    ("mitigation_cost_relocate", 2_000),
 ]
 
 

@@ -26,7 +26,8 @@ class Inventory:
         ``anchored`` (bool), ``quantity`` (int, 1 when not given), ``consequence`` (str, one of
         :data:`~assess.inventory.schema.CONSEQUENCES`, ``ordinary`` when not given),
         ``mu_low``, ``mu_high`` (the range μ may take, NaN when not given; both or neither,
-        ``mu_low <= mu <= mu_high``), ``row`` (int, the Excel row the item came from).
+        ``mu_low <= mu <= mu_high``), ``value`` and ``mitigation_cost`` (per unit, in the settings'
+        ``currency``, NaN when not given; :mod:`assess.costs`), ``row`` (int, the Excel row the item came from).
     hazard : pandas.DataFrame
         One row per motion and floor: ``level`` (canonical name, e.g.
         ``2in50``, or a label such as ``DE`` as first written: every spelling

@@ -27,6 +27,8 @@ FREE_TEXT_COLUMNS = ("notes", "note", "source", "comment")
 
 _TRUE = {"yes", "y", "true", "1"}
 _FALSE = {"no", "n", "false", "0"}
+_MONEY_HINT = ("an amount per unit in the settings' currency, 0 or more, as a plain number (12000, not "
+               "'$12,000'); leave it empty where not known")
 _FLOOR_HINT = "floors are numbered 0 (ground), 1, 2, ... and -1, -2, ... below ground"
 _MU_HINT = ("a friction coefficient is a plain number, typically 0.2 to 0.7 "
             "(write 0.3, not 30 %); measure it with a slow pull test if unsure")
@@ -147,6 +149,10 @@ EQUIPMENT = SheetSpec("equipment", (
     # the range mu may take (e.g. the paper's best-fit and slow-pull values); both or neither
     Column("mu_low", "number", low=0.01, high=1.5, positive=True, hint=_MU_HINT),
     Column("mu_high", "number", low=0.01, high=1.5, positive=True, hint=_MU_HINT),
+    # what the item's failure costs and what its recommended action costs, per unit, in the settings'
+    # currency (assess/costs.py); empty: no cost for that item
+    Column("value", "number", default=math.nan, low=0.0, hint=_MONEY_HINT),
+    Column("mitigation_cost", "number", default=math.nan, low=0.0, hint=_MONEY_HINT),
 ), subject="a piece of equipment")
 
 HAZARD = SheetSpec("hazard", (

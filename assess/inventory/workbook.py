@@ -512,7 +512,16 @@ SETTING_BOUNDS = {
     "sds_g": (0.01, 5.0, "sds_g is S_DS of ASCE 7-16 §11.4.5, the design spectral acceleration at short "
               "periods, 0.01 to about 2.5 g on any mapped site"),
     "roof_floor": (1.0, 200.0, "roof_floor is the roof's floor number, for z/h in ASCE 7-16 eq. 13.3-1"),
+    # costs (assess/costs.py)
+    "discount_rate": (0.0, 0.3, "discount_rate is a real rate per year as a fraction: 0.07 for 7 % "
+                      "(OMB Circular A-94), 0.02 to 0.1 in practice"),
+    "remaining_life_yr": (1.0, 100.0, "remaining_life_yr is the years the action protects the item"),
+    **{f"mitigation_cost_{kind}": (0.0, 1e12, f"mitigation_cost_{kind} is what '{kind}' costs per unit, "
+                                   "0 or more (0: not given)")
+       for kind in ("anchor", "tether", "lock_casters", "restrain", "room", "lower_contents", "relocate")},
 }
+#: The settings whose defaults are the paper's (the others cite their own source in defaults.toml).
+_REGRESSION_SETTINGS = ("zeta", "eta", "sigma", "im_min", "im_max")
 #: Longest text of a text setting (facility, site): it heads the report.
 SETTING_TEXT_MAX_CHARS = 200
 _ORDERED_SETTINGS = (("risk_pf_moderate", "risk_pf_high"), ("im_min", "im_max"))
@@ -574,8 +583,8 @@ def _check_settings(merged: dict, user: dict, header: Header | None, report: She
             bad.add(key)
             report.at(user[key][1], header, f"setting '{key}' is {schema.quote(merged[key])}; "
                       f"it lies between {low:g} and {high:g}: {why}.",
-                      f"correct it, or delete the row to use the default {defaults[key]:g} "
-                      "(Konstantinidis & Makris 2010).")
+                      f"correct it, or delete the row to use the default {defaults[key]:g}"
+                      + (" (Konstantinidis & Makris 2010)." if key in _REGRESSION_SETTINGS else "."))
     for key in _ORDERED_SETTINGS[0]:
         if key in user and not 0 < merged[key] < 1:
             bad.add(key)
@@ -611,7 +620,7 @@ _EQUIPMENT_TYPES = {"id": "str", "name": "str", "room": "str", "floor": "int64",
                     "mass_kg": "float64", "mu": "float64", "mu_static": "float64",
                     "clearance_m": "float64", "cg_height_m": "float64", "anchored": "bool",
                     "quantity": "int64", "consequence": "str", "component_type": "str", "ip": "float64",
-                    "mu_low": "float64", "mu_high": "float64",
+                    "mu_low": "float64", "mu_high": "float64", "value": "float64", "mitigation_cost": "float64",
                     "row": "int64"}
 _HAZARD_TYPES = {"level": "str", "level_label": "str", "motion": "str", "all_floors": "bool",
                  "floor": "Int64", "pta_g": "float64", "tp_s": "float64", "vp_m_s": "float64",

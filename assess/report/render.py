@@ -29,6 +29,7 @@ from assess.anchorage.item import anchorage_sentence
 from assess.anchorage.method import anchorage_method
 from assess.quantity_text import system_of
 from assess.report import figures
+from assess.report.costs import costs_context
 from assess.report.curve import curve_context
 from assess.report.sentences import (
     DASH, action_groups, case_outcomes, changes, cm_interval_text, finite, flag_groups, format_cm, format_percent,
@@ -313,6 +314,7 @@ def report_context(result) -> dict:
         "method_notes": method_notes(summary),
         "changes": changes(result.comparison),
         "curve": curve_context(result),
+        "costs": costs_context(result, {r["id"]: r["anchor"] for r in rows}),
         "stylesheet": Markup(template_text(STYLESHEET_NAME)),  # our own file, not user text
     }
 

@@ -58,6 +58,11 @@ def _number_format(column: str) -> str | None:
         return "0.0%"
     if column.startswith("annual_rate_"):
         return "0.00E+00"
+    if column in ("value", "mitigation_cost", "expected_loss", "expected_loss_after", "expected_annual_loss",
+                  "expected_annual_loss_after"):
+        return "#,##0.00"
+    if column in ("benefit_cost_ratio", "loss_avoided_per_cost"):
+        return "0.00"
     if column.endswith(("_cm", "_in")):
         return "0.0"
     if column.endswith(("_kn", "_knm", "_kip", "_kip_ft")):  # the anchorage forces and moments

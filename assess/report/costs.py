@@ -1,0 +1,156 @@
+"""Page 1's account of costs (``templates/_costs.html.j2``): the recommended actions ranked by their
+benefit-cost ratio where the result has one, and by priority otherwise, from the cost columns of the
+summary (:mod:`assess.costs`).
+
+Every sentence is made here from the result's numbers; the template only places them. Without a
+``value`` for any item there is nothing to show (None), and the report is as it was.
+"""
+from __future__ import annotations
+
+import pandas as pd
+
+from assess.costs import (
+    LOSS_RATIO_BEYOND_CLEARANCE, LOSS_RATIO_OVERTURN, LOSS_RATIO_ROCKING_HARM, NO_ACTION, present_value_factor,
+)
+from assess.report.sentences import DASH, finite, format_significant, text
+
+#: What each kind of action is called in the table.
+ACTION_WORDS = {"anchor": "anchor", "tether": "tether", "lock_casters": "lock casters", "restrain": "restrain",
+                "room": "give room", "lower_contents": "lower contents", "relocate": "relocate"}
+
+
+def money_text(amount, currency: str = "") -> str:
+    """An amount as a reader budgets it: whole units with thousands separators from 100 up, two
+    significant digits below; NaN as "–".
+
+    >>> money_text(12345.6, "USD"), money_text(3.456), money_text(0.0042, "EUR"), money_text(float("nan"))
+    ('USD 12,346', '3.5', 'EUR 0.0042', '–')
+    """
+    number = finite(amount)
+    if number is None:
+        return DASH
+    shown = f"{number:,.0f}" if abs(number) >= 100 else format_significant(number, 2)
+    return f"{currency} {shown}" if currency else shown
+
+
+def ratio_text(ratio) -> str:
+    """A benefit-cost ratio (or loss avoided per unit cost) to two significant digits; NaN as "–".
+
+    >>> ratio_text(3.456), ratio_text(0.04949), ratio_text(float("nan"))
+    ('3.5', '0.049', '–')
+    """
+    return format_significant(ratio, 2)
+
+
+def ranked(summary: pd.DataFrame) -> pd.DataFrame:
+    """The items with an action to take: those with a ``benefit_cost_ratio`` first, highest first; then
+    those with a ``loss_avoided_per_cost`` (at the level, without a hazard curve), highest first; then the
+    rest by ``priority``; ties by id."""
+    acting = summary[~summary["action_kind"].astype(str).isin(NO_ACTION)]
+    bcr = pd.to_numeric(acting["benefit_cost_ratio"], errors="coerce")
+    per_cost = pd.to_numeric(acting["loss_avoided_per_cost"], errors="coerce")
+    keys = pd.DataFrame({
+        "tier": bcr.isna().astype(int) + (bcr.isna() & per_cost.isna()).astype(int),
+        "ratio": -bcr.fillna(per_cost).fillna(0.0),
+        "priority": pd.to_numeric(acting["priority"], errors="coerce").fillna(len(summary) + 1),
+        "id": acting["id"].astype(str)}, index=acting.index)
+    order = keys.sort_values(["tier", "ratio", "priority", "id"], kind="mergesort").index
+    return acting.loc[order]
+
+
+def costs_context(result, anchors: dict | None = None) -> dict | None:
+    """What page 1 shows of costs; None where no item has a ``value`` (nothing changes in the report).
+    ``anchors``: each item's HTML anchor (id -> anchor), to link the rows to the items' blocks."""
+    summary = result.summary
+    if "value" not in summary or not pd.to_numeric(summary["value"], errors="coerce").notna().any():
+        return None
+    settings = result.settings or {}
+    currency = str(settings.get("currency") or "")
+    has_curve = getattr(result, "curve_risk", None) is not None
+    rows = []
+    for rank, (_, row) in enumerate(ranked(summary).iterrows(), start=1):
+        quantity = finite(row.get("quantity"))
+        rows.append({
+            "rank": rank, "id": text(row.get("id")), "name": text(row.get("name")),
+            "anchor": (anchors or {}).get(text(row.get("id")), ""),
+            "quantity": int(quantity) if quantity is not None and quantity > 1 else None,
+            "action": ACTION_WORDS.get(str(row.get("action_kind")), text(row.get("action_kind"))),
+            "value": money_text(row.get("value")), "cost": money_text(row.get("mitigation_cost")),
+            "loss": money_text(row.get("expected_loss")), "loss_after": money_text(row.get("expected_loss_after")),
+            "annual_loss": money_text(row.get("expected_annual_loss")),
+            "annual_loss_after": money_text(row.get("expected_annual_loss_after")),
+            "ratio": ratio_text(row.get("benefit_cost_ratio") if has_curve else row.get("loss_avoided_per_cost")),
+            "note": text(row.get("cost_note")),
+        })
+    return {"currency": currency or "the workbook's currency", "has_curve": has_curve, "rows": rows,
+            "lead": lead_sentence(summary, settings, has_curve),
+            "basis": basis_sentence(settings, has_curve, "p_overturn_after" in summary),
+            "ratio_heading": "Benefit / cost" if has_curve else "Loss avoided per 1 spent"}
+
+
+def _total(summary: pd.DataFrame, column: str, where=None) -> float:
+    """Sum of ``column`` times ``quantity`` over the rows (``where``: a mask), counting every unit."""
+    values = pd.to_numeric(summary[column], errors="coerce") * pd.to_numeric(summary["quantity"], errors="coerce")
+    return float(values[where].sum() if where is not None else values.sum())
+
+
+def lead_sentence(summary: pd.DataFrame, settings: dict, has_curve: bool) -> str:
+    """Page 1's sentence on costs, counting every unit.
+
+    >>> table = pd.DataFrame({"quantity": [1, 2], "expected_loss": [100.0, 50.0], "expected_loss_after": [0.0, 50.0],
+    ...                       "mitigation_cost": [40.0, float("nan")], "benefit_cost_ratio": [float("nan")] * 2,
+    ...                       "expected_annual_loss": [float("nan")] * 2, "expected_annual_loss_after": [float("nan")] * 2,
+    ...                       "value": [1000.0, 500.0], "action_kind": ["anchor", "none"]})
+    >>> lead_sentence(table, {"currency": "USD"}, False)  # doctest: +NORMALIZE_WHITESPACE
+    'If this earthquake happens, the 3 freestanding units with a value are expected to lose USD 200 (USD 100 after the
+    recommended actions, which cost USD 40 where a cost is given). No benefit-cost ratio: this level is one
+    earthquake, not how often it happens; give a hazard curve (--oq-hazard) for one.'
+    """
+    currency = str(settings.get("currency") or "")
+    valued = pd.to_numeric(summary["expected_loss"], errors="coerce").notna()  # a value, and analysed
+    units = int(pd.to_numeric(summary.loc[valued, "quantity"], errors="coerce").sum())
+    loss, after = _total(summary, "expected_loss", valued), _total(summary, "expected_loss_after", valued)
+    acting = valued & ~summary["action_kind"].astype(str).isin(NO_ACTION)
+    cost = _total(summary, "mitigation_cost", acting)
+    sentence = (f"If this earthquake happens, the {units} freestanding unit{'s' if units != 1 else ''} with a value "
+                f"{'are' if units != 1 else 'is'} expected to lose {money_text(loss, currency)} "
+                f"({money_text(after, currency)} after the recommended actions, which cost "
+                f"{money_text(cost, currency)} where a cost is given).")
+    if not has_curve:
+        return (sentence + " No benefit-cost ratio: this level is one earthquake, not how often it happens; "
+                "give a hazard curve (--oq-hazard) for one.")
+    bcr = pd.to_numeric(summary["benefit_cost_ratio"], errors="coerce")
+    worth = bcr >= 1.0
+    n_worth = int(worth.sum())
+    if not n_worth:
+        return sentence + " Over the hazard curve, no action has a benefit-cost ratio of 1 or more."
+    avoided = _total(summary, "expected_annual_loss", worth) - _total(summary, "expected_annual_loss_after", worth)
+    return (sentence + f" Over the hazard curve, the {n_worth} action{'s' if n_worth != 1 else ''} with a "
+            f"benefit-cost ratio of 1 or more cost {money_text(_total(summary, 'mitigation_cost', worth), currency)} "
+            f"and avoid {money_text(avoided, currency)} of expected loss a year.")
+
+
+def basis_sentence(settings: dict, has_curve: bool, own_after: bool = False) -> str:
+    """How the amounts are computed, in one paragraph (the loss model, and the discounting with a curve);
+    ``own_after``: the summary gives each action's probabilities after it (``p_overturn_after``).
+
+    >>> basis_sentence({"discount_rate": 0.07, "remaining_life_yr": 15.0}, True).split("avoided, ")[-1]
+    'over 15 years at 7 % a year (present value factor 9.11, as in FEMA benefit-cost analysis), divided by its cost.'
+    """
+    text_ = (f"Amounts per unit. Expected loss: the item's value times the share its worst outcome costs "
+             f"(overturning {LOSS_RATIO_OVERTURN:.0%}, sliding past its room {LOSS_RATIO_BEYOND_CLEARANCE:.0%}, "
+             f"rocking that harms it {LOSS_RATIO_ROCKING_HARM:.0%}), weighed by its chances under this "
+             "earthquake; after: with the chances the action leaves"
+             + (" (its what-if)." if own_after else
+                " (none for anchoring, tethering, restraining or locking casters; for giving room, the chance "
+                "of sliding past the room given)."))
+    if not has_curve:
+        return text_ + (" Loss avoided per 1 spent: the expected loss the action avoids if this earthquake "
+                        "happens once, over its cost.")
+    rate, years = float(settings["discount_rate"]), float(settings["remaining_life_yr"])
+    return text_ + (f" Annual loss: the same shares weighed by the yearly rates of overturning and of sliding "
+                    f"past the room over the hazard curve. Benefit / cost: the annual loss avoided, over "
+                    f"{years:g} years at {100 * rate:g} % a year (present value factor "
+                    f"{present_value_factor(rate, years):.2f}, as in FEMA benefit-cost analysis), divided by its "
+                    "cost.")
+
