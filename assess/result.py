@@ -21,6 +21,8 @@ SUMMARY_COLUMNS = [
     "priority_score", "anchor_force_kn", "anchor_moment_knm", "anchor_tension_kn", "anchor_basis", "what_if",
     "demand_planar", "mu_low", "mu_high", "risk_mu_low", "risk_mu_high", "p_beyond_clearance_mu_low",
     "p_beyond_clearance_mu_high", "mu_range_note",
+    "p_rocking_harm", "p_rocking_harm_low", "p_rocking_harm_high", "performance_objective", "risk_reason",
+    "regression_applies", "regression_note",
 ]
 
 #: Columns of ``motions.csv`` in order, each documented in docs/outputs.md (tests/test_docs.py).

@@ -512,10 +512,17 @@ SETTING_BOUNDS = {
     "sds_g": (0.01, 5.0, "sds_g is S_DS of ASCE 7-16 §11.4.5, the design spectral acceleration at short "
               "periods, 0.01 to about 2.5 g on any mapped site"),
     "roof_floor": (1.0, 200.0, "roof_floor is the roof's floor number, for z/h in ASCE 7-16 eq. 13.3-1"),
+    "rocking_harm_theta_over_alpha": (0.01, 0.99, "rocking_harm_theta_over_alpha is the peak rotation, as a "
+                                      "share of the tipping angle alpha, from which rocking that does not "
+                                      "overturn harms the item or its contents; at 1 the item overturns"),
 }
 #: Longest text of a text setting (facility, site): it heads the report.
 SETTING_TEXT_MAX_CHARS = 200
-_ORDERED_SETTINGS = (("risk_pf_moderate", "risk_pf_high"), ("im_min", "im_max"))
+_ORDERED_SETTINGS = (("risk_pf_moderate", "risk_pf_high"), ("im_min", "im_max"),
+                     ("risk_overturn_moderate", "risk_overturn_high"))
+#: Settings that are probability thresholds (strictly between 0 and 1).
+_PROBABILITY_SETTINGS = ("risk_pf_moderate", "risk_pf_high", "risk_overturn_moderate", "risk_overturn_high",
+                         "risk_rocking_moderate")
 
 
 def _read_settings(table: Table, defaults: dict, report: SheetReport) -> dict:
@@ -576,7 +583,7 @@ def _check_settings(merged: dict, user: dict, header: Header | None, report: She
                       f"it lies between {low:g} and {high:g}: {why}.",
                       f"correct it, or delete the row to use the default {defaults[key]:g} "
                       "(Konstantinidis & Makris 2010).")
-    for key in _ORDERED_SETTINGS[0]:
+    for key in _PROBABILITY_SETTINGS:
         if key in user and not 0 < merged[key] < 1:
             bad.add(key)
             report.at(user[key][1], header, f"setting '{key}' is {schema.quote(merged[key])}; "
