@@ -108,7 +108,9 @@ def governing_demand(cases: pd.DataFrame, runs: pd.DataFrame, constants: Regress
     cases : DataFrame
         One row per item × motion × direction with ``id``, ``motion_key``,
         ``direction``, ``demand_source`` (:func:`motion_sources`), ``pta_g``,
-        ``tp_s``, ``im``, ``mode``, ``clearance_m``, ``pulse_share``.
+        ``tp_s``, ``im``, ``mode``, ``clearance_m``, ``pulse_share``, ``mu_static`` and ``b_over_h``
+        (an item with μ_s < b/h in every case cannot uplift: its chances of overturning and of rocking
+        harm are then exactly 0, without an interval).
     runs : DataFrame
         One row per case × history: ``case`` (row of ``cases``),
         ``realization``, ``sliding_max_cm``, ``overturned``, ``theta_max_over_alpha``.
