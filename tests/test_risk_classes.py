@@ -205,6 +205,8 @@ def test_a_small_workbook_where_rocking_alone_is_never_high(tmp_path):
         assert row["p_overturn"] == 0.0 and row["mode"] in ("rock", "slide-rock"), (item_id, row["mode"])
         assert row["p_rocking_harm"] == pytest.approx(harm[floor]), item_id
         assert CLASS_ORDER.index(row["risk"]) < CLASS_ORDER.index("high"), (item_id, row["risk"])
+        # it uplifts: the regression (pure sliding) does not apply and says why
+        assert not row["regression_applies"] and "the item uplifts" in row["regression_note"], item_id
     assert summary.loc["CRIT", "risk"] == "moderate"  # critical: 25 % >= risk_rocking_moderate
     assert summary.loc["ORD", "risk"] == "low"  # ordinary: rocking that stays upright endangers nobody
     assert summary.loc["FRIDGE", "risk"] == "low"  # rocks to ~0.02 alpha: the old rule made it high
