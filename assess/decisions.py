@@ -26,7 +26,7 @@ from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
 from assess.mechanics.modes import ROCK, SLIDE_ROCK
 from assess.result import Flag
 from assess.risk_classes import (
-    Chances, classify_risk, performance_objective, risk_range, risk_reason, rocking_harm_counts,
+    Chances, classify_risk, deciding_chance, performance_objective, risk_range, risk_reason, rocking_harm_counts,
 )
 
 UPLIFT_MODES = (ROCK, SLIDE_ROCK)
@@ -99,7 +99,7 @@ def mu_range_decision(end: pd.Series, risk: str, demand_note: str, consequence: 
     chances = {side: Chances(float(end[f"p_overturn_{side}"]), float(end[f"p_beyond_clearance_{side}"]),
                              float(end[f"p_rocking_harm_{side}"])) for side in ("low", "high")}
     classes = {side: classify_risk(chances[side], consequence, settings) for side in ("low", "high")}
-    why = {side: risk_reason(chances[side], consequence, settings).split(": ", 1)[1] for side in ("low", "high")}
+    why = {side: deciding_chance(chances[side], consequence, settings) for side in ("low", "high")}
     low, high = float(end["mu_low"]), float(end["mu_high"])
     sentence = mu_dependence_sentence(end.name, low, high, risk, classes["low"], classes["high"],
                                       why["low"], why["high"])
@@ -111,7 +111,8 @@ def mu_range_decision(end: pd.Series, risk: str, demand_note: str, consequence: 
 
 def decide_item(item, row: dict, uplift: bool, settings: dict) -> dict:
     """The decisions for one freestanding item from its governing demand ``row`` (a dict holding
-    ``p_beyond_clearance``, ``p_overturn``, ``p_rocking_harm`` and their intervals, ``demand_room_cm``, ``clearance_cm``,
+    ``p_beyond_clearance``, ``p_overturn``, ``p_rocking_harm`` and their intervals, ``demand_room_cm``,
+    ``clearance_cm``,
     ``consequence``, ``theta_max_over_alpha``, ``suite_motions``, ``suite_histories``) and whether it
     uplifts under any motion (``uplift``).
 

@@ -152,6 +152,25 @@ def risk_reason(chances: Chances, consequence: str, settings: dict) -> str:
     return text
 
 
+def deciding_chance(chances: Chances, consequence: str, settings: dict) -> str:
+    """The one chance that decides the class, in a few words: the largest of those at the item's class
+    (for a low item, the largest chance that counts for it).
+
+    >>> s = {"risk_overturn_high": 0.1, "risk_overturn_moderate": 0.025, "risk_pf_high": 0.5,
+    ...      "risk_pf_moderate": 0.1, "risk_rocking_moderate": 0.1}
+    >>> deciding_chance(Chances(0.0, 0.69, 0.0), "critical", s), deciding_chance(Chances(0.0, 0.004, 0.0), "critical", s)
+    ('69% chance of sliding past its room', '<1% chance of sliding past its room')
+    """
+    classes = mode_classes(chances, consequence, settings)
+    risk = max(classes.values(), key=CLASS_ORDER.index)
+    values = {"overturn": chances.overturn, "beyond_clearance": chances.beyond_clearance,
+              "rocking_harm": chances.rocking_harm}
+    candidates = [mode for mode in MODE_WORDS if classes[mode] == risk
+                  and (mode != "rocking_harm" or rocking_harm_counts(consequence))]
+    mode = max(candidates, key=lambda m: values[m])  # max keeps the first of equals: overturning first
+    return f"{percent_text(values[mode])} chance of {MODE_WORDS[mode]}"
+
+
 def risk_range(risk: str, classes: set) -> str:
     """The classes the 90 % intervals of the item's chances span, when they span more than ``risk``
     (``classes``: :func:`classify_risk` at the lower and at the upper ends of every interval).

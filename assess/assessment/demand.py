@@ -66,7 +66,8 @@ class ItemDemand:
     uplift: dict
 
 
-def item_rows(equipment: pd.DataFrame, cases: pd.DataFrame, demand: Demand, constants: RegressionConstants) -> ItemDemand:
+def item_rows(equipment: pd.DataFrame, cases: pd.DataFrame, demand: Demand,
+              constants: RegressionConstants) -> ItemDemand:
     """Each freestanding item's demand row (:class:`ItemDemand`), ``cases`` those at the workbook's μ.
 
     ``mode`` is the governing demand's (``demand_mode``: the most severe mode any run of the suite reaches,
