@@ -24,6 +24,7 @@ from assess.fragility.friction_range import mu_dependence_sentence
 from assess.fragility.regression import RegressionConstants
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
 from assess.mechanics.modes import ROCK, SLIDE_ROCK
+from assess.quantity_text import percent_text
 from assess.result import Flag
 from assess.risk_classes import (
     Chances, classify_risk, deciding_chance, performance_objective, risk_range, risk_reason, rocking_harm_counts,
@@ -176,9 +177,11 @@ def suite_share_text(probability: float, row: dict) -> str:
     if histories == motions:
         count = probability * motions
         if abs(count - round(count)) > 1e-9:  # runs weighted over a range of mu
-            return f"a weighted {probability:.0%} of its {motions} motion{'s' if motions != 1 else ''} over its range of mu"
+            return (f"a weighted {percent_text(probability)} of its {motions} motion{'s' if motions != 1 else ''} "
+                    "over its range of mu")
         return f"{int(round(count))} of its {motions} motion{'s' if motions != 1 else ''}"
-    return f"{probability:.0%} of its {histories} simulated histories ({motions} motion{'s' if motions != 1 else ''})"
+    return (f"{percent_text(probability)} of its {histories} simulated histories "
+            f"({motions} motion{'s' if motions != 1 else ''})")
 
 
 def what_if(row: dict, settings: dict) -> str:
