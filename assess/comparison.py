@@ -91,7 +91,7 @@ def compare_summaries(previous: pd.DataFrame, current: pd.DataFrame) -> pd.DataF
             delta = RISK_ORDER.get(str(risk_a), 0) - RISK_ORDER.get(str(risk_b), 0)
             change = "up" if delta > 0 else "down" if delta < 0 else "same"
         reasons = [_moved(record.get(f"{column}_before"), record.get(f"{column}_after"), label, fmt)
-                   for column, label, fmt in COMPARED]
+                   for column, label, fmt in COMPARED if column in previous and column in current]
         name = record.get("name_after")
         row = {"id": item_id, "name": name if isinstance(name, str) else record.get("name_before"),
                "risk_before": "" if pd.isna(risk_b) else risk_b, "risk_after": "" if pd.isna(risk_a) else risk_a,

@@ -212,3 +212,15 @@ def test_a_small_workbook_where_rocking_alone_is_never_high(tmp_path):
     assert summary.loc["FRIDGE", "risk"] == "low"  # rocks to ~0.02 alpha: the old rule made it high
     assert summary.loc["FRIDGE", "theta_max_over_alpha"] == pytest.approx(
         reference[1][0]["theta_max_over_alpha"], abs=0.01)
+
+
+def test_a_class_changed_by_the_rule_alone_says_so_in_the_comparison():
+    """A previous summary (old rule: high because it rocked) against this run's, with the same numbers."""
+    from assess.comparison import compare_summaries
+
+    before = pd.DataFrame({"id": ["RX-0-03"], "name": ["Pharmacy refrigerator"], "risk": ["high"], "pta_g": [0.45],
+                           "mode": ["slide-rock"], "p_beyond_clearance": [0.0], "p_overturn": [0.0]})
+    reason = risk_reason(Chances(0.0, 0.0, 0.0), "critical", SETTINGS)
+    after = before.assign(risk="low", p_rocking_harm=0.0, risk_reason=reason)
+    row = compare_summaries(before, after).iloc[0]
+    assert row["change"] == "down" and row["why"] == f"the same chances under another class rule or thresholds (now {reason})"
