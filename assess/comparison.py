@@ -14,6 +14,7 @@ from pathlib import Path
 import pandas as pd
 
 from assess.errors import InputError, Problem
+from assess.quantity_text import percent_text
 
 RISK_ORDER = {"anchored": -1, "low": 0, "moderate": 1, "high": 2}
 #: Columns compared, with how each is written in the explanation.
@@ -21,7 +22,8 @@ RISK_ORDER = {"anchored": -1, "low": 0, "moderate": 1, "high": 2}
 COMPARED = (("pta_g", "PTA", "{:.2f} g"), ("mode", "mode", "{}"), ("demand_source", "demand from", "{}"),
             ("p_beyond_clearance", "chance of sliding past the clearance", "{:.0%}"),
             ("demand_p84_cm", "84th-percentile sliding", "{:.0f} cm"),
-            ("p_overturn", "chance of overturning", "{:.0%}"))
+            ("p_overturn", "chance of overturning", "{:.0%}"),
+            ("p_rocking_harm", "chance of rocking that harms it", "{:.0%}"))
 COMPARISON_COLUMNS = ["id", "name", "risk_before", "risk_after", "change", "why"] + [
     f"{column}_{when}" for column, _, _ in COMPARED for when in ("before", "after")]
 
@@ -55,7 +57,7 @@ def _moved(before, after, label, fmt) -> str | None:
     if b is not None or a is not None:
         if b is not None and a is not None and abs(a - b) <= max(0.005, 0.005 * abs(b)):
             return None
-        text = [fmt.format(v) if v is not None else "–" for v in (b, a)]
+        text = [("–" if v is None else percent_text(v) if fmt == "{:.0%}" else fmt.format(v)) for v in (b, a)]
         return f"{label} {text[0]} -> {text[1]}"
     sb, sa = ("" if pd.isna(v) else str(v) for v in (before, after))
     return None if sb == sa else f"{label} {sb or '–'} -> {sa or '–'}"
@@ -89,11 +91,16 @@ def compare_summaries(previous: pd.DataFrame, current: pd.DataFrame) -> pd.DataF
             delta = RISK_ORDER.get(str(risk_a), 0) - RISK_ORDER.get(str(risk_b), 0)
             change = "up" if delta > 0 else "down" if delta < 0 else "same"
         reasons = [_moved(record.get(f"{column}_before"), record.get(f"{column}_after"), label, fmt)
-                   for column, label, fmt in COMPARED]
+                   for column, label, fmt in COMPARED if column in previous and column in current]
         name = record.get("name_after")
         row = {"id": item_id, "name": name if isinstance(name, str) else record.get("name_before"),
                "risk_before": "" if pd.isna(risk_b) else risk_b, "risk_after": "" if pd.isna(risk_a) else risk_a,
                "change": change, "why": "; ".join(r for r in reasons if r)}
+        if change in ("up", "down") and not row["why"]:
+            # same numbers, another class: the class rule or its thresholds changed since the previous run
+            now = record.get("risk_reason_after")
+            row["why"] = "the same chances under another class rule or thresholds" + (
+                f" (now {now})" if isinstance(now, str) and now else "")
         for column, _, _ in COMPARED:
             for when in ("before", "after"):
                 row[f"{column}_{when}"] = record.get(f"{column}_{when}")

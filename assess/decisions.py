@@ -3,9 +3,9 @@
 The decisions stage of the assessment (:func:`decide`, after the demand
 stage :mod:`assess.assessment.demand`): every function here is a pure
 function of an item's governing demand and the settings. The risk rule is
-one function, :func:`classify_risk`, fed by the demand
-(``p_beyond_clearance``, ``p_overturn``, ``uplift``): replacing the rule
-means replacing that function. What the report says about an item is
+:func:`assess.risk_classes.classify_risk`, fed by the demand's probabilities
+of each failure mode (``p_overturn``, ``p_beyond_clearance``, ``p_rocking_harm``)
+and the item's consequence: replacing the rule means replacing that module. What the report says about an item is
 built from these fields (:mod:`assess.report.sentences`); the columns are
 those of ``summary.csv`` (docs/outputs.md).
 """
@@ -20,8 +20,11 @@ from assess.anchorage import AnchorageSite, anchorage_site, item_anchorage
 from assess.fragility.friction_range import mu_dependence_sentence
 from assess.fragility.regression import RegressionConstants
 from assess.mechanics.modes import ROCK, SLIDE_ROCK
-from assess.quantity_text import system_of
+from assess.quantity_text import percent_text, system_of
 from assess.result import Flag
+from assess.risk_classes import (
+    Chances, classify_risk, deciding_chance, performance_objective, risk_range, risk_reason, rocking_harm_counts,
+)
 
 UPLIFT_MODES = (ROCK, SLIDE_ROCK)
 
@@ -33,7 +36,8 @@ def item_consequence(item) -> str:
 
 #: What an anchored item's row says (it is not analysed as freestanding).
 ANCHORED = {"mode": "", "risk": "anchored", "action": "None: anchored (not analysed as freestanding)",
-            "action_kind": "anchored", "flags": ()}
+            "action_kind": "anchored", "flags": (), "risk_reason": "anchored: not analysed as freestanding",
+            "performance_objective": ""}
 
 
 @dataclass
@@ -72,7 +76,8 @@ def decide(equipment: pd.DataFrame, governing: dict, uplift: dict, cases: pd.Dat
         decided["flags"] = tuple(flag.code for flag in found)
         decided.update(decide_item(item, row, uplift[item.id], settings, site))
         if item.id in at_mu_ends.index:
-            decided.update(mu_range_decision(at_mu_ends.loc[item.id], decided["risk"], row["demand_note"], settings))
+            decided.update(mu_range_decision(at_mu_ends.loc[item.id], decided["risk"], row["demand_note"],
+                                             row["consequence"], settings))
         by_item[item.id] = decided
     table = pd.DataFrame({"id": list(by_item), **{column: [d.get(column, np.nan) for d in by_item.values()]
                                                   for column in ("action_kind", "priority_score")}})
@@ -86,64 +91,43 @@ NO_MU_RANGE = {"mu_low": np.nan, "mu_high": np.nan, "risk_mu_low": "", "risk_mu_
                "p_beyond_clearance_mu_low": np.nan, "p_beyond_clearance_mu_high": np.nan, "mu_range_note": ""}
 
 
-def mu_range_decision(end: pd.Series, risk: str, demand_note: str, settings: dict) -> dict:
+def mu_range_decision(end: pd.Series, risk: str, demand_note: str, consequence: str, settings: dict) -> dict:
     """For an item with a range of friction: its risk class with every run at ``mu_low`` and at
-    ``mu_high`` (:func:`classify_risk` of the demand at each end, ``end``: its row of
+    ``mu_high`` (:func:`~assess.risk_classes.classify_risk` of the demand at each end, ``end``: its row of
     :func:`assess.fragility.friction_range.demand_at_ends`), and
     :func:`~assess.fragility.friction_range.mu_dependence_sentence` in ``mu_range_note`` and at the end
     of ``demand_note``."""
-    classes = {side: classify_risk(float(end[f"p_beyond_clearance_{side}"]), float(end[f"p_overturn_{side}"]),
-                                   bool(end[f"demand_uplift_{side}"]), settings) for side in ("low", "high")}
-    chances = {side: float(end[f"p_beyond_clearance_{side}"]) for side in ("low", "high")}
+    chances = {side: Chances(float(end[f"p_overturn_{side}"]), float(end[f"p_beyond_clearance_{side}"]),
+                             float(end[f"p_rocking_harm_{side}"])) for side in ("low", "high")}
+    classes = {side: classify_risk(chances[side], consequence, settings) for side in ("low", "high")}
+    why = {side: deciding_chance(chances[side], consequence, settings) for side in ("low", "high")}
     low, high = float(end["mu_low"]), float(end["mu_high"])
     sentence = mu_dependence_sentence(end.name, low, high, risk, classes["low"], classes["high"],
-                                      chances["low"], chances["high"])
+                                      why["low"], why["high"])
     return {"mu_low": low, "mu_high": high, "risk_mu_low": classes["low"], "risk_mu_high": classes["high"],
-            "p_beyond_clearance_mu_low": chances["low"], "p_beyond_clearance_mu_high": chances["high"],
+            "p_beyond_clearance_mu_low": chances["low"].beyond_clearance,
+            "p_beyond_clearance_mu_high": chances["high"].beyond_clearance,
             "mu_range_note": sentence, "demand_note": f"{demand_note} {sentence}".strip()}
-
-
-def classify_risk(p_beyond_clearance: float, p_overturn: float, uplift: bool, settings: dict) -> str:
-    """Risk class from the governing demand.
-
-    ``high`` when the item overturns under any motion of its suite
-    (``p_overturn`` > 0), uplifts (rocks) under any, or slides past its
-    clearance with probability ≥ ``risk_pf_high``; ``moderate`` when that
-    probability ≥ ``risk_pf_moderate``; else ``low``.
-
-    >>> settings = {"risk_pf_high": 0.5, "risk_pf_moderate": 0.1}
-    >>> classify_risk(0.2, 0.0, False, settings), classify_risk(0.0, 0.1, True, settings)
-    ('moderate', 'high')
-    """
-    if p_overturn > 0.0 or uplift or p_beyond_clearance >= float(settings["risk_pf_high"]):
-        return "high"
-    if p_beyond_clearance >= float(settings["risk_pf_moderate"]):
-        return "moderate"
-    return "low"
-
-
-def risk_range(risk: str, classes: set) -> str:
-    """The classes the 90 % interval of P(sliding > clearance) spans, when it spans more than ``risk``."""
-    classes = classes | {risk}
-    if len(classes) == 1:
-        return ""
-    order = ["low", "moderate", "high"]
-    spanned = sorted(classes, key=order.index)
-    return f"{spanned[0]} to {spanned[-1]}"
 
 
 def decide_item(item, row: dict, uplift: bool, settings: dict, site: AnchorageSite | None = None) -> dict:
     """The decisions for one freestanding item from its governing demand ``row`` (a dict holding
-    ``p_beyond_clearance`` and its interval, ``p_overturn``, ``demand_room_cm``, ``clearance_cm``,
+    ``p_beyond_clearance``, ``p_overturn``, ``p_rocking_harm`` and their intervals, ``demand_room_cm``,
+    ``clearance_cm``,
     ``consequence``, ``theta_max_over_alpha``, ``suite_motions``, ``suite_histories``) and whether it
     uplifts under any motion (``uplift``).
 
-    Returns ``risk``, ``risk_range``, ``action``, ``action_kind``, the anchorage columns
+    Returns ``risk`` (:func:`~assess.risk_classes.classify_risk`), ``risk_reason``, ``performance_objective``,
+    ``risk_range`` (the classes at the lower and at the upper ends of every chance's 90 % interval),
+    ``action``, ``action_kind``, the anchorage columns
     (:func:`assess.anchorage.item_anchorage` in ``site``), ``what_if`` and ``priority_score``.
     """
-    decided = {"risk": classify_risk(row["p_beyond_clearance"], row["p_overturn"], uplift, settings)}
-    bounds = {classify_risk(p, row["p_overturn"], uplift, settings)
-              for p in (row["p_beyond_clearance_low"], row["p_beyond_clearance_high"])}
+    consequence = row["consequence"]
+    chances = Chances.of(row)
+    decided = {"risk": classify_risk(chances, consequence, settings),
+               "risk_reason": risk_reason(chances, consequence, settings),
+               "performance_objective": performance_objective(consequence)}
+    bounds = {classify_risk(Chances.of(row, suffix), consequence, settings) for suffix in ("_low", "_high")}
     decided["risk_range"] = risk_range(decided["risk"], bounds)
     row = {**row, **decided}
     decided["action"] = recommended_action(row, uplift, settings)
@@ -151,8 +135,7 @@ def decide_item(item, row: dict, uplift: bool, settings: dict, site: AnchorageSi
     site = site if site is not None else anchorage_site(None, None, settings)
     decided.update(item_anchorage(item, row["consequence"], decided["action_kind"], site, system_of(settings)))
     decided["what_if"] = what_if(row, settings)
-    decided["priority_score"] = priority_score(row["consequence"], row["p_overturn"], row["p_beyond_clearance"],
-                                               uplift)
+    decided["priority_score"] = priority_score(consequence, chances)
     return decided
 
 
@@ -195,9 +178,11 @@ def suite_share_text(probability: float, row: dict) -> str:
     if histories == motions:
         count = probability * motions
         if abs(count - round(count)) > 1e-9:  # runs weighted over a range of mu
-            return f"a weighted {probability:.0%} of its {motions} motion{'s' if motions != 1 else ''} over its range of mu"
+            return (f"a weighted {percent_text(probability)} of its {motions} motion{'s' if motions != 1 else ''} "
+                    "over its range of mu")
         return f"{int(round(count))} of its {motions} motion{'s' if motions != 1 else ''}"
-    return f"{probability:.0%} of its {histories} simulated histories ({motions} motion{'s' if motions != 1 else ''})"
+    return (f"{percent_text(probability)} of its {histories} simulated histories "
+            f"({motions} motion{'s' if motions != 1 else ''})")
 
 
 def what_if(row: dict, settings: dict) -> str:
@@ -222,20 +207,24 @@ def what_if(row: dict, settings: dict) -> str:
 CONSEQUENCE_WEIGHTS = {"life-safety": 5.0, "hazardous": 4.0, "critical": 3.0, "valuable": 2.0, "ordinary": 1.0}
 #: Share of an overturning's cost that sliding past the room carries (it hits, pulls its lines, blocks).
 SLIDING_SEVERITY = 0.5
-#: Stand-in probability of overturning for an item that rocks but did not overturn under its motions.
-UPLIFT_SEVERITY = 0.25
+#: Share of an overturning's cost that rocking which harms the item or its contents carries: it damages
+#: the item or what it holds where it stands, without toppling or moving it (half of sliding's share: a
+#: judgement, as the two severities above).
+ROCKING_HARM_SEVERITY = 0.25
 
 
-def priority_score(consequence: str, p_overturn: float, p_beyond_clearance: float, uplift: bool) -> float:
-    """How urgent an item is: its consequence weight times the worst of its chances, overturning
-    counting fully, sliding past its room by :data:`SLIDING_SEVERITY`, rocking without overturning by
-    :data:`UPLIFT_SEVERITY`.
+def priority_score(consequence: str, chances: Chances) -> float:
+    """How urgent an item is: its consequence weight times the worst of its severity-weighted chances,
+    overturning counting fully, sliding past its room by :data:`SLIDING_SEVERITY`, rocking that harms it
+    by :data:`ROCKING_HARM_SEVERITY` (where it counts for the item's consequence,
+    :func:`~assess.risk_classes.rocking_harm_counts`).
 
-    >>> priority_score("hazardous", 0.2, 0.0, True), priority_score("ordinary", 0.0, 1.0, False)
-    (1.0, 0.5)
+    >>> priority_score("hazardous", Chances(0.2, 0.0, 0.4)), priority_score("ordinary", Chances(0.0, 1.0, 1.0))
+    (0.8, 0.5)
     """
     weight = CONSEQUENCE_WEIGHTS.get(str(consequence), 1.0)
-    return weight * max(p_overturn, SLIDING_SEVERITY * p_beyond_clearance, UPLIFT_SEVERITY if uplift else 0.0)
+    harm = ROCKING_HARM_SEVERITY * chances.rocking_harm if rocking_harm_counts(consequence) else 0.0
+    return weight * max(chances.overturn, SLIDING_SEVERITY * chances.beyond_clearance, harm)
 
 
 def priorities(summary: pd.DataFrame) -> pd.Series:

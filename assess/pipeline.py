@@ -112,7 +112,7 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     # 5. demand
     demand = demand_stage.item_demand(ran.cases, ran.runs, ran.planar, simulated.kinds, constants, settings)
     at_mu = demand.cases[nominal]
-    rows = demand_stage.item_rows(inventory.equipment, at_mu, demand)
+    rows = demand_stage.item_rows(inventory.equipment, at_mu, demand, constants)
     # 6. decisions
     anchorage = anchorage_site(inventory.site, inventory.building, settings)
     decided = decisions.decide(inventory.equipment, rows.rows, rows.uplift, at_mu, demand.at_mu_ends, constants,

@@ -90,3 +90,28 @@ def mass_text(value_kg: float, system="si") -> str:
     if system_of(system) != "us":
         return f"{float(value_kg):.0f} kg"
     return f"{float(value_kg) / KG_PER_LB:.0f} lb"
+
+
+def percent_text(probability) -> str:
+    """A probability as a whole percentage, the one way every table and sentence writes a chance:
+    "<1%" and ">99%" at the ends (a chance that rounds to 0 or 100 but is not), "0%" and "100%" only when
+    exact; "–" for a missing value.
+
+    >>> [percent_text(p) for p in (0.0, 0.004, 0.39, 0.996, 1.0, float("nan"))]
+    ['0%', '<1%', '39%', '>99%', '100%', '–']
+    """
+    try:
+        number = float(probability)
+    except (TypeError, ValueError):
+        return "–"
+    if not math.isfinite(number):
+        return "–"
+    if number <= 0:
+        return "0%"
+    if number < 0.005:
+        return "<1%"
+    if number >= 1:
+        return "100%"
+    if number > 0.995:
+        return ">99%"
+    return f"{100 * number:.0f}%"

@@ -138,7 +138,8 @@ def test_a_regression_governed_suite_has_the_regressions_median_and_p84():
     cases = pd.DataFrame({"id": ["A", "A"], "motion_key": [0, 0], "motion": ["LG"] * 2, "direction": [1, 2],
                           "demand_source": ["regression"] * 2, "pta_g": [0.54] * 2, "tp_s": [2.1] * 2,
                           "im": [0.54 / 0.13 - 1] * 2, "mode": ["slide"] * 2, "clearance_m": [0.5] * 2,
-                          "pulse_share": [0.42] * 2, "sim_uplift": [False] * 2})
+                          "pulse_share": [0.42] * 2, "sim_uplift": [False] * 2, "mu_static": [0.13] * 2,
+                          "b_over_h": [0.39, 0.5]})
     runs = pd.DataFrame({"case": [0, 1], "realization": [0, 0], "sliding_max_cm": [50.0, 50.0],
                          "overturned": [False, False], "theta_max_over_alpha": [0.0, 0.0]})
     from assess.fragility import RegressionConstants

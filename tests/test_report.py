@@ -66,6 +66,7 @@ def _item(item_id, name, room, floor, mode, b_over_h, mu, motion, pta_g, tp_s, c
         "im": im, "edp_median": edp, "sliding_median_cm": median, "sliding_p84_cm": p84,
         "clearance_cm": clearance_cm, "pf_sliding": pf, "overturn_fraction": math.nan,
         "theta_max_over_alpha": math.nan, "risk": risk, "action": action, "flags": "",
+        "regression_applies": sliding, "regression_note": "" if sliding else "not applicable: the item uplifts",
     }
     motion_row = {
         "id": item_id, "motion": motion, "direction": 1, "pta_g": pta_g, "tp_s": tp_s,
@@ -215,7 +216,8 @@ def test_nan_shows_as_dash_and_numbers_are_rounded(html):
     all_items = re.search(r'<section id="all-items".*?</section>', html, re.S).group(0)
     rock_row = re.search(r'<tr class="row-high">\s*<td class="c-id id"><a class="id" href="#item-K-02">K-02</a></td>.*?</tr>',
                          all_items, re.S).group(0)
-    assert '<td class="num c-sl">– / – · –</td>' in rock_row
+    # the regression does not apply to an item that uplifts: not shown, "n/a" (issue 19)
+    assert '<td class="num c-sl"><span class="muted">n/a</span></td>' in rock_row
     assert '<td class="num c-pfa">–</td>' in rock_row
     forma = re.search(r'<td class="c-id id"><a class="id" href="#item-F-01">F-01</a></td>.*?</tr>', all_items, re.S).group(0)
     assert '<td class="num c-sl">74 / 115 · ' in forma

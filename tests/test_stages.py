@@ -51,10 +51,12 @@ def test_a_library_call_is_held_to_the_hazard_sheets_rules(tmp_path):
     assert [(p.row, p.column) for p in refused.value.problems] == [(3, "vp_cm_s")]
 
 
-def _demand_row(p_beyond, p_overturn=0.0):
+def _demand_row(p_beyond, p_overturn=0.0, p_rocking_harm=0.0):
     return {"p_beyond_clearance": p_beyond, "p_beyond_clearance_low": p_beyond, "p_beyond_clearance_high": p_beyond,
-            "p_overturn": p_overturn, "demand_room_cm": 42.0, "theta_max_over_alpha": 0.0, "suite_motions": 3,
-            "suite_histories": 3, "demand_note": "From 3 motions."}
+            "p_overturn": p_overturn, "p_overturn_low": p_overturn, "p_overturn_high": p_overturn,
+            "p_rocking_harm": p_rocking_harm, "p_rocking_harm_low": p_rocking_harm,
+            "p_rocking_harm_high": p_rocking_harm, "demand_room_cm": 42.0, "theta_max_over_alpha": 0.0,
+            "suite_motions": 3, "suite_histories": 3, "demand_note": "From 3 motions."}
 
 
 def test_decisions_follow_the_thresholds_and_rank_the_items():
@@ -81,11 +83,13 @@ def test_decisions_follow_the_thresholds_and_rank_the_items():
 
 def test_an_item_whose_class_changes_over_its_mu_range_says_so():
     end = pd.Series({"mu_low": 0.13, "mu_high": 0.23, "p_beyond_clearance_low": 0.6, "p_overturn_low": 0.0,
-                     "demand_uplift_low": False, "p_beyond_clearance_high": 0.0, "p_overturn_high": 0.0,
-                     "demand_uplift_high": False}, name="INC-G-01")
-    settings = {"risk_pf_high": 0.5, "risk_pf_moderate": 0.1}
-    decided = decisions.mu_range_decision(end, "high", "From 3 motions.", settings)
+                     "p_rocking_harm_low": 0.0, "demand_uplift_low": False, "p_beyond_clearance_high": 0.0,
+                     "p_overturn_high": 0.0, "p_rocking_harm_high": 0.0, "demand_uplift_high": False},
+                    name="INC-G-01")
+    settings = default_settings()
+    decided = decisions.mu_range_decision(end, "high", "From 3 motions.", "critical", settings)
     assert (decided["risk_mu_low"], decided["risk_mu_high"]) == ("high", "low")
-    sentence = mu_dependence_sentence("INC-G-01", 0.13, 0.23, "high", "high", "low", 0.6, 0.0)
+    sentence = mu_dependence_sentence("INC-G-01", 0.13, 0.23, "high", "high", "low",
+                                      "60% chance of sliding past its room", "0% chance of overturning")
     assert decided["mu_range_note"] == sentence and decided["demand_note"] == f"From 3 motions. {sentence}"
     assert np.isnan(decisions.NO_MU_RANGE["mu_low"]) and decisions.NO_MU_RANGE["risk_mu_low"] == ""

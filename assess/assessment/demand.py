@@ -18,7 +18,7 @@ from assess.fragility import (
     RegressionConstants, capacity_edp, intensity_measure, median_edp, probability_of_exceedance, sliding_quantile,
 )
 from assess.fragility.friction_range import demand_at_ends
-from assess.fragility.governing import add_pulse_share, governing_demand, motion_sources
+from assess.fragility.governing import add_pulse_share, governing_demand, motion_sources, regression_note
 from assess.mechanics.modes import MODE_SEVERITY, ROCK, SLIDE, SLIDE_ROCK, initial_mode
 
 SLIDING_MODES = (SLIDE, SLIDE_ROCK)
@@ -48,22 +48,30 @@ def item_demand(cases: pd.DataFrame, runs: pd.DataFrame, planar, simulated_as: d
     cases = add_pulse_share(regression_demand(cases, constants))
     cases["demand_source"] = motion_sources(cases, simulated_as, constants)
     room_quantile = 1.0 - float(settings["risk_pf_moderate"])
-    governing = governing_demand(cases, runs, constants, room_quantile=room_quantile, planar=planar)
-    return Demand(cases, governing, demand_at_ends(cases, runs, planar, constants, room_quantile))
+    harm = float(settings["rocking_harm_theta_over_alpha"])
+    governing = governing_demand(cases, runs, constants, room_quantile=room_quantile, planar=planar,
+                                 harm_theta_over_alpha=harm)
+    return Demand(cases, governing, demand_at_ends(cases, runs, planar, constants, room_quantile, harm))
 
 
 @dataclass
 class ItemDemand:
     """Per freestanding item (by id): its demand row (``rows``: the regression's numbers for its governing
-    case, :data:`GOVERNING_CASE_COLUMNS`, ``governing_direction``, ``governing_motion``, the governing demand
-    and ``overturn_fraction``) and whether it uplifts under any motion (``uplift``)."""
+    case, :data:`GOVERNING_CASE_COLUMNS`, ``governing_direction``, ``governing_motion``, whether the
+    regression applies to that case (``regression_applies``, ``regression_note``: why not), the governing
+    demand, ``overturn_fraction`` and ``mode``, the most severe mode over the suite) and whether it uplifts
+    under any motion (``uplift``)."""
 
     rows: dict
     uplift: dict
 
 
-def item_rows(equipment: pd.DataFrame, cases: pd.DataFrame, demand: Demand) -> ItemDemand:
-    """Each freestanding item's demand row (:class:`ItemDemand`), ``cases`` those at the workbook's μ."""
+def item_rows(equipment: pd.DataFrame, cases: pd.DataFrame, demand: Demand,
+              constants: RegressionConstants) -> ItemDemand:
+    """Each freestanding item's demand row (:class:`ItemDemand`), ``cases`` those at the workbook's μ.
+
+    ``mode`` is the governing demand's (``demand_mode``: the most severe mode any run of the suite reaches,
+    so that it agrees with ``p_overturn`` and ``theta_max_over_alpha``), not the governing case's."""
     governing = governing_case(cases).set_index("id") if len(cases) else pd.DataFrame()
     rows, uplift = {}, {}
     for item in equipment[~equipment["anchored"]].itertuples(index=False):
@@ -71,7 +79,12 @@ def item_rows(equipment: pd.DataFrame, cases: pd.DataFrame, demand: Demand) -> I
         row = {column: case[column] for column in GOVERNING_CASE_COLUMNS}
         row["governing_direction"] = int(case["direction"])
         row["governing_motion"] = case["motion"]
+        under_motion = cases[(cases["id"] == item.id) & (cases["motion_key"] == case["motion_key"])]
+        row["regression_note"] = regression_note(float(case["pulse_share"]), float(case["im"]),
+                                                 bool(under_motion["sim_uplift"].any()), constants)
+        row["regression_applies"] = row["regression_note"] == ""
         row.update(demand.governing.loc[item.id].to_dict())
+        row["mode"] = row.pop("demand_mode") or row["mode"]
         row["overturn_fraction"] = row["p_overturn"]
         rows[item.id] = row
         uplift[item.id] = bool(cases.loc[cases["id"] == item.id, "sim_uplift"].any()) or bool(

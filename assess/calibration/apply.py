@@ -45,6 +45,7 @@ from assess.calibration.effects import EFFECTS, calibrated_block, theta_over_dec
 from assess.errors import InputError, Problem
 from assess.inventory.schema import clip
 from assess.mechanics.block import Block
+from assess.quantity_text import percent_text
 from assess.result import Flag
 
 #: Largest calibration.json read [bytes] (a real one is a few kB).
@@ -193,8 +194,8 @@ def _state(row) -> str:
 
     return (f"risk {row['risk']} (mode {row['mode'] or '–'}): sliding {number('demand_median_cm', '{:.1f}')} cm "
             f"median, {number('demand_p84_cm', '{:.1f}')} cm 84th percentile, "
-            f"{number('p_beyond_clearance', '{:.0%}')} chance past the clearance, "
-            f"{number('p_overturn', '{:.0%}')} chance of overturning")
+            f"{percent_text(row.get('p_beyond_clearance'))} chance past the clearance, "
+            f"{percent_text(row.get('p_overturn'))} chance of overturning")
 
 
 def read_calibration(path) -> AppliedCalibration:

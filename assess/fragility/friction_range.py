@@ -60,7 +60,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from assess.fragility.governing import governing_demand
+from assess.fragility.governing import ROCKING_HARM_THETA_OVER_ALPHA, governing_demand
 from assess.mechanics.gateway import pure_sliding_proved
 
 #: Intervals a side of the nominal μ for an item that cannot uplift anywhere in its range.
@@ -179,20 +179,21 @@ def at_end(cases: pd.DataFrame, runs: pd.DataFrame, end: str):
 
 
 def mu_dependence_sentence(item_id: str, mu_low: float, mu_high: float, risk: str, risk_low: str,
-                           risk_high: str, p_low: float, p_high: float) -> str:
-    """Whether the item's advice depends on where μ lies in its range, in one sentence from its numbers.
+                           risk_high: str, why_low: str, why_high: str) -> str:
+    """Whether the item's advice depends on where μ lies in its range, in one sentence from its numbers
+    (``why_low``, ``why_high``: why it is in its class at each end, :func:`assess.risk_classes.risk_reason`).
 
-    >>> mu_dependence_sentence("INC-G-01", 0.13, 0.23, "high", "high", "low", 0.6, 0.0)
-    'Its risk class depends on where mu lies in 0.13-0.23: high at mu = 0.13 (60% chance of sliding past its clearance), low at mu = 0.23 (0%); over the range, weighted, high.'
-    >>> mu_dependence_sentence("X", 0.2, 0.3, "low", "low", "low", 0.0, 0.0)
+    >>> mu_dependence_sentence("INC-G-01", 0.13, 0.23, "high", "high", "low", "60% chance of sliding past its room",
+    ...                        "0% chance of overturning, 0% of sliding past its room")
+    'Its risk class depends on where mu lies in 0.13-0.23: high at mu = 0.13 (60% chance of sliding past its room), low at mu = 0.23 (0% chance of overturning, 0% of sliding past its room); over the range, weighted, high.'
+    >>> mu_dependence_sentence("X", 0.2, 0.3, "low", "low", "low", "", "")
     'Its risk class is low wherever mu lies in 0.20-0.30.'
     """
     span = f"{mu_low:.2f}-{mu_high:.2f}"
     if risk_low == risk_high == risk:
         return f"Its risk class is {risk} wherever mu lies in {span}."
     return (f"Its risk class depends on where mu lies in {span}: {risk_low} at mu = {mu_low:.2f} "
-            f"({p_low:.0%} chance of sliding past its clearance), {risk_high} at mu = {mu_high:.2f} "
-            f"({p_high:.0%}); over the range, weighted, {risk}.")
+            f"({why_low}), {risk_high} at mu = {mu_high:.2f} ({why_high}); over the range, weighted, {risk}.")
 
 
 #: Columns the decisions add to the summary for an item with a range of friction
@@ -201,24 +202,28 @@ MU_RANGE_COLUMNS = ("mu_low", "mu_high", "risk_mu_low", "risk_mu_high", "p_beyon
                     "p_beyond_clearance_mu_high", "mu_range_note")
 
 
+#: The governing demand's columns :func:`demand_at_ends` gives at each end of a μ range.
+END_COLUMNS = ("p_beyond_clearance", "p_overturn", "p_rocking_harm", "demand_uplift")
+
+
 def demand_at_ends(cases: pd.DataFrame, runs: pd.DataFrame, planar, constants,
-                   room_quantile: float) -> pd.DataFrame:
+                   room_quantile: float, harm_theta_over_alpha: float = ROCKING_HARM_THETA_OVER_ALPHA) -> pd.DataFrame:
     """Per item with a μ range (index ``id``): its range (``mu_low``, ``mu_high``) and its governing demand
     with every run at each end (:func:`at_end`, :func:`assess.fragility.governing.governing_demand`):
-    ``p_beyond_clearance_<end>``, ``p_overturn_<end>``, ``demand_uplift_<end>`` for ``end`` in low, high.
+    ``<name>_<end>`` for ``name`` in :data:`END_COLUMNS` and ``end`` in low, high.
     Empty when no item gives a range."""
     ranged = cases[has_range(cases)]
-    columns = ["mu_low", "mu_high"] + [f"{name}_{end}" for end in ("low", "high")
-                                       for name in ("p_beyond_clearance", "p_overturn", "demand_uplift")]
+    columns = ["mu_low", "mu_high"] + [f"{name}_{end}" for end in ("low", "high") for name in END_COLUMNS]
     if ranged.empty:
         return pd.DataFrame(columns=columns)
     ranges = ranged.drop_duplicates("id").set_index("id")[["mu_low", "mu_high"]]
-    at = {end: governing_demand(*at_end(cases, runs, end), constants, room_quantile=room_quantile, planar=planar)
+    at = {end: governing_demand(*at_end(cases, runs, end), constants, room_quantile=room_quantile, planar=planar,
+                                harm_theta_over_alpha=harm_theta_over_alpha)
           for end in ("low", "high")}
     ids = [item_id for item_id in ranges.index if item_id in at["low"].index]
     table = ranges.loc[ids].copy()
     for end in ("low", "high"):
-        for name in ("p_beyond_clearance", "p_overturn", "demand_uplift"):
+        for name in END_COLUMNS:
             table[f"{name}_{end}"] = at[end].loc[ids, name].to_numpy()
     return table[columns]
 

@@ -37,6 +37,8 @@ import pandas as pd
 from scipy import stats
 
 from assess.fragility.planar import planar_note
+from assess.mechanics.gateway import pure_sliding_proved
+from assess.mechanics.modes import MODE_SEVERITY
 from assess.fragility.regression import RegressionConstants, probability_of_exceedance, capacity_edp, sliding_quantile
 from assess.fragility.suite import (
     PULSE_SHARE_MIN, binomial_interval, effective_count, pulse_acceleration_share, quantile_interval,
@@ -52,7 +54,11 @@ DEMAND_COLUMNS = [
     "demand_p84_low_cm", "demand_p84_high_cm", "demand_room_cm", "p_beyond_clearance", "p_beyond_clearance_low",
     "p_beyond_clearance_high", "p_overturn", "p_overturn_low", "p_overturn_high", "suite_motions",
     "suite_histories", "theta_max_over_alpha", "demand_note", "demand_planar", "demand_uplift",
+    "p_rocking_harm", "p_rocking_harm_low", "p_rocking_harm_high", "demand_mode",
 ]
+#: Peak rotation θmax/α from which rocking that does not overturn counts as harming the item or its
+#: contents (the default of the ``rocking_harm_theta_over_alpha`` setting; :func:`rocking_harm`).
+ROCKING_HARM_THETA_OVER_ALPHA = 0.5
 
 
 def _node_columns(cases: pd.DataFrame) -> pd.DataFrame:
@@ -87,18 +93,24 @@ def add_pulse_share(cases: pd.DataFrame) -> pd.DataFrame:
 
 
 def governing_demand(cases: pd.DataFrame, runs: pd.DataFrame, constants: RegressionConstants,
-                     room_quantile: float = 0.9, planar: pd.DataFrame | None = None) -> pd.DataFrame:
+                     room_quantile: float = 0.9, planar: pd.DataFrame | None = None,
+                     harm_theta_over_alpha: float = ROCKING_HARM_THETA_OVER_ALPHA) -> pd.DataFrame:
     """One row per item (index ``id``): :data:`DEMAND_COLUMNS`.
 
     ``demand_room_cm`` is the ``room_quantile`` quantile of the suite's
     sliding: the room that leaves a chance 1 − ``room_quantile`` of sliding past it.
+    ``p_rocking_harm`` is the share of the suite, weighted as ``p_overturn``, whose runs rock to
+    ``harm_theta_over_alpha`` or more without overturning (:func:`rocking_harm`), with its interval;
+    ``demand_mode`` the most severe mode any run of the suite reaches (:func:`suite_mode`).
 
     Parameters
     ----------
     cases : DataFrame
         One row per item × motion × direction with ``id``, ``motion_key``,
         ``direction``, ``demand_source`` (:func:`motion_sources`), ``pta_g``,
-        ``tp_s``, ``im``, ``mode``, ``clearance_m``, ``pulse_share``.
+        ``tp_s``, ``im``, ``mode``, ``clearance_m``, ``pulse_share``, ``mu_static`` and ``b_over_h``
+        (an item with μ_s < b/h in every case cannot uplift: its chances of overturning and of rocking
+        harm are then exactly 0, without an interval).
     runs : DataFrame
         One row per case × history: ``case`` (row of ``cases``),
         ``realization``, ``sliding_max_cm``, ``overturned``, ``theta_max_over_alpha``.
@@ -116,7 +128,7 @@ def governing_demand(cases: pd.DataFrame, runs: pd.DataFrame, constants: Regress
     rows = {}
     for item_id, item_cases in cases.groupby("id", sort=False):
         rows[item_id] = _item_demand(item_cases, per_history.get(item_id), regression.get(item_id), constants,
-                                     room_quantile)
+                                     room_quantile, harm_theta_over_alpha)
     return pd.DataFrame.from_dict(rows, orient="index")[DEMAND_COLUMNS]
 
 
@@ -124,10 +136,12 @@ def suite_runs(cases: pd.DataFrame, runs: pd.DataFrame, planar: pd.DataFrame | N
     """One row per item × motion × μ value × history: ``id``, ``motion_key``, ``mu_node``, ``motion``,
     ``realization``, the larger sliding of the two directions (``sliding_cm``; the 2-D peak distance from
     rest where ``planar`` gives it, then ``planar`` is True), ``overturned`` in either, the larger
-    ``theta`` (θmax/α), ``mu`` and ``mu_weight`` (the μ value and its weight; 1 without a μ range)."""
+    ``theta`` (θmax/α), ``mu`` and ``mu_weight`` (the μ value and its weight; 1 without a μ range) and
+    ``severity``, the :data:`~assess.mechanics.modes.MODE_SEVERITY` of the more severe mode of the two."""
     cases = _node_columns(cases)
     case = runs["case"].to_numpy()
     table = runs if "uplift" in runs else runs.assign(uplift=False)
+    table = table.assign(_severity=(table["mode"].map(MODE_SEVERITY) if "mode" in table else 0))
     table = table.assign(id=cases["id"].to_numpy()[case], motion_key=cases["motion_key"].to_numpy()[case],
                         motion=cases["motion"].to_numpy()[case], mu_node=cases["mu_node"].to_numpy()[case],
                         mu=(cases["mu"].to_numpy()[case] if "mu" in cases else np.nan), mu_weight=cases["mu_weight"].to_numpy()[case])
@@ -135,7 +149,7 @@ def suite_runs(cases: pd.DataFrame, runs: pd.DataFrame, planar: pd.DataFrame | N
     out = table.groupby(keys, sort=False).agg(
         motion=("motion", "first"), sliding_cm=("sliding_max_cm", "max"), overturned=("overturned", "any"),
         theta=("theta_max_over_alpha", "max"), mu=("mu", "first"), mu_weight=("mu_weight", "first"),
-        uplift=("uplift", "any")).reset_index()
+        uplift=("uplift", "any"), severity=("_severity", "max")).reset_index()
     out["planar"] = False
     if planar is not None and len(planar):
         in_plane = out[keys].merge(planar[keys + ["sliding_cm"]], on=keys, how="left")["sliding_cm"].to_numpy()
@@ -164,8 +178,42 @@ def _regression_by_motion(cases: pd.DataFrame, constants: RegressionConstants) -
     return {item_id: frame.reset_index(level=0, drop=True) for item_id, frame in grouped.groupby(level=0)}
 
 
+def rocking_harm(theta_over_alpha, overturned, harm_theta_over_alpha: float = ROCKING_HARM_THETA_OVER_ALPHA):
+    """Whether a run's rocking harms the item or its contents without overturning it: its peak rotation
+    θmax/α reaches ``harm_theta_over_alpha`` and it did not overturn [bool, same shape].
+
+    Why the rotation: a block that rocks to θ0 and falls back strikes its base with the potential energy
+    it gained, m g R [cos(α − θ0) − cos α] (Housner 1963, eq. 3 for the energy, doi:10.1785/BSSA0530020403);
+    over the energy that tips it, m g R (1 − cos α), that is ≈ r(2 − r) with r = θ0/α for a slender block:
+    at r = 0.5 each impact carries three quarters of the energy that would overturn it, and the item has
+    lost half its margin to tip. θmax/α is the damage measure of rocking building contents in the
+    fragility literature (e.g. D'Angela et al. 2026, Procedia Struct. Integrity 78:1617-1624, damage
+    states from θmax/α = 0.01 to 1); the engine gives the peak rotation, not the impact velocity, so the
+    rotation is the measure here, and 0.5 is a judgement, stated as the default of the setting.
+
+    >>> rocking_harm(np.array([0.05, 0.6, 4.2]), np.array([False, False, True])).tolist()
+    [False, True, False]
+    """
+    return (np.asarray(theta_over_alpha, dtype=float) >= harm_theta_over_alpha) & ~np.asarray(overturned, dtype=bool)
+
+
+def suite_mode(severities) -> str:
+    """The most severe mode (:data:`~assess.mechanics.modes.MODE_SEVERITY`) among the severities of a suite's
+    runs; ``""`` for none.
+
+    >>> suite_mode([1, 3, 2])
+    'rock'
+    """
+    values = [int(v) for v in severities if np.isfinite(v)]
+    if not values:
+        return ""
+    by_severity = {severity: mode for mode, severity in MODE_SEVERITY.items()}
+    return by_severity[max(values)]
+
+
 def _item_demand(item_cases: pd.DataFrame, histories: pd.DataFrame | None, regression: pd.DataFrame | None,
-                 constants: RegressionConstants, room_quantile: float) -> dict:
+                 constants: RegressionConstants, room_quantile: float,
+                 harm_theta_over_alpha: float = ROCKING_HARM_THETA_OVER_ALPHA) -> dict:
     clearance_cm = float(item_cases["clearance_m"].iloc[0]) * 100.0
     units = item_cases.drop_duplicates(["motion_key", "mu_node"]).set_index(["motion_key", "mu_node"])
     source_of = item_cases.sort_values("mu_weight", ascending=False, kind="stable") \
@@ -177,6 +225,7 @@ def _item_demand(item_cases: pd.DataFrame, histories: pd.DataFrame | None, regre
     history_parts = []
     exact_beyond, exact_weight = 0.0, 0.0
     theta = 0.0
+    severities = []
     planar_motions, uplift = set(), False
     simulated = set(histories.index.droplevel(2)) if histories is not None else set()
     for (key, node), unit in units.iterrows():
@@ -185,6 +234,7 @@ def _item_demand(item_cases: pd.DataFrame, histories: pd.DataFrame | None, regre
         if (key, node) in simulated:
             runs = histories.loc[(key, node)]
             theta = max(theta, float(runs["theta"].max()))
+            severities.extend(runs.loc[runs["mu_weight"] > 0.0, "severity"].tolist())
         if source == REGRESSION:
             weight = mu_weight / n_motions
             median_cm, pf = regression.loc[(key, node), ["median_cm", "pf"]]
@@ -206,18 +256,28 @@ def _item_demand(item_cases: pd.DataFrame, histories: pd.DataFrame | None, regre
         history_parts.append(pd.DataFrame({
             "motion_key": key, "realization": runs.index.to_numpy(), "share": share, "mass": mu_weight,
             "beyond": mu_weight * (runs["sliding_cm"].to_numpy() > clearance_cm),
-            "overturn": mu_weight * runs["overturned"].to_numpy(dtype=float)}))
+            "overturn": mu_weight * runs["overturned"].to_numpy(dtype=float),
+            "harm": mu_weight * rocking_harm(runs["theta"].to_numpy(), runs["overturned"].to_numpy(),
+                                             harm_theta_over_alpha).astype(float)}))
     # per history: its weight (share × the μ weight of its simulated runs), and the μ-weighted share of its
     # runs beyond the clearance / overturned; the intervals count histories, not μ values
-    sampled_weights, sampled_beyond, sampled_overturn = [], [], []
+    sampled_weights, sampled_beyond, sampled_overturn, sampled_harm = [], [], [], []
     if history_parts:
         per_history = pd.concat(history_parts).groupby(["motion_key", "realization"], sort=False).agg(
-            share=("share", "first"), mass=("mass", "sum"), beyond=("beyond", "sum"), overturn=("overturn", "sum"))
+            share=("share", "first"), mass=("mass", "sum"), beyond=("beyond", "sum"), overturn=("overturn", "sum"),
+            harm=("harm", "sum"))
         sampled_weights = (per_history["share"] * per_history["mass"]).tolist()
         sampled_beyond = (per_history["beyond"] / per_history["mass"]).tolist()
         sampled_overturn = (per_history["overturn"] / per_history["mass"]).tolist()
+        sampled_harm = (per_history["harm"] / per_history["mass"]).tolist()
     p_beyond, p_beyond_interval = _probability(exact_beyond, exact_weight, sampled_beyond, sampled_weights)
     p_overturn, p_overturn_interval = _probability(0.0, exact_weight, sampled_overturn, sampled_weights)
+    # the regression's motions are those where the item does not uplift: no rocking harm from them
+    p_harm, p_harm_interval = _probability(0.0, exact_weight, sampled_harm, sampled_weights)
+    if bool(np.all(pure_sliding_proved(item_cases["mu_static"], item_cases["b_over_h"]))):
+        # it cannot uplift at any of its mu values (mu_s < b/h both ways): it neither rocks nor overturns,
+        # whatever the histories, so these chances are exactly 0, not a sample's 0 with an interval
+        p_overturn_interval = p_harm_interval = (0.0, 0.0)
     intervals = _quantile_intervals(values, weights, sampled_weights, exact_weight)
     sources = [s for s in (RECORD, REGRESSION, SYNTHETIC, PULSE) if s in set(units["demand_source"])]
     return {
@@ -235,6 +295,8 @@ def _item_demand(item_cases: pd.DataFrame, histories: pd.DataFrame | None, regre
             " " + planar_note(len(planar_motions), n_motions) if planar_motions else ""),
         "demand_planar": bool(planar_motions),
         "demand_uplift": uplift,
+        "p_rocking_harm": p_harm, "p_rocking_harm_low": p_harm_interval[0], "p_rocking_harm_high": p_harm_interval[1],
+        "demand_mode": suite_mode(severities),
     }
 
 
@@ -281,6 +343,25 @@ def _source_note(item_cases: pd.DataFrame, source_of: pd.Series, constants: Regr
             parts.append(f"{_of(counts[source], n)} simulated under {what}"
                          + (f" (the regression does not hold: {reasons})" if reasons else ""))
     return "; ".join(parts) + "."
+
+
+def regression_note(pulse_share: float, im: float, uplift: bool, constants: RegressionConstants) -> str:
+    """Why the paper's regression does not apply to one case (""  where it does,
+    :func:`~assess.fragility.suite.regression_applies`): "not applicable: ..." with each reason.
+
+    >>> c = RegressionConstants(zeta=0.37, eta=0.953, sigma=0.445, im_min=1.71, im_max=6.4)
+    >>> regression_note(0.5, 3.0, False, c), regression_note(0.2, 9.1, True, c)
+    ('', 'not applicable: pulse share 0.2 < 0.38 (no clear pulse), IM 9.1 outside 1.71-6.4, the item uplifts')
+    """
+    share = 1.0 if not np.isfinite(pulse_share) else float(pulse_share)
+    reasons = []
+    if share < PULSE_SHARE_MIN:
+        reasons.append(f"pulse share {share:.2g} < {PULSE_SHARE_MIN:g} (no clear pulse)")
+    if not constants.im_min <= im <= constants.im_max:
+        reasons.append(f"IM {im:.2g} outside {constants.im_min:g}-{constants.im_max:g}")
+    if uplift:
+        reasons.append("the item uplifts")
+    return "not applicable: " + ", ".join(reasons) if reasons else ""
 
 
 def _outside_reasons(cases: pd.DataFrame, motions: pd.DataFrame, constants: RegressionConstants) -> str:

@@ -519,12 +519,19 @@ SETTING_BOUNDS = {
     **{f"mitigation_cost_{kind}": (0.0, 1e12, f"mitigation_cost_{kind} is what '{kind}' costs per unit, "
                                    "0 or more (0: not given)")
        for kind in ("anchor", "tether", "lock_casters", "restrain", "room", "lower_contents", "relocate")},
+    "rocking_harm_theta_over_alpha": (0.01, 0.99, "rocking_harm_theta_over_alpha is the peak rotation, as a "
+                                      "share of the tipping angle alpha, from which rocking that does not "
+                                      "overturn harms the item or its contents; at 1 the item overturns"),
 }
 #: The settings whose defaults are the paper's (the others cite their own source in defaults.toml).
 _REGRESSION_SETTINGS = ("zeta", "eta", "sigma", "im_min", "im_max")
 #: Longest text of a text setting (facility, site): it heads the report.
 SETTING_TEXT_MAX_CHARS = 200
-_ORDERED_SETTINGS = (("risk_pf_moderate", "risk_pf_high"), ("im_min", "im_max"))
+_ORDERED_SETTINGS = (("risk_pf_moderate", "risk_pf_high"), ("im_min", "im_max"),
+                     ("risk_overturn_moderate", "risk_overturn_high"))
+#: Settings that are probability thresholds (strictly between 0 and 1).
+_PROBABILITY_SETTINGS = ("risk_pf_moderate", "risk_pf_high", "risk_overturn_moderate", "risk_overturn_high",
+                         "risk_rocking_moderate")
 
 
 def _read_settings(table: Table, defaults: dict, report: SheetReport) -> dict:
@@ -585,7 +592,7 @@ def _check_settings(merged: dict, user: dict, header: Header | None, report: She
                       f"it lies between {low:g} and {high:g}: {why}.",
                       f"correct it, or delete the row to use the default {defaults[key]:g}"
                       + (" (Konstantinidis & Makris 2010)." if key in _REGRESSION_SETTINGS else "."))
-    for key in _ORDERED_SETTINGS[0]:
+    for key in _PROBABILITY_SETTINGS:
         if key in user and not 0 < merged[key] < 1:
             bad.add(key)
             report.at(user[key][1], header, f"setting '{key}' is {schema.quote(merged[key])}; "

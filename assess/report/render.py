@@ -31,6 +31,7 @@ from assess.quantity_text import system_of
 from assess.report import figures
 from assess.report.costs import costs_context
 from assess.report.curve import curve_context
+from assess.risk_classes import rule_text
 from assess.report.sentences import (
     DASH, action_groups, case_outcomes, changes, cm_interval_text, finite, flag_groups, format_cm, format_percent,
     format_significant, integer_text, interval_text, list_text, method_notes, risk_units, suite_text, text, total_units,
@@ -146,6 +147,12 @@ def _item_row(row: pd.Series, system: str = "si") -> dict:
         "demand_interval": cm_interval_text(row, "median") + " / " + cm_interval_text(row, "p84"),
         "p_overturn": format_percent(row.get("p_overturn")),
         "p_overturn_interval": interval_text(row.get("p_overturn_low"), row.get("p_overturn_high")),
+        "p_rocking_harm": format_percent(row.get("p_rocking_harm")),
+        "p_rocking_harm_interval": interval_text(row.get("p_rocking_harm_low"), row.get("p_rocking_harm_high")),
+        "risk_reason": text(row.get("risk_reason")),
+        "regression_applies": isinstance(row.get("regression_applies"), (bool, np.bool_))
+        and bool(row.get("regression_applies")),
+        "regression_note": text(row.get("regression_note")),
         "suite": suite_text(row),
     }
 
@@ -296,8 +303,7 @@ def report_context(result) -> dict:
                        "source": text((result.regression or {}).get("source"))
                        or "Konstantinidis & Makris (2010)"},
         "anchorage": anchorage_method(result.anchorage, summary),
-        "thresholds": {"high": finite(settings.get("risk_pf_high")),
-                       "moderate": finite(settings.get("risk_pf_moderate"))},
+        "class_rule": rule_text(settings) if "risk_overturn_high" in settings else "",
         "figures": {
             "demand": [_data_uri(svg) for svg in demand_svgs],
             "fragility": _data_uri(figures.fragility_figure(sorted_result)),

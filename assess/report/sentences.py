@@ -13,6 +13,7 @@ import math
 import pandas as pd
 
 from assess.fragility import friction_range, planar
+from assess.quantity_text import percent_text
 from assess.result import RISK_CLASSES, AssessmentResult
 
 DASH = "–"
@@ -58,19 +59,9 @@ def format_cm(value) -> str:
 
 
 def format_percent(value) -> str:
-    """A probability as a whole percentage ("<1%" and ">99%" at the ends); NaN as "–"."""
-    number = finite(value)
-    if number is None:
-        return DASH
-    if number <= 0:
-        return "0%"
-    if number < 0.005:
-        return "<1%"
-    if number >= 1:
-        return "100%"
-    if number > 0.995:
-        return ">99%"
-    return f"{100 * number:.0f}%"
+    """A probability as a whole percentage: :func:`assess.quantity_text.percent_text`, the one formatting
+    of a chance in tables and sentences alike."""
+    return percent_text(value)
 
 
 def text(value) -> str:
