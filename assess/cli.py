@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import re
 import sys
 import traceback
 from pathlib import Path
@@ -104,6 +105,36 @@ def _whole_number(minimum: int):
     return parse
 
 
+_NUMBER_START = re.compile(r"^[-+]?(\d|\.\d)")
+
+
+def joined_oq_site(argv: list[str]) -> list[str]:
+    """``argv`` with ``--oq-site LON,LAT`` given as one ``--oq-site=LON,LAT``, so that a negative longitude
+    (``--oq-site -0.2,-0.3``) is not taken for an option, and ``--oq-site -0.2, -0.3`` (split by the
+    shell at the space) is one value.
+
+    >>> joined_oq_site(["w.xlsx", "--oq-site", "-0.2,", "-0.3", "--quiet"])
+    ['w.xlsx', '--oq-site=-0.2,-0.3', '--quiet']
+    """
+    out, k = [], 0
+    while k < len(argv):
+        token = argv[k]
+        value = None
+        if token == "--oq-site" and k + 1 < len(argv) and _NUMBER_START.match(argv[k + 1]):
+            value, k = argv[k + 1], k + 2
+        elif token.startswith("--oq-site="):
+            value, k = token[len("--oq-site="):], k + 1
+        if value is None:
+            out.append(token)
+            k += 1
+            continue
+        while k < len(argv) and (value.rstrip().endswith(",") or argv[k].startswith(",")) \
+                and _NUMBER_START.match(argv[k].lstrip(",").strip()):
+            value, k = value.rstrip() + argv[k], k + 1
+        out.append(f"--oq-site={value}")
+    return out
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="assess", description=DESCRIPTION, formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -132,7 +163,7 @@ def build_parser() -> argparse.ArgumentParser:
                              "gives each item's fragilities (fragility/) and annual rates of failure")
     parser.add_argument("--oq-site", metavar="SITE",
                         help="which site of a multi-site OpenQuake file: a row number (0 = first), a "
-                             "custom_site_id, or lon,lat (write --oq-site=-122.5,38.1 when lon is negative)")
+                             "custom_site_id, or lon,lat in degrees (e.g. --oq-site -122.5,38.1)")
     parser.add_argument("--derive-floors", metavar="ROOF_FLOOR", type=_whole_number(1),
                         help="floors without a motion take the ground motions amplified by 1 + 2z/h "
                              "(ASCE 7-16 eq. 13.3-1), z/h = floor / ROOF_FLOOR; such items are flagged "
@@ -306,7 +337,7 @@ def _main(argv: list[str] | None) -> int:
     elif argv and argv[0] == "batch":
         args, command = build_batch_parser().parse_args(argv[1:]), _batch
     else:
-        args = build_parser().parse_args(argv)  # argparse exits with 2 on a wrong option
+        args = build_parser().parse_args(joined_oq_site(argv))  # argparse exits with 2 on a wrong option
         command = _assess
     quiet = command is _simulate or args.quiet
 

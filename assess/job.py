@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import contextlib
 import json
+import re
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Callable, Iterator
@@ -108,12 +109,17 @@ def oq_site(text: str | None):
         return None
     if text.strip().isdigit():
         return int(text)
-    parts = text.split(",")
+    parts = [part for part in re.split(r"[,\s]+", text.strip()) if part]
     if len(parts) == 2:
         try:
             return (float(parts[0]), float(parts[1]))
         except ValueError:
             pass
+    if re.match(r"^[-+]?(\d|\.\d)", text.strip()) and not re.fullmatch(r"[\w.:-]+", text.strip()):
+        raise InputError([Problem(file="--oq-site", message=f"'{text}' is neither a row number, nor lon,lat "
+                                  "(two numbers in degrees), nor a site id.",
+                                  fix="give the site as lon,lat, e.g. --oq-site -122.5,38.1, or its row number "
+                                      "(0 = first) or custom_site_id.")])
     return text
 
 
