@@ -443,7 +443,7 @@ def default_out_dir(portfolio: Path) -> Path:
 # ---------------------------------------------------------------- running
 
 def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, seed: int = 0,
-                  formats: tuple[str, ...] = ("html", "pdf", "xlsx"), units: str = "si",
+                  formats: tuple[str, ...] = ("html", "pdf", "xlsx"), units: str | None = None,
                   say: Callable[[str], None] = lambda message: None) -> StagedPortfolio:
     """Assess every building through ``runner`` (a :class:`~assess.cache.CachingRunner`), writing into a
     staging folder beside ``out_dir``; returns it staged (:meth:`StagedPortfolio.commit` puts it in place).

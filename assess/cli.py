@@ -149,9 +149,11 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--format", metavar="FORMATS", type=_job_formats, default=JOB_FORMATS,
                         help="what to write besides the CSV files, comma-separated: html, pdf (the report), "
                              "xlsx (summary.xlsx, the summary table for a spreadsheet); default: html,pdf,xlsx")
-    parser.add_argument("--units", choices=("si", "us"), default="si",
-                        help="us: summary.xlsx also gives every length in inches, beside the centimetres "
-                             "(default: si)")
+    parser.add_argument("--units", choices=("si", "us"),
+                        help="the units of the report, its advice and summary.xlsx: si (cm, kN, kg; A4) or us "
+                             "(in, lb, kip; letter paper; summary.csv adds _in and _kip columns beside its SI "
+                             "ones); default: the settings' units, else us when the workbook's lengths are in "
+                             "inches or feet, else si")
     parser.add_argument("--jobs", metavar="N", type=_whole_number(1),
                         help="threads for the time-history simulation (default: all cores); "
                              "the results do not depend on it")

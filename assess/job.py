@@ -123,6 +123,14 @@ def oq_site(text: str | None):
     return text
 
 
+def with_units(inventory, units: str | None):
+    """``inventory`` with its settings' ``units`` set to ``units`` (``--units``), if given: the decisions,
+    the report and the tables then write lengths and forces in it (:mod:`assess.quantity_text`)."""
+    if units is None:
+        return inventory
+    return replace(inventory, settings={**inventory.settings, "units": units})
+
+
 def with_comparison(result: AssessmentResult, explicit: Path | None, in_out_dir: Path, say: Say) -> AssessmentResult:
     """``result`` with its comparison against a previous summary.
 
@@ -155,7 +163,7 @@ class AssessmentJob:
     hazard: str
     out: Path | None = None
     formats: tuple[str, ...] = JOB_FORMATS
-    units: str = "si"
+    units: str | None = None
     jobs: int | None = None
     seed: int = 0
     oq_hazard: Path | None = None
@@ -189,7 +197,7 @@ def run_job(job: AssessmentJob, say: Say = lambda message: None) -> Iterator[Lev
     for out_dir in out_dirs:
         check_output_folder(out_dir)
     say(f"reading {job.workbook}")
-    inventory = read_workbook(job.workbook)
+    inventory = with_units(read_workbook(job.workbook), job.units)
     check_inputs(inventory, job.allow_records_outside)
     oq_hazard = None
     if job.oq_hazard is not None:
@@ -216,7 +224,7 @@ def run_job(job: AssessmentJob, say: Say = lambda message: None) -> Iterator[Lev
             "summary.xlsx" if f == "xlsx" else f"report.{f}" for f in job.formats]
             + (["fragility/"] if result.curve_risk is not None else [])))
         others = tuple(other for other in results if other is not result)
-        files = output.render_outputs(result, job.formats, units=job.units, other_levels=others)
+        files = output.render_outputs(result, job.formats, other_levels=others)
         yield LevelOutput(result, out_dir, files)
 
 
