@@ -31,6 +31,7 @@ from assess.inventory import read_workbook
 from assess.mechanics.runner import LocalRunner
 from assess.folders import check_output_folder
 from assess.report.calibration import render_calibration_html
+from assess.quantity_text import system_of
 from assess.result import AssessmentResult
 from assess.tables import csv_text, restore_text, summary_text
 
@@ -150,7 +151,8 @@ def with_comparison(result: AssessmentResult, explicit: Path | None, in_out_dir:
         return result
     previous = restore_text(previous)  # the text summary.csv protects from spreadsheet formulas
     say(f"comparing with the previous run {explicit or in_out_dir}")
-    return replace(result, comparison=compare_summaries(previous, summary_text(result.summary)))
+    return replace(result, comparison=compare_summaries(previous, summary_text(result.summary),
+                                                        system_of(result.settings or {})))
 
 
 # ---------------------------------------------------------------- assess WORKBOOK --hazard LEVEL[,LEVEL...]

@@ -200,3 +200,18 @@ def test_oq_site_that_is_no_site_is_refused_with_the_form_to_use():
         job.oq_site("-0.2; -0.3")
     assert "lon,lat" in str(caught.value) and "--oq-site -122.5,38.1" in str(caught.value)
     assert job.oq_site("0") == 0 and job.oq_site("HOSP-1") == "HOSP-1"
+
+
+def test_the_item_strips_draw_every_history_inside_the_strip_in_either_unit(unit_runs):
+    """Each history's dot (or cross: it overturned) lies on the strip, between its left margin and its right
+    end, in inches as in cm (a dot placed at its sliding times the pixel scale twice lies far off it)."""
+    for name, out in unit_runs.items():
+        html = (out / "report.html").read_text()
+        strips = re.findall(r'<svg class="strip".*?</svg>', html, re.S)
+        assert strips, "no item strip drawn"
+        for strip in strips:
+            width = float(re.search(r'width="(\d+)"', strip).group(1))
+            xs = [float(x) for x in re.findall(r'<circle cx="([\d.]+)"', strip)]
+            xs += [float(x) for x in re.findall(r'<text x="([\d.]+)" y="[\d.]+" text-anchor="middle" font-size="9"',
+                                                 strip)]
+            assert xs and all(0 < x <= width for x in xs), (name, xs, width)

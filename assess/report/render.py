@@ -202,11 +202,11 @@ def _item_details(rows: list[dict], summary: pd.DataFrame, runs: pd.DataFrame | 
 def _history_spark(history: dict, system: str = "si") -> dict:
     """The item's worst run as two small polylines: sliding [cm, or in for ``system`` ``'us'``] (with the
     clearance) and θ/α (with ±1)."""
-    scale = length_value(1.0, system)
+    per_cm = length_value(1.0, system)
     time_s = np.asarray(history["time_s"], dtype=float)
     step = max(1, int(np.ceil(time_s.size / SPARK_POINTS)))
     time_s = time_s[::step]
-    sliding = np.asarray(history["sliding_cm"], dtype=float)[::step] * scale
+    sliding = np.asarray(history["sliding_cm"], dtype=float)[::step] * per_cm
     theta = np.clip(np.asarray(history["theta_over_alpha"], dtype=float)[::step], -3.0, 3.0)
     span = max(float(time_s[-1]), 1e-9)
     half = SPARK_HEIGHT / 2.0
@@ -218,7 +218,7 @@ def _history_spark(history: dict, system: str = "si") -> dict:
         finite = np.isfinite(xs) & np.isfinite(ys)  # the run stops where the item overturns
         return " ".join(f"{x:.1f},{y:.1f}" for x, y in zip(xs[finite], ys[finite]))
 
-    clearance = float(history.get("clearance_cm", np.nan)) * scale
+    clearance = float(history.get("clearance_cm", np.nan)) * per_cm
     sliding_limit = max(float(np.nanmax(np.abs(sliding))) if np.isfinite(sliding).any() else 0.0,
                         clearance if np.isfinite(clearance) else 0.0, 0.1)
     theta_limit = max(float(np.nanmax(np.abs(theta))) if np.isfinite(theta).any() else 0.0, 1.0)
@@ -234,10 +234,10 @@ def _suite_strip(runs: pd.DataFrame, clearance_cm: float | None, system: str = "
     """An item's suite as a strip; lengths in cm, or in inches for ``system`` ``'us'``."""
     if runs.empty:
         return None
-    scale = length_value(1.0, system)
-    sliding = pd.to_numeric(runs["sliding_cm"], errors="coerce").fillna(0.0) * scale
-    clearance_cm = None if clearance_cm is None else clearance_cm * scale  # in the report's unit from here
-    top = max(float(sliding.max()), clearance_cm or 0.0, 1.0) * 1.08
+    per_cm = length_value(1.0, system)
+    sliding = pd.to_numeric(runs["sliding_cm"], errors="coerce").fillna(0.0) * per_cm
+    clearance = None if clearance_cm is None else clearance_cm * per_cm  # in the report's unit
+    top = max(float(sliding.max()), clearance or 0.0, 1.0) * 1.08
     scale = (STRIP_WIDTH - STRIP_LEFT - 10) / top
     motions = list(dict.fromkeys(runs["motion_key"]))
     lines = []
@@ -246,12 +246,12 @@ def _suite_strip(runs: pd.DataFrame, clearance_cm: float | None, system: str = "
         y = 8 + STRIP_ROW * k
         lines.append({"y": y, "label": text(mine["motion"].iloc[0])[:34],
                       "dots": [{"x": STRIP_LEFT + float(v) * scale, "overturned": bool(o)}
-                               for v, o in zip(pd.to_numeric(mine["sliding_cm"], errors="coerce").fillna(0.0) * scale,
+                               for v, o in zip(pd.to_numeric(mine["sliding_cm"], errors="coerce").fillna(0.0) * per_cm,
                                                mine["overturned"])]})
     height = 8 + STRIP_ROW * len(motions) + 14
     ticks = [{"x": STRIP_LEFT + t * scale, "label": f"{t:g}"} for t in _nice_ticks(top)]
     return {"width": STRIP_WIDTH, "height": height, "left": STRIP_LEFT, "lines": lines, "axis_y": height - 14,
-            "ticks": ticks, "clearance_x": None if clearance_cm is None else STRIP_LEFT + clearance_cm * scale}
+            "ticks": ticks, "clearance_x": None if clearance is None else STRIP_LEFT + clearance * scale}
 
 
 def _nice_ticks(top: float) -> list[float]:
