@@ -137,6 +137,7 @@ def test_floor_labels_under_us_floor_numbering():
     us = render_html(dataclasses.replace(result, settings={**result.settings, "floor_numbering": "ground_1"}))
     si = render_html(result)
     assert "ground floor = 1" in us and "ground floor = 1" not in si
+    assert "the ground floor 1 (the workbook&#39;s floor 0)" in us
 
     def floors(html):
         table = html[html.index('id="all-items-table"'):]

@@ -330,11 +330,15 @@ def report_context(result) -> dict:
 def report_units(system: str, numbering: str) -> dict:
     """The report's unit words for the template: ``length`` (cm or in), ``length_word`` (centimetres or
     inches), ``page`` (the CSS page size, A4 or letter: a US report is printed on letter paper) and
-    ``floor_note`` (how floors are counted when they are not counted from 0)."""
+    ``floor_note`` and ``floor_sentence`` (how floors are counted, when the ground floor is labelled 1)."""
     us = system == "us"
+    ground_1 = numbering == "ground_1"
     return {"length": length_unit(system), "length_word": "inches" if us else "centimetres",
             "page": "letter" if us else "A4",
-            "floor_note": "ground floor = 1" if numbering == "ground_1" else ""}
+            "floor_note": "ground floor = 1" if ground_1 else "",
+            "floor_sentence": ("Floors are labelled as in the US, the ground floor 1 (the workbook's floor 0), "
+                               "floors below ground as in the workbook (−1); motion names and notes quoting the "
+                               "workbook keep its numbers." if ground_1 else "")}
 
 
 def _with_summary(result, summary: pd.DataFrame):
