@@ -246,7 +246,8 @@ def anchorage_demand(item, row: dict, settings: dict) -> dict:
     basis = (f"ASCE 7-16 eqs. 13.3-1 to 13.3-3: a_p {COMPONENT_AMPLIFICATION:g}, R_p "
              f"{COMPONENT_RESPONSE_MODIFICATION:g} (Table 13.5-1), I_p {importance:g} (§13.1.3), S_DS {sds_g:g} g, "
              f"z/h {z_over_h:.2f}{'' if roof > 0.0 else ' (roof_floor not given: z/h = 1)'}; W_p "
-             f"{force_text(weight_n / 1000, system_of(settings))} per unit; tension from 0.9D - 1.0E with E_v = 0.2 S_DS D, "
+             f"{force_text(weight_n / 1000, system_of(settings))} per unit; tension from 0.9D - 1.0E with "
+             "E_v = 0.2 S_DS D, "
              "without the overstrength factor for anchors in concrete (§13.4.2)")
     return {"anchor_force_kn": force_n / 1000.0, "anchor_moment_knm": moment_nm / 1000.0,
             "anchor_tension_kn": tension_n / 1000.0, "anchor_basis": basis}

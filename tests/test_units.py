@@ -9,7 +9,6 @@ here by hand, not taken from assess. Also the small refusals that come with the 
 from __future__ import annotations
 
 import dataclasses
-import io
 import math
 import re
 import zlib

@@ -51,7 +51,8 @@ def with_us_units(summary: pd.DataFrame) -> pd.DataFrame:
     ``*_kn`` force by kips (``*_kip``) and every ``*_knm`` moment by kip·ft (``*_kip_ft``); the SI columns
     are kept as they are.
 
-    >>> with_us_units(pd.DataFrame({"clearance_cm": [2.54], "anchor_force_kn": [4.4482216152605]})).round(6).to_dict("list")
+    >>> table = pd.DataFrame({"clearance_cm": [2.54], "anchor_force_kn": [4.4482216152605]})
+    >>> with_us_units(table).round(6).to_dict("list")
     {'clearance_cm': [2.54], 'clearance_in': [1.0], 'anchor_force_kn': [4.448222], 'anchor_force_kip': [1.0]}
     """
     columns = {}
