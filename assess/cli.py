@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import re
 import sys
 import traceback
 from pathlib import Path
@@ -17,6 +16,7 @@ from pathlib import Path
 from assess import __version__
 from assess.errors import InputError, Problem
 from assess.folders import write_file_atomically
+from assess.site_option import joined_oq_site
 from assess.interrupts import (Interrupt, caused_by, held_back, interrupted, reader_gone, sigint_recorded,
                                write_uninterrupted)
 
@@ -103,36 +103,6 @@ def _whole_number(minimum: int):
             raise argparse.ArgumentTypeError(f"'{text}' must be {minimum} or more")
         return value
     return parse
-
-
-_NUMBER_START = re.compile(r"^[-+]?(\d|\.\d)")
-
-
-def joined_oq_site(argv: list[str]) -> list[str]:
-    """``argv`` with ``--oq-site LON,LAT`` given as one ``--oq-site=LON,LAT``, so that a negative longitude
-    (``--oq-site -0.2,-0.3``) is not taken for an option, and ``--oq-site -0.2, -0.3`` (split by the
-    shell at the space) is one value.
-
-    >>> joined_oq_site(["w.xlsx", "--oq-site", "-0.2,", "-0.3", "--quiet"])
-    ['w.xlsx', '--oq-site=-0.2,-0.3', '--quiet']
-    """
-    out, k = [], 0
-    while k < len(argv):
-        token = argv[k]
-        value = None
-        if token == "--oq-site" and k + 1 < len(argv) and _NUMBER_START.match(argv[k + 1]):
-            value, k = argv[k + 1], k + 2
-        elif token.startswith("--oq-site="):
-            value, k = token[len("--oq-site="):], k + 1
-        if value is None:
-            out.append(token)
-            k += 1
-            continue
-        while k < len(argv) and (value.rstrip().endswith(",") or argv[k].startswith(",")) \
-                and _NUMBER_START.match(argv[k].lstrip(",").strip()):
-            value, k = value.rstrip() + argv[k], k + 1
-        out.append(f"--oq-site={value}")
-    return out
 
 
 def build_parser() -> argparse.ArgumentParser:
