@@ -57,7 +57,7 @@ from assess.inventory import read_workbook, schema, xlsx
 from assess.inventory.schema import Column, SheetSpec
 from assess.inventory.workbook import SheetReport, open_book, read_table, sheet_cells
 from assess.folders import (OUTPUT_NAMES, existing_folder, folder_mode, machine_refusal, refuse_foreign_files,
-                            swap_folder, write_files)
+                            refuse_open_office_files, swap_folder, write_files)
 from assess.tables import csv_text, restore_text
 
 #: The sheet of a portfolio workbook (docs/workbook.md).
@@ -371,8 +371,11 @@ def check_portfolio_folder(out_dir: Path) -> None:
     if not existing_folder(out_dir, "batch run"):
         return
     foreign = []
+    refuse_open_office_files(out_dir, [entry.name for entry in out_dir.iterdir()])
     for entry in sorted(out_dir.iterdir(), key=lambda p: p.name):
         name = entry.name
+        if entry.is_dir() and not entry.is_symlink():
+            refuse_open_office_files(entry, [child.name for child in entry.iterdir()])
         if name in _BROWSER_FILES or (name in PORTFOLIO_FILES + (MANIFEST,) and entry.is_file()
                                       and not entry.is_symlink()):
             continue
@@ -440,7 +443,7 @@ def default_out_dir(portfolio: Path) -> Path:
 # ---------------------------------------------------------------- running
 
 def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, seed: int = 0,
-                  formats: tuple[str, ...] = ("html", "pdf", "xlsx"), units: str = "si",
+                  formats: tuple[str, ...] = ("html", "pdf", "xlsx"), units: str | None = None,
                   say: Callable[[str], None] = lambda message: None) -> StagedPortfolio:
     """Assess every building through ``runner`` (a :class:`~assess.cache.CachingRunner`), writing into a
     staging folder beside ``out_dir``; returns it staged (:meth:`StagedPortfolio.commit` puts it in place).

@@ -16,6 +16,7 @@ from pathlib import Path
 from assess import __version__
 from assess.errors import InputError, Problem
 from assess.folders import write_file_atomically
+from assess.site_option import joined_oq_site
 from assess.interrupts import (Interrupt, caused_by, held_back, interrupted, reader_gone, sigint_recorded,
                                write_uninterrupted)
 
@@ -118,9 +119,11 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--format", metavar="FORMATS", type=_job_formats, default=JOB_FORMATS,
                         help="what to write besides the CSV files, comma-separated: html, pdf (the report), "
                              "xlsx (summary.xlsx, the summary table for a spreadsheet); default: html,pdf,xlsx")
-    parser.add_argument("--units", choices=("si", "us"), default="si",
-                        help="us: summary.xlsx also gives every length in inches, beside the centimetres "
-                             "(default: si)")
+    parser.add_argument("--units", choices=("si", "us"),
+                        help="the units of the report, its advice and summary.xlsx: si (cm, kN, kg; A4) or us "
+                             "(in, lb, kip; letter paper; summary.csv adds _in and _kip columns beside its SI "
+                             "ones); default: the settings' units, else us when the workbook's lengths are in "
+                             "inches or feet, else si")
     parser.add_argument("--jobs", metavar="N", type=_whole_number(1),
                         help="threads for the time-history simulation (default: all cores); "
                              "the results do not depend on it")
@@ -132,7 +135,7 @@ def build_parser() -> argparse.ArgumentParser:
                              "gives each item's fragilities (fragility/) and annual rates of failure")
     parser.add_argument("--oq-site", metavar="SITE",
                         help="which site of a multi-site OpenQuake file: a row number (0 = first), a "
-                             "custom_site_id, or lon,lat (write --oq-site=-122.5,38.1 when lon is negative)")
+                             "custom_site_id, or lon,lat in degrees (e.g. --oq-site -122.5,38.1)")
     parser.add_argument("--derive-floors", metavar="ROOF_FLOOR", type=_whole_number(1),
                         help="floors without a motion take the ground motions amplified by 1 + 2z/h "
                              "(ASCE 7-16 eq. 13.3-1), z/h = floor / ROOF_FLOOR; such items are flagged "
@@ -306,7 +309,7 @@ def _main(argv: list[str] | None) -> int:
     elif argv and argv[0] == "batch":
         args, command = build_batch_parser().parse_args(argv[1:]), _batch
     else:
-        args = build_parser().parse_args(argv)  # argparse exits with 2 on a wrong option
+        args = build_parser().parse_args(joined_oq_site(argv))  # argparse exits with 2 on a wrong option
         command = _assess
     quiet = command is _simulate or args.quiet
 

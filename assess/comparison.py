@@ -14,7 +14,7 @@ from pathlib import Path
 import pandas as pd
 
 from assess.errors import InputError, Problem
-from assess.quantity_text import percent_text
+from assess.quantity_text import length_text, percent_text
 
 RISK_ORDER = {"anchored": -1, "low": 0, "moderate": 1, "high": 2}
 #: Columns compared, with how each is written in the explanation.
@@ -57,18 +57,20 @@ def _moved(before, after, label, fmt) -> str | None:
     if b is not None or a is not None:
         if b is not None and a is not None and abs(a - b) <= max(0.005, 0.005 * abs(b)):
             return None
-        text = [("–" if v is None else percent_text(v) if fmt == "{:.0%}" else fmt.format(v)) for v in (b, a)]
+        text = [("–" if v is None else fmt(v) if callable(fmt) else percent_text(v) if fmt == "{:.0%}" else fmt.format(v))
+                for v in (b, a)]
         return f"{label} {text[0]} -> {text[1]}"
     sb, sa = ("" if pd.isna(v) else str(v) for v in (before, after))
     return None if sb == sa else f"{label} {sb or '–'} -> {sa or '–'}"
 
 
-def compare_summaries(previous: pd.DataFrame, current: pd.DataFrame) -> pd.DataFrame:
+def compare_summaries(previous: pd.DataFrame, current: pd.DataFrame, system: str = "si") -> pd.DataFrame:
     """One row per item of either run: risk before and after, the change, and why.
 
     ``change`` is ``up`` / ``down`` (risk class), ``same``, ``new`` (only now)
     or ``removed`` (only before); ``why`` lists the compared quantities that
-    moved. Rows are ordered: up, down, new, removed, same.
+    moved, lengths in the report's unit (``system``, :mod:`assess.quantity_text`). Rows are ordered: up,
+    down, new, removed, same.
 
     >>> before = pd.DataFrame({"id": ["A"], "name": ["fridge"], "risk": ["moderate"], "pta_g": [0.54],
     ...                        "mode": ["slide"], "p_beyond_clearance": [0.2]})
@@ -90,7 +92,8 @@ def compare_summaries(previous: pd.DataFrame, current: pd.DataFrame) -> pd.DataF
         else:
             delta = RISK_ORDER.get(str(risk_a), 0) - RISK_ORDER.get(str(risk_b), 0)
             change = "up" if delta > 0 else "down" if delta < 0 else "same"
-        reasons = [_moved(record.get(f"{column}_before"), record.get(f"{column}_after"), label, fmt)
+        reasons = [_moved(record.get(f"{column}_before"), record.get(f"{column}_after"), label,
+                          (lambda value: length_text(value, system)) if column.endswith("_cm") else fmt)
                    for column, label, fmt in COMPARED if column in previous and column in current]
         name = record.get("name_after")
         row = {"id": item_id, "name": name if isinstance(name, str) else record.get("name_before"),

@@ -20,7 +20,7 @@ from assess.anchorage import AnchorageSite, anchorage_site, item_anchorage
 from assess.fragility.friction_range import mu_dependence_sentence
 from assess.fragility.regression import RegressionConstants
 from assess.mechanics.modes import ROCK, SLIDE_ROCK
-from assess.quantity_text import percent_text, system_of
+from assess.quantity_text import length_text, percent_text, system_of
 from assess.result import Flag
 from assess.risk_classes import (
     Chances, classify_risk, deciding_chance, performance_objective, risk_range, risk_reason, rocking_harm_counts,
@@ -71,7 +71,7 @@ def decide(equipment: pd.DataFrame, governing: dict, uplift: dict, cases: pd.Dat
             continue
         row = {"consequence": item_consequence(item), "clearance_cm": item.clearance_m * 100.0,
                **governing[item.id]}
-        found = item_flags(item, cases[cases["id"] == item.id], constants)
+        found = item_flags(item, cases[cases["id"] == item.id], constants, system_of(settings))
         flags.extend(found)
         decided["flags"] = tuple(flag.code for flag in found)
         decided.update(decide_item(item, row, uplift[item.id], settings, site))
@@ -167,8 +167,10 @@ def recommended_action(row: dict, uplift: bool, settings: dict) -> str:
                 f"motion{'s' if row['suite_motions'] != 1 else ''}")
     if row["risk"] in ("high", "moderate"):
         verb = "Restrain it, or give it room" if row["risk"] == "high" else "Give it room, or restrain it"
-        return (f"{verb}: it needs {np.ceil(row['demand_room_cm']):.0f} cm to be low risk and has "
-                f"{np.floor(row['clearance_cm']):.0f} cm ({row['p_beyond_clearance']:.0%} chance of sliding past it)")
+        system = system_of(settings)
+        return (f"{verb}: it needs {length_text(row['demand_room_cm'], system, 'up')} to be low risk and has "
+                f"{length_text(row['clearance_cm'], system, 'down')} "
+                f"({percent_text(row['p_beyond_clearance'])} chance of sliding past it)")
     return "No action needed"
 
 
@@ -198,8 +200,9 @@ def what_if(row: dict, settings: dict) -> str:
     anchored = "Anchored or restrained, it would neither slide nor overturn."
     if kind == "anchor":
         return anchored + (" Giving it room does not help: it overturns or rocks where it stands.")
-    room = float(np.ceil(row["demand_room_cm"]))
-    return (f"{anchored} Given {room:.0f} cm of room (it has {np.floor(row['clearance_cm']):.0f} cm), its chance of "
+    system = system_of(settings)
+    return (f"{anchored} Given {length_text(row['demand_room_cm'], system, 'up')} of room (it has "
+            f"{length_text(row['clearance_cm'], system, 'down')}), its chance of "
             f"sliding past it would be {float(settings['risk_pf_moderate']):.0%}: low risk.")
 
 
@@ -239,7 +242,7 @@ def priorities(summary: pd.DataFrame) -> pd.Series:
     return ranks
 
 
-def item_flags(item, item_cases: pd.DataFrame, constants: RegressionConstants) -> list[Flag]:
+def item_flags(item, item_cases: pd.DataFrame, constants: RegressionConstants, system: str = "si") -> list[Flag]:
     """The caveats of one freestanding item's result, from its cases (every motion and direction)."""
     flags = []
     uplift = item_cases[item_cases["mode"].isin(UPLIFT_MODES)]
@@ -266,6 +269,6 @@ def item_flags(item, item_cases: pd.DataFrame, constants: RegressionConstants) -
             f"response analysis.")))
     if not np.isclose(item.cg_height_m, item.height_m / 2.0):
         flags.append(Flag(item.id, "cg_not_mid_height", (
-            f"centre of mass at {item.cg_height_m * 100:.0f} cm, not mid-height: alpha and b/h use it; "
+            f"centre of mass at {length_text(item.cg_height_m * 100, system)}, not mid-height: alpha and b/h use it; "
             "p assumes the mass spread over the whole box.")))
     return flags

@@ -34,8 +34,39 @@ def check_output_folder(out_dir: Path) -> None:
     """
     out_dir = Path(out_dir)
     if existing_folder(out_dir, "run"):
-        foreign = sorted(entry.name for entry in out_dir.iterdir() if entry.name not in OUTPUT_NAMES)
-        refuse_foreign_files(out_dir, foreign)
+        names = sorted(entry.name for entry in out_dir.iterdir())
+        refuse_open_office_files(out_dir, names)
+        refuse_foreign_files(out_dir, [name for name in names if name not in OUTPUT_NAMES])
+
+
+#: The lock file Excel (and LibreOffice, ``.~lock.<name>#``) keeps beside a workbook it has open.
+OFFICE_LOCK_PREFIXES = ("~$", ".~lock.")
+
+
+def office_lock_owner(name: str) -> str | None:
+    """The output file an office program holds open, from the name of its lock file; None otherwise.
+
+    >>> office_lock_owner("~$summary.xlsx"), office_lock_owner(".~lock.summary.xlsx#"), office_lock_owner("notes.txt")
+    ('summary.xlsx', 'summary.xlsx', None)
+    """
+    for prefix in OFFICE_LOCK_PREFIXES:
+        if name.startswith(prefix):
+            owner = name[len(prefix):].rstrip("#")
+            # Excel keeps the name's last characters only: "~$mmary.xlsx" for a long name
+            return next((known for known in sorted(OUTPUT_NAMES) if known.endswith(owner) and owner), owner)
+    return None
+
+
+def refuse_open_office_files(out_dir: Path, names: list[str]) -> None:
+    """Exit 2 when an output file is open in Excel or LibreOffice (its lock file is in the folder): the
+    folder cannot be replaced while it is, and the lock file is not one of ours."""
+    open_files = sorted({owner for owner in map(office_lock_owner, names) if owner})
+    if open_files:
+        shown = ", ".join(open_files)
+        raise InputError([Problem(
+            file=str(out_dir), message=f"{shown} in the output folder is open in Excel (or another spreadsheet "
+            f"program: its lock file is there), so assess cannot replace the folder.",
+            fix=f"close {shown} in Excel, then run again; or give --out another folder.")])
 
 
 def existing_folder(out_dir: Path, run: str) -> bool:

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import contextlib
 import json
+import re
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Callable, Iterator
@@ -30,6 +31,7 @@ from assess.inventory import read_workbook
 from assess.mechanics.runner import LocalRunner
 from assess.folders import check_output_folder
 from assess.report.calibration import render_calibration_html
+from assess.quantity_text import system_of
 from assess.result import AssessmentResult
 from assess.tables import csv_text, restore_text, summary_text
 
@@ -108,13 +110,26 @@ def oq_site(text: str | None):
         return None
     if text.strip().isdigit():
         return int(text)
-    parts = text.split(",")
+    parts = [part for part in re.split(r"[,\s]+", text.strip()) if part]
     if len(parts) == 2:
         try:
             return (float(parts[0]), float(parts[1]))
         except ValueError:
             pass
+    if re.match(r"^[-+]?(\d|\.\d)", text.strip()) and not re.fullmatch(r"[\w.:-]+", text.strip()):
+        raise InputError([Problem(file="--oq-site", message=f"'{text}' is neither a row number, nor lon,lat "
+                                  "(two numbers in degrees), nor a site id.",
+                                  fix="give the site as lon,lat, e.g. --oq-site -122.5,38.1, or its row number "
+                                      "(0 = first) or custom_site_id.")])
     return text
+
+
+def with_units(inventory, units: str | None):
+    """``inventory`` with its settings' ``units`` set to ``units`` (``--units``), if given: the decisions,
+    the report and the tables then write lengths and forces in it (:mod:`assess.quantity_text`)."""
+    if units is None:
+        return inventory
+    return replace(inventory, settings={**inventory.settings, "units": units})
 
 
 def with_comparison(result: AssessmentResult, explicit: Path | None, in_out_dir: Path, say: Say) -> AssessmentResult:
@@ -136,7 +151,8 @@ def with_comparison(result: AssessmentResult, explicit: Path | None, in_out_dir:
         return result
     previous = restore_text(previous)  # the text summary.csv protects from spreadsheet formulas
     say(f"comparing with the previous run {explicit or in_out_dir}")
-    return replace(result, comparison=compare_summaries(previous, summary_text(result.summary)))
+    return replace(result, comparison=compare_summaries(previous, summary_text(result.summary),
+                                                        system_of(result.settings or {})))
 
 
 # ---------------------------------------------------------------- assess WORKBOOK --hazard LEVEL[,LEVEL...]
@@ -149,7 +165,7 @@ class AssessmentJob:
     hazard: str
     out: Path | None = None
     formats: tuple[str, ...] = JOB_FORMATS
-    units: str = "si"
+    units: str | None = None
     jobs: int | None = None
     seed: int = 0
     oq_hazard: Path | None = None
@@ -183,7 +199,7 @@ def run_job(job: AssessmentJob, say: Say = lambda message: None) -> Iterator[Lev
     for out_dir in out_dirs:
         check_output_folder(out_dir)
     say(f"reading {job.workbook}")
-    inventory = read_workbook(job.workbook)
+    inventory = with_units(read_workbook(job.workbook), job.units)
     check_inputs(inventory, job.allow_records_outside)
     oq_hazard = None
     if job.oq_hazard is not None:
@@ -210,7 +226,7 @@ def run_job(job: AssessmentJob, say: Say = lambda message: None) -> Iterator[Lev
             "summary.xlsx" if f == "xlsx" else f"report.{f}" for f in job.formats]
             + (["fragility/"] if result.curve_risk is not None else [])))
         others = tuple(other for other in results if other is not result)
-        files = output.render_outputs(result, job.formats, units=job.units, other_levels=others)
+        files = output.render_outputs(result, job.formats, other_levels=others)
         yield LevelOutput(result, out_dir, files)
 
 

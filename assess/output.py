@@ -8,23 +8,27 @@ from __future__ import annotations
 
 from assess import report
 from assess.fragility.stripes import fragility_files
-from assess.report.spreadsheet import summary_workbook
+from assess.quantity_text import system_of
+from assess.report.spreadsheet import summary_workbook, with_us_units
 from assess.result import AssessmentResult
 from assess.tables import csv_text, neutralise_formulas, restore_text, summary_text  # noqa: F401 (re-exported)
 
 
-def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: str = "si",
+def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: str | None = None,
                    other_levels: tuple[AssessmentResult, ...] = ()) -> dict[str, bytes]:
     """All files of a run, by name, as bytes (nothing is written here).
 
     ``formats`` may hold ``html``, ``pdf`` (the report) and ``xlsx``
     (summary.xlsx, :func:`assess.report.spreadsheet.summary_workbook`, with
-    inches beside centimetres when ``units`` is ``us``). ``other_levels``, the
+    inches beside centimetres in US units). ``units`` (``si`` or ``us``) defaults to the result's
+    settings' (``--units`` or the workbook's, :func:`assess.quantity_text.system_of`). ``other_levels``, the
     results of the other levels of the same run, add their sheets to summary.xlsx
     after this level's.
     """
+    units = system_of(result.settings or {}) if units is None else system_of(units)
+    summary = with_us_units(result.summary) if units == "us" else result.summary
     files = {
-        "summary.csv": csv_text(summary_text(result.summary)).encode(),
+        "summary.csv": csv_text(summary_text(summary)).encode(),
         "motions.csv": csv_text(result.motions).encode(),
     }
     if "xlsx" in formats:

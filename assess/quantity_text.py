@@ -25,8 +25,24 @@ def system_of(settings_or_system) -> str:
     return system if system in SYSTEMS else "si"
 
 
+#: Relative slack before rounding up or down, so that a length typed as 8 in and held as 0.2032 m
+#: (8.000000000000002 or 7.999999999999999 in back) stays 8 in.
+ROUNDING_SLACK = 1e-9
+
+
 def _rounded(value: float, rounding: str) -> float:
-    return {"up": math.ceil, "down": math.floor}.get(rounding, round)(value)
+    """``value`` rounded to a whole number: ``'up'``, ``'down'`` or to the nearest; a value within
+    :data:`ROUNDING_SLACK` of a whole number is that number.
+
+    >>> _rounded(0.2032 * 100 / 2.54, "down"), _rounded(8.1, "down"), _rounded(8.1, "up")
+    (8, 8, 9)
+    """
+    slack = ROUNDING_SLACK * max(1.0, abs(value))
+    if rounding == "up":
+        return math.ceil(value - slack)
+    if rounding == "down":
+        return math.floor(value + slack)
+    return round(value)
 
 
 def length_value(value_cm: float, system="si") -> float:
@@ -39,6 +55,16 @@ def length_unit(system="si") -> str:
     return "in" if system_of(system) == "us" else "cm"
 
 
+def rounded_length(value_cm: float, system="si", rounding: str = "nearest") -> int:
+    """A length given in cm as a whole number of the system's unit (cm or in), rounded as
+    :func:`length_text` rounds it (a table's cell and the sentence beside it then read alike).
+
+    >>> rounded_length(20.0, "us", "down"), rounded_length(20.32, "us", "down"), rounded_length(54.2, "si", "up")
+    (7, 8, 55)
+    """
+    return int(_rounded(length_value(value_cm, system), rounding))
+
+
 def length_text(value_cm: float, system="si", rounding: str = "nearest") -> str:
     """A length (given in cm) as ``'55 cm'`` or ``'22 in'``, rounded to a whole unit (``rounding``:
     ``'nearest'``, ``'up'`` for a room to give, ``'down'`` for a room the item has).
@@ -48,7 +74,7 @@ def length_text(value_cm: float, system="si", rounding: str = "nearest") -> str:
     """
     if value_cm is None or not math.isfinite(float(value_cm)):
         return "-"
-    return f"{_rounded(length_value(value_cm, system), rounding):.0f} {length_unit(system)}"
+    return f"{rounded_length(value_cm, system, rounding)} {length_unit(system)}"
 
 
 def force_text(value_kn: float, system="si") -> str:

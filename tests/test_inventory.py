@@ -99,7 +99,8 @@ def test_settings_sheet_is_optional_and_sheet_names_ignore_case(make_workbook):
     sheets["EQUIPMENT"] = sheets.pop("equipment")
     inventory = read_workbook(make_workbook(sheets))
     assert len(inventory.equipment) == 3
-    assert inventory.settings == default_settings()
+    # the defaults, with the units resolved from the headers (lengths in in, cm and mm: SI)
+    assert inventory.settings == {**default_settings(), "units": "si"}
 
 
 def test_formula_with_cached_value_is_read(make_workbook):

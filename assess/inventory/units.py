@@ -107,3 +107,17 @@ def alternative_suffixes(value: float, dimension: Dimension, suffix: str,
         if low <= converted <= high:
             found.append(other)
     return found
+
+
+#: Length suffixes of the US customary system; a workbook whose lengths are all in them is reported in US units.
+US_LENGTH_SUFFIXES = ("in", "ft")
+
+
+def unit_system_of_suffixes(length_suffixes) -> str:
+    """``'us'`` when every length header of a sheet is in inches or feet (and there is one), else ``'si'``.
+
+    >>> unit_system_of_suffixes(["in", "in", "ft"]), unit_system_of_suffixes(["in", "cm"]), unit_system_of_suffixes([])
+    ('us', 'si', 'si')
+    """
+    suffixes = list(length_suffixes)
+    return "us" if suffixes and all(suffix in US_LENGTH_SUFFIXES for suffix in suffixes) else "si"

@@ -29,7 +29,7 @@ import pandas as pd
 
 from assess.data import default_settings
 from assess.errors import InputError, Problem
-from assess.inventory import schema, xlsx
+from assess.inventory import schema, units, xlsx
 from assess.inventory.model import Inventory
 from assess.inventory.schema import (BUILDING, EQUIPMENT, HAZARD, SETTINGS, SITE, UNUSABLE, CellError,
                                      Header, SheetSpec)
@@ -124,6 +124,9 @@ def read_workbook(path: str | Path) -> Inventory:
     settings = default_settings()
     if "settings" in tables:
         settings = _read_settings(tables["settings"], settings, reports["settings"])
+    if not str(settings.get("units", "")).strip() and "equipment" in tables:
+        settings["units"] = units.unit_system_of_suffixes(
+            header.suffix for header in tables["equipment"].headers.values() if header.column.dimension is units.LENGTH)
     site = read_site(tables["site"], path.parent, reports["site"]) if "site" in tables else None
     building = read_building(tables["building"], reports["building"]) if "building" in tables else None
     if problems:
@@ -602,6 +605,16 @@ def _check_settings(merged: dict, user: dict, header: Header | None, report: She
         report.at(user["simulate_motions"][1], header, f"setting 'simulate_motions' is "
                   f"{schema.quote(merged['simulate_motions'])}; it is 'synthetic' or 'pulse'.",
                   "write synthetic (near-fault histories) or pulse (the motion's pulse).")
+    for key, allowed, fix in (("units", ("si", "us"), "write si (cm, kN) or us (in, lb, kip), or delete the row "
+                               "(then us when the equipment sheet's lengths are in inches or feet)."),
+                              ("floor_numbering", ("ground_0", "ground_1"), "write ground_0 (the ground floor is 0) "
+                               "or ground_1 (the ground floor is 1, as in the US).")):
+        if key in user:
+            value = str(merged[key]).strip().lower()
+            if value and value not in allowed:
+                report.at(user[key][1], header, f"setting '{key}' is {schema.quote(merged[key])}; it is "
+                          f"{' or '.join(allowed)}.", fix)
+            merged[key] = value or ("ground_0" if key == "floor_numbering" else "")
     if "synthetic_realizations" in user:
         count = merged["synthetic_realizations"]
         if not (float(count).is_integer() and 1 <= count <= 100):

@@ -9,6 +9,8 @@ import math
 
 import pandas as pd
 
+from assess.report.sentences import floor_text
+
 #: A chance in 50 years at or above this is named on page 1.
 NOTABLE_P50YR = 0.10
 MODE_WORDS = {"beyond_clearance": "sliding past its room", "overturn": "overturning"}
@@ -41,8 +43,9 @@ def chance_text(central, low, high) -> str:
     return "–"
 
 
-def curve_context(result) -> dict | None:
-    """What the report shows of the hazard curve; None without one."""
+def curve_context(result, numbering: str = "ground_0") -> dict | None:
+    """What the report shows of the hazard curve; None without one. Floors as ``numbering`` labels them
+    (:func:`assess.report.sentences.floor_text`)."""
     curve = getattr(result, "curve_risk", None)
     if curve is None:
         return None
@@ -50,7 +53,7 @@ def curve_context(result) -> dict | None:
     free = summary[summary["risk"] != "anchored"]
     rows = []
     for _, row in free.iterrows():
-        entry = {"id": str(row["id"]), "name": str(row["name"]), "floor": row["floor"],
+        entry = {"id": str(row["id"]), "name": str(row["name"]), "floor": floor_text(row["floor"], numbering),
                  "ratio": f"{row['pfa_per_pga']:.2f}", "note": str(row.get("curve_note") or "")}
         for mode in MODE_WORDS:
             entry[mode] = chance_text(row[f"p50yr_{mode}"], row[f"p50yr_{mode}_low"], row[f"p50yr_{mode}_high"])

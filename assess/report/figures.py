@@ -35,6 +35,7 @@ from matplotlib.patches import Patch  # noqa: E402
 
 from assess.data import km2010_table3  # noqa: E402
 from assess.fragility import median_edp, probability_of_exceedance  # noqa: E402
+from assess.quantity_text import length_unit, length_value  # noqa: E402
 
 #: Capacities c of the paper's Fig. 12.
 PAPER_CAPACITIES = (0.2, 0.4, 0.6, 0.8)
@@ -289,18 +290,19 @@ def regression_figure(result, table3: pd.DataFrame | None = None) -> str:
         return _to_svg(figure)
 
 
-def sliding_demand_figures(result, per_figure: int = ITEMS_PER_DEMAND_FIGURE) -> list[str]:
+def sliding_demand_figures(result, per_figure: int = ITEMS_PER_DEMAND_FIGURE, system: str = "si") -> list[str]:
     """Per item: the governing demand's median sliding (bar) and 84th percentile (whisker) against clearance.
 
     One horizontal row per freestanding item, in the order of ``result.summary``
     (the caller sorts it); an item with no sliding estimate (it rocks, or stays
     put) says so in its row. Inventories longer than ``per_figure`` items are
-    split over several figures. Returns a list of SVG documents (empty when no
-    item is freestanding).
+    split over several figures. Lengths in cm, or in inches for ``system`` ``'us'``. Returns a list of
+    SVG documents (empty when no item is freestanding).
     """
     items = _freestanding(result)
-    x_top = _demand_axis_top(items)  # one scale for all the figures, so bars compare across them
-    return [_sliding_demand_figure(items.iloc[start:start + per_figure], x_top)
+    scale = length_value(1.0, system)
+    x_top = _demand_axis_top(items) * scale  # one scale for all the figures, so bars compare across them
+    return [_sliding_demand_figure(items.iloc[start:start + per_figure], x_top, system)
             for start in range(0, len(items), per_figure)]
 
 
@@ -326,11 +328,12 @@ def _left_align_tick_labels(axes) -> None:
     axes.tick_params(axis="y", pad=widest_px * 72.0 / axes.figure.dpi + 3.0)
 
 
-def _sliding_demand_figure(items: pd.DataFrame, x_top: float) -> str:
+def _sliding_demand_figure(items: pd.DataFrame, x_top: float, system: str = "si") -> str:
     count = len(items)
-    median = items["demand_median_cm"].astype(float).to_numpy()
-    p84 = items["demand_p84_cm"].astype(float).to_numpy()
-    clearance = items["clearance_cm"].astype(float).to_numpy()
+    scale = length_value(1.0, system)
+    median = items["demand_median_cm"].astype(float).to_numpy() * scale
+    p84 = items["demand_p84_cm"].astype(float).to_numpy() * scale
+    clearance = items["clearance_cm"].astype(float).to_numpy() * scale
     rows = np.arange(count)
     colours = [RISK_COLOURS.get(str(r), "#000000") for r in items["risk"]]
     with matplotlib.rc_context(_RC):
@@ -359,7 +362,7 @@ def _sliding_demand_figure(items: pd.DataFrame, x_top: float) -> str:
         _left_align_tick_labels(axes)
         axes.set_ylim(count - 0.5, -0.5)
         axes.set_xlim(0, x_top)
-        axes.set_xlabel("sliding [cm]")
+        axes.set_xlabel(f"sliding [{length_unit(system)}]")
         axes.tick_params(axis="y", length=0)
         handles = [Patch(color="#7f8c8d", alpha=0.85, label="median sliding (bar colour = risk)"),
                    Line2D([], [], color="#2c3e50", lw=1.0, marker="|", ms=6,
@@ -371,21 +374,22 @@ def _sliding_demand_figure(items: pd.DataFrame, x_top: float) -> str:
 
 
 # --------------------------------------------------------------------------- simulation
-def history_figure(history: dict) -> str:
+def history_figure(history: dict, system: str = "si") -> str:
     """Time histories of one simulated case, as Fig. 7 of the paper.
 
     Three panels on one time axis: sliding relative to the floor [cm] with the
     clearance marked, rotation θ/α (±1 dotted: the block's centre of mass is
-    over its pivot) and the floor acceleration [g].
+    over its pivot) and the floor acceleration [g]. Sliding in inches for ``system`` ``'us'``.
     """
+    scale = length_value(1.0, system)
     with matplotlib.rc_context(_RC):
         figure = _new_figure(3.6)
         axes = figure.subplots(3, 1, sharex=True)
         time_s = np.asarray(history["time_s"])
-        axes[0].plot(time_s, history["sliding_cm"], color="#1f4e79", linewidth=0.9)
+        axes[0].plot(time_s, np.asarray(history["sliding_cm"], dtype=float) * scale, color="#1f4e79", linewidth=0.9)
         for sign in (1, -1):
-            axes[0].axhline(sign * history["clearance_cm"], color="black", linewidth=0.7, linestyle="--")
-        axes[0].set_ylabel("sliding [cm]")
+            axes[0].axhline(sign * history["clearance_cm"] * scale, color="black", linewidth=0.7, linestyle="--")
+        axes[0].set_ylabel(f"sliding [{length_unit(system)}]")
         axes[1].plot(time_s, history["theta_over_alpha"], color="#922b21", linewidth=0.9)
         for sign in (1, -1):
             axes[1].axhline(sign, color="#922b21", linewidth=0.6, linestyle=":")
@@ -399,7 +403,7 @@ def history_figure(history: dict) -> str:
         return _to_svg(figure)
 
 
-def simulation_vs_regression_figure(result) -> str:
+def simulation_vs_regression_figure(result, system: str = "si") -> str:
     """Simulated peak sliding against the regression's median for every sliding case.
 
     Log–log axes; the diagonal is agreement, the dotted lines the regression's
@@ -408,8 +412,9 @@ def simulation_vs_regression_figure(result) -> str:
     """
     zeta, eta, sigma, *_ = regression_constants(result)
     motions = result.motions
-    sim = pd.to_numeric(motions["sim_sliding_max_cm"], errors="coerce")
-    reg = pd.to_numeric(motions["sliding_median_cm"], errors="coerce")
+    scale = length_value(1.0, system)
+    sim = pd.to_numeric(motions["sim_sliding_max_cm"], errors="coerce") * scale
+    reg = pd.to_numeric(motions["sliding_median_cm"], errors="coerce") * scale
     shown = (sim > 0) & (reg > 0)
     with matplotlib.rc_context(_RC):
         figure = _new_figure(3.4)
@@ -431,6 +436,6 @@ def simulation_vs_regression_figure(result) -> str:
             axes.legend(loc="upper left", frameon=False)
         else:
             axes.text(0.5, 0.5, "no case slides in both", ha="center", va="center", transform=axes.transAxes)
-        axes.set_xlabel("regression median sliding [cm]")
-        axes.set_ylabel("simulated peak sliding [cm]")
+        axes.set_xlabel(f"regression median sliding [{length_unit(system)}]")
+        axes.set_ylabel(f"simulated peak sliding [{length_unit(system)}]")
         return _to_svg(figure)

@@ -27,15 +27,15 @@ from markupsafe import Markup
 import assess
 from assess.anchorage.item import anchorage_sentence
 from assess.anchorage.method import anchorage_method
-from assess.quantity_text import system_of
+from assess.quantity_text import length_unit, length_value, system_of
 from assess.report import figures
 from assess.report.costs import costs_context
 from assess.report.curve import curve_context
 from assess.risk_classes import rule_text
 from assess.report.sentences import (
-    DASH, action_groups, case_outcomes, changes, cm_interval_text, finite, flag_groups, format_cm, format_percent,
-    format_significant, integer_text, interval_text, list_text, method_notes, risk_units, suite_text, text, total_units,
-    what_happens,
+    DASH, action_groups, case_outcomes, changes, cm_interval_text, finite, flag_groups, floor_text, format_cm,
+    format_length, format_percent, format_significant, integer_text, interval_text, list_text, method_notes, risk_units,
+    suite_text, text, total_units, what_happens,
 )
 
 TEMPLATE_NAME = "report.html.j2"
@@ -103,7 +103,10 @@ def _sorted_summary(summary: pd.DataFrame) -> pd.DataFrame:
     return summary.loc[order]
 
 
-def _item_row(row: pd.Series, system: str = "si") -> dict:
+def _item_row(row: pd.Series, system: str = "si", numbering: str = "ground_0") -> dict:
+    """One item's cells, formatted: lengths in the report's unit (``system``, :mod:`assess.quantity_text`;
+    the room an item has rounded down, as its advice rounds it), forces with their unit, the floor as
+    ``numbering`` labels it (:func:`~assess.report.sentences.floor_text`)."""
     direction = finite(row.get("governing_direction"))
     motion = text(row.get("governing_motion"))
     quantity = finite(row.get("quantity"))
@@ -112,7 +115,7 @@ def _item_row(row: pd.Series, system: str = "si") -> dict:
         "name": text(row.get("name")),
         "quantity": int(quantity) if quantity is not None and quantity > 1 else None,
         "room": text(row.get("room")),
-        "floor": integer_text(row.get("floor")),
+        "floor": floor_text(row.get("floor"), numbering),
         "mode": text(row.get("mode")) or DASH,
         "what_happens": what_happens(row),
         "b_over_h": format_significant(row.get("b_over_h"), 2),
@@ -122,12 +125,12 @@ def _item_row(row: pd.Series, system: str = "si") -> dict:
         "pta": format_significant(row.get("pta_g"), 2),
         "tp": format_significant(row.get("tp_s"), 2),
         "im": format_significant(row.get("im"), 3),
-        "median": format_cm(row.get("sliding_median_cm")),
-        "p84": format_cm(row.get("sliding_p84_cm")),
-        "clearance": format_cm(row.get("clearance_cm")),
+        "median": format_length(row.get("sliding_median_cm"), system),
+        "p84": format_length(row.get("sliding_p84_cm"), system),
+        "clearance": format_length(row.get("clearance_cm"), system, "down"),
         "pf": format_percent(row.get("pf_sliding")),
         "overturn": format_percent(row.get("overturn_fraction")),
-        "sim_sliding": format_cm(row.get("sim_sliding_max_cm")),
+        "sim_sliding": format_length(row.get("sim_sliding_max_cm"), system),
         "theta": format_significant(row.get("theta_max_over_alpha"), 2),
         "risk": text(row.get("risk")),
         "risk_range": text(row.get("risk_range")),
@@ -140,11 +143,11 @@ def _item_row(row: pd.Series, system: str = "si") -> dict:
         "action": text(row.get("action")) or DASH,
         "source": list_text(row.get("demand_source"), " + ") or DASH,
         "source_note": text(row.get("demand_note")),
-        "demand_median": format_cm(row.get("demand_median_cm")),
-        "demand_p84": format_cm(row.get("demand_p84_cm")),
+        "demand_median": format_length(row.get("demand_median_cm"), system),
+        "demand_p84": format_length(row.get("demand_p84_cm"), system),
         "p_beyond": format_percent(row.get("p_beyond_clearance")),
         "p_beyond_interval": interval_text(row.get("p_beyond_clearance_low"), row.get("p_beyond_clearance_high")),
-        "demand_interval": cm_interval_text(row, "median") + " / " + cm_interval_text(row, "p84"),
+        "demand_interval": cm_interval_text(row, "median", system) + " / " + cm_interval_text(row, "p84", system),
         "p_overturn": format_percent(row.get("p_overturn")),
         "p_overturn_interval": interval_text(row.get("p_overturn_low"), row.get("p_overturn_high")),
         "p_rocking_harm": format_percent(row.get("p_rocking_harm")),
@@ -184,7 +187,7 @@ STRIP_WIDTH, STRIP_LEFT, STRIP_ROW = 560, 170, 13
 
 
 def _item_details(rows: list[dict], summary: pd.DataFrame, runs: pd.DataFrame | None,
-                  histories: dict | None = None) -> list[dict]:
+                  histories: dict | None = None, system: str = "si") -> list[dict]:
     """One block per freestanding item: its numbers, and its suite drawn as a strip (every motion a line,
     every history a dot at its sliding, overturned ones as crosses, the clearance a bar)."""
     by_id = summary.set_index(summary["id"].astype(str))
@@ -196,20 +199,22 @@ def _item_details(rows: list[dict], summary: pd.DataFrame, runs: pd.DataFrame | 
         item = item.iloc[0] if isinstance(item, pd.DataFrame) else item
         strip = None
         if runs is not None and len(runs):
-            strip = _suite_strip(runs[runs["id"].astype(str) == row["id"]], finite(item.get("clearance_cm")))
+            strip = _suite_strip(runs[runs["id"].astype(str) == row["id"]], finite(item.get("clearance_cm")), system)
         history = (histories or {}).get(row["id"])
-        details.append({**row, "strip": strip, "spark": _history_spark(history) if history else None,
+        details.append({**row, "strip": strip, "spark": _history_spark(history, system) if history else None,
                         "theta": format_significant(item.get("theta_max_over_alpha"), 2),
                         "alpha": format_significant(item.get("alpha_rad"), 2)})
     return details
 
 
-def _history_spark(history: dict) -> dict:
-    """The item's worst run as two small polylines: sliding [cm] (with the clearance) and θ/α (with ±1)."""
+def _history_spark(history: dict, system: str = "si") -> dict:
+    """The item's worst run as two small polylines: sliding [cm, or in for ``system`` ``'us'``] (with the
+    clearance) and θ/α (with ±1)."""
+    per_cm = length_value(1.0, system)
     time_s = np.asarray(history["time_s"], dtype=float)
     step = max(1, int(np.ceil(time_s.size / SPARK_POINTS)))
     time_s = time_s[::step]
-    sliding = np.asarray(history["sliding_cm"], dtype=float)[::step]
+    sliding = np.asarray(history["sliding_cm"], dtype=float)[::step] * per_cm
     theta = np.clip(np.asarray(history["theta_over_alpha"], dtype=float)[::step], -3.0, 3.0)
     span = max(float(time_s[-1]), 1e-9)
     half = SPARK_HEIGHT / 2.0
@@ -221,7 +226,7 @@ def _history_spark(history: dict) -> dict:
         finite = np.isfinite(xs) & np.isfinite(ys)  # the run stops where the item overturns
         return " ".join(f"{x:.1f},{y:.1f}" for x, y in zip(xs[finite], ys[finite]))
 
-    clearance = float(history.get("clearance_cm", np.nan))
+    clearance = float(history.get("clearance_cm", np.nan)) * per_cm
     sliding_limit = max(float(np.nanmax(np.abs(sliding))) if np.isfinite(sliding).any() else 0.0,
                         clearance if np.isfinite(clearance) else 0.0, 0.1)
     theta_limit = max(float(np.nanmax(np.abs(theta))) if np.isfinite(theta).any() else 0.0, 1.0)
@@ -233,11 +238,14 @@ def _history_spark(history: dict) -> dict:
             "direction": history.get("direction")}
 
 
-def _suite_strip(runs: pd.DataFrame, clearance_cm: float | None) -> dict | None:
+def _suite_strip(runs: pd.DataFrame, clearance_cm: float | None, system: str = "si") -> dict | None:
+    """An item's suite as a strip; lengths in cm, or in inches for ``system`` ``'us'``."""
     if runs.empty:
         return None
-    sliding = pd.to_numeric(runs["sliding_cm"], errors="coerce").fillna(0.0)
-    top = max(float(sliding.max()), clearance_cm or 0.0, 1.0) * 1.08
+    per_cm = length_value(1.0, system)
+    sliding = pd.to_numeric(runs["sliding_cm"], errors="coerce").fillna(0.0) * per_cm
+    clearance = None if clearance_cm is None else clearance_cm * per_cm  # in the report's unit
+    top = max(float(sliding.max()), clearance or 0.0, 1.0) * 1.08
     scale = (STRIP_WIDTH - STRIP_LEFT - 10) / top
     motions = list(dict.fromkeys(runs["motion_key"]))
     lines = []
@@ -246,12 +254,12 @@ def _suite_strip(runs: pd.DataFrame, clearance_cm: float | None) -> dict | None:
         y = 8 + STRIP_ROW * k
         lines.append({"y": y, "label": text(mine["motion"].iloc[0])[:34],
                       "dots": [{"x": STRIP_LEFT + float(v) * scale, "overturned": bool(o)}
-                               for v, o in zip(pd.to_numeric(mine["sliding_cm"], errors="coerce").fillna(0.0),
+                               for v, o in zip(pd.to_numeric(mine["sliding_cm"], errors="coerce").fillna(0.0) * per_cm,
                                                mine["overturned"])]})
     height = 8 + STRIP_ROW * len(motions) + 14
     ticks = [{"x": STRIP_LEFT + t * scale, "label": f"{t:g}"} for t in _nice_ticks(top)]
     return {"width": STRIP_WIDTH, "height": height, "left": STRIP_LEFT, "lines": lines, "axis_y": height - 14,
-            "ticks": ticks, "clearance_x": None if clearance_cm is None else STRIP_LEFT + clearance_cm * scale}
+            "ticks": ticks, "clearance_x": None if clearance is None else STRIP_LEFT + clearance * scale}
 
 
 def _nice_ticks(top: float) -> list[float]:
@@ -269,15 +277,16 @@ def _data_uri(svg: str) -> str:
 def report_context(result) -> dict:
     """Everything the template shows, formatted (pure: no clock, no I/O)."""
     summary = _sorted_summary(result.summary)
-    system = system_of(result.settings or {})
-    rows = [_item_row(row, system) for _, row in summary.iterrows()]
+    settings = result.settings or {}
+    system = system_of(settings)
+    numbering = str(settings.get("floor_numbering") or "ground_0")
+    rows = [_item_row(row, system, numbering) for _, row in summary.iterrows()]
     for row, anchor in zip(rows, item_anchors([r["id"] for r in rows])):
         row["anchor"] = anchor
     counts = result.risk_counts()
     zeta, eta, sigma, im_min, im_max = figures.regression_constants(result)
-    settings = result.settings or {}
     sorted_result = _with_summary(result, summary)
-    demand_svgs = figures.sliding_demand_figures(sorted_result)
+    demand_svgs = figures.sliding_demand_figures(sorted_result, system=system)
     return {
         "version": assess.__version__,
         "facility": text(result.facility),
@@ -292,7 +301,9 @@ def report_context(result) -> dict:
         "total_items": len(rows),
         "total_units": total_units(summary),
         "action_groups": action_groups(rows),
-        "details": _item_details(rows, summary, result.suite_runs, {str(h["id"]): h for h in result.histories}),
+        "details": _item_details(rows, summary, result.suite_runs, {str(h["id"]): h for h in result.histories},
+                                 system),
+        "u": report_units(system, numbering),
         "high": [r for r in rows if r["risk"] == "high"],
         "moderate": [r for r in rows if r["risk"] == "moderate"],
         "rows": rows,
@@ -308,9 +319,9 @@ def report_context(result) -> dict:
             "demand": [_data_uri(svg) for svg in demand_svgs],
             "fragility": _data_uri(figures.fragility_figure(sorted_result)),
             "regression": _data_uri(figures.regression_figure(sorted_result)),
-            "simulation": (_data_uri(figures.simulation_vs_regression_figure(result))
+            "simulation": (_data_uri(figures.simulation_vs_regression_figure(result, system))
                            if result.simulated else None),
-            "histories": [{"uri": _data_uri(figures.history_figure(h)), "id": h["id"], "name": h["name"],
+            "histories": [{"uri": _data_uri(figures.history_figure(h, system)), "id": h["id"], "name": h["name"],
                            "motion": h["motion"], "sim_motion": h["sim_motion"], "solver": h["solver"],
                            "direction": h["direction"]}
                           for h in list(result.histories)[:HISTORY_FIGURES]],
@@ -319,10 +330,24 @@ def report_context(result) -> dict:
         "hazard_notes": list(result.hazard_notes),
         "method_notes": method_notes(summary),
         "changes": changes(result.comparison),
-        "curve": curve_context(result),
+        "curve": curve_context(result, numbering),
         "costs": costs_context(result, {r["id"]: r["anchor"] for r in rows}),
         "stylesheet": Markup(template_text(STYLESHEET_NAME)),  # our own file, not user text
     }
+
+
+def report_units(system: str, numbering: str) -> dict:
+    """The report's unit words for the template: ``length`` (cm or in), ``length_word`` (centimetres or
+    inches), ``page`` (the CSS page size, A4 or letter: a US report is printed on letter paper) and
+    ``floor_note`` and ``floor_sentence`` (how floors are counted, when the ground floor is labelled 1)."""
+    us = system == "us"
+    ground_1 = numbering == "ground_1"
+    return {"length": length_unit(system), "length_word": "inches" if us else "centimetres",
+            "page": "letter" if us else "A4",
+            "floor_note": "ground floor = 1" if ground_1 else "",
+            "floor_sentence": ("Floors are labelled as in the US, the ground floor 1 (the workbook's floor 0), "
+                               "floors below ground as in the workbook (−1); motion names and notes quoting the "
+                               "workbook keep its numbers." if ground_1 else "")}
 
 
 def _with_summary(result, summary: pd.DataFrame):

@@ -13,7 +13,7 @@ import math
 import pandas as pd
 
 from assess.fragility import friction_range, planar
-from assess.quantity_text import percent_text
+from assess.quantity_text import percent_text, rounded_length
 from assess.result import RISK_CLASSES, AssessmentResult
 
 DASH = "–"
@@ -56,6 +56,35 @@ def format_cm(value) -> str:
     if number is None:
         return DASH
     return f"{round(number):d}".replace("-", "−")
+
+
+def format_length(value_cm, system="si", rounding: str = "nearest") -> str:
+    """A length given in cm as a whole number of the report's unit (cm, or in for ``system`` ``'us'``),
+    rounded as the advice rounds it (:func:`assess.quantity_text.rounded_length`: ``'down'`` for the
+    room an item has, ``'up'`` for the room it needs); NaN as "–".
+
+    >>> format_length(20.0, "us", "down"), format_length(20.0, "si", "down"), format_length(float("nan"))
+    ('7', '20', '–')
+    """
+    number = finite(value_cm)
+    if number is None:
+        return DASH
+    return f"{rounded_length(number, system, rounding):d}".replace("-", "−")
+
+
+def floor_text(value, numbering: str = "ground_0") -> str:
+    """A floor number of the workbook (0 = the ground floor) as the report labels it: as it is, or with
+    ``numbering`` ``'ground_1'`` (US) counted from 1 at the ground floor, floors below ground unchanged
+    (-1 is the first basement, B1, in both).
+
+    >>> floor_text(0), floor_text(0, "ground_1"), floor_text(3, "ground_1"), floor_text(-1, "ground_1")
+    ('0', '1', '4', '−1')
+    """
+    number = finite(value)
+    if number is None or number != int(number):
+        return integer_text(value)
+    shown = int(number) + 1 if numbering == "ground_1" and number >= 0 else int(number)
+    return f"{shown:d}".replace("-", "−")
 
 
 def format_percent(value) -> str:
@@ -145,9 +174,10 @@ def interval_text(low, high) -> str:
     return f"{format_percent(low)}–{format_percent(high)}"
 
 
-def cm_interval_text(row: pd.Series, quantile: str) -> str:
-    """"12–30" for the 90 % interval of the demand's median or 84th percentile [cm]; "∞" where the
-    suite cannot bound it; "–" where the quantile is the regression's own (no interval)."""
+def cm_interval_text(row: pd.Series, quantile: str, system: str = "si") -> str:
+    """"12–30" for the 90 % interval of the demand's median or 84th percentile [cm, or in for ``system``
+    ``'us'``]; "∞" where the suite cannot bound it; "–" where the quantile is the regression's own (no
+    interval)."""
     low, high = finite(row.get(f"demand_{quantile}_low_cm")), row.get(f"demand_{quantile}_high_cm")
     value = finite(row.get(f"demand_{quantile}_cm"))
     try:
@@ -156,7 +186,7 @@ def cm_interval_text(row: pd.Series, quantile: str) -> str:
         return DASH
     if low is None or value is None or (math.isclose(low, value) and math.isclose(high, value)):
         return DASH
-    return f"{format_cm(low)}–{'∞' if math.isinf(high) else format_cm(high)}"
+    return f"{format_length(low, system)}–{'∞' if math.isinf(high) else format_length(high, system)}"
 
 
 def suite_text(row: pd.Series) -> str:

@@ -19,6 +19,7 @@ import zipfile
 import numpy as np
 import pandas as pd
 
+from assess.quantity_text import N_PER_LBF
 from assess.tables import neutralise_formulas
 
 #: The date written into a workbook's document properties and zip entries: no time of day goes into a file,
@@ -39,17 +40,28 @@ def sheet_name(label: str) -> str:
     return name or "level"
 
 
-def with_us_units(summary: pd.DataFrame) -> pd.DataFrame:
-    """``summary`` with every ``*_cm`` column followed by the same length in inches (``*_in``).
+#: SI column suffix -> (US suffix, factor from the SI unit to the US one): cm -> in, kN -> kip, kN·m -> kip·ft
+#: (exact: 1 in = 2.54 cm, 1 lbf = 4.4482216152605 N, 1 ft = 0.3048 m).
+US_COLUMNS = {"_cm": ("_in", 1.0 / CM_PER_IN), "_kn": ("_kip", 1.0 / N_PER_LBF),
+              "_knm": ("_kip_ft", 1.0 / N_PER_LBF / 0.3048)}
 
-    >>> with_us_units(pd.DataFrame({"clearance_cm": [2.54]})).to_dict("list")
-    {'clearance_cm': [2.54], 'clearance_in': [1.0]}
+
+def with_us_units(summary: pd.DataFrame) -> pd.DataFrame:
+    """``summary`` with every ``*_cm`` column followed by the same length in inches (``*_in``), every
+    ``*_kn`` force by kips (``*_kip``) and every ``*_knm`` moment by kip·ft (``*_kip_ft``); the SI columns
+    are kept as they are.
+
+    >>> table = pd.DataFrame({"clearance_cm": [2.54], "anchor_force_kn": [4.4482216152605]})
+    >>> with_us_units(table).round(6).to_dict("list")
+    {'clearance_cm': [2.54], 'clearance_in': [1.0], 'anchor_force_kn': [4.448222], 'anchor_force_kip': [1.0]}
     """
     columns = {}
     for column in summary.columns:
         columns[column] = summary[column]
-        if column.endswith("_cm"):
-            columns[column[:-3] + "_in"] = pd.to_numeric(summary[column], errors="coerce") / CM_PER_IN
+        for suffix, (us_suffix, factor) in US_COLUMNS.items():
+            us_column = column[:-len(suffix)] + us_suffix
+            if column.endswith(suffix) and us_column not in summary.columns:
+                columns[us_column] = pd.to_numeric(summary[column], errors="coerce") * factor
     return pd.DataFrame(columns, index=summary.index)
 
 
@@ -76,7 +88,8 @@ def _number_format(column: str) -> str | None:
 def summary_workbook(tables: dict[str, pd.DataFrame], units: str = "si") -> bytes:
     """The ``.xlsx`` bytes of one sheet per level: ``tables`` maps a level's label to its summary.
 
-    ``units``: ``"si"`` (the CSV's columns) or ``"us"`` (inches beside every length in cm).
+    ``units``: ``"si"`` (the CSV's SI columns) or ``"us"`` (inches beside every length in cm, kips beside
+    every force in kN, :func:`with_us_units`).
     """
     from openpyxl import Workbook
     from openpyxl.styles import Alignment, Font, PatternFill
