@@ -1,5 +1,7 @@
 """What to do about each item: risk class, action, priority, anchorage, what-if and flags.
 
+The actions (what to do, what it would change, work orders) are :mod:`assess.actions`.
+
 The decisions stage of the assessment (:func:`decide`, after the demand
 stage :mod:`assess.assessment.demand`): every function here is a pure
 function of an item's governing demand and the settings. The risk rule is
@@ -16,6 +18,8 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from assess import actions
+from assess.actions import suite_share_text  # noqa: F401 (re-exported)
 from assess.fragility.anchorage import (
     COMPONENT_AMPLIFICATION, COMPONENT_RESPONSE_MODIFICATION, base_overturning, component_design_force,
     importance_factor,
@@ -36,7 +40,7 @@ def item_consequence(item) -> str:
 
 #: What an anchored item's row says (it is not analysed as freestanding).
 ANCHORED = {"mode": "", "risk": "anchored", "action": "None: anchored (not analysed as freestanding)",
-            "action_kind": "anchored", "flags": ()}
+            "action_kind": "anchored", "flags": (), "p_overturn_after": np.nan, "p_beyond_clearance_after": np.nan}
 
 
 @dataclass
@@ -49,10 +53,11 @@ class Decisions:
 
 
 def decide(equipment: pd.DataFrame, governing: dict, uplift: dict, cases: pd.DataFrame, at_mu_ends: pd.DataFrame,
-           constants: RegressionConstants, settings: dict) -> Decisions:
+           constants: RegressionConstants, settings: dict, lowered: dict | None = None) -> Decisions:
     """Every item's decisions from its governing demand (``governing``: id -> its demand row,
     :func:`assess.assessment.demand.item_rows`; ``uplift``: id -> whether it uplifts; ``cases``: the
-    cases at the workbook's μ; ``at_mu_ends``: the demand at the ends of a μ range).
+    cases at the workbook's μ; ``at_mu_ends``: the demand at the ends of a μ range; ``lowered``: id -> the
+    demand of the items whose heavy contents the what-if run moved low, :func:`assess.actions.lowered_rows`).
 
     An anchored item is not analysed (:data:`ANCHORED`); a freestanding one gets :func:`item_flags`,
     :func:`decide_item` and, with a μ range, :func:`mu_range_decision`; then every item its
@@ -65,11 +70,11 @@ def decide(equipment: pd.DataFrame, governing: dict, uplift: dict, cases: pd.Dat
             by_item[item.id] = {**ANCHORED, **decided}
             continue
         row = {"consequence": item_consequence(item), "clearance_cm": item.clearance_m * 100.0,
-               **governing[item.id]}
+               "cg_height_cm": item.cg_height_m * 100.0, **governing[item.id]}
         found = item_flags(item, cases[cases["id"] == item.id], constants)
         flags.extend(found)
         decided["flags"] = tuple(flag.code for flag in found)
-        decided.update(decide_item(item, row, uplift[item.id], settings))
+        decided.update(decide_item(item, row, uplift[item.id], settings, (lowered or {}).get(item.id)))
         if item.id in at_mu_ends.index:
             decided.update(mu_range_decision(at_mu_ends.loc[item.id], decided["risk"], row["demand_note"], settings))
         by_item[item.id] = decided
@@ -131,93 +136,31 @@ def risk_range(risk: str, classes: set) -> str:
     return f"{spanned[0]} to {spanned[-1]}"
 
 
-def decide_item(item, row: dict, uplift: bool, settings: dict) -> dict:
+def decide_item(item, row: dict, uplift: bool, settings: dict, lowered: dict | None = None) -> dict:
     """The decisions for one freestanding item from its governing demand ``row`` (a dict holding
     ``p_beyond_clearance`` and its interval, ``p_overturn``, ``demand_room_cm``, ``clearance_cm``,
     ``consequence``, ``theta_max_over_alpha``, ``suite_motions``, ``suite_histories``) and whether it
-    uplifts under any motion (``uplift``).
+    uplifts under any motion (``uplift``); ``lowered``: its demand with its heavy contents low, or None.
 
-    Returns ``risk``, ``risk_range``, ``action``, ``action_kind``, the anchorage columns
-    (:func:`anchorage_demand`), ``what_if`` and ``priority_score``.
+    Returns ``risk``, ``risk_range``, the action columns (:func:`assess.actions.decide_action`: ``action``,
+    ``action_kind``, ``what_if``, ``p_overturn_after``, ``p_beyond_clearance_after``), the anchorage columns
+    (:func:`anchorage_demand`) and ``priority_score``.
     """
     decided = {"risk": classify_risk(row["p_beyond_clearance"], row["p_overturn"], uplift, settings)}
     bounds = {classify_risk(p, row["p_overturn"], uplift, settings)
               for p in (row["p_beyond_clearance_low"], row["p_beyond_clearance_high"])}
     decided["risk_range"] = risk_range(decided["risk"], bounds)
     row = {**row, **decided}
-    decided["action"] = recommended_action(row, uplift, settings)
-    decided["action_kind"] = row["action_kind"] = action_kind(row, uplift)
+    decided.update(actions.decide_action(item, row, uplift, lowered, settings))
+    row["action_kind"] = decided["action_kind"]
     decided.update(anchorage_demand(item, row, settings))
-    decided["what_if"] = what_if(row, settings)
     decided["priority_score"] = priority_score(row["consequence"], row["p_overturn"], row["p_beyond_clearance"],
                                                uplift)
     return decided
 
 
-def action_kind(row: dict, uplift: bool) -> str:
-    """What the action asks for, in one word the report groups by: ``anchor`` (it overturns or
-    rocks), ``restrain`` (high risk of sliding past its room), ``room`` (moderate), ``none``.
-
-    >>> action_kind({"p_overturn": 0.0, "risk": "moderate"}, False)
-    'room'
-    """
-    if row["p_overturn"] > 0.0 or uplift:
-        return "anchor"
-    return {"high": "restrain", "moderate": "room"}.get(row["risk"], "none")
-
-
-def recommended_action(row: dict, uplift: bool, settings: dict) -> str:
-    """A plain sentence a facility manager can act on, from the item's governing demand.
-
-    The room to give is the sliding that is exceeded with probability
-    ``risk_pf_moderate`` (``demand_room_cm``): with that much room the item
-    would be low risk on sliding. It is rounded up and the clearance down, so
-    the two never read alike.
-    """
-    if row["p_overturn"] > 0.0:
-        return f"Anchor: it overturns under {suite_share_text(row['p_overturn'], row)}"
-    if uplift:
-        return (f"Anchor or restrain: it uplifts and rocks (peak rotation {row['theta_max_over_alpha']:.2f} of "
-                f"its overturning angle alpha) but did not overturn under its {int(row['suite_motions'])} "
-                f"motion{'s' if row['suite_motions'] != 1 else ''}")
-    if row["risk"] in ("high", "moderate"):
-        verb = "Restrain it, or give it room" if row["risk"] == "high" else "Give it room, or restrain it"
-        return (f"{verb}: it needs {np.ceil(row['demand_room_cm']):.0f} cm to be low risk and has "
-                f"{np.floor(row['clearance_cm']):.0f} cm ({row['p_beyond_clearance']:.0%} chance of sliding past it)")
-    return "No action needed"
-
-
-def suite_share_text(probability: float, row: dict) -> str:
-    """"2 of its 3 motions" for records, "12 % of its 30 synthetic histories" otherwise."""
-    motions, histories = int(row["suite_motions"]), int(row["suite_histories"])
-    if histories == motions:
-        count = probability * motions
-        if abs(count - round(count)) > 1e-9:  # runs weighted over a range of mu
-            return f"a weighted {probability:.0%} of its {motions} motion{'s' if motions != 1 else ''} over its range of mu"
-        return f"{int(round(count))} of its {motions} motion{'s' if motions != 1 else ''}"
-    return f"{probability:.0%} of its {histories} simulated histories ({motions} motion{'s' if motions != 1 else ''})"
-
-
-def what_if(row: dict, settings: dict) -> str:
-    """The item's risk if the action is taken, in one sentence from its own numbers (its governing demand).
-
-    >>> what_if({"action_kind": "room", "demand_room_cm": 54.2, "clearance_cm": 20.0, "p_overturn": 0.0},
-    ...         {"risk_pf_moderate": 0.1})
-    'Anchored or restrained, it would neither slide nor overturn. Given 55 cm of room (it has 20 cm), its chance of sliding past it would be 10%: low risk.'
-    """
-    kind = row.get("action_kind")
-    if kind not in ("anchor", "restrain", "room"):
-        return ""
-    anchored = "Anchored or restrained, it would neither slide nor overturn."
-    if kind == "anchor":
-        return anchored + (" Giving it room does not help: it overturns or rocks where it stands.")
-    room = float(np.ceil(row["demand_room_cm"]))
-    return (f"{anchored} Given {room:.0f} cm of room (it has {np.floor(row['clearance_cm']):.0f} cm), its chance of "
-            f"sliding past it would be {float(settings['risk_pf_moderate']):.0%}: low risk.")
-
-
 def anchorage_demand(item, row: dict, settings: dict) -> dict:
-    """For an item to anchor or restrain: the ASCE 7-16 §13.3.1 design force and what it does at the base
+    """For an item to anchor, tether or restrain: the ASCE 7-16 §13.3.1 design force and what it does at the base
     (:mod:`assess.fragility.anchorage`), about the base edge of the more slender direction.
 
     ``anchor_force_kn`` (F_p, per unit), ``anchor_moment_knm``, ``anchor_tension_kn`` and
@@ -226,7 +169,7 @@ def anchorage_demand(item, row: dict, settings: dict) -> dict:
     """
     empty = {"anchor_force_kn": np.nan, "anchor_moment_knm": np.nan, "anchor_tension_kn": np.nan,
              "anchor_basis": ""}
-    if row.get("action_kind") not in ("anchor", "restrain"):
+    if row.get("action_kind") not in ("anchor", "tether", "restrain"):
         return empty
     sds_g = float(settings.get("sds_g", 0.0))
     if not sds_g > 0.0:

@@ -19,6 +19,7 @@ SUMMARY_COLUMNS = [
     "p_beyond_clearance_low", "p_beyond_clearance_high", "p_overturn_low", "p_overturn_high",
     "risk_range", "suite_motions", "suite_histories", "demand_note", "action_kind", "priority", "consequence",
     "priority_score", "anchor_force_kn", "anchor_moment_knm", "anchor_tension_kn", "anchor_basis", "what_if",
+    "p_overturn_after", "p_beyond_clearance_after",
     "demand_planar", "mu_low", "mu_high", "risk_mu_low", "risk_mu_high", "p_beyond_clearance_mu_low",
     "p_beyond_clearance_mu_high", "mu_range_note",
 ]
@@ -126,6 +127,11 @@ class AssessmentResult:
     ground_motions: pd.DataFrame | None = None
     spectrum: pd.DataFrame | None = None
     floors: pd.DataFrame | None = None
+
+    def work_orders(self) -> pd.DataFrame:
+        """The actions grouped by floor, room and action (work_orders.csv, :func:`assess.actions.work_orders`)."""
+        from assess.actions import work_orders
+        return work_orders(self.summary)
 
     def risk_counts(self) -> dict[str, int]:
         """Number of items (rows, not quantity) in each risk class."""

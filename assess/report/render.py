@@ -25,9 +25,11 @@ import pandas as pd
 from markupsafe import Markup
 
 import assess
+from assess.actions import work_order_sentences
 from assess.report import figures
 from assess.report.curve import curve_context
-from assess.report.sentences import (
+from assess.report.sentences import (  # noqa: I001
+    after_text,
     DASH, action_groups, case_outcomes, changes, cm_interval_text, finite, flag_groups, format_cm, format_percent,
     format_significant, integer_text, interval_text, list_text, method_notes, risk_units, suite_text, text, total_units,
     what_happens,
@@ -133,6 +135,7 @@ def _item_row(row: pd.Series) -> dict:
         "anchor_tension": format_significant(row.get("anchor_tension_kn"), 2),
         "anchor_basis": text(row.get("anchor_basis")),
         "what_if": text(row.get("what_if")),
+        "after": after_text(row),
         "priority": integer_text(row.get("priority")),
         "action": text(row.get("action")) or DASH,
         "source": list_text(row.get("demand_source"), " + ") or DASH,
@@ -309,6 +312,7 @@ def report_context(result) -> dict:
         "hazard_notes": list(result.hazard_notes),
         "method_notes": method_notes(summary),
         "changes": changes(result.comparison),
+        "work_orders": work_order_sentences(result.work_orders()),
         "curve": curve_context(result),
         "stylesheet": Markup(template_text(STYLESHEET_NAME)),  # our own file, not user text
     }
