@@ -7,16 +7,18 @@ tethered when it stands on casters (mobile by design), unless moving its
 heavy contents low stops it rocking (the engine says so: the what-if run of
 :func:`assess.assessment.run.lowered_contents`); an item that only slides
 past its room gets room where the room it needs is one a room can spare
-(``room_max_cm``), a restraint otherwise, and its casters locked or chocked
-when it is mobile.
+(``room_max_cm``), a restraint otherwise; an item on casters that slides gets
+its casters locked or chocked and that room kept clear where a room can spare
+it, a tether otherwise.
 
 Each action carries the item's chances if it is taken
 (:func:`residual_chances`): ``p_overturn_after`` and
 ``p_beyond_clearance_after``, from the engine for ``lower_contents``, from
-the sliding demand for ``room`` (the room is the sliding exceeded with
-probability ``risk_pf_moderate``), 0 for a restraint that holds (anchor,
-tether, restraint, locked and chocked casters: an assumption, stated in the
-what-if sentence), unchanged for ``none``.
+the sliding demand for ``room`` and ``lock_casters`` (the room is the sliding
+exceeded with probability ``risk_pf_moderate``; for an item on casters the
+workbook's μ is taken as that of its casters locked), 0 for a restraint that
+holds (anchor, tether, restraint: an assumption, stated in the what-if
+sentence), unchanged for ``none``.
 
 Every sentence is built here from the item's own numbers; lengths go through
 :func:`assess.quantity_text.length_text`.
@@ -34,14 +36,14 @@ from assess.quantity_text import length_text, system_of
 ACTION_KINDS = ("anchor", "tether", "lower_contents", "restrain", "lock_casters", "room", "relocate", "none",
                 "anchored")
 #: The kinds whose residual chances are 0 on the assumption that the restraint holds.
-HELD_KINDS = ("anchor", "tether", "restrain", "lock_casters")
+HELD_KINDS = ("anchor", "tether", "restrain")
 #: What a work order asks for, by action kind (work_orders.csv and the report's work orders).
 WORK_ORDER_TEXT = {
     "anchor": "anchor to the floor or wall",
     "tether": "tether or strap to the wall (on casters)",
     "lower_contents": "move heavy contents to the lowest shelves",
     "restrain": "restrain (edge stops, bumpers or straps)",
-    "lock_casters": "lock or chock the casters",
+    "lock_casters": "lock or chock the casters and keep the room listed clear",
     "room": "give the room listed",
     "relocate": "relocate",
 }
@@ -119,7 +121,9 @@ def choose_action(row: dict, uplift: bool, casters: bool, lowered: dict | None, 
     >>> settings = {"risk_pf_moderate": 0.1, "room_max_cm": 30}
     >>> row = {"p_overturn": 0.0, "p_beyond_clearance": 0.6, "demand_room_cm": 191.0, "risk": "high"}
     >>> choose_action(row, False, False, None, settings), choose_action(row, False, True, None, settings)
-    ('restrain', 'lock_casters')
+    ('restrain', 'tether')
+    >>> choose_action({**row, "demand_room_cm": 25.0}, False, True, None, settings)
+    'lock_casters'
     >>> choose_action({**row, "p_overturn": 0.3}, True, True, None, settings)
     'tether'
     """
@@ -132,17 +136,17 @@ def choose_action(row: dict, uplift: bool, casters: bool, lowered: dict | None, 
         return "tether" if casters else "anchor"
     if float(row["p_beyond_clearance"]) < float(settings["risk_pf_moderate"]) and row.get("risk") != "high":
         return "none"
-    if casters:
-        return "lock_casters"
-    return "room" if room_is_realistic(row, settings) else "restrain"
+    if room_is_realistic(row, settings):
+        return "lock_casters" if casters else "room"
+    return "tether" if casters else "restrain"
 
 
 def residual_chances(kind: str, row: dict, lowered: dict | None, settings: dict) -> tuple[float, float]:
     """(``p_overturn_after``, ``p_beyond_clearance_after``): the item's chances if the action is taken.
 
-    ``lower_contents``: the engine's, with the lowered centre of mass; ``room``: no overturning (the
-    item does not overturn, or it would not be given room) and ``risk_pf_moderate``, the chance that
-    the sliding exceeds ``demand_room_cm``; a restraint (:data:`HELD_KINDS`): 0 and 0, assuming it holds;
+    ``lower_contents``: the engine's, with the lowered centre of mass; ``room`` and ``lock_casters``: its
+    chance of overturning (0: an item that overturns is not given room) and ``risk_pf_moderate``, the
+    chance that the sliding exceeds ``demand_room_cm``; a restraint (:data:`HELD_KINDS`): 0 and 0, assuming it holds;
     ``none``: unchanged.
 
     >>> residual_chances("room", {"p_overturn": 0.0, "p_beyond_clearance": 0.4}, None, {"risk_pf_moderate": 0.1})
@@ -150,7 +154,7 @@ def residual_chances(kind: str, row: dict, lowered: dict | None, settings: dict)
     """
     if kind == "lower_contents":
         return float(lowered["p_overturn"]), float(lowered["p_beyond_clearance"])
-    if kind == "room":
+    if kind in ("room", "lock_casters"):
         return float(row["p_overturn"]), min(float(settings["risk_pf_moderate"]), float(row["p_beyond_clearance"]))
     if kind in HELD_KINDS:
         return 0.0, 0.0
@@ -168,6 +172,14 @@ def _why_overturn_or_rock(row: dict) -> str:
     return _rocking_text(row)
 
 
+def _why(row: dict, uplift: bool, system: str, settings: dict) -> str:
+    """Why an item is held: it overturns or rocks, or it slides farther than a room can spare."""
+    if float(row["p_overturn"]) > 0.0 or uplift:
+        return _why_overturn_or_rock(row)
+    spare = length_text(settings["room_max_cm"], system)
+    return f"{_room_numbers(row, system)}, more room than the {spare} a room can spare"
+
+
 def _room_numbers(row: dict, system: str) -> str:
     return (f"it needs {length_text(row['demand_room_cm'], system, 'up')} to be low risk and has "
             f"{length_text(row['clearance_cm'], system, 'down')} ({chance_text(row['p_beyond_clearance'])} chance "
@@ -177,7 +189,7 @@ def _room_numbers(row: dict, system: str) -> str:
 def _lowered_text(row: dict, lowered: dict, system: str) -> str:
     """What the engine gives with the heavy contents low, in one clause."""
     rocks = "it still rocks" if lowered["uplift"] else "it no longer rocks"
-    return (f"with its heavy contents moved low (centre of mass at {float(lowered['cg_fraction']):.0%} of its "
+    return (f"With its heavy contents moved low (centre of mass at {float(lowered['cg_fraction']):.0%} of its "
             f"height, {length_text(lowered['cg_height_cm'], system)} instead of "
             f"{length_text(row['cg_height_cm'], system)}) the engine gives overturning "
             f"{chance_text(lowered['p_overturn'])} (as loaded {chance_text(row['p_overturn'])}) and sliding past "
@@ -191,12 +203,14 @@ def action_sentence(kind: str, row: dict, uplift: bool, lowered: dict | None, se
     if kind == "anchor":
         return f"Anchor it to the floor or wall: {_why_overturn_or_rock(row)}"
     if kind == "tether":
-        return f"Tether or strap it to the wall (it stands on casters): {_why_overturn_or_rock(row)}"
+        return f"Tether or strap it to the wall (it stands on casters): {_why(row, uplift, system, settings)}"
     if kind == "lower_contents":
-        return (f"Move its heavy contents to the lowest shelves: as loaded {_why_overturn_or_rock(row)}; "
-                f"{_lowered_text(row, lowered, system)}")
+        return (f"Move its heavy contents to the lowest shelves: as loaded {_why_overturn_or_rock(row)}; with its "
+                f"centre of mass at {float(lowered['cg_fraction']):.0%} of its height the engine finds it still "
+                "under the same motions")
     if kind == "lock_casters":
-        return f"Lock or chock its casters: {_room_numbers(row, system)}"
+        return (f"Lock or chock its casters and keep {length_text(row['demand_room_cm'], system, 'up')} clear "
+                f"around it: {_room_numbers(row, system)}")
     if kind == "room":
         return f"Give it room: {_room_numbers(row, system)}"
     if kind == "restrain":
@@ -210,27 +224,26 @@ def what_if_sentence(kind: str, row: dict, lowered: dict | None, settings: dict)
     system = system_of(settings)
     engine = ""
     if lowered is not None and kind != "lower_contents":
-        engine = f" Lowering its contents alone is not enough: {_lowered_text(row, lowered, system)}."
+        engine = f" Lowering its contents alone is not enough. {_lowered_text(row, lowered, system)}."
     if kind == "anchor":
-        return ("Anchored for the design force below (assumed to hold), it would neither slide nor overturn: "
+        return ("Anchored (assumed to hold), it would neither slide nor overturn: "
                 "0% for both. Giving it room does not help: it overturns or rocks where it stands." + engine)
     if kind == "tether":
-        return ("Tethered to the structure for the design force below (assumed to hold), it would neither roll "
-                "away nor overturn: 0% for both." + engine)
+        return ("Tethered to the structure (assumed to hold), it would neither roll away nor overturn: "
+                "0% for both." + engine)
     if kind == "lower_contents":
-        return (f"Kept loaded low, {_lowered_text(row, lowered, system)}. Anchoring it would also do, "
-                "at 0% for both (assumed to hold).")
+        return (f"{_lowered_text(row, lowered, system)}. Anchoring it would also do, at 0% for both "
+                "(assumed to hold).")
     if kind == "restrain":
         return ("Restrained (assumed to hold), it would not slide past its room: 0%. Room would not do: it needs "
                 f"{length_text(row['demand_room_cm'], system, 'up')}, more than the "
                 f"{length_text(settings['room_max_cm'], system)} a room can spare (setting room_max_cm).")
-    if kind == "lock_casters":
-        return ("With its casters locked and chocked (assumed to hold it where it stands; the engine models no "
-                "casters: if they cannot hold it, tether it), it would not move past its room: 0%.")
-    if kind == "room":
+    if kind == "room" or kind == "lock_casters":
+        locked = (" Its sliding was computed with the workbook's mu, taken as that of its casters locked: if they "
+                  "are not, tether it." if kind == "lock_casters" else "")
         return (f"Given {length_text(row['demand_room_cm'], system, 'up')} of room (it has "
                 f"{length_text(row['clearance_cm'], system, 'down')}), its chance of sliding past it would be "
-                f"{chance_text(float(settings['risk_pf_moderate']))}: low risk.")
+                f"{chance_text(float(settings['risk_pf_moderate']))}: low risk.{locked}")
     return ""
 
 

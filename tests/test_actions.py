@@ -41,10 +41,16 @@ def test_an_item_on_casters_is_tethered_or_its_casters_locked_never_bolted_down(
     assert actions.decide_action(Item(casters=False), overturns, True, None, SETTINGS)["action_kind"] == "anchor"
     rocks = _row(p_overturn=0.0)
     assert actions.decide_action(Item(casters=True), rocks, True, None, SETTINGS)["action_kind"] == "tether"
+    # it slides farther than a room can spare: tethered; within what a room can spare: casters locked, room kept
     slides = _row(p_beyond=0.6, room_cm=191.0)
     decided = actions.decide_action(Item(casters=True), slides, False, None, SETTINGS)
-    assert decided["action_kind"] == "lock_casters" and decided["action"].startswith("Lock or chock its casters")
-    assert "Anchor" not in decided["action"]
+    assert decided["action_kind"] == "tether" and "more room than the 30 cm a room can spare" in decided["action"]
+    assert (decided["p_overturn_after"], decided["p_beyond_clearance_after"]) == (0.0, 0.0)
+    rolls = actions.decide_action(Item(casters=True), _row(p_beyond=0.6, room_cm=24.1), False, None, SETTINGS)
+    assert rolls["action_kind"] == "lock_casters"
+    assert rolls["action"].startswith("Lock or chock its casters and keep 25 cm clear around it")
+    assert rolls["p_beyond_clearance_after"] == SETTINGS["risk_pf_moderate"] and "tether it" in rolls["what_if"]
+    assert all("Anchor" not in d["action"] for d in (decided, rolls))
 
 
 def test_room_is_asked_only_where_a_room_can_spare_it():
@@ -87,7 +93,8 @@ def test_lowering_the_contents_is_the_action_only_where_the_engine_finds_the_ite
     decided = actions.decide_action(Item(), row, True, still, SETTINGS)
     assert decided["action_kind"] == "lower_contents"
     assert (decided["p_overturn_after"], decided["p_beyond_clearance_after"]) == (0.0, 0.0)
-    assert "centre of mass at 40% of its height, 80 cm instead of 100 cm" in decided["action"]
+    assert decided["action"].startswith("Move its heavy contents to the lowest shelves: as loaded it overturns under 40% of its 30")
+    assert "centre of mass at 40% of its height, 80 cm instead of 100 cm" in decided["what_if"]
     rocking = {**still, "p_overturn": 0.1, "uplift": True}
     decided = actions.decide_action(Item(), row, True, rocking, SETTINGS)
     assert decided["action_kind"] == "anchor" and "Lowering its contents alone is not enough" in decided["what_if"]
@@ -159,4 +166,5 @@ def test_lowering_the_centre_of_mass_stops_a_slender_block_overturning_under_a_p
     assert row["p_overturn"] == 1.0  # the engine agrees with the reference as loaded
     assert row["action_kind"] == "lower_contents"
     assert row["p_overturn_after"] == 0.0 and row["p_beyond_clearance_after"] == 0.0
-    assert "it no longer rocks" in row["action"] and "40 cm instead of 100 cm" in row["action"]
+    assert "the engine finds it still" in row["action"]
+    assert "it no longer rocks" in row["what_if"] and "40 cm instead of 100 cm" in row["what_if"]

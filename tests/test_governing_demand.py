@@ -113,7 +113,8 @@ def test_overturn_share_over_a_suite_matches_an_independent_rocking_solution(tmp
     row = result.summary.set_index("id").loc["RACK"]
     assert row["p_overturn"] == pytest.approx(np.mean(overturned))
     assert row["overturn_fraction"] == row["p_overturn"]
-    assert row["risk"] == "high" and row["action"].startswith(f"Anchor: it overturns under {sum(overturned)} of its 4")
+    assert row["risk"] == "high" and row["action"].startswith(
+        f"Anchor it to the floor or wall: it overturns under {sum(overturned)} of its 4")
     interval = stats.binomtest(sum(overturned), 4).proportion_ci(confidence_level=0.90, method="exact")
     assert (row["p_overturn_low"], row["p_overturn_high"]) == pytest.approx((interval.low, interval.high))
 
@@ -285,7 +286,7 @@ def test_every_item_is_in_one_action_group_and_no_advice_contradicts_its_numbers
         kind, action = row["action_kind"], row["action"]
         if kind == "anchor":
             assert action.startswith("Anchor") and row["risk"] == "high"
-        elif kind in ("restrain", "room"):
+        elif kind in ("restrain", "room", "lock_casters"):
             needs = float(action.split("needs ")[1].split(" cm")[0])
             has = float(action.split("has ")[1].split(" cm")[0])
             assert needs > has and row["p_beyond_clearance"] >= 0.1, (item_id, action)
