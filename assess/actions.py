@@ -6,8 +6,8 @@ The actions part of the decisions stage (:mod:`assess.decisions` calls
 tethered when it stands on casters (mobile by design), unless moving its
 heavy contents low stops it rocking (the engine says so: the what-if run of
 :func:`assess.assessment.run.lowered_contents`); an item that only slides
-past its room gets room where the room it needs is one a room can spare
-(``room_max_cm``), a restraint otherwise; an item on casters that slides gets
+past its room gets room where the room it needs to gain is one a room can
+spare (``room_max_cm``), a restraint otherwise; an item on casters that slides gets
 its casters locked or chocked and that room kept clear where a room can spare
 it, a tether otherwise.
 
@@ -89,15 +89,22 @@ def suite_share_text(probability: float, row: dict) -> str:
     return f"{chance_text(probability)} of its {histories} simulated histories ({_plural(motions, 'motion')})"
 
 
-def room_is_realistic(row: dict, settings: dict) -> bool:
-    """Whether the room the item needs to be low risk on sliding (``demand_room_cm``, rounded up to a
-    whole cm) is one a room can spare (at most ``room_max_cm``).
+def room_to_gain_cm(row: dict) -> float:
+    """The room [cm] the item must gain to be low risk on sliding: ``demand_room_cm`` rounded up less
+    ``clearance_cm`` rounded down (the two numbers its sentence shows), at least 0."""
+    return max(float(np.ceil(float(row["demand_room_cm"]))) - float(np.floor(float(row["clearance_cm"]))), 0.0)
 
-    >>> room_is_realistic({"demand_room_cm": 29.2}, {"room_max_cm": 30}), room_is_realistic(
-    ...     {"demand_room_cm": 191.0}, {"room_max_cm": 30})
+
+def room_is_realistic(row: dict, settings: dict) -> bool:
+    """Whether the room the item must gain (:func:`room_to_gain_cm`) is one a room can spare: at most
+    ``room_max_cm``, what an aisle can give up when the item is moved out into it.
+
+    >>> settings = {"room_max_cm": 30}
+    >>> room_is_realistic({"demand_room_cm": 39.6, "clearance_cm": 35.6}, settings), room_is_realistic(
+    ...     {"demand_room_cm": 191.0, "clearance_cm": 30.0}, settings)
     (True, False)
     """
-    return float(np.ceil(float(row["demand_room_cm"]))) <= float(settings["room_max_cm"])
+    return room_to_gain_cm(row) <= float(settings["room_max_cm"])
 
 
 def lowering_suffices(row: dict, lowered: dict | None, settings: dict) -> bool:
@@ -119,7 +126,8 @@ def choose_action(row: dict, uplift: bool, casters: bool, lowered: dict | None, 
     (:func:`lowering_suffices`), or None.
 
     >>> settings = {"risk_pf_moderate": 0.1, "room_max_cm": 30}
-    >>> row = {"p_overturn": 0.0, "p_beyond_clearance": 0.6, "demand_room_cm": 191.0, "risk": "high"}
+    >>> row = {"p_overturn": 0.0, "p_beyond_clearance": 0.6, "demand_room_cm": 191.0, "risk": "high",
+    ...        "clearance_cm": 30.0}
     >>> choose_action(row, False, False, None, settings), choose_action(row, False, True, None, settings)
     ('restrain', 'tether')
     >>> choose_action({**row, "demand_room_cm": 25.0}, False, True, None, settings)
@@ -176,8 +184,12 @@ def _why(row: dict, uplift: bool, system: str, settings: dict) -> str:
     """Why an item is held: it overturns or rocks, or it slides farther than a room can spare."""
     if float(row["p_overturn"]) > 0.0 or uplift:
         return _why_overturn_or_rock(row)
-    spare = length_text(settings["room_max_cm"], system)
-    return f"{_room_numbers(row, system)}, more room than the {spare} a room can spare"
+    return f"{_room_numbers(row, system)}: {_more_than_spare(row, system, settings)}"
+
+
+def _more_than_spare(row: dict, system: str, settings: dict) -> str:
+    return (f"{length_text(room_to_gain_cm(row), system, 'up')} more, beyond the "
+            f"{length_text(settings['room_max_cm'], system)} a room can spare")
 
 
 def _room_numbers(row: dict, system: str) -> str:
@@ -214,8 +226,8 @@ def action_sentence(kind: str, row: dict, uplift: bool, lowered: dict | None, se
     if kind == "room":
         return f"Give it room: {_room_numbers(row, system)}"
     if kind == "restrain":
-        return (f"Restrain it (edge stops, bumpers or straps): {_room_numbers(row, system)}, more room than the "
-                f"{length_text(settings['room_max_cm'], system)} a room can spare")
+        return (f"Restrain it (edge stops, bumpers or straps): {_room_numbers(row, system)}: "
+                f"{_more_than_spare(row, system, settings)}")
     return "No action needed"
 
 
@@ -236,8 +248,7 @@ def what_if_sentence(kind: str, row: dict, lowered: dict | None, settings: dict)
                 "(assumed to hold).")
     if kind == "restrain":
         return ("Restrained (assumed to hold), it would not slide past its room: 0%. Room would not do: it needs "
-                f"{length_text(row['demand_room_cm'], system, 'up')}, more than the "
-                f"{length_text(settings['room_max_cm'], system)} a room can spare (setting room_max_cm).")
+                f"{_more_than_spare(row, system, settings)} (setting room_max_cm).")
     if kind == "room" or kind == "lock_casters":
         locked = (" Its sliding was computed with the workbook's mu, taken as that of its casters locked: if they "
                   "are not, tether it." if kind == "lock_casters" else "")
@@ -296,9 +307,10 @@ WORK_ORDER_COLUMNS = ["floor", "room", "action", "items", "count"]
 
 def work_orders(summary: pd.DataFrame) -> pd.DataFrame:
     """One row per floor, room and action (:data:`WORK_ORDER_COLUMNS`): ``items`` the ids (in id order),
-    ``count`` the units (``quantity`` summed); items that need no action and anchored items are left out.
-    Ordered by floor, room, then :data:`ACTION_KINDS`."""
-    acts = summary[~summary["action_kind"].isin(["none", "anchored"])]
+    ``count`` the units (``quantity`` summed); items that need no action and anchored items are left out
+    (and a row without a known action kind). Ordered by floor, room, then :data:`ACTION_KINDS`."""
+    kinds = summary["action_kind"] if "action_kind" in summary else pd.Series("", index=summary.index)
+    acts = summary[kinds.isin([k for k in ACTION_KINDS if k not in ("none", "anchored")])]
     if not len(acts):
         return pd.DataFrame(columns=WORK_ORDER_COLUMNS)
     acts = acts.assign(room=acts["room"].fillna("").astype(str), _order=acts["action_kind"].map(ACTION_KINDS.index),

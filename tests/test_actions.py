@@ -44,28 +44,33 @@ def test_an_item_on_casters_is_tethered_or_its_casters_locked_never_bolted_down(
     # it slides farther than a room can spare: tethered; within what a room can spare: casters locked, room kept
     slides = _row(p_beyond=0.6, room_cm=191.0)
     decided = actions.decide_action(Item(casters=True), slides, False, None, SETTINGS)
-    assert decided["action_kind"] == "tether" and "more room than the 30 cm a room can spare" in decided["action"]
+    assert decided["action_kind"] == "tether" and "181 cm more, beyond the 30 cm a room can spare" in decided["action"]
     assert (decided["p_overturn_after"], decided["p_beyond_clearance_after"]) == (0.0, 0.0)
-    rolls = actions.decide_action(Item(casters=True), _row(p_beyond=0.6, room_cm=24.1), False, None, SETTINGS)
+    rolls = actions.decide_action(Item(casters=True), _row(p_beyond=0.6, room_cm=39.1), False, None, SETTINGS)
     assert rolls["action_kind"] == "lock_casters"
-    assert rolls["action"].startswith("Lock or chock its casters and keep 25 cm clear around it")
+    assert rolls["action"].startswith("Lock or chock its casters and keep 40 cm clear around it")
     assert rolls["p_beyond_clearance_after"] == SETTINGS["risk_pf_moderate"] and "tether it" in rolls["what_if"]
     assert all("Anchor" not in d["action"] for d in (decided, rolls))
 
 
 def test_room_is_asked_only_where_a_room_can_spare_it():
+    """It has 10 cm: 191 cm means gaining 181 cm, far beyond the 30 cm a room can spare; 40 cm means 30 more."""
     far = actions.decide_action(Item(), _row(p_beyond=0.6, room_cm=190.3), False, None, SETTINGS)
     assert far["action_kind"] == "restrain"
-    assert not far["action"].startswith("Give it room") and "more room than the 30 cm a room can spare" in far["action"]
-    assert "191 cm" in far["action"]  # the need is still said, rounded up
-    near = actions.decide_action(Item(), _row(p_beyond=0.3, room_cm=29.2, risk="moderate"), False, None, SETTINGS)
-    assert near["action_kind"] == "room" and near["action"].startswith("Give it room: it needs 30 cm")
+    assert not far["action"].startswith("Give it room") and "181 cm more, beyond the 30 cm a room can spare" in \
+        far["action"]
+    assert "it needs 191 cm to be low risk and has 10 cm" in far["action"]  # the need is still said, rounded up
+    near = actions.decide_action(Item(), _row(p_beyond=0.3, room_cm=39.2, risk="moderate"), False, None, SETTINGS)
+    assert near["action_kind"] == "room" and near["action"].startswith("Give it room: it needs 40 cm")
+    assert actions.decide_action(Item(), _row(p_beyond=0.3, room_cm=40.2, risk="moderate"), False, None,
+                                 SETTINGS)["action_kind"] == "restrain"
     # the setting moves the line: with 200 cm to spare the far item gets room
     assert actions.decide_action(Item(), _row(p_beyond=0.6, room_cm=190.3), False, None,
                                  {**SETTINGS, "room_max_cm": 200.0})["action_kind"] == "room"
     # in US units the room is in inches (191 cm = 75.2 in, rounded up)
     us = actions.decide_action(Item(), _row(p_beyond=0.6, room_cm=190.3), False, None, {**SETTINGS, "units": "us"})
     assert "it needs 75 in" in us["action"] and "12 in a room can spare" in us["action"]
+    assert "has 3 in" in us["action"]  # 10 cm = 3.9 in, rounded down
 
 
 @pytest.mark.parametrize("p_overturn", [0.001, 0.004, 1 / 300])
@@ -80,7 +85,7 @@ def test_the_residual_chances_follow_the_action():
     anchored = actions.decide_action(Item(), _row(p_beyond=0.7, p_overturn=0.9), True, None, SETTINGS)
     assert (anchored["p_overturn_after"], anchored["p_beyond_clearance_after"]) == (0.0, 0.0)
     assert "assumed to hold" in anchored["what_if"]
-    room = actions.decide_action(Item(), _row(p_beyond=0.3, room_cm=25.0, risk="moderate"), False, None, SETTINGS)
+    room = actions.decide_action(Item(), _row(p_beyond=0.3, room_cm=35.0, risk="moderate"), False, None, SETTINGS)
     assert (room["p_overturn_after"], room["p_beyond_clearance_after"]) == (0.0, 0.1)
     none = actions.decide_action(Item(), _row(p_beyond=0.02, risk="low"), False, None, SETTINGS)
     assert none["action_kind"] == "none" and none["p_beyond_clearance_after"] == 0.02

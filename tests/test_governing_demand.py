@@ -302,7 +302,8 @@ def test_every_item_is_in_one_action_group_and_no_advice_contradicts_its_numbers
     assert rack["anchor_force_kn"] == pytest.approx(0.3 * weight_kn, rel=1e-12)
     assert rack["anchor_tension_kn"] == pytest.approx((0.3 * weight_kn * 1.0 - 0.7 * weight_kn * 0.2) / 0.4, rel=1e-12)
     assert np.isnan(summary.loc["ROOMY", "anchor_force_kn"])  # no action, no force
-    assert "low risk" in summary.loc["TIGHT", "what_if"] and summary.loc["RACK", "what_if"].startswith("Anchored")
+    assert summary.loc["TIGHT", "what_if"].startswith("Restrained") and "beyond the 30 cm a room can spare" in \
+        summary.loc["TIGHT", "what_if"] and summary.loc["RACK", "what_if"].startswith("Anchored")
     assert "What to do first" in render_html(result)
 
 

@@ -511,8 +511,8 @@ SETTING_BOUNDS = {
     "im_max": (0.0, 500.0, _IM_WHY),
     "sds_g": (0.01, 5.0, "sds_g is S_DS of ASCE 7-16 §11.4.5, the design spectral acceleration at short "
               "periods, 0.01 to about 2.5 g on any mapped site"),
-    "room_max_cm": (0.0, 500.0, "room_max_cm is the most room in cm an action may ask to keep clear around an "
-                    "item, 0 (never give room) to 500 (5 m)"),
+    "room_max_cm": (0.0, 500.0, "room_max_cm is the most room in cm an action may ask an item to gain beyond "
+                    "its clearance, 0 (never give room) to 500 (5 m)"),
     "lower_contents_cg_fraction": (0.05, 0.5, "lower_contents_cg_fraction is the height of the centre of mass, "
                                    "as a fraction of the item's height, with its heavy contents low: above 0 and "
                                    "at most 0.5 (mid-height, a uniformly loaded item)"),
