@@ -43,8 +43,8 @@ WORK_ORDER_TEXT = {
     "tether": "tether or strap to the wall (on casters)",
     "lower_contents": "move heavy contents to the lowest shelves",
     "restrain": "restrain (edge stops, bumpers or straps)",
-    "lock_casters": "lock or chock the casters and keep the room listed clear",
-    "room": "give the room listed",
+    "lock_casters": "lock or chock the casters and keep room clear (each item's in its details)",
+    "room": "give room (each item's in its details)",
     "relocate": "relocate",
 }
 

@@ -121,7 +121,7 @@ def test_work_orders_group_the_actions_by_floor_and_room():
     floors = actions.work_order_sentences(orders)
     assert [f["floor"] for f in floors] == [0, 1] and floors[1]["units"] == 3 + 1 + 1
     assert floors[1]["rooms"][0]["orders"] == ["anchor to the floor or wall: A, B (3 units)",
-                                               "give the room listed: D (1 unit)"]
+                                               "give room (each item's in its details): D (1 unit)"]
 
 
 def test_the_sample_workbooks_mark_their_mobile_items():
