@@ -286,6 +286,10 @@ def test_every_item_is_in_one_action_group_and_no_advice_contradicts_its_numbers
         kind, action = row["action_kind"], row["action"]
         if kind == "anchor":
             assert action.startswith("Anchor") and row["risk"] == "high"
+            assert (row["p_overturn_after"], row["p_beyond_clearance_after"]) == (0.0, 0.0)
+        elif kind == "lower_contents":  # the engine's what-if: still with its contents low
+            assert action.startswith("Move its heavy contents") and row["p_overturn_after"] == 0.0, (item_id, action)
+            assert row["p_beyond_clearance_after"] < 0.1 and "under 0%" not in action
         elif kind in ("restrain", "room", "lock_casters"):
             needs = float(action.split("needs ")[1].split(" cm")[0])
             has = float(action.split("has ")[1].split(" cm")[0])
