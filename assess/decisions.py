@@ -16,11 +16,13 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from assess import actions
+from assess.actions import suite_share_text  # noqa: F401 (re-exported)
 from assess.anchorage import AnchorageSite, anchorage_site, item_anchorage
 from assess.fragility.friction_range import mu_dependence_sentence
 from assess.fragility.regression import RegressionConstants
 from assess.mechanics.modes import ROCK, SLIDE_ROCK
-from assess.quantity_text import length_text, percent_text, system_of
+from assess.quantity_text import length_text, system_of
 from assess.result import Flag
 from assess.risk_classes import (
     Chances, classify_risk, deciding_chance, performance_objective, risk_range, risk_reason, rocking_harm_counts,
@@ -37,7 +39,7 @@ def item_consequence(item) -> str:
 #: What an anchored item's row says (it is not analysed as freestanding).
 ANCHORED = {"mode": "", "risk": "anchored", "action": "None: anchored (not analysed as freestanding)",
             "action_kind": "anchored", "flags": (), "risk_reason": "anchored: not analysed as freestanding",
-            "performance_objective": ""}
+            "performance_objective": "", "p_overturn_after": np.nan, "p_beyond_clearance_after": np.nan}
 
 
 @dataclass
@@ -50,7 +52,8 @@ class Decisions:
 
 
 def decide(equipment: pd.DataFrame, governing: dict, uplift: dict, cases: pd.DataFrame, at_mu_ends: pd.DataFrame,
-           constants: RegressionConstants, settings: dict, site: AnchorageSite | None = None) -> Decisions:
+           constants: RegressionConstants, settings: dict, site: AnchorageSite | None = None,
+           lowered: dict | None = None) -> Decisions:
     """Every item's decisions from its governing demand (``governing``: id -> its demand row,
     :func:`assess.assessment.demand.item_rows`; ``uplift``: id -> whether it uplifts; ``cases``: the
     cases at the workbook's μ; ``at_mu_ends``: the demand at the ends of a μ range).
@@ -70,11 +73,11 @@ def decide(equipment: pd.DataFrame, governing: dict, uplift: dict, cases: pd.Dat
                                                  system_of(settings))}
             continue
         row = {"consequence": item_consequence(item), "clearance_cm": item.clearance_m * 100.0,
-               **governing[item.id]}
+               "cg_height_cm": item.cg_height_m * 100.0, **governing[item.id]}
         found = item_flags(item, cases[cases["id"] == item.id], constants, system_of(settings))
         flags.extend(found)
         decided["flags"] = tuple(flag.code for flag in found)
-        decided.update(decide_item(item, row, uplift[item.id], settings, site))
+        decided.update(decide_item(item, row, uplift[item.id], settings, site, (lowered or {}).get(item.id)))
         if item.id in at_mu_ends.index:
             decided.update(mu_range_decision(at_mu_ends.loc[item.id], decided["risk"], row["demand_note"],
                                              row["consequence"], settings))
@@ -110,7 +113,8 @@ def mu_range_decision(end: pd.Series, risk: str, demand_note: str, consequence: 
             "mu_range_note": sentence, "demand_note": f"{demand_note} {sentence}".strip()}
 
 
-def decide_item(item, row: dict, uplift: bool, settings: dict, site: AnchorageSite | None = None) -> dict:
+def decide_item(item, row: dict, uplift: bool, settings: dict, site: AnchorageSite | None = None,
+                lowered: dict | None = None) -> dict:
     """The decisions for one freestanding item from its governing demand ``row`` (a dict holding
     ``p_beyond_clearance``, ``p_overturn``, ``p_rocking_harm`` and their intervals, ``demand_room_cm``,
     ``clearance_cm``,
@@ -119,8 +123,10 @@ def decide_item(item, row: dict, uplift: bool, settings: dict, site: AnchorageSi
 
     Returns ``risk`` (:func:`~assess.risk_classes.classify_risk`), ``risk_reason``, ``performance_objective``,
     ``risk_range`` (the classes at the lower and at the upper ends of every chance's 90 % interval),
-    ``action``, ``action_kind``, the anchorage columns
-    (:func:`assess.anchorage.item_anchorage` in ``site``), ``what_if`` and ``priority_score``.
+    the action columns (:func:`assess.actions.decide_action`: ``action``, ``action_kind``, ``what_if``,
+    ``p_overturn_after``, ``p_beyond_clearance_after``; ``lowered``: the engine's demand with the heavy contents
+    low, where it was simulated), the anchorage columns (:func:`assess.anchorage.item_anchorage` in ``site``)
+    and ``priority_score``.
     """
     consequence = row["consequence"]
     chances = Chances.of(row)
@@ -130,80 +136,12 @@ def decide_item(item, row: dict, uplift: bool, settings: dict, site: AnchorageSi
     bounds = {classify_risk(Chances.of(row, suffix), consequence, settings) for suffix in ("_low", "_high")}
     decided["risk_range"] = risk_range(decided["risk"], bounds)
     row = {**row, **decided}
-    decided["action"] = recommended_action(row, uplift, settings)
-    decided["action_kind"] = row["action_kind"] = action_kind(row, uplift)
+    decided.update(actions.decide_action(item, row, uplift, lowered, settings))
+    row["action_kind"] = decided["action_kind"]
     site = site if site is not None else anchorage_site(None, None, settings)
     decided.update(item_anchorage(item, row["consequence"], decided["action_kind"], site, system_of(settings)))
-    decided["what_if"] = what_if(row, settings)
     decided["priority_score"] = priority_score(consequence, chances)
     return decided
-
-
-def action_kind(row: dict, uplift: bool) -> str:
-    """What the action asks for, in one word the report groups by: ``anchor`` (it overturns or
-    rocks), ``restrain`` (high risk of sliding past its room), ``room`` (moderate), ``none``.
-
-    >>> action_kind({"p_overturn": 0.0, "risk": "moderate"}, False)
-    'room'
-    """
-    if row["p_overturn"] > 0.0 or uplift:
-        return "anchor"
-    return {"high": "restrain", "moderate": "room"}.get(row["risk"], "none")
-
-
-def recommended_action(row: dict, uplift: bool, settings: dict) -> str:
-    """A plain sentence a facility manager can act on, from the item's governing demand.
-
-    The room to give is the sliding that is exceeded with probability
-    ``risk_pf_moderate`` (``demand_room_cm``): with that much room the item
-    would be low risk on sliding. It is rounded up and the clearance down, so
-    the two never read alike.
-    """
-    if row["p_overturn"] > 0.0:
-        return f"Anchor: it overturns under {suite_share_text(row['p_overturn'], row)}"
-    if uplift:
-        return (f"Anchor or restrain: it uplifts and rocks (peak rotation {row['theta_max_over_alpha']:.2f} of "
-                f"its overturning angle alpha) but did not overturn under its {int(row['suite_motions'])} "
-                f"motion{'s' if row['suite_motions'] != 1 else ''}")
-    if row["risk"] in ("high", "moderate"):
-        verb = "Restrain it, or give it room" if row["risk"] == "high" else "Give it room, or restrain it"
-        system = system_of(settings)
-        return (f"{verb}: it needs {length_text(row['demand_room_cm'], system, 'up')} to be low risk and has "
-                f"{length_text(row['clearance_cm'], system, 'down')} "
-                f"({percent_text(row['p_beyond_clearance'])} chance of sliding past it)")
-    return "No action needed"
-
-
-def suite_share_text(probability: float, row: dict) -> str:
-    """"2 of its 3 motions" for records, "12 % of its 30 synthetic histories" otherwise."""
-    motions, histories = int(row["suite_motions"]), int(row["suite_histories"])
-    if histories == motions:
-        count = probability * motions
-        if abs(count - round(count)) > 1e-9:  # runs weighted over a range of mu
-            return (f"a weighted {percent_text(probability)} of its {motions} motion{'s' if motions != 1 else ''} "
-                    "over its range of mu")
-        return f"{int(round(count))} of its {motions} motion{'s' if motions != 1 else ''}"
-    return (f"{percent_text(probability)} of its {histories} simulated histories "
-            f"({motions} motion{'s' if motions != 1 else ''})")
-
-
-def what_if(row: dict, settings: dict) -> str:
-    """The item's risk if the action is taken, in one sentence from its own numbers (its governing demand).
-
-    >>> what_if({"action_kind": "room", "demand_room_cm": 54.2, "clearance_cm": 20.0, "p_overturn": 0.0},
-    ...         {"risk_pf_moderate": 0.1})
-    'Anchored or restrained, it would neither slide nor overturn. Given 55 cm of room (it has 20 cm), its chance of sliding past it would be 10%: low risk.'
-    """
-    kind = row.get("action_kind")
-    if kind not in ("anchor", "restrain", "room"):
-        return ""
-    anchored = "Anchored or restrained, it would neither slide nor overturn."
-    if kind == "anchor":
-        return anchored + (" Giving it room does not help: it overturns or rocks where it stands.")
-    system = system_of(settings)
-    return (f"{anchored} Given {length_text(row['demand_room_cm'], system, 'up')} of room (it has "
-            f"{length_text(row['clearance_cm'], system, 'down')}), its chance of "
-            f"sliding past it would be {float(settings['risk_pf_moderate']):.0%}: low risk.")
 
 
 #: Weight of what an item's failure costs (the workbook's ``consequence``), for the order of action.

@@ -21,7 +21,7 @@ from assess.errors import InputError, Problem
 #: Everything assess writes into an output folder. A folder holding anything
 #: else is not swapped (it would be lost): the user is asked for another one.
 OUTPUT_NAMES = frozenset({
-    "summary.csv", "motions.csv", "comparison.csv", "summary.xlsx", "report.html", "report.pdf",
+    "summary.csv", "motions.csv", "work_orders.csv", "comparison.csv", "summary.xlsx", "report.html", "report.pdf",
     "calibration.json", "calibration_tests.csv", "fragility", "ground_motions.csv", "spectrum.csv", "floors.csv",
     ".DS_Store", "Thumbs.db", "desktop.ini",  # what a file browser leaves in a folder it has shown
 })

@@ -222,7 +222,7 @@ def run_job(job: AssessmentJob, say: Say = lambda message: None) -> Iterator[Lev
                 shared_curve = result.curve_risk
             results.append(with_comparison(result, job.compare_with, out_dir / "summary.csv", say))
     for result, out_dir in zip(results, out_dirs):
-        say(f"rendering {result.level_label}: " + ", ".join(["summary.csv", "motions.csv"] + [
+        say(f"rendering {result.level_label}: " + ", ".join(["summary.csv", "motions.csv", "work_orders.csv"] + [
             "summary.xlsx" if f == "xlsx" else f"report.{f}" for f in job.formats]
             + (["fragility/"] if result.curve_risk is not None else [])))
         others = tuple(other for other in results if other is not result)

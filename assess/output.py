@@ -30,6 +30,7 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: st
     files = {
         "summary.csv": csv_text(summary_text(summary)).encode(),
         "motions.csv": csv_text(result.motions).encode(),
+        "work_orders.csv": csv_text(result.work_orders()).encode(),
     }
     if "xlsx" in formats:
         sheets = {result.level_label: summary_text(result.summary)}

@@ -6,6 +6,8 @@
 3. cases: item x motion x direction (x μ node) (:mod:`assess.assessment.cases`)
 4. run: the engine, through the runner (:mod:`assess.assessment.run`, the only stage that simulates)
 5. demand: the regression per case and the governing demand per item (:mod:`assess.assessment.demand`)
+   5b. what-if: the items that rock or overturn again with their heavy contents low
+   (:func:`assess.assessment.run.lowered_contents`, for :mod:`assess.actions`)
 6. decisions: risk class, action, priority, anchorage, what-if, flags (:mod:`assess.decisions`)
 7. result: the summary and motion tables in an :class:`~assess.result.AssessmentResult`
    (:mod:`assess.assessment.summary`)
@@ -21,7 +23,7 @@ from typing import Callable
 
 import pandas as pd
 
-from assess import costs, decisions
+from assess import actions, costs, decisions
 from assess.anchorage import anchorage_site
 from assess.assessment import cases as case_stage
 from assess.assessment import demand as demand_stage
@@ -113,10 +115,13 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     demand = demand_stage.item_demand(ran.cases, ran.runs, ran.planar, simulated.kinds, constants, settings)
     at_mu = demand.cases[nominal]
     rows = demand_stage.item_rows(inventory.equipment, at_mu, demand, constants)
+    # 5b. what if the items that rock or overturn had their heavy contents low (the engine again)
+    lowered = _lowered_contents(inventory.equipment, cases.table, rows, simulated, runner, progress, calibration,
+                                constants, settings)
     # 6. decisions
     anchorage = anchorage_site(inventory.site, inventory.building, settings)
     decided = decisions.decide(inventory.equipment, rows.rows, rows.uplift, at_mu, demand.at_mu_ends, constants,
-                               settings, anchorage)
+                               settings, anchorage, lowered=lowered)
     # 7. result
     summary = result_stage.summarise(inventory.equipment, rows, decided)
     summary_columns = SUMMARY_COLUMNS
@@ -138,3 +143,20 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
         spectrum=None if level.site is None else level.site.suite.spectrum, floors=simulated.floors,
         anchorage=anchorage,
     )
+
+
+def _lowered_contents(equipment, case_table, rows, simulated, runner, progress, calibration, constants,
+                      settings) -> dict:
+    """The demand of the items that rock or overturn with their heavy contents low
+    (:func:`assess.actions.lowered_contents_items`): their cases with the centre of mass at
+    ``lower_contents_cg_fraction`` of the height, run and reduced like the level's
+    (:func:`assess.actions.lowered_rows`); {} when no item rocks or overturns."""
+    ids = actions.lowered_contents_items(equipment, rows.rows, rows.uplift, settings)
+    if not ids:
+        return {}
+    lowered_cases = case_stage.with_centre_of_mass_at(case_table, ids, float(settings["lower_contents_cg_fraction"]))
+    ran = run_stage.lowered_contents(lowered_cases, simulated, runner, progress, calibration)
+    demand = demand_stage.item_demand(ran.cases, ran.runs, ran.planar, simulated.kinds, constants, settings)
+    nominal = ran.cases["mu_nominal"].to_numpy()
+    found = demand_stage.item_rows(equipment[equipment["id"].isin(ids)], demand.cases[nominal], demand, constants)
+    return actions.lowered_rows(equipment, found.rows, found.uplift, settings)

@@ -40,13 +40,13 @@ PLATEAU_OVER_PGA, CORNER_S = 2.5, 0.55  # S_a(0) = 0.4 S_DS = PGA
 EQUIPMENT = [
     # floor 0: emergency department and central supply
     item("ED-0-01", "Crash cart, 5 drawers", "0-105 resuscitation", 0, 44, 30, 22, 210, 0.45, 12, "critical",
-         "on casters, brakes on; the code team's cart"),
+         "on casters, brakes on; the code team's cart", casters=True),
     item("ED-0-02", "Supply shelving, 6 shelves, loaded", "0-140 central supply", 0, 86, 48, 24, 900, 0.35, 10,
          "life-safety", "wire shelving beside the corridor to the exit", cg_in=46),
     item("ED-0-03", "Blanket and fluid warmer cabinet", "0-110 ED core", 0, 74, 24, 25, 360, 0.30, 6, "ordinary",
          "two doors, glass"),
     item("ED-0-04", "Liquid-nitrogen dewar, 230 L, on roller base", "0-150 lab receiving", 0, 62, 26, 26, 620, 0.40,
-         8, "hazardous", "pressurised LN2"),
+         8, "hazardous", "pressurised LN2 on a roller base", casters=True),
     # floor 1: laboratory
     item("LB-1-01", "Ultra-low freezer, -80 °C, upright", "1-210 core lab", 1, 78, 34, 35, 750, 0.25, 4, "critical",
          "patient specimens and reagents"),
@@ -69,7 +69,7 @@ EQUIPMENT = [
     item("IT-3-02", "UPS cabinet", "3-405 IT closet", 3, 60, 20, 32, 1100, 0.30, 6, "critical",
          "batteries low in the cabinet", cg_in=24),
     item("PT-3-03", "Linen cart, stainless, covered", "3-420 clean linen", 3, 66, 50, 26, 260, 0.50, 20,
-         "ordinary", "on casters, brakes on"),
+         "ordinary", "on casters, brakes on", casters=True),
     # floor 4: the roof's mechanical penthouse
     item("MP-4-01", "Medical-gas manifold cabinet", "4-510 penthouse", 4, 72, 48, 18, 650, 0.35, 6, "hazardous",
          "oxygen manifold controls"),

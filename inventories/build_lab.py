@@ -49,12 +49,12 @@ CONSEQUENCE_BY_PREFIX = {"GAS": "hazardous", "LN2": "hazardous", "CAB": "hazardo
 
 
 def item(id, name, room, floor, h, w, d, kg, mu, clearance, notes, source,
-         mu_static=None, cg=None, anchored=False, qty=1, mu_range=(None, None)):
+         mu_static=None, cg=None, anchored=False, qty=1, mu_range=(None, None), casters=False):
     """One row of the `equipment` sheet, in cm and kg (docs/workbook.md)."""
     return dict(id=id, name=name, room=room, floor=floor, height_cm=h, width_cm=w,
                 depth_cm=d, mass_kg=kg, mu=mu, mu_static=mu_static, mu_low=mu_range[0], mu_high=mu_range[1],
                 clearance_cm=clearance, cg_height_cm=cg,
-                anchored="yes" if anchored else "no", quantity=qty,
+                anchored="yes" if anchored else "no", casters="yes" if casters else "no", quantity=qty,
                 consequence=CONSEQUENCE_BY_PREFIX.get(id.split("-")[0], "ordinary"),
                 notes=notes, source=source)
 
@@ -106,7 +106,7 @@ EQUIPMENT = [
     item("LN2-G-01", "Liquid-nitrogen supply dewar, 180 L, on caster base", "G-015 LN2 fill station", 0,
          160, 51, 51, 250, 0.15, 40, "casters locked; clearance = slack in its transfer hose",
          f"dimensions, mass (full): typical catalogue values for a 180 L liquid cylinder, not measured; "
-         f"{CASTER}; cg_height: assumed below mid-height (liquid in the lower vessel)", cg=65),
+         f"{CASTER}; cg_height: assumed below mid-height (liquid in the lower vessel)", cg=65, casters=True),
     item("LN2-G-02", "Liquid-nitrogen storage freezer (vapour phase)", "G-015 LN2 fill station", 0,
          105, 80, 80, 380, 0.30, 60, "clearance to the opposite wall",
          f"dimensions, mass (filled): typical catalogue values, not measured; {STEEL}"),
@@ -140,14 +140,14 @@ EQUIPMENT = [
          f"{CAT}; {STEEL} (lower end)"),
     item("ACL-2-01", "Benchtop autoclave on mobile steel stand", "2-230 media prep", 2,
          140, 60, 70, 130, 0.45, 30, "casters retracted, rubber-capped feet; clearance to the sink",
-         f"{CAT}; {RUBBER} (lower end); {CG_HIGH}", cg=100),
+         f"{CAT}; {RUBBER} (lower end); {CG_HIGH}", cg=100, casters=True),
     item("SHF-2-01", "Steel wire shelving, 5 shelves, top shelves loaded", "2-240 consumables store", 2,
          188, 122, 46, 120, 0.45, 5, "clearance to the wall behind",
          f"{CAT} (188 × 122 × 46 cm unit, loaded); mu: assumed for plastic/rubber-capped feet on vinyl; {CG_HIGH}",
          cg=110, qty=3),
     # --- Floor 3: freezer corridor, cold room, virology, microbiology
     item("ULT-3-01", ULT + ", on locked casters", "3-310 freezer corridor", 3, 198, 86, 90, 300, 0.15, 8,
-         "clearance to the neighbouring freezer", f"{ULT_SRC}; {CASTER}", cg=85, qty=4),
+         "clearance to the neighbouring freezer", f"{ULT_SRC}; {CASTER}", cg=85, qty=4, casters=True),
     item("SHF-3-01", "Stainless wire shelving, uniformly loaded", "3-214 cold room", 3,
          183, 152, 61, 200, 0.30, 10, "clearance to the cold-room wall",
          f"{CAT}; {STEEL} (steel feet on epoxy floor)", qty=2),
@@ -163,7 +163,7 @@ EQUIPMENT = [
          cg=85, anchored=True, qty=2),
     item("LN2-4-01", "Liquid-nitrogen dewar, 50 L, on roller base", "4-420 imaging lab", 4,
          80, 50, 50, 85, 0.15, 30, "casters locked; clearance to the microscope table",
-         f"dimensions, mass (full): typical catalogue values, not measured; {CASTER}"),
+         f"dimensions, mass (full): typical catalogue values, not measured; {CASTER}", casters=True),
     item("FLM-4-01", "Flammable-liquids cabinet, 45 gal, wall-bolted", "4-430 chemistry lab", 4,
          165, 109, 46, 250, 0.35, 5, "bolted to the wall: listed, not analysed",
          f"{CAT}; anchorage assumed", anchored=True),
@@ -192,7 +192,8 @@ EQUIPMENT = [
     asp("REF-6-02", "6-640 cold storage", 6, 25, "clearance to the KELVINATOR beside it"),
     item("LN2-6-01", "Liquid-nitrogen dewar, 50 L, on roller base", "6-630 structural biology", 6,
          80, 50, 50, 85, 0.12, 50, "casters locked; clearance to the cryo-EM room door",
-         f"dimensions, mass (full): typical catalogue values, not measured; {CASTER} (worn wheel locks)"),
+         f"dimensions, mass (full): typical catalogue values, not measured; {CASTER} (worn wheel locks)",
+         casters=True),
     item("ULT-6-01", ULT, "6-610 freezer room", 6, 198, 86, 90, 300, 0.25, 60,
          "clearance to the opposite wall", f"{ULT_SRC}; {STEEL}", cg=85, qty=2),
     item("CEN-6-01", "Ultracentrifuge, floor-standing", "6-630 structural biology", 6,

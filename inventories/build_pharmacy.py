@@ -24,10 +24,11 @@ OUT = Path(__file__).resolve().parent / "pharmacy.xlsx"
 
 
 def item(id, name, room, floor, h_in, w_in, d_in, lb, mu, clearance_in, consequence, notes, cg_in=None,
-         anchored=False, qty=1):
+         anchored=False, qty=1, casters=False):
     return dict(id=id, name=name, room=room, floor=floor, height_in=h_in, width_in=w_in, depth_in=d_in,
                 mass_lb=lb, mu=mu, clearance_in=clearance_in, cg_height_in=cg_in,
-                anchored="yes" if anchored else "no", quantity=qty, consequence=consequence, notes=notes)
+                anchored="yes" if anchored else "no", casters="yes" if casters else "no", quantity=qty,
+                consequence=consequence, notes=notes)
 
 
 EQUIPMENT = [
@@ -35,7 +36,7 @@ EQUIPMENT = [
     item("RX-0-01", "Bulk IV-fluid storage rack, 5 shelves, loaded", "0-110 bulk store", 0, 84, 48, 24, 1400,
          0.35, 12, "life-safety", "rack in the aisle to the fire exit; heavy cases on the upper shelves", cg_in=48),
     item("RX-0-02", "Oxygen cylinder cart, 6 E-cylinders", "0-115 medical gases", 0, 40, 18, 12, 120, 0.45, 6,
-         "hazardous", "cart on casters, brakes on; compressed oxygen"),
+         "hazardous", "cart on casters, brakes on; compressed oxygen", casters=True),
     item("RX-0-03", "Pharmacy refrigerator, double door", "0-120 cold room anteroom", 0, 80, 52, 32, 650, 0.25, 8,
          "critical", "vaccines and insulin; 8 in to the wall behind"),
     item("RX-0-04", "Flammable liquids cabinet, 45 gal", "0-125 hazardous store", 0, 65, 43, 18, 420, 0.30, 4,
@@ -59,7 +60,7 @@ EQUIPMENT = [
     item("RX-2-03", "Vaccine freezer, upright, -20 °C", "2-330 cold storage", 2, 76, 28, 30, 330, 0.25, 4, "critical",
          "single unit, narrow"),
     item("RX-2-04", "Supply cart, stainless, 3 shelves", "2-310 clean room", 2, 38, 48, 24, 150, 0.60, 24, "ordinary",
-         "on locked casters"),
+         "on locked casters", casters=True),
 ]
 
 # The design earthquake (DE) per floor: three motions a floor, PTA, Tp and vp; the pulse share

@@ -72,7 +72,12 @@ def test_main_job_writes_the_five_files(lab_run):
     assert completed.returncode == 0, completed.stderr
     out = scratch / "reports" / "lab-2in50"
     assert sorted(p.name for p in out.iterdir()) == ["motions.csv", "report.html", "report.pdf", "summary.csv",
-                                                     "summary.xlsx"]
+                                                     "summary.xlsx", "work_orders.csv"]
+    # the work orders hold every unit that needs an action, once
+    orders = pd.read_csv(out / "work_orders.csv")
+    acting = pd.read_csv(out / "summary.csv").query("action_kind not in ['none', 'anchored']")
+    assert orders["count"].sum() == acting["quantity"].sum()
+    assert sorted(i for items in orders["items"] for i in items.split(", ")) == sorted(acting["id"])
     summary = pd.read_csv(out / "summary.csv")
     motions = pd.read_csv(out / "motions.csv")
     assert set(SPEC_SUMMARY) <= set(summary.columns)
@@ -181,7 +186,7 @@ def test_wrong_option_values_exit_2(tmp_path, args, place):
 def test_html_only_format(lab_html):
     out, completed = lab_html
     assert completed.returncode == 0, completed.stderr
-    assert sorted(p.name for p in out.iterdir()) == ["motions.csv", "report.html", "summary.csv"]
+    assert sorted(p.name for p in out.iterdir()) == ["motions.csv", "report.html", "summary.csv", "work_orders.csv"]
     assert completed.stderr == ""
 
 
@@ -334,7 +339,8 @@ def test_a_later_run_leaves_no_stale_file_of_an_earlier_one(lab_rerun):
     first, out, done = lab_rerun
     assert {"report.pdf", "summary.xlsx"} <= {p.name for p in first.iterdir()}
     assert done.returncode == 0, done.stderr
-    assert sorted(p.name for p in out.iterdir()) == ["comparison.csv", "motions.csv", "report.html", "summary.csv"]
+    assert sorted(p.name for p in out.iterdir()) == ["comparison.csv", "motions.csv", "report.html", "summary.csv",
+                                                     "work_orders.csv"]
     assert [p.name for p in out.parent.iterdir()] == ["lab"]  # no temporary folder left beside it
     umask = os.umask(0)
     os.umask(umask)

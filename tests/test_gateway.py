@@ -52,6 +52,14 @@ def pair(tmp_path_factory):
     return pair_inventory(folder, first, component(0.4, 0.7, 1.1))
 
 
+
+def what_if_runs(result) -> int:
+    """The runs of the actions' what-if (assess.actions): every case of an item that rocks or overturns
+    (centre of mass above lower_contents_cg_fraction of its height) again, under each of its histories."""
+    motions, summary = result.motions, result.summary.set_index("id")
+    rocks = set(motions.loc[motions["sim_uplift"].astype(bool), "id"]) | set(summary.index[summary["p_overturn"] > 0])
+    return int(motions.loc[motions["id"].isin(rocks), "sim_realizations"].sum())
+
 def test_the_runner_sees_every_run_of_an_assessment(pair):
     """2 items x 1 motion x 2 directions (peaks), the stripes, SLIDER in the plane (the one item that cannot
     uplift under the one pair), and one worst-run history per item: all through the runner, none beside it."""
@@ -60,9 +68,12 @@ def test_the_runner_sees_every_run_of_an_assessment(pair):
     items, motions, directions = 2, 1, 2
     stripes = result.curve_risk.runs
     assert stripes > 0
-    assert runner.seen == {PEAKS: items * motions * directions + stripes, PLANAR: 1, RESPONSE: items}
+    lowered = what_if_runs(result)  # the item that rocks, again with its contents low: 1 motion x 2 directions
+    assert lowered == motions * directions
+    assert runner.seen == {PEAKS: items * motions * directions + stripes + lowered, PLANAR: 1, RESPONSE: items}
     assert runner.inner.runs_simulated == runner.seen
-    assert runner.cases_simulated == items * motions * directions + stripes  # the portfolio's account: peaks
+    # the portfolio's account: peaks
+    assert runner.cases_simulated == items * motions * directions + stripes + lowered
     assert len(result.histories) == items
 
 

@@ -113,7 +113,8 @@ def test_overturn_share_over_a_suite_matches_an_independent_rocking_solution(tmp
     row = result.summary.set_index("id").loc["RACK"]
     assert row["p_overturn"] == pytest.approx(np.mean(overturned))
     assert row["overturn_fraction"] == row["p_overturn"]
-    assert row["risk"] == "high" and row["action"].startswith(f"Anchor: it overturns under {sum(overturned)} of its 4")
+    assert row["risk"] == "high" and row["action"].startswith(
+        f"Anchor it to the floor or wall: it overturns under {sum(overturned)} of its 4")
     interval = stats.binomtest(sum(overturned), 4).proportion_ci(confidence_level=0.90, method="exact")
     assert (row["p_overturn_low"], row["p_overturn_high"]) == pytest.approx((interval.low, interval.high))
 
@@ -286,7 +287,11 @@ def test_every_item_is_in_one_action_group_and_no_advice_contradicts_its_numbers
         kind, action = row["action_kind"], row["action"]
         if kind == "anchor":
             assert action.startswith("Anchor") and row["risk"] == "high"
-        elif kind in ("restrain", "room"):
+            assert (row["p_overturn_after"], row["p_beyond_clearance_after"]) == (0.0, 0.0)
+        elif kind == "lower_contents":  # the engine's what-if: still with its contents low
+            assert action.startswith("Move its heavy contents") and row["p_overturn_after"] == 0.0, (item_id, action)
+            assert row["p_beyond_clearance_after"] < 0.1 and "under 0%" not in action
+        elif kind in ("restrain", "room", "lock_casters"):
             needs = float(action.split("needs ")[1].split(" cm")[0])
             has = float(action.split("has ")[1].split(" cm")[0])
             assert needs > has and row["p_beyond_clearance"] >= 0.1, (item_id, action)
@@ -306,7 +311,8 @@ def test_every_item_is_in_one_action_group_and_no_advice_contradicts_its_numbers
     assert rack["anchor_force_kip"] == pytest.approx(0.3 * weight_kn / 4.4482216152605, rel=1e-12)
     assert rack["anchor_shear_omega_kn"] == pytest.approx(2.0 * 0.3 * weight_kn, rel=1e-12)  # Omega_0p 2.0
     assert summary.loc["ANCH", "anchor_force_kn"] == pytest.approx(0.3 * weight_kn, rel=1e-12)  # to check it
-    assert "low risk" in summary.loc["TIGHT", "what_if"] and summary.loc["RACK", "what_if"].startswith("Anchored")
+    assert summary.loc["TIGHT", "what_if"].startswith("Restrained") and "beyond the 30 cm a room can spare" in \
+        summary.loc["TIGHT", "what_if"] and summary.loc["RACK", "what_if"].startswith("Anchored")
     assert "What to do first" in render_html(result)
 
 

@@ -41,7 +41,7 @@ def test_good_workbook_reads_to_documented_si_columns(make_workbook):
     equipment = inventory.equipment
     assert list(equipment.columns) == [
         "id", "name", "room", "floor", "height_m", "width_m", "depth_m", "mass_kg", "mu",
-        "mu_static", "clearance_m", "cg_height_m", "anchored", "quantity", "consequence", "component_type", "ip",
+        "mu_static", "clearance_m", "cg_height_m", "anchored", "casters", "quantity", "consequence", "component_type", "ip",
         "mu_low", "mu_high", "value", "mitigation_cost", "row"]
     assert list(equipment["id"]) == ["INC-1", "FRZ-2", "BSC-3"]
     assert list(equipment["row"]) == [2, 3, 5]  # blank row 4 skipped
@@ -54,7 +54,7 @@ def test_good_workbook_reads_to_documented_si_columns(make_workbook):
     # defaults
     assert first["mu_static"] == first["mu"] == 0.3
     assert first["cg_height_m"] == pytest.approx(2.286 / 2, rel=1e-12)
-    assert first["quantity"] == 1 and not first["anchored"]
+    assert first["quantity"] == 1 and not first["anchored"] and not first["casters"]  # casters: not given, no
     second = equipment.iloc[1]
     assert second["room"] == ""
     assert second["mu_static"] == 0.35

@@ -72,10 +72,17 @@ def test_decisions_follow_the_thresholds_and_rank_the_items():
     by_item = decided.by_item
     assert [by_item[i]["risk"] for i in ("LOW", "MID", "HIGH", "TIPS", "FIXED")] == [
         "low", "moderate", "high", "high", "anchored"]
-    assert [by_item[i]["action_kind"] for i in ("LOW", "MID", "HIGH", "TIPS")] == ["none", "room", "restrain", "anchor"]
-    assert by_item["TIPS"]["action"] == "Anchor: it overturns under 1 of its 3 motions"
-    assert by_item["MID"]["action"].startswith(
-        "Give it room, or restrain it: it needs 42 cm to be low risk and has 30 cm")
+    # each has 30 cm: the 12 cm more it needs is within room_max_cm (30 cm): room for both
+    assert [by_item[i]["action_kind"] for i in ("LOW", "MID", "HIGH", "TIPS")] == ["none", "room", "room", "anchor"]
+    assert by_item["MID"]["action"].startswith("Give it room: it needs 42 cm to be low risk and has 30 cm")
+    # with no room to spare: restrain
+    assert by_item["TIPS"]["action"] == "Anchor it to the floor or wall: it overturns under 1 of its 3 motions"
+    tight = decisions.decide(equipment, governing, uplift, cases, pd.DataFrame(), constants,
+                             {**settings, "room_max_cm": 11.0}).by_item
+    assert [tight[i]["action_kind"] for i in ("MID", "HIGH")] == ["restrain", "restrain"]
+    assert tight["MID"]["action"].startswith(
+        "Restrain it (edge stops, bumpers or straps): it needs 42 cm to be low risk and has 30 cm (20% chance of "
+        "sliding past it): 12 cm more, beyond the 11 cm a room can spare")
     # ordinary items: overturning 1/3 outranks 0.5 x 0.6 sliding, then 0.5 x 0.2; no action and anchored last, by id
     assert sorted(by_item, key=lambda i: by_item[i]["priority"]) == ["TIPS", "HIGH", "MID", "FIXED", "LOW"]
     assert decided.flags == [] and all(by_item[i]["flags"] == () for i in governing)

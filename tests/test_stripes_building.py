@@ -144,9 +144,18 @@ def _updated_curve(folder: Path) -> Path:
     return path
 
 
+
+def what_if_runs(result) -> int:
+    """The runs of the actions' what-if (assess.actions): every case of an item that rocks or overturns
+    (centre of mass above lower_contents_cg_fraction of its height) again, under each of its histories."""
+    motions, summary = result.motions, result.summary.set_index("id")
+    rocks = set(motions.loc[motions["sim_uplift"].astype(bool), "id"]) | set(summary.index[summary["p_overturn"] > 0])
+    return int(motions.loc[motions["id"].isin(rocks), "sim_realizations"].sum())
+
 def test_a_curve_update_reintegrates_without_simulating(de_run):
     path, folder, first, result = de_run
-    assert first.peaks == 18 + result.curve_risk.runs  # the level's cases and the stripes: all simulated once
+    # the level's cases, the stripes and the actions' what-if: all simulated once
+    assert first.peaks == 18 + result.curve_risk.runs + what_if_runs(result)
     again = CachingRunner(Recording(), folder / "cache")  # a new process reads the cache
     updated = run_assessment(read_workbook(path), "DE", seed=3,
                              hazard_curve=read_openquake_hazard(_updated_curve(folder)), runner=again)
@@ -189,5 +198,5 @@ def test_two_levels_give_one_annual_rate_per_item(two_levels):
     assert all(note.startswith(f"{PREFIX}, from the stripes of level {first.level_label}'s suite")
                for note in a["curve_note"])
     # the stripes ran once: the two levels' own cases (3 items x 3 motions x 2 directions each) and one set
-    assert recording.peaks == 2 * 18 + first.curve_risk.runs
+    assert recording.peaks == 2 * 18 + first.curve_risk.runs + what_if_runs(first) + what_if_runs(second)
     assert second.curve_risk is first.curve_risk

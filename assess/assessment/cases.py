@@ -56,3 +56,17 @@ def item_motion_direction_cases(items: pd.DataFrame, pairs: pd.DataFrame) -> pd.
     cases["p_rad_s"] = frequency_parameter(cases["half_width_m"], cases["cg_height_m"], cases["height_m"])
     cases["inertia_ratio"] = inertia_ratio(cases["half_width_m"], cases["cg_height_m"], cases["height_m"])
     return expand_cases(cases)  # an item with a μ range: its cases at its μ values (friction_range)
+
+
+def with_centre_of_mass_at(cases: pd.DataFrame, ids, fraction: float) -> pd.DataFrame:
+    """The cases of the items ``ids`` with their centre of mass at ``fraction`` of their height (heavy
+    contents moved low: the what-if of :func:`assess.assessment.run.lowered_contents`), b/h, α, p and
+    the inertia ratio recomputed for it. The block keeps its box's moment of inertia about the centre
+    of mass (:mod:`assess.mechanics.block`), so only the centre's height changes."""
+    chosen = cases[cases["id"].isin(list(ids))].reset_index(drop=True)
+    chosen = chosen.assign(cg_height_m=float(fraction) * chosen["height_m"])
+    chosen["b_over_h"] = chosen["half_width_m"] / chosen["cg_height_m"]
+    chosen["alpha_rad"] = slenderness(chosen["half_width_m"], chosen["cg_height_m"])
+    chosen["p_rad_s"] = frequency_parameter(chosen["half_width_m"], chosen["cg_height_m"], chosen["height_m"])
+    chosen["inertia_ratio"] = inertia_ratio(chosen["half_width_m"], chosen["cg_height_m"], chosen["height_m"])
+    return chosen

@@ -3,8 +3,9 @@
 This is the one place of the assessment that runs the rigid-body engine
 (:mod:`assess.mechanics`): each case under every history of its motion through
 the runner (:func:`simulate_cases`), the planar pairs of the items that cannot
-uplift (:func:`planar`), the stripes of the hazard curve (:func:`curve`) and
-the worst run of each item again with its time history (:func:`worst_histories`).
+uplift (:func:`planar`), the stripes of the hazard curve (:func:`curve`), the
+items that rock or overturn again with their heavy contents low (:func:`lowered_contents`, the
+actions' what-if) and the worst run of each item again with its time history (:func:`worst_histories`).
 """
 from __future__ import annotations
 
@@ -46,6 +47,15 @@ def run_level(cases: pd.DataFrame, motions, runner, progress: Progress, calibrat
     components of a pair of records at once (:func:`assess.fragility.planar.planar_runs`)."""
     simulated, runs = simulate_cases(cases, motions.histories, progress, runner, calibration, motions.record_pairs)
     return Runs(simulated, runs, planar_runs(simulated, motions.record_pairs, runner))
+
+
+def lowered_contents(cases: pd.DataFrame, motions, runner, progress: Progress, calibration=None) -> Runs:
+    """The what-if run of the actions (:mod:`assess.actions`): ``cases`` are those of the items whose heavy
+    contents would be moved low, with their centre of mass lowered
+    (:func:`assess.assessment.cases.with_centre_of_mass_at`), simulated under the same histories as the
+    level (:func:`run_level`), through the same runner."""
+    progress(f"what if: {cases['id'].nunique()} items that rock or overturn, with their heavy contents low")
+    return run_level(cases, motions, runner, progress, calibration)
 
 
 def curve(cases: pd.DataFrame, motions, level_motions: pd.DataFrame, hazard_curve, settings: dict, runner,

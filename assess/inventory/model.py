@@ -23,7 +23,8 @@ class Inventory:
         ``floor`` (int), ``height_m``, ``width_m``, ``depth_m``,
         ``mass_kg``, ``mu``, ``mu_static`` (= ``mu`` when not given),
         ``clearance_m``, ``cg_height_m`` (= ``height_m / 2`` when not given),
-        ``anchored`` (bool), ``quantity`` (int, 1 when not given), ``consequence`` (str, one of
+        ``anchored`` (bool), ``casters`` (bool, False when not given), ``quantity`` (int, 1 when not given),
+        ``consequence`` (str, one of
         :data:`~assess.inventory.schema.CONSEQUENCES`, ``ordinary`` when not given),
         ``mu_low``, ``mu_high`` (the range μ may take, NaN when not given; both or neither,
         ``mu_low <= mu <= mu_high``), ``value`` and ``mitigation_cost`` (per unit, in the settings'

@@ -138,6 +138,8 @@ EQUIPMENT = SheetSpec("equipment", (
     Column("cg_height", "number", dimension=LENGTH, spec_suffix="cm",
            low=0.01, high=6.0, positive=True),
     Column("anchored", "boolean", default=False),
+    # on casters or a roller base: mobile by design, so tethered or its casters locked, never bolted down
+    Column("casters", "boolean", default=False),
     # identical items in one row: a million is beyond any building (a large data centre
     # holds some 10^4 racks) and keeps every count exact in 64-bit integers and floats
     Column("quantity", "integer", default=1, low=1, high=1_000_000),

@@ -514,6 +514,11 @@ SETTING_BOUNDS = {
     "im_max": (0.0, 500.0, _IM_WHY),
     "sds_g": (0.01, 5.0, "sds_g is S_DS of ASCE 7-16 §11.4.5, the design spectral acceleration at short "
               "periods, 0.01 to about 2.5 g on any mapped site"),
+    "room_max_cm": (0.0, 500.0, "room_max_cm is the most room in cm an action may ask an item to gain beyond "
+                    "its clearance, 0 (never give room) to 500 (5 m)"),
+    "lower_contents_cg_fraction": (0.05, 0.5, "lower_contents_cg_fraction is the height of the centre of mass, "
+                                   "as a fraction of the item's height, with its heavy contents low: above 0 and "
+                                   "at most 0.5 (mid-height, a uniformly loaded item)"),
     "roof_floor": (1.0, 200.0, "roof_floor is the roof's floor number, for z/h in ASCE 7-16 eq. 13.3-1"),
     # costs (assess/costs.py)
     "discount_rate": (0.0, 0.3, "discount_rate is a real rate per year as a fraction: 0.07 for 7 % "
@@ -639,7 +644,7 @@ _EQUIPMENT_TYPES = {"id": "str", "name": "str", "room": "str", "floor": "int64",
                     "height_m": "float64", "width_m": "float64", "depth_m": "float64",
                     "mass_kg": "float64", "mu": "float64", "mu_static": "float64",
                     "clearance_m": "float64", "cg_height_m": "float64", "anchored": "bool",
-                    "quantity": "int64", "consequence": "str", "component_type": "str", "ip": "float64",
+                    "casters": "bool", "quantity": "int64", "consequence": "str", "component_type": "str", "ip": "float64",
                     "mu_low": "float64", "mu_high": "float64", "value": "float64", "mitigation_cost": "float64",
                     "row": "int64"}
 _HAZARD_TYPES = {"level": "str", "level_label": "str", "motion": "str", "all_floors": "bool",

@@ -25,6 +25,7 @@ import pandas as pd
 from markupsafe import Markup
 
 import assess
+from assess.actions import work_order_sentences
 from assess.anchorage.item import anchorage_sentence
 from assess.anchorage.method import anchorage_method
 from assess.quantity_text import length_unit, length_value, system_of
@@ -33,7 +34,7 @@ from assess.report.costs import costs_context
 from assess.report.curve import curve_context
 from assess.risk_classes import rule_text
 from assess.report.sentences import (
-    DASH, action_groups, case_outcomes, changes, cm_interval_text, finite, flag_groups, floor_text, format_cm,
+    DASH, action_groups, after_text, case_outcomes, changes, cm_interval_text, finite, flag_groups, floor_text, format_cm,
     format_length, format_percent, format_significant, integer_text, interval_text, list_text, method_notes, risk_units,
     suite_text, text, total_units, what_happens,
 )
@@ -139,6 +140,7 @@ def _item_row(row: pd.Series, system: str = "si", numbering: str = "ground_0") -
         "anchor_sentence": anchorage_sentence(row, system),
         "anchor_basis": text(row.get("anchor_basis")),
         "what_if": text(row.get("what_if")),
+        "after": after_text(row),
         "priority": integer_text(row.get("priority")),
         "action": text(row.get("action")) or DASH,
         "source": list_text(row.get("demand_source"), " + ") or DASH,
@@ -330,6 +332,7 @@ def report_context(result) -> dict:
         "hazard_notes": list(result.hazard_notes),
         "method_notes": method_notes(summary),
         "changes": changes(result.comparison),
+        "work_orders": work_order_sentences(result.work_orders()),
         "curve": curve_context(result, numbering),
         "costs": costs_context(result, {r["id"]: r["anchor"] for r in rows}),
         "stylesheet": Markup(template_text(STYLESHEET_NAME)),  # our own file, not user text

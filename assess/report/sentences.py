@@ -150,10 +150,24 @@ def what_happens(row: pd.Series) -> str:
 #: Page 1's groups of actions, in the order a manager takes them.
 ACTION_GROUPS = (
     ("anchor", "Anchor", "they overturn or rock in the design earthquake; moving them away from walls does not help"),
-    ("restrain", "Restrain (or give the room listed)", "they are likely to slide past their room"),
-    ("room", "Give room (or restrain)", "they may slide past their room"),
+    ("tether", "Tether or strap", "they stand on casters and overturn, rock, or roll farther than a room can "
+     "spare in the design earthquake"),
+    ("lower_contents", "Move heavy contents low", "they rock or overturn as loaded, and with their heavy contents "
+     "on the lowest shelves the engine finds them still"),
+    ("restrain", "Restrain", "they are likely to slide past their room and need more room than a room can spare"),
+    ("lock_casters", "Lock or chock the casters", "they stand on casters and may roll past their room"),
+    ("room", "Give room", "they may slide past their room, and the room they need is one a room can spare"),
     ("none", "No action", "they stay within their room"),
 )
+
+
+def after_text(row) -> str:
+    """"If done: overturning 0%, past its room 10%" from ``p_overturn_after`` and ``p_beyond_clearance_after``
+    ("" for an item that needs no action or is anchored)."""
+    if text(row.get("action_kind")) in ("", "none", "anchored"):
+        return ""
+    return (f"If done: overturning {format_percent(row.get('p_overturn_after'))}, past its room "
+            f"{format_percent(row.get('p_beyond_clearance_after'))}")
 
 
 def action_groups(rows: list[dict]) -> list[dict]:
