@@ -97,6 +97,9 @@ class AssessmentResult:
     curve_risk : CurveRisk or None
         With a hazard curve: each item's fragilities over stripes of floor acceleration and their
         annual rates (:class:`assess.fragility.stripes.CurveRisk`); its columns are also in ``summary``.
+    anchorage : AnchorageSite or None
+        What the anchorage design forces took from the site, the building and the settings
+        (:class:`assess.anchorage.AnchorageSite`): the edition, S_DS, the Risk Category, z/h and T_a.
     ground_motions, spectrum : DataFrame or None
         With a ``site`` sheet that gives the level's ground suite: one row per ground motion, and one per
         period of the suite's spectrum against its target (``ground_motions.csv``, ``spectrum.csv``).
@@ -126,6 +129,7 @@ class AssessmentResult:
     ground_motions: pd.DataFrame | None = None
     spectrum: pd.DataFrame | None = None
     floors: pd.DataFrame | None = None
+    anchorage: object | None = None
 
     def risk_counts(self) -> dict[str, int]:
         """Number of items (rows, not quantity) in each risk class."""
