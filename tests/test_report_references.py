@@ -50,7 +50,7 @@ def _string_literals(path: Path):
 def _report_text() -> str:
     html = render_html(make_result(simulated=True))
     html = re.sub(r"<script.*?</script>|<style.*?</style>", "", html, flags=re.S)
-    html = html.split('<h3 id="references">')[0]  # the list itself is not a citation of itself
+    html = html.split('<section id="references">')[0]  # the list itself is not a citation of itself
     return html_module.unescape(re.sub(r"<[^>]+>", "", html))
 
 
