@@ -200,3 +200,24 @@ def test_item_blocks_are_numbered_one_by_one_though_an_anchored_item_has_a_prior
     numbers = re.findall(r'<div class="item-detail" id="[^"]+">\s*<h3><span class="muted small">#(\d+)</span>', html)
     assert numbers == ["1", "2", "3", "4"]
     assert 'id="item-R-04"' not in html.split('<section id="details">')[1].split("</section>")[0]
+
+
+def test_the_anchorage_equations_are_in_the_method_where_their_block_exists(monkeypatch):
+    """templates/_anchorage_method.html.j2 (the anchorage's own block) is included in the method when the
+    package has it, and its absence is no error."""
+    from assess.report import render
+
+    result = make_result()
+    without = render_html(result)
+    assert "ANCHORAGE-BLOCK" not in without and '<section id="method">' in without
+    text_of = render.template_text
+
+    def with_block(name):
+        if name == "_anchorage_method.html.j2":
+            return "<h3>ANCHORAGE-BLOCK</h3>\n"
+        return text_of(name)
+
+    monkeypatch.setattr(render, "template_text", with_block)
+    html = render_html(result)
+    method = html.split('<section id="method">')[1].split("</section>")[0]
+    assert "<h3>ANCHORAGE-BLOCK</h3>" in method
