@@ -59,20 +59,22 @@ _UNIT_SUFFIXES = ("_cm", "_in", "_g", "_rad", "_rad_s", "_s", "_kn", "_knm", "_k
 
 
 def _number_format(column: str) -> str | None:
-    """The Excel number format of a summary column: one decimal for lengths, three for other quantities with
-    a unit and for ratios, a percentage for probabilities (``p_…``, ``p50yr_…``), none for the rest.
+    """The Excel number format of a summary column: a percentage for a probability (``p_…``, ``p50yr_…``,
+    but not a name that ends in a unit), one decimal for lengths, three for the other quantities and ratios.
 
     >>> _number_format("p_overturn"), _number_format("p_rad_s"), _number_format("clearance_cm")
     ('0.0%', '0.000', '0.0')
     """
-    if column.endswith(("_cm", "_in")):
-        return "0.0"
-    if column.endswith(_UNIT_SUFFIXES) or column in ("b_over_h", "mu", "im", "edp_median", "theta_max_over_alpha"):
-        return "0.000"
-    if column.startswith(("p_", "p50yr_")) or column in ("pf_sliding", "overturn_fraction"):
+    if (column.startswith(("p_", "p50yr_")) and not column.endswith(_UNIT_SUFFIXES)) \
+            or column in ("pf_sliding", "overturn_fraction"):
         return "0.0%"
     if column.startswith("annual_rate_"):
         return "0.00E+00"
+    if column.endswith(("_cm", "_in")):
+        return "0.0"
+    if column.endswith(("_g", "_rad", "_rad_s", "_s")) or column in ("b_over_h", "mu", "im", "edp_median",
+                                                                      "theta_max_over_alpha"):
+        return "0.000"
     return None
 
 
