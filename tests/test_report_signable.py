@@ -21,13 +21,19 @@ from assess.report.render import strip_label_lines
 from tests.test_report import make_result
 from tests.workbooks import job_sheets, write_workbook
 
+try:  # the anchorage's own record of what it applied, where the tool has one
+    from assess.anchorage.item import AnchorageSite
+    ANCHORAGE_7_22 = AnchorageSite(edition="ASCE 7-22")
+except ImportError:
+    ANCHORAGE_7_22 = types.SimpleNamespace(edition="ASCE 7-22")
+
 SIGNED = {"prepared_by": "A. Engineer, PE", "checked_by": "B. Checker, SE", "report_date": "2026-11-26",
           "revision": "B"}
 
 
 def _signed(result, **settings):
     return dataclasses.replace(result, settings={**result.settings, **settings},
-                               anchorage=types.SimpleNamespace(edition="ASCE 7-22"))
+                               anchorage=ANCHORAGE_7_22)
 
 
 def _title_block(html: str) -> str | None:

@@ -90,6 +90,9 @@ REFERENCES = (
     Reference("ASCE 41-17", "",
               "ASCE/SEI 41-17 (2017). Seismic Evaluation and Retrofit of Existing Buildings. American Society of "
               "Civil Engineers, Reston, VA. §2.3.3: nonstructural performance levels.", "10.1061/9780784414859"),
+    Reference("ACI 318-19", "",
+              "ACI 318-19 (2019). Building Code Requirements for Structural Concrete and Commentary. American "
+              "Concrete Institute, Farmington Hills, MI. Chapter 17: Anchoring to concrete."),
     Reference("FEMA E-74", "",
               "FEMA E-74 (2012). Reducing the Risks of Nonstructural Earthquake Damage — A Practical Guide, 4th ed. "
               "Federal Emergency Management Agency, Washington, DC."),
