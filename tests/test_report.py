@@ -220,7 +220,7 @@ def test_nan_shows_as_dash_and_numbers_are_rounded(html):
     assert '<td class="num c-sl"><span class="muted">n/a</span></td>' in rock_row
     assert '<td class="num c-pfa">–</td>' in rock_row
     forma = re.search(r'<td class="c-id id"><a class="id" href="#item-F-01">F-01</a></td>.*?</tr>', all_items, re.S).group(0)
-    assert '<td class="num c-sl">74 / 115 · ' in forma
+    assert '<td class="num c-sl">74 / 115<span class="unit">Pf ' in forma
     assert '<td class="num c-im">3.38</td>' in forma
     assert not re.search(r"\b(nan|NaN|None|<NA>)\b", html)
 

@@ -21,6 +21,7 @@ Messages quote at most 80 characters of a cell and list at most
 """
 from __future__ import annotations
 
+import datetime
 import errno
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -571,7 +572,7 @@ def _setting_value(key: str, row: Row, default: object, header: Header, report: 
     """The value of one settings row (float for numeric keys), or None after reporting."""
     raw = row.values["value"]
     if not isinstance(default, (int, float)) or isinstance(default, bool):
-        text = "" if schema.is_empty(raw) else schema.parse_text(raw, SETTINGS.column("value"))
+        text = "" if schema.is_empty(raw) else schema.parse_text(_date_text(raw), SETTINGS.column("value"))
         if len(text) > SETTING_TEXT_MAX_CHARS:
             report.at(row.number, header, f"setting '{key}' is {len(text):,} characters long "
                       f"({schema.quote(text)}); it takes at most {SETTING_TEXT_MAX_CHARS}.",
@@ -588,6 +589,20 @@ def _setting_value(key: str, row: Row, default: object, header: Header, report: 
         report.at(row.number, header, f"setting '{key}': {error.message}",
                   f"type a plain number, or delete the row to use the default {default}.")
         return None
+
+
+def _date_text(value):
+    """A date cell (a ``report_date`` typed as a date) as its ISO date, 2026-11-26, with the time of day only
+    where it has one; any other value as it is.
+
+    >>> _date_text(datetime.datetime(2026, 11, 26)), _date_text(datetime.datetime(2026, 11, 26, 9, 30)), _date_text("B")
+    ('2026-11-26', '2026-11-26 09:30', 'B')
+    """
+    if isinstance(value, datetime.datetime):
+        return value.date().isoformat() if value.time() == datetime.time() else value.isoformat(" ", "minutes")
+    if isinstance(value, datetime.date):
+        return value.isoformat()
+    return value
 
 
 def _check_settings(merged: dict, user: dict, header: Header | None, report: SheetReport) -> None:

@@ -19,8 +19,8 @@ from markupsafe import Markup
 
 TEMPLATE_NAME = "calibration.html.j2"
 #: Explanatory quantities plotted against the residuals (diagnosis table column, axis label, log axis).
-EXPLANATORY = (("im", "IM = PTA/(μg) − 1", False), ("omega_p_over_p", "ωp/p", True),
-               ("pgv_m_s", "PGV [m/s]", False), ("mu", "μ declared", False), ("b_over_h", "b/h", False),
+EXPLANATORY = (("im", "IM = PTA/(μg) − 1 [–]", False), ("omega_p_over_p", "ωp/p [–]", True),
+               ("pgv_m_s", "PGV [m/s]", False), ("mu", "μ declared [–]", False), ("b_over_h", "b/h [–]", False),
                ("pressure_kpa", "bearing pressure [kPa]", False))
 
 
@@ -43,7 +43,7 @@ def residual_figure(result) -> str:
                 ax.set_xscale("log")
                 figures.plain_log_ticks(ax.xaxis)
             ax.set_xlabel(label)
-            ax.set_ylabel("ln(predicted / measured)")
+            ax.set_ylabel("ln(predicted / measured) [–]")
         axes[0].legend(loc="best", frameon=False)
         return figures._to_svg(figure)
 

@@ -210,8 +210,8 @@ def fragility_figure(result) -> str:
                       [RISK_COLOURS.get(str(r), "#000000") for r in items["risk"]])
         axes.set_xlim(im_bottom, im_top)
         axes.set_ylim(-0.02, 1.05)
-        axes.set_xlabel("Intensity measure IM = PTA/(μg) − 1")
-        axes.set_ylabel("Pf = P(sliding demand > capacity c)")
+        axes.set_xlabel("Intensity measure IM = PTA/(μg) − 1 [–]")
+        axes.set_ylabel("Pf = P(sliding demand > capacity c) [–]")
         handles, labels = axes.get_legend_handles_labels()  # the range, then the 4 curves
         second_row = [(handles[0], labels[0])] + [
             (Line2D([], [], ls="", marker="o", ms=4.5, color=RISK_COLOURS[r]), f"item, {r} risk")
@@ -275,8 +275,8 @@ def regression_figure(result, table3: pd.DataFrame | None = None) -> str:
                 axes.set_xlim(0, im_top)
                 axes.set_ylim(0, max(4.0, float(table["edp"].max()) * 1.2))
                 axes.set_title("linear: the scatter grows with IM", loc="left")
-            axes.set_xlabel("IM = PTA/(μg) − 1")
-            axes.set_ylabel("EDP Π = Umax·ωp²/PTA")
+            axes.set_xlabel("IM = PTA/(μg) − 1 [–]")
+            axes.set_ylabel("EDP Π = Umax·ωp²/PTA [–]")
         if len(items):
             item_im = items["im"].astype(float).to_numpy()
             _place_labels(linear_axes, list(zip(item_im, zeta * item_im ** eta)),
@@ -363,6 +363,7 @@ def _sliding_demand_figure(items: pd.DataFrame, x_top: float, system: str = "si"
         axes.set_ylim(count - 0.5, -0.5)
         axes.set_xlim(0, x_top)
         axes.set_xlabel(f"sliding [{length_unit(system)}]")
+        axes.set_ylabel("item (id, name)")
         axes.tick_params(axis="y", length=0)
         handles = [Patch(color="#7f8c8d", alpha=0.85, label="median sliding (bar colour = risk)"),
                    Line2D([], [], color="#2c3e50", lw=1.0, marker="|", ms=6,
@@ -393,9 +394,9 @@ def history_figure(history: dict, system: str = "si") -> str:
         axes[1].plot(time_s, history["theta_over_alpha"], color="#922b21", linewidth=0.9)
         for sign in (1, -1):
             axes[1].axhline(sign, color="#922b21", linewidth=0.6, linestyle=":")
-        axes[1].set_ylabel("θ/α")
+        axes[1].set_ylabel("θ/α [–]")
         axes[2].plot(time_s, history["floor_accel_g"], color="#555555", linewidth=0.7)
-        axes[2].set_ylabel("floor [g]")
+        axes[2].set_ylabel("floor acc. [g]")
         axes[2].set_xlabel("time [s]")
         title = (f"{history['id']}: {history['mode']}"
                  f"{', overturns' if history['overturned'] else ''}")

@@ -33,11 +33,14 @@ from assess.report import figures
 from assess.report.costs import costs_context
 from assess.report.curve import curve_context
 from assess.risk_classes import rule_text
+from assess.report.method import floor_motion_route
+from assess.report.references import reference_rows
 from assess.report.sentences import (
     DASH, action_groups, after_text, case_outcomes, changes, cm_interval_text, finite, flag_groups, floor_text, format_cm,
     format_length, format_percent, format_significant, integer_text, interval_text, list_text, method_notes, risk_units,
     suite_text, text, total_units, what_happens,
 )
+from assess.report.title import title_block
 
 TEMPLATE_NAME = "report.html.j2"
 STYLESHEET_NAME = "report.css"
@@ -68,10 +71,19 @@ def template_text(name: str) -> str:
         return (Path(__file__).parents[2] / "templates" / name).read_text(encoding="utf-8")
 
 
+def _template_or_none(name: str) -> str | None:
+    """The text of a packaged template, or None where there is none (jinja2's "not found": an
+    ``{% include ... ignore missing %}`` of a block another part of the tool adds is then skipped)."""
+    try:
+        return template_text(name)
+    except (OSError, ValueError):
+        return None
+
+
 def make_environment() -> jinja2.Environment:
     """A jinja2 environment that autoescapes everything and fails on undefined names."""
     environment = jinja2.Environment(
-        loader=jinja2.FunctionLoader(template_text),
+        loader=jinja2.FunctionLoader(_template_or_none),
         autoescape=True,
         undefined=jinja2.StrictUndefined,
         trim_blocks=True,
@@ -182,10 +194,14 @@ def item_anchors(ids) -> list[str]:
 
 #: How many of the worst items' histories are drawn full size (Fig. 7 of the paper).
 HISTORY_FIGURES = 3
-#: Size of an item's small history plot [px] and the most points it draws per curve.
-SPARK_WIDTH, SPARK_HEIGHT, SPARK_POINTS = 560, 70, 280
-#: Size of an item's suite strip [px]: width, left margin for the motion names, height per motion.
-STRIP_WIDTH, STRIP_LEFT, STRIP_ROW = 560, 170, 13
+#: Size of an item's small history plot [px] (the text width of a portrait page), the most points it draws
+#: per curve, and its margins [px]: left and right for the two vertical axes' numbers (and the time axis'
+#: title, right of its end), top for their titles, bottom for the time axis' numbers.
+SPARK_WIDTH, SPARK_HEIGHT, SPARK_POINTS = 660, 70, 280
+SPARK_LEFT, SPARK_RIGHT, SPARK_TOP, SPARK_BOTTOM = 46, 46, 11, 15
+#: Size of an item's suite strip [px]: width, left margin for the motion names, height of a one-line row,
+#: font size of a name, and the widest name on one line [characters] (longer ones wrap on two lines).
+STRIP_WIDTH, STRIP_LEFT, STRIP_ROW, STRIP_FONT_PX, STRIP_LABEL_CHARS = 660, 250, 13, 8, 52
 
 
 def _item_details(rows: list[dict], summary: pd.DataFrame, runs: pd.DataFrame | None,
@@ -197,21 +213,24 @@ def _item_details(rows: list[dict], summary: pd.DataFrame, runs: pd.DataFrame | 
     for row in rows:
         if row["risk"] == "anchored":
             continue
+        number = len(details) + 1  # the blocks are numbered 1, 2, 3 …: anchored items have none
         item = by_id.loc[row["id"]]
         item = item.iloc[0] if isinstance(item, pd.DataFrame) else item
         strip = None
         if runs is not None and len(runs):
             strip = _suite_strip(runs[runs["id"].astype(str) == row["id"]], finite(item.get("clearance_cm")), system)
         history = (histories or {}).get(row["id"])
-        details.append({**row, "strip": strip, "spark": _history_spark(history, system) if history else None,
+        details.append({**row, "number": number, "strip": strip,
+                        "spark": _history_spark(history, system) if history else None,
                         "theta": format_significant(item.get("theta_max_over_alpha"), 2),
                         "alpha": format_significant(item.get("alpha_rad"), 2)})
     return details
 
 
 def _history_spark(history: dict, system: str = "si") -> dict:
-    """The item's worst run as two small polylines: sliding [cm, or in for ``system`` ``'us'``] (with the
-    clearance) and θ/α (with ±1)."""
+    """The item's worst run as two small polylines on one time axis: sliding [cm, or in for ``system``
+    ``'us'``] against the left axis (with the clearance dashed) and θ/α [–] against the right one (its own
+    scale), the time [s] below."""
     per_cm = length_value(1.0, system)
     time_s = np.asarray(history["time_s"], dtype=float)
     step = max(1, int(np.ceil(time_s.size / SPARK_POINTS)))
@@ -219,12 +238,18 @@ def _history_spark(history: dict, system: str = "si") -> dict:
     sliding = np.asarray(history["sliding_cm"], dtype=float)[::step] * per_cm
     theta = np.clip(np.asarray(history["theta_over_alpha"], dtype=float)[::step], -3.0, 3.0)
     span = max(float(time_s[-1]), 1e-9)
-    half = SPARK_HEIGHT / 2.0
+    x0, x1 = SPARK_LEFT, SPARK_WIDTH - SPARK_RIGHT
+    top, bottom = SPARK_TOP, SPARK_HEIGHT - SPARK_BOTTOM
+    middle, half = (top + bottom) / 2.0, (bottom - top) / 2.0
+
+    def x_of(t):
+        return x0 + (x1 - x0) * np.asarray(t, dtype=float) / span
+
+    def y_of(values, limit):
+        return middle - half * np.clip(np.asarray(values, dtype=float) / max(limit, 1e-9), -1.0, 1.0)
 
     def points(values, limit):
-        limit = max(limit, 1e-9)
-        xs = 40 + (SPARK_WIDTH - 50) * time_s / span
-        ys = half - (half - 4) * np.clip(values / limit, -1.0, 1.0)
+        xs, ys = x_of(time_s), y_of(values, limit)
         finite = np.isfinite(xs) & np.isfinite(ys)  # the run stops where the item overturns
         return " ".join(f"{x:.1f},{y:.1f}" for x, y in zip(xs[finite], ys[finite]))
 
@@ -232,12 +257,34 @@ def _history_spark(history: dict, system: str = "si") -> dict:
     sliding_limit = max(float(np.nanmax(np.abs(sliding))) if np.isfinite(sliding).any() else 0.0,
                         clearance if np.isfinite(clearance) else 0.0, 0.1)
     theta_limit = max(float(np.nanmax(np.abs(theta))) if np.isfinite(theta).any() else 0.0, 1.0)
-    return {"width": SPARK_WIDTH, "height": SPARK_HEIGHT, "sliding": points(sliding, sliding_limit),
-            "theta": points(theta, theta_limit), "sliding_limit": format_significant(sliding_limit, 2),
-            "theta_limit": format_significant(theta_limit, 2), "duration": f"{span:.0f}",
-            "clearance_y": (half - (half - 4) * clearance / sliding_limit) if np.isfinite(clearance) else None,
+    sliding_text, theta_text = format_significant(sliding_limit, 2), format_significant(theta_limit, 2)
+    return {"width": SPARK_WIDTH, "height": SPARK_HEIGHT, "x0": x0, "x1": x1, "top": top, "bottom": bottom,
+            "middle": middle, "sliding": points(sliding, sliding_limit), "theta": points(theta, theta_limit),
+            "sliding_limit": sliding_text, "theta_limit": theta_text, "duration": f"{span:.0f}",
+            "sliding_ticks": [("+" + sliding_text, top), ("0", middle), ("−" + sliding_text, bottom)],
+            "theta_ticks": [("+" + theta_text, top), ("0", middle), ("−" + theta_text, bottom)],
+            "time_ticks": [{"x": float(x_of(t)), "label": f"{t:g}"} for t in _nice_ticks(span * 1.0001)],
+            "clearance_y": float(y_of(clearance, sliding_limit)) if np.isfinite(clearance) else None,
             "motion": text(history.get("sim_motion")), "overturned": bool(history.get("overturned")),
             "direction": history.get("direction")}
+
+
+def strip_label_lines(label: str, limit: int = STRIP_LABEL_CHARS) -> list[str]:
+    """A motion's name on one line, or on two broken at a space, each at most ``limit`` characters; only a
+    name longer than two lines is shortened (with "…"), so that no name runs under the strip's dots.
+
+    >>> strip_label_lines("Los Gatos PC, ground (0.54 g)")
+    ['Los Gatos PC, ground (0.54 g)']
+    >>> strip_label_lines("Gilroy Hist. Bldg., floor 2 (interpolated) (0.71 g)", 30)
+    ['Gilroy Hist. Bldg., floor 2', '(interpolated) (0.71 g)']
+    """
+    label = " ".join(label.split())
+    if len(label) <= limit:
+        return [label]
+    cut = label.rfind(" ", 0, limit + 1)
+    cut = cut if cut > 0 else limit
+    first, rest = label[:cut].rstrip(), label[cut:].lstrip()
+    return [first, rest if len(rest) <= limit else rest[: limit - 1] + "…"]
 
 
 def _suite_strip(runs: pd.DataFrame, clearance_cm: float | None, system: str = "si") -> dict | None:
@@ -250,18 +297,22 @@ def _suite_strip(runs: pd.DataFrame, clearance_cm: float | None, system: str = "
     top = max(float(sliding.max()), clearance or 0.0, 1.0) * 1.08
     scale = (STRIP_WIDTH - STRIP_LEFT - 10) / top
     motions = list(dict.fromkeys(runs["motion_key"]))
-    lines = []
-    for k, key in enumerate(motions):
+    lines, y = [], 15.0  # below the axis titles
+    for key in motions:
         mine = runs[runs["motion_key"] == key]
-        y = 8 + STRIP_ROW * k
-        lines.append({"y": y, "label": text(mine["motion"].iloc[0])[:34],
+        label = strip_label_lines(text(mine["motion"].iloc[0]))
+        extra = (len(label) - 1) * (STRIP_FONT_PX + 1)
+        lines.append({"y": y + extra / 2.0, "label": label, "label_y": y - extra / 2.0 + 3,
                       "dots": [{"x": STRIP_LEFT + float(v) * scale, "overturned": bool(o)}
                                for v, o in zip(pd.to_numeric(mine["sliding_cm"], errors="coerce").fillna(0.0) * per_cm,
                                                mine["overturned"])]})
-    height = 8 + STRIP_ROW * len(motions) + 14
+        y += STRIP_ROW + extra
+    axis_y = y - STRIP_ROW / 2.0 + 4
+    height = axis_y + 12
     ticks = [{"x": STRIP_LEFT + t * scale, "label": f"{t:g}"} for t in _nice_ticks(top)]
-    return {"width": STRIP_WIDTH, "height": height, "left": STRIP_LEFT, "lines": lines, "axis_y": height - 14,
-            "ticks": ticks, "clearance_x": None if clearance is None else STRIP_LEFT + clearance * scale}
+    return {"width": STRIP_WIDTH, "height": height, "left": STRIP_LEFT, "lines": lines, "axis_y": axis_y,
+            "line_height": STRIP_FONT_PX + 1, "font": STRIP_FONT_PX, "ticks": ticks,
+            "clearance_x": None if clearance is None else STRIP_LEFT + clearance * scale}
 
 
 def _nice_ticks(top: float) -> list[float]:
@@ -335,6 +386,9 @@ def report_context(result) -> dict:
         "work_orders": work_order_sentences(result.work_orders()),
         "curve": curve_context(result, numbering),
         "costs": costs_context(result, {r["id"]: r["anchor"] for r in rows}),
+        "title": title_block(settings, code_edition(result)),
+        "route": floor_motion_route(result),
+        "references": reference_rows(),
         "stylesheet": Markup(template_text(STYLESHEET_NAME)),  # our own file, not user text
     }
 
@@ -351,6 +405,9 @@ def report_units(system: str, numbering: str) -> dict:
             "floor_sentence": ("Floors are labelled as in the US, the ground floor 1 (the workbook's floor 0), "
                                "floors below ground as in the workbook (−1); motion names and notes quoting the "
                                "workbook keep its numbers." if ground_1 else "")}
+def code_edition(result) -> str:
+    """The edition of ASCE 7 the anchorage applies ('' where the result has no anchorage)."""
+    return "" if result.anchorage is None else text(result.anchorage.edition)
 
 
 def _with_summary(result, summary: pd.DataFrame):

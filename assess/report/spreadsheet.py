@@ -65,8 +65,20 @@ def with_us_units(summary: pd.DataFrame) -> pd.DataFrame:
     return pd.DataFrame(columns, index=summary.index)
 
 
+#: Name endings of the columns that carry a unit: never a probability, whatever they start with
+#: (``p_rad_s`` is the frequency parameter p in rad/s, not a chance).
+_UNIT_SUFFIXES = ("_cm", "_in", "_g", "_rad", "_rad_s", "_s", "_kn", "_knm", "_kip", "_kip_ft", "_yr")
+
+
 def _number_format(column: str) -> str | None:
-    if column.startswith(("p_", "p50yr_")) or column in ("pf_sliding", "overturn_fraction"):
+    """The Excel number format of a summary column: a percentage for a probability (``p_…``, ``p50yr_…``,
+    but not a name that ends in a unit), one decimal for lengths, three for the other quantities and ratios.
+
+    >>> _number_format("p_overturn"), _number_format("p_rad_s"), _number_format("clearance_cm")
+    ('0.0%', '0.000', '0.0')
+    """
+    if (column.startswith(("p_", "p50yr_")) and not column.endswith(_UNIT_SUFFIXES)) \
+            or column in ("pf_sliding", "overturn_fraction"):
         return "0.0%"
     if column.startswith("annual_rate_"):
         return "0.00E+00"

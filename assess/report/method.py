@@ -1,0 +1,22 @@
+"""What the method section says about where this report's floor motions come from.
+
+The floor motions reach an item by one of four routes (docs/workbook.md): given per floor in the
+``hazard`` sheet; derived from the ground motion with ``--derive-floors``; a ``site`` sheet's ground
+suite (records scaled, or synthetic motions matched, to the site's spectrum) acting on the ground floor;
+and that suite through the ``building`` sheet's elastic modes to the upper floors. The method section
+gives the equations of every route and says which this report took, from the result alone.
+"""
+from __future__ import annotations
+
+from assess.result import AssessmentResult
+
+
+def floor_motion_route(result: AssessmentResult) -> dict:
+    """Which routes gave this report's floor motions: ``given`` (the hazard sheet's floor motions, unless a
+    site sheet gives the level), ``derived`` (``--derive-floors``: floors without one derived from the
+    ground's), ``site`` (a site sheet's ground suite) and ``building`` (that suite through the building's
+    modes to the upper floors)."""
+    site = result.ground_motions is not None
+    building = result.floors is not None
+    derived = any(flag.code == "derived_floor_motion" for flag in result.flags)
+    return {"site": site, "building": building, "derived": derived, "given": not (site or building)}
