@@ -441,10 +441,13 @@ def item_rates(fit: FragilityFit, mode: str, hazard: OpenQuakeHazard, levels_g, 
     elif fit.status == "separated":
         survived_g, failed_g = fit.separation_g
         central, low, high = rate_at(math.sqrt(survived_g * failed_g)), rate_at(failed_g), rate_at(survived_g)
-        note = (f"{mode}: {words} in every simulation above {survived_g:.2g} g and in none below {failed_g:.2g} g "
-                f"(a step, no fitted slope): the rate of a step between them")
+        mixed = outcomes[(outcomes["failures"] > 0) & (outcomes["failures"] < outcomes["trials"])]
+        between = "".join(f", {int(r.failures)} of {int(r.trials)} at {r.pfa_g:.2g} g"
+                          for r in mixed.itertuples(index=False))
+        note = (f"{mode}: {words} in no simulation up to {survived_g:.2g} g{between} and in every one from "
+                f"{failed_g:.2g} g (a step, no fitted slope): the rate of a step between them")
         if survived_g == failed_g:
-            note = (f"{mode}: {words} in every simulation above {survived_g:.2g} g and in none below it "
+            note = (f"{mode}: {words} in no simulation below {survived_g:.2g} g{between} and in every one above "
                     "(a step there, no fitted slope)")
     elif fit.status == "no_failures":
         top_g = float(np.max(stripes_g))
@@ -603,12 +606,13 @@ def export_items(curve: CurveRisk, summary: pd.DataFrame) -> list:
             states.append(state)
         items.append(ItemFragilities(component_id=pelicun_component_id(row.id),
                                      description=f"{row.name} ({row.id}), floor {row.floor}", beyond_clearance=states[0],
-                                     overturn=states[1]))
+                                     overturn=states[1], floor=int(row.floor), quantity=int(row.quantity)))
     return items
 
 
 def fragility_files(curve: CurveRisk, summary: pd.DataFrame) -> dict[str, bytes]:
-    """``fragility/fragility.csv`` + ``.json`` (pelicun's format) and ``fragility/stripes.csv`` (the outcomes
+    """``fragility/fragility.csv`` + ``.json`` (pelicun's format), ``fragility/cmp_marginals.csv`` (the items at
+    the stories pelicun counts) and ``fragility/stripes.csv`` (the outcomes
     the fits rest on; its stripes ``pga_g`` where they are of ground acceleration), by path, as bytes."""
     from assess.fragility.pelicun_export import pelicun_fragility_files
 
