@@ -491,3 +491,30 @@ def test_an_assessment_export_read_by_pelicun_reads_each_item_on_its_own_floor(f
         np.testing.assert_allclose(rows["pfa_g"], PFA_BY_LEVEL_G[floor] * np.array([0.6, 1.0, 1.5]))
     other = table.merge(below, on=["id", "row"], suffixes=("", "_below")).dropna(subset=["pfa_g_below"])
     assert (other["p_ds1_or_more_own"] - other["p_ds1_or_more_below"]).abs().max() > 0.15
+
+
+def test_an_incomplete_note_is_true_to_the_stripes():
+    """The lab's ULT-1-01 (stripes.csv of `assess inventories/lab.xlsx --oq-hazard ...`): none of 10 failed up
+    to 0.525 g, 3 of 10 at 0.582 g, all from 0.644 g. No finite fit (quasi-separation), so the row is
+    Incomplete; its note must give those counts, not "every one from 0.582 g failed"."""
+    from assess.fragility.stripes import fit_items
+
+    levels = [0.0551, 0.083, 0.125, 0.188, 0.284, 0.428, 0.474, 0.525, 0.582, 0.644, 0.971, 1.46, 2.2]
+    failures = [0, 0, 0, 0, 0, 0, 0, 0, 3, 10, 10, 10, 10]
+    outcomes = pd.DataFrame([{"id": "ULT-1-01", "pfa_g": x, "history": h, "beyond_clearance": h < k,
+                              "overturn": False} for x, k in zip(levels, failures) for h in range(10)])
+    fits, stripes = fit_items(outcomes)
+    fit = fits[("ULT-1-01", "beyond_clearance")]
+    item = ItemFragilities("ULT_1_01", "freezer", LimitStateFragility.from_fit(fit),
+                           LimitStateFragility.from_fit(fits[("ULT-1-01", "overturn")]), floor=1)
+    assert fragility_table([item]).loc[0, "Incomplete"] == 1
+    comments = fragility_metadata([item])["ULT_1_01"]["Comments"]
+    assert "3 of 10 failed at 0.582 g" in comments
+    assert "every one from 0.582 g failed" not in comments
+    # every count the note states, read back from the stripes table
+    table = stripes[stripes["mode"] == "beyond_clearance"].set_index("pfa_g")
+    low_g, high_g = fit.separation_g
+    assert f"Every simulation up to {low_g:.3g} g survived" in comments
+    assert f"every one from {high_g:.3g} g failed" in comments
+    assert (table.loc[table.index <= low_g, "failures"] == 0).all()
+    assert (table.loc[table.index >= high_g, "failures"] == table.loc[table.index >= high_g, "trials"]).all()

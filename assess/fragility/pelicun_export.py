@@ -357,7 +357,8 @@ def _comments(item: ItemFragilities, directional: bool, demand: str = "PFA") -> 
             lines.append(f"{ls} ({mode}): median {_rounded(state.median_g):g} g, beta "
                          f"{_rounded(state.beta):g}. {state.note}".strip())
         elif ls == "LS1":
-            lines.append(f"{ls} ({mode}): no fragility, hence Incomplete. {state.note}".strip())
+            lines.append(f"{ls} ({mode}): no fragility, hence Incomplete. {state.note[:1].upper()}{state.note[1:]}"
+                         .strip())
         else:
             lines.append(f"{ls} ({mode}) not defined: {state.note}".strip())
     a, b = item.beyond_clearance, item.overturn
