@@ -111,6 +111,7 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     # 6. decisions
     decided = decisions.decide(inventory.equipment, rows.rows, rows.uplift, at_mu, demand.at_mu_ends, constants,
                                settings)
+    decided = decisions.with_input_warnings(decided, inventory.warnings)  # sizes no equipment has
     # 7. result
     summary = result_stage.summarise(inventory.equipment, rows, decided)
     summary_columns = SUMMARY_COLUMNS

@@ -48,6 +48,9 @@ class Inventory:
         The ``site`` sheet (:mod:`assess.inventory.site_building`), None when the workbook has none.
     building : BuildingSheet or None
         The ``building`` sheet, None when the workbook has none.
+    warnings : tuple of Implausible
+        Items whose size or density no equipment has (:mod:`assess.inventory.plausibility`), each with
+        its cell; the items are assessed as written.
     """
 
     path: Path
@@ -56,6 +59,7 @@ class Inventory:
     settings: dict = field(default_factory=dict)
     site: SiteSheet | None = None
     building: BuildingSheet | None = None
+    warnings: tuple = ()
 
     @property
     def levels(self) -> list[str]:
