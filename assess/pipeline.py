@@ -25,6 +25,7 @@ from assess.calibration.apply import check_applies, with_declared
 from assess.fragility import RegressionConstants
 from assess.fragility.governing import suite_runs
 from assess.fragility.planar import with_planar_peaks
+from assess.fragility.agreement import fragility_at_level
 from assess.fragility.stripes import CURVE_COLUMNS
 from assess.inventory import Inventory
 from assess.mechanics.runner import LocalRunner
@@ -117,6 +118,8 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     summary_columns = SUMMARY_COLUMNS
     if curve is not None:
         summary = summary.merge(curve.table, on="id", how="left")
+        # the fragilities at this level's accelerations, beside the level's answer (the report says which governs)
+        summary = summary.merge(fragility_at_level(at_mu, level.table, curve), on="id", how="left")
         summary_columns = SUMMARY_COLUMNS + CURVE_COLUMNS
     return AssessmentResult(
         workbook=inventory.path, facility=str(settings.get("facility", "")),

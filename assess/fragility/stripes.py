@@ -77,8 +77,8 @@ STRIPE_PGA_G = (0.05, 2.0)
 RAREST_RATE_PER_YR = 1.0 / 10_000.0
 MODES = ("beyond_clearance", "overturn")
 
-#: Columns the hazard curve adds to ``summary.csv`` (docs/outputs.md), then the fragilities they rest on.
-CURVE_COLUMNS = [
+#: Columns the fragility fits add to ``summary.csv`` (docs/outputs.md), then the fragilities they rest on.
+FIT_COLUMNS = [
     "annual_rate_beyond_clearance", "annual_rate_overturn", "p50yr_beyond_clearance", "p50yr_overturn",
     "annual_rate_beyond_clearance_low", "annual_rate_beyond_clearance_high", "annual_rate_overturn_low",
     "annual_rate_overturn_high", "p50yr_beyond_clearance_low", "p50yr_beyond_clearance_high",
@@ -87,6 +87,11 @@ CURVE_COLUMNS = [
     "fragility_beyond_clearance_se_ln_median", "fragility_overturn_median_g", "fragility_overturn_beta",
     "fragility_overturn_se_ln_median", "pfa_per_pga", "curve_note",
 ]
+#: The fragilities' probabilities at the level's own accelerations, beside the level's answer
+#: (:mod:`assess.fragility.agreement`; per level, so added by the pipeline, not by the fits).
+AT_LEVEL_COLUMNS = ["p_beyond_clearance_fragility", "p_overturn_fragility"]
+#: Columns the hazard curve adds to ``summary.csv`` (docs/outputs.md).
+CURVE_COLUMNS = FIT_COLUMNS + AT_LEVEL_COLUMNS
 
 
 @dataclass
@@ -96,7 +101,7 @@ class CurveRisk:
     Attributes
     ----------
     table : DataFrame
-        One row per freestanding item (``id``), :data:`CURVE_COLUMNS`.
+        One row per freestanding item (``id``), :data:`FIT_COLUMNS`.
     fits : dict
         ``{(id, mode): FragilityFit}`` for the export and the report.
     stripes : DataFrame
@@ -574,7 +579,7 @@ def fit_and_integrate(cases: pd.DataFrame, hazard: OpenQuakeHazard, levels_g, ra
         row["curve_note"] = note_prefix + "; ".join(notes)
         rows.append(row)
     name = f"{_file_name(hazard.path)}, site {hazard.site.label()}"
-    return CurveRisk(table=pd.DataFrame(rows)[["id"] + CURVE_COLUMNS], fits=fits, stripes=stripes,
+    return CurveRisk(table=pd.DataFrame(rows)[["id"] + FIT_COLUMNS], fits=fits, stripes=stripes,
                      floors=floors, curve=name, runs=len(runs), notes=curve_notes, fit_p=fit_p,
                      intensity=intensity)
 
@@ -589,6 +594,7 @@ def export_items(curve: CurveRisk, summary: pd.DataFrame) -> list:
 
     A limit state without a fitted fragility is exported without numbers, with the reason.
     """
+    from assess.fragility.agreement import level_comparison_sentence
     from assess.fragility.pelicun_export import ItemFragilities, LimitStateFragility, pelicun_component_id
 
     items = []
@@ -606,8 +612,18 @@ def export_items(curve: CurveRisk, summary: pd.DataFrame) -> list:
             states.append(state)
         items.append(ItemFragilities(component_id=pelicun_component_id(row.id),
                                      description=f"{row.name} ({row.id}), floor {row.floor}", beyond_clearance=states[0],
-                                     overturn=states[1], floor=int(row.floor), quantity=int(row.quantity)))
+                                     overturn=states[1], floor=int(row.floor), quantity=int(row.quantity),
+                                     comment=_level_comment(row._asdict(), level_comparison_sentence)))
     return items
+
+
+def _level_comment(row: dict, sentence) -> str:
+    """The item's sentence on the level's answer beside this fragility (``sentence``:
+    :func:`assess.fragility.agreement.level_comparison_sentence`), where the summary has the columns."""
+    if not all(column in row for column in AT_LEVEL_COLUMNS):
+        return ""
+    text = sentence(row)
+    return f"At the level assessed: {text}" if text else ""
 
 
 def fragility_files(curve: CurveRisk, summary: pd.DataFrame) -> dict[str, bytes]:
