@@ -75,9 +75,11 @@ def _sources(value) -> tuple:
     return tuple(value) if value is not None else ()
 
 
-def level_comparison_sentence(row) -> str:
+def level_comparison_sentence(row, why: bool = True) -> str:
     """Where the level's answer and the fragility's at the level's accelerations are :data:`APART` or more,
-    one sentence saying both, which governs and why; "" where they agree (or there is no fragility).
+    one sentence saying both, which governs and why (``why`` False: both, and in brackets where the level's
+    answer comes from, for a list under a paragraph that gives the reasons); "" where they agree (or there is
+    no fragility).
 
     ``row``: a summary row (``id``, ``demand_source``, ``p_beyond_clearance``, ``p_overturn`` and
     :data:`~assess.fragility.stripes.AT_LEVEL_COLUMNS`).
@@ -98,7 +100,12 @@ def level_comparison_sentence(row) -> str:
                          f"{_percent(fragility)} from its fragility at the same accelerations")
     if not parts:
         return ""
-    if "regression" in _sources(row["demand_source"]):
+    regression = "regression" in _sources(row["demand_source"])
+    if not why:
+        return (f"{row['id']}, " + "; ".join(parts) + (
+            " (the level takes the paper's regression where it holds)." if regression else
+            " (both from the simulations: the lognormal smooths the level's outcomes)."))
+    if regression:
         why = ("it takes the paper's regression, fitted on experiments, where it holds for a motion (a pulse, IM "
                "in its fitted range, no uplift); the fragility runs the engine under those motions' histories, at "
                "this level as at every stripe, and serves the rates over the hazard curve and pelicun.")

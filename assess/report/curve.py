@@ -69,15 +69,17 @@ def governs_sentences(free: pd.DataFrame) -> dict:
     and fragility at the level's accelerations differ by :data:`~assess.fragility.agreement.APART` or more)."""
     from assess.fragility.agreement import APART, level_comparison_sentence
 
-    apart = [text for text in (level_comparison_sentence(row) for _, row in free.iterrows()) if text]
+    apart = [text for text in (level_comparison_sentence(row, why=False) for _, row in free.iterrows()) if text]
     governs = (
         "Which to use: at the design level, the level's answer governs (the risk classes, the advice, "
         "p_beyond_clearance and p_overturn in summary.csv): it takes each motion from the model that holds for "
         "it, the paper's regression where a pulse, IM in its fitted range and no uplift make it hold, the "
         "engine otherwise. The fragilities (these rates, fragility/ and pelicun with it) run the engine under "
         "the same motions' histories for every motion and every stripe: the regression holds over too narrow "
-        "a range of intensity to give a stripe from 0.05 to 2 g. summary.csv gives each fragility at this "
-        "level's accelerations (p_beyond_clearance_fragility, p_overturn_fragility); ")
+        "a range of intensity to give a stripe from 0.05 to 2 g; where the engine answers at the level too, "
+        "the fragility is one lognormal over every stripe, which smooths the level's outcomes. summary.csv "
+        "gives each fragility at this level's accelerations (p_beyond_clearance_fragility, "
+        "p_overturn_fragility); ")
     if apart:
         governs += (f"for {len(apart)} of the {len(free)} items it differs from the level's answer by "
                     f"{APART:.0%} or more:")
