@@ -39,7 +39,7 @@ def test_a_rack_in_centimetres_under_inch_headers_is_warned_at_its_cells(tmp_pat
     height = by_column["height_in"]
     assert height.item_id == "RACK-1"
     assert (height.problem.sheet, height.problem.row, height.problem.cell) == ("equipment", 3, "E3")
-    assert "5.41 m" in height.problem.message and "rename the header height_cm" in height.problem.fix
+    assert "5.41 m (17.7 ft)" in height.problem.message and "rename the header height_cm" in height.problem.fix
     assert 213 * 0.0254 > MAX_HEIGHT_M and 60 * 0.0254 < MAX_PLAN_M and 107 * 0.0254 < MAX_PLAN_M
     density = by_column["mass_kg"]
     assert density.problem.cell == "H3"
