@@ -25,7 +25,10 @@ import math
 import numpy as np
 import pandas as pd
 
-from assess.fragility.stripes import AT_LEVEL_COLUMNS, MODES
+#: Per failure mode (:data:`assess.fragility.stripes.MODES`), the summary column of its fragility's
+#: probability at the level's accelerations.
+AT_LEVEL = {"beyond_clearance": "p_beyond_clearance_fragility", "overturn": "p_overturn_fragility"}
+AT_LEVEL_COLUMNS = list(AT_LEVEL.values())
 
 
 def level_intensities(cases: pd.DataFrame, level_table: pd.DataFrame, intensity: str) -> pd.DataFrame:
@@ -46,13 +49,13 @@ def level_intensities(cases: pd.DataFrame, level_table: pd.DataFrame, intensity:
 
 
 def fragility_at_level(cases: pd.DataFrame, level_table: pd.DataFrame, curve) -> pd.DataFrame:
-    """``id`` and :data:`~assess.fragility.stripes.AT_LEVEL_COLUMNS`: each fitted fragility's mean
+    """``id`` and :data:`AT_LEVEL_COLUMNS`: each fitted fragility's mean
     probability over the item's motions at the level (module docstring); NaN without a fit."""
     accelerations = level_intensities(cases, level_table, curve.intensity)
     rows = []
     for item_id, group in accelerations.groupby("id", sort=False):
         row = {"id": item_id}
-        for mode, column in zip(MODES, AT_LEVEL_COLUMNS):
+        for mode, column in AT_LEVEL.items():
             fit = curve.fits.get((item_id, mode))
             row[column] = (float(np.mean(fit.probability(group["a_g"].to_numpy(dtype=float))))
                            if fit is not None and fit.fitted else math.nan)
@@ -82,7 +85,7 @@ def level_comparison_sentence(row, why: bool = True) -> str:
     no fragility).
 
     ``row``: a summary row (``id``, ``demand_source``, ``p_beyond_clearance``, ``p_overturn`` and
-    :data:`~assess.fragility.stripes.AT_LEVEL_COLUMNS`).
+    :data:`AT_LEVEL_COLUMNS`).
 
     >>> text = level_comparison_sentence({"id": "REF-6-01", "demand_source": ("regression",),
     ...     "p_beyond_clearance": 0.84, "p_overturn": 0.0, "p_beyond_clearance_fragility": 0.64,
@@ -93,7 +96,7 @@ def level_comparison_sentence(row, why: bool = True) -> str:
     it takes the paper's regression, fitted on experiments, wher
     """
     parts = []
-    for mode, column in zip(MODES, AT_LEVEL_COLUMNS):
+    for mode, column in AT_LEVEL.items():
         level, fragility = float(row[f"p_{mode}"]), float(row[column])
         if math.isfinite(level) and math.isfinite(fragility) and abs(level - fragility) >= APART:
             parts.append(f"{_MODE_WORDS[mode]} at this level: {_percent(level)} from the level's answer, "

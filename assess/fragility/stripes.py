@@ -63,6 +63,7 @@ import numpy as np
 import pandas as pd
 from scipy import stats
 
+from assess.fragility.agreement import AT_LEVEL_COLUMNS, level_comparison_sentence
 from assess.fragility.msa import FITTED, FragilityFit, fit_lognormal_fragilities
 from assess.hazard.openquake import OpenQuakeHazard
 from assess.hazard.risk_integral import annual_rates_of_curve, openquake_failure_rate, probability_in_years
@@ -87,10 +88,8 @@ FIT_COLUMNS = [
     "fragility_beyond_clearance_se_ln_median", "fragility_overturn_median_g", "fragility_overturn_beta",
     "fragility_overturn_se_ln_median", "pfa_per_pga", "curve_note",
 ]
-#: The fragilities' probabilities at the level's own accelerations, beside the level's answer
-#: (:mod:`assess.fragility.agreement`; per level, so added by the pipeline, not by the fits).
-AT_LEVEL_COLUMNS = ["p_beyond_clearance_fragility", "p_overturn_fragility"]
-#: Columns the hazard curve adds to ``summary.csv`` (docs/outputs.md).
+#: Columns the hazard curve adds to ``summary.csv`` (docs/outputs.md); the last, the fragilities at the level's
+#: own accelerations (:data:`assess.fragility.agreement.AT_LEVEL_COLUMNS`), per level: added by the pipeline.
 CURVE_COLUMNS = FIT_COLUMNS + AT_LEVEL_COLUMNS
 
 
@@ -594,7 +593,6 @@ def export_items(curve: CurveRisk, summary: pd.DataFrame) -> list:
 
     A limit state without a fitted fragility is exported without numbers, with the reason.
     """
-    from assess.fragility.agreement import level_comparison_sentence
     from assess.fragility.pelicun_export import ItemFragilities, LimitStateFragility, pelicun_component_id
 
     items = []
