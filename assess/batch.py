@@ -324,6 +324,8 @@ def prepare_buildings(buildings: list[Building], *, level: str | None = None, oq
         say(f"checking {building.name} ({building.workbook.name})")
         try:
             inventory = read_workbook(building.workbook)
+            for warning in inventory.warnings:  # assessed as written; the flags and the report say it too
+                say(f"warning: {building.name}: {warning}")
             check_inputs(inventory, allow_records_outside)
             chosen = building.level or level
             if chosen is None:

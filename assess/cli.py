@@ -14,7 +14,7 @@ import traceback
 from pathlib import Path
 
 from assess import __version__
-from assess.errors import InputError, Problem
+from assess.errors import InputError, Problem, printable
 from assess.folders import write_file_atomically
 from assess.site_option import joined_oq_site
 from assess.interrupts import (Interrupt, caused_by, held_back, interrupted, reader_gone, sigint_recorded,
@@ -336,6 +336,11 @@ def _main(argv: list[str] | None) -> int:
         return EXIT_INTERNAL
 
 
+def _warn(message: str) -> None:
+    """A warning, to stderr, even with --quiet (it is not progress: the input may be wrong)."""
+    print(f"assess: {printable(message)}", file=sys.stderr)
+
+
 def _assess(args: argparse.Namespace, say) -> int:
     from assess import job  # the core: seconds to import, not needed for --help or a wrong option
 
@@ -343,7 +348,7 @@ def _assess(args: argparse.Namespace, say) -> int:
         args.workbook, args.hazard, out=args.out, formats=args.format, units=args.units, jobs=args.jobs,
         seed=args.seed, oq_hazard=args.oq_hazard, oq_site=args.oq_site, derive_floors=args.derive_floors,
         calibration=args.calibration, compare_with=args.compare_with, scheduler=args.scheduler,
-        scheduler_tls=_tls(args), allow_records_outside=args.allow_records_outside), say)
+        scheduler_tls=_tls(args), allow_records_outside=args.allow_records_outside), say, warn=_warn)
     for level in levels:
         written = write_uninterrupted(level.files, level.out_dir)
         counts = level.result.risk_counts()

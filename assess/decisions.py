@@ -210,3 +210,21 @@ def item_flags(item, item_cases: pd.DataFrame, constants: RegressionConstants, s
             f"centre of mass at {length_text(item.cg_height_m * 100, system)}, not mid-height: alpha and b/h use it; "
             "p assumes the mass spread over the whole box.")))
     return flags
+
+
+def with_input_warnings(decided: Decisions, warnings) -> Decisions:
+    """``decided`` with a flag per plausibility warning of the workbook (``warnings``:
+    :class:`assess.inventory.plausibility.Implausible`, each naming its item and cell), after the item's own
+    flags; the item is assessed as written."""
+    if not warnings:
+        return decided
+    by_item = {item_id: dict(row) for item_id, row in decided.by_item.items()}
+    added = []
+    for warning in warnings:
+        added.append(Flag(warning.item_id, "implausible_input", str(warning.problem)))
+        codes = tuple(by_item[warning.item_id].get("flags", ()))
+        if "implausible_input" not in codes:
+            by_item[warning.item_id]["flags"] = codes + ("implausible_input",)
+    order = {item_id: k for k, item_id in enumerate(by_item)}
+    flags = sorted(list(decided.flags) + added, key=lambda flag: order.get(flag.item_id, len(order)))
+    return Decisions(by_item, flags)

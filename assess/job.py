@@ -187,11 +187,13 @@ class LevelOutput:
     files: dict[str, bytes]
 
 
-def run_job(job: AssessmentJob, say: Say = lambda message: None) -> Iterator[LevelOutput]:
+def run_job(job: AssessmentJob, say: Say = lambda message: None,
+            warn: Say | None = None) -> Iterator[LevelOutput]:
     """Assess every level of ``job``; yields each level's files, rendered once every level is computed.
 
     Every input is checked before anything runs: the levels, the output folders, the workbook and its
-    hazard sheet's rules, the OpenQuake file and the calibration.
+    hazard sheet's rules, the OpenQuake file and the calibration. ``warn`` (``say`` when not given) hears
+    the workbook's plausibility warnings (:mod:`assess.inventory.plausibility`); the run goes on.
     """
     levels = parse_levels(job.hazard)
     set_threads(job.jobs)
@@ -200,6 +202,8 @@ def run_job(job: AssessmentJob, say: Say = lambda message: None) -> Iterator[Lev
         check_output_folder(out_dir)
     say(f"reading {job.workbook}")
     inventory = with_units(read_workbook(job.workbook), job.units)
+    for warning in inventory.warnings:
+        (warn or say)(f"warning: {warning}")
     check_inputs(inventory, job.allow_records_outside)
     oq_hazard = None
     if job.oq_hazard is not None:

@@ -32,6 +32,7 @@ from assess.calibration.apply import check_applies, with_declared
 from assess.fragility import RegressionConstants
 from assess.fragility.governing import suite_runs
 from assess.fragility.planar import with_planar_peaks
+from assess.fragility.agreement import fragility_at_level
 from assess.fragility.stripes import CURVE_COLUMNS
 from assess.inventory import Inventory
 from assess.mechanics.runner import LocalRunner
@@ -122,11 +123,14 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     anchorage = anchorage_site(inventory.site, inventory.building, settings)
     decided = decisions.decide(inventory.equipment, rows.rows, rows.uplift, at_mu, demand.at_mu_ends, constants,
                                settings, anchorage, lowered=lowered)
+    decided = decisions.with_input_warnings(decided, inventory.warnings)  # sizes no equipment has
     # 7. result
     summary = result_stage.summarise(inventory.equipment, rows, decided)
     summary_columns = SUMMARY_COLUMNS
     if curve is not None:
         summary = summary.merge(curve.table, on="id", how="left")
+        # the fragilities at this level's accelerations, beside the level's answer (the report says which governs)
+        summary = summary.merge(fragility_at_level(at_mu, level.table, curve), on="id", how="left")
         summary_columns = SUMMARY_COLUMNS + CURVE_COLUMNS
     # 8. costs: expected losses and the actions' benefit-cost ratios, where the equipment gives a value
     summary = pd.concat([summary, costs.cost_table(summary, inventory.equipment, settings, curve is not None)],

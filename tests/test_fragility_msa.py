@@ -250,7 +250,9 @@ def test_separated_outcomes_give_the_bracket_not_a_fit():
     assert math.isnan(fit.median_g)
     # quasi-separation (mixed outcomes only at the boundary stripe) has no finite fit either
     fit = fit_lognormal_fragility([0.1, 0.2, 0.4], [5, 5, 5], [0, 2, 5])
-    assert fit.status == SEPARATED and fit.separation_g == (0.2, 0.2)
+    assert fit.status == SEPARATED and fit.separation_g == (0.1, 0.4)  # none failed at 0.1 g, all at 0.4 g
+    assert fit.message.startswith("every simulation up to 0.1 g survived, 2 of 5 failed at 0.2 g and every one "
+                                  "from 0.4 g failed")
     # one overlap is enough for a fit
     assert fit_lognormal_fragility([0.1, 0.2, 0.4], [5, 5, 5], [1, 2, 5]).status == FITTED
 

@@ -360,3 +360,27 @@ def test_a_record_pair_runs_each_direction_under_its_own_component_in_the_stripe
     newmark_cm = lambda amp: 100 * max(amp - mu, 0.0) * amp * G * t * t / (2 * mu)  # noqa: E731
     assert top[1] == pytest.approx(newmark_cm(a_g), rel=0.01)
     assert top[2] == pytest.approx(newmark_cm(a_g / 10), rel=0.02)  # 0.2 g: it slides, much less
+
+
+def test_the_fragility_at_the_level_beside_the_level_answer_and_which_governs(two_pulse_run):
+    """Three rectangular pulses of 0.5 g: the level's answer counts the pulses whose closed-form threshold
+    lies below 0.5 g; the fragility at the level is Φ(ln(0.5/θ)/β) (every motion at 0.5 g). The report
+    says which governs, with the item named where the two lie 10 % or more apart."""
+    from assess.fragility.agreement import APART, level_comparison_sentence
+    from assess.report.curve import curve_context
+
+    result, _ = two_pulse_run
+    row = result.summary.set_index("id").loc["S1"]
+    fit = result.curve_risk.fits[("S1", "beyond_clearance")]
+    thresholds = [rect_threshold_g(0.15, 0.10, d) for d in (0.25, 0.5, 1.0)]
+    assert row["p_beyond_clearance"] == pytest.approx(sum(t < 0.5 for t in thresholds) / 3)
+    assert row["p_beyond_clearance_fragility"] == pytest.approx(
+        stats.norm.cdf(math.log(0.5 / fit.median_g) / fit.beta), rel=1e-9)
+    assert math.isnan(row["p_overturn_fragility"])  # never overturns: no fit, no number
+    context = curve_context(result)
+    assert "the level's answer governs" in context["governs"]
+    apart = abs(row["p_beyond_clearance"] - row["p_beyond_clearance_fragility"]) >= APART
+    assert bool(context["apart"]) == apart
+    if apart:
+        sentence = level_comparison_sentence({**row.to_dict(), "id": "S1"}, why=False)
+        assert context["apart"] == [sentence] and "both from the simulations" in sentence

@@ -9,13 +9,18 @@
   exported file into a damage model and computes, at given peak floor
   accelerations, damage-state probabilities equal to the lognormal
   fragilities: P(DS2) = Φ(ln(a/θ₂)/β₂) and P(DS ≥ 1) = max(P₁, P₂) (its limit
-  states are exceeded in order, with fully correlated capacities).
+  states are exceeded in order, with fully correlated capacities);
+* each item stands at the story pelicun counts (Location = assess floor + 1, pelicun reading PFA-(story - 1))
+  and, in pelicun's damage model with a different PFA at every level (tests/peers/pelicun_dl.py), its damage
+  probability is its fragility at the PFA of its own floor, from hand-made items and from an assessment's
+  export.
 """
 from __future__ import annotations
 
 import csv
 import json
 import re
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -25,7 +30,7 @@ from scipy import stats
 
 from assess.fragility.msa import fit_lognormal_fragility
 from assess.fragility.pelicun_export import (
-    COLUMNS, ItemFragilities, LimitStateFragility, fragility_metadata, fragility_table,
+    COLUMNS, ItemFragilities, LimitStateFragility, component_table, fragility_metadata, fragility_table,
     pelicun_component_id, write_pelicun_fragility,
 )
 
@@ -326,3 +331,190 @@ def test_loads_beside_the_installed_library_as_the_docstring_says(tmp_path):
     assert asmnt.damage.missing_components == []
     assert set(params.index) == {"freezer_F12", "E.20.22.001"}
     assert params.loc["freezer_F12", ("LS2", "Theta_1")] == 0.4
+
+
+# ----------------------------------------------------------- each item on its own floor
+
+def test_items_stand_at_the_story_pelicun_counts():
+    """pelicun's Location is the story, 1 = the ground story (pelicun/model/pelicun_model.py,
+    _get_locations: 'roof' is stories + 1), and a PFA component at story s reads PFA-(s - 1) (its default
+    DemandOffset PFA -1): an item on assess floor f (0 = ground) is at story f + 1."""
+    items = [replace(ITEMS[0], floor=0), replace(ITEMS[1], floor=2, quantity=3),
+             replace(ITEMS[2], floor=-1)]
+    table = component_table(items).set_index("ID")
+    assert table["Location"].tolist() == [1, 3, 1]
+    assert table.loc["cabinet_C3", ["Theta_0", "Blocks"]].tolist() == [3, 3]
+    assert table.loc["freezer_F12", "Comment"] == "assess floor 0: pelicun story 1 (reads PFA-0)"
+    assert "below ground" in table.loc["incubator_7", "Comment"]
+    meta = fragility_metadata(items)
+    assert "assess floor 2, pelicun story 3: PFA-2" in meta["cabinet_C3"]["Comments"]
+
+
+PFA_BY_LEVEL_G = np.array([0.30, 0.45, 0.60, 0.75, 0.90, 1.05])  # levels 0 (ground) to 5: all different
+
+
+def _own_floor_vs_pelicun(folder, tmp_path, repeats=3000):
+    from peers.pelicun_dl import demand_levels, exported_probabilities, run_pelicun
+
+    rows = demand_levels(PFA_BY_LEVEL_G)
+    got = run_pelicun(folder, rows, repeats=repeats, work=tmp_path)
+    own = exported_probabilities(folder, rows)
+    below = exported_probabilities(folder, rows, floor_offset=-1)
+    return got, own, below
+
+
+def test_pelicun_reads_each_item_on_its_own_floor(tmp_path):
+    """The exported asset model and fragilities, through pelicun's damage model with a different PFA at
+    every level: each item's damage probability is its lognormal at the PFA of its own floor (and not at
+    the floor below's, which the test could tell apart)."""
+    pytest.importorskip("pelicun.assessment", reason="pelicun is not installed (pip install -e '.[test,pelicun]' "
+                        "adds it)")
+    items = [replace(ITEMS[0], floor=0), replace(ITEMS[1], floor=2), replace(ITEMS[2], floor=5)]
+    folder = tmp_path / "fragility"
+    write_pelicun_fragility(folder, items)
+    got, own, below = _own_floor_vs_pelicun(folder, tmp_path)
+    assert got.attrs["missing"] == []
+    table = got.merge(own, on=["id", "row"], suffixes=("", "_own"))
+    assert dict(zip(table["id"], table["location"])) == {"freezer_F12": 1, "cabinet_C3": 3, "incubator_7": 6}
+    assert dict(zip(table["id"], table["floor_read"])) == {"freezer_F12": 0, "cabinet_C3": 2, "incubator_7": 5}
+    tol = 0.03  # > 4 sampling sd of 3000 draws
+    np.testing.assert_allclose(table["p_ds1_or_more"], table["p_ds1_or_more_own"], atol=tol)
+    np.testing.assert_allclose(table["p_ds2"], table["p_ds2_own"], atol=tol)
+    # the floor below would give other numbers: the comparison can tell the floors apart
+    other = table.merge(below, on=["id", "row"], suffixes=("", "_below")).dropna(subset=["pfa_g_below"])
+    assert (other["p_ds1_or_more_own"] - other["p_ds1_or_more_below"]).abs().max() > 5 * tol
+
+
+def test_the_floor_as_assess_numbers_it_is_not_pelicuns_story(tmp_path):
+    """What the earlier instructions gave (Location = the assess floor): pelicun refuses a ground-floor
+    item (it would need PFA-(-1))."""
+    pelicun_assessment = pytest.importorskip("pelicun.assessment", reason="pelicun is not installed")
+    folder = tmp_path / "fragility"
+    write_pelicun_fragility(folder, [replace(ITEMS[0], floor=0)])
+    marginals = pd.read_csv(folder / "cmp_marginals.csv", index_col=0)
+    marginals["Location"] = 0  # the assess floor
+    asmnt = pelicun_assessment.Assessment({"PrintLog": False, "Seed": 1})
+    asmnt.stories = 1
+    demand_csv = tmp_path / "demand.csv"
+    demand_csv.write_text(",1-PFA-0-1,1-PFA-1-1\nUnits,g,g\n0,0.3,0.4\n1,0.3,0.4\n", encoding="utf-8")
+    asmnt.demand.load_sample(str(demand_csv))
+    asmnt.asset.load_cmp_model({"marginals": marginals.drop(columns="Comment")})
+    asmnt.asset.generate_cmp_sample(2)
+    asmnt.damage.load_model_parameters([str(folder / "fragility.csv")], {"freezer_F12"})
+    with pytest.raises(ValueError, match="Negative location"):
+        asmnt.damage.calculate()
+
+
+def test_a_pga_fragility_reads_the_ground_from_any_story(tmp_path):
+    """Stripes of ground acceleration through the building: the fragility is in PGA at location 0; the
+    row's Demand-Offset takes the item's story back to it."""
+    pelicun_assessment = pytest.importorskip("pelicun.assessment", reason="pelicun is not installed")
+    item = replace(ITEMS[2], floor=3)  # LS1 only: theta 0.5 g, beta 0.45
+    folder = tmp_path / "fragility"
+    write_pelicun_fragility(folder, [item], demand="PGA")
+    table = pd.read_csv(folder / "fragility.csv")
+    assert table.loc[0, "Demand-Offset"] == -4 and table.loc[0, "Demand-Type"] == "Peak Ground Acceleration"
+    pga = np.tile([0.25, 0.5, 1.0], 3000)
+    demand_csv = tmp_path / "demand.csv"
+    with demand_csv.open("w", encoding="utf-8") as handle:
+        handle.write(",1-PGA-0-1,1-PGA-0-2," + ",".join(f"1-PFA-{k}-{d}" for k in range(5) for d in (1, 2))
+                     + "\nUnits," + ",".join(["g"] * 12) + "\n")
+        for i, a in enumerate(pga):
+            handle.write(f"{i},{a},{a}," + ",".join(["9.9"] * 10) + "\n")  # PFA: would fail every item
+    asmnt = pelicun_assessment.Assessment({"PrintLog": False, "Seed": 2})
+    asmnt.stories = 4
+    asmnt.demand.load_sample(str(demand_csv))
+    asmnt.asset.load_cmp_model({"marginals": str(folder / "cmp_marginals.csv")})
+    asmnt.asset.generate_cmp_sample(pga.size)
+    asmnt.damage.load_model_parameters([str(folder / "fragility.csv")], {"incubator_7"})
+    asmnt.damage.calculate()
+    states = asmnt.damage.ds_model.sample.xs("incubator_7", axis=1, level="cmp").T.groupby(level="ds").sum().T
+    damaged = states.drop(columns="0", errors="ignore").sum(axis=1).to_numpy()
+    observed = np.array([damaged[pga == a].mean() for a in (0.25, 0.5, 1.0)])
+    np.testing.assert_allclose(observed, _phi(np.array([0.25, 0.5, 1.0]), 0.5, 0.45), atol=0.03)
+
+
+G = 9.80665
+
+
+def _rect_record(duration_s, amplitude_g=0.5, total_s=3.0, dt_s=0.001) -> str:
+    time_s = np.arange(0.0, total_s, dt_s)
+    accel = np.where(time_s < duration_s - 1e-12, amplitude_g, 0.0)
+    return "time_s,accel_g\n" + "\n".join(f"{t:.4f},{a:.6f}" for t, a in zip(time_s, accel)) + "\n"
+
+
+@pytest.fixture(scope="module")
+def floors_run(tmp_path_factory):
+    """Squat blocks on floors 0, 2 and 5 (b/h = 1: they slide, never uplift), each floor under three
+    rectangular pulses of different lengths (thresholds apart: a lognormal is fitted), with the lab curve."""
+    pytest.importorskip("pelicun.assessment", reason="pelicun is not installed (pip install -e '.[test,pelicun]' "
+                        "adds it)")
+    from assess.hazard.openquake import read_openquake_hazard
+    from assess.inventory import read_workbook
+    from assess.pipeline import run_assessment
+    from workbooks import write_workbook
+
+    tmp_path = tmp_path_factory.mktemp("floors")
+    squat = dict(height_cm=100, width_cm=100, depth_cm=100, mass_kg=200)
+    equipment = [{"id": f"S-{floor}", "name": f"block on floor {floor}", "floor": floor, "mu": mu,
+                  "clearance_cm": clearance, **squat}
+                 for floor, mu, clearance in ((0, 0.15, 10), (2, 0.25, 15), (5, 0.35, 20))]
+    motions, files = [], {}
+    for floor in (0, 2, 5):
+        for name, duration_s in (("short", 0.25), ("mid", 0.5), ("long", 1.0)):
+            path = f"records/{name}.csv"
+            files[path] = _rect_record(duration_s)
+            motions.append({"level": "2in50", "motion": name, "floor": floor, "record": path})
+    workbook = write_workbook(tmp_path / "w.xlsx", {"equipment": equipment, "hazard": motions}, files=files)
+    curve = Path(__file__).resolve().parents[1] / "inventories" / "lab-hazard-curve.csv"
+    return run_assessment(read_workbook(workbook), "2in50", hazard_curve=read_openquake_hazard(curve))
+
+
+def test_an_assessment_export_read_by_pelicun_reads_each_item_on_its_own_floor(floors_run, tmp_path):
+    """End to end: an assessment's fragility/ folder as written, in pelicun with a PFA per level."""
+    from assess.fragility.stripes import fragility_files
+
+    for name, content in fragility_files(floors_run.curve_risk, floors_run.summary).items():
+        (tmp_path / name).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / name).write_bytes(content)
+    folder = tmp_path / "fragility"
+    fragility = pd.read_csv(folder / "fragility.csv", index_col=0)
+    assert (fragility["Incomplete"] == 0).all(), fragility  # every item fitted: pelicun drops none
+    got, own, below = _own_floor_vs_pelicun(folder, tmp_path)
+    table = got.merge(own, on=["id", "row"], suffixes=("", "_own"))
+    assert dict(zip(table["id"], table["floor_read"])) == {"S_0": 0, "S_2": 2, "S_5": 5}
+    for item_id, floor in (("S_0", 0), ("S_2", 2), ("S_5", 5)):  # the fit's own numbers, at its floor's PFA
+        fit = floors_run.curve_risk.fits[(item_id.replace("_", "-"), "beyond_clearance")]
+        rows = table[table["id"] == item_id].sort_values("row")
+        expected = _phi(rows["pfa_g"].to_numpy(), fit.median_g, fit.beta)
+        np.testing.assert_allclose(rows["p_ds1_or_more"], expected, atol=0.03, err_msg=item_id)
+        np.testing.assert_allclose(rows["pfa_g"], PFA_BY_LEVEL_G[floor] * np.array([0.6, 1.0, 1.5]))
+    other = table.merge(below, on=["id", "row"], suffixes=("", "_below")).dropna(subset=["pfa_g_below"])
+    assert (other["p_ds1_or_more_own"] - other["p_ds1_or_more_below"]).abs().max() > 0.15
+
+
+def test_an_incomplete_note_is_true_to_the_stripes():
+    """The lab's ULT-1-01 (stripes.csv of `assess inventories/lab.xlsx --oq-hazard ...`): none of 10 failed up
+    to 0.525 g, 3 of 10 at 0.582 g, all from 0.644 g. No finite fit (quasi-separation), so the row is
+    Incomplete; its note must give those counts, not "every one from 0.582 g failed"."""
+    from assess.fragility.stripes import fit_items
+
+    levels = [0.0551, 0.083, 0.125, 0.188, 0.284, 0.428, 0.474, 0.525, 0.582, 0.644, 0.971, 1.46, 2.2]
+    failures = [0, 0, 0, 0, 0, 0, 0, 0, 3, 10, 10, 10, 10]
+    outcomes = pd.DataFrame([{"id": "ULT-1-01", "pfa_g": x, "history": h, "beyond_clearance": h < k,
+                              "overturn": False} for x, k in zip(levels, failures) for h in range(10)])
+    fits, stripes = fit_items(outcomes)
+    fit = fits[("ULT-1-01", "beyond_clearance")]
+    item = ItemFragilities("ULT_1_01", "freezer", LimitStateFragility.from_fit(fit),
+                           LimitStateFragility.from_fit(fits[("ULT-1-01", "overturn")]), floor=1)
+    assert fragility_table([item]).loc[0, "Incomplete"] == 1
+    comments = fragility_metadata([item])["ULT_1_01"]["Comments"]
+    assert "3 of 10 failed at 0.582 g" in comments
+    assert "every one from 0.582 g failed" not in comments
+    # every count the note states, read back from the stripes table
+    table = stripes[stripes["mode"] == "beyond_clearance"].set_index("pfa_g")
+    low_g, high_g = fit.separation_g
+    assert f"Every simulation up to {low_g:.3g} g survived" in comments
+    assert f"every one from {high_g:.3g} g failed" in comments
+    assert (table.loc[table.index <= low_g, "failures"] == 0).all()
+    assert (table.loc[table.index >= high_g, "failures"] == table.loc[table.index >= high_g, "trials"]).all()

@@ -111,8 +111,9 @@ class FragilityFit:
     n_stripes, n_trials, n_failures : int
         Distinct intensities, simulations and failures used.
     separation_g : tuple of float
-        For ``"separated"``: the highest intensity [g] with a survival and the
-        lowest with a failure; the median lies between. NaN otherwise.
+        For ``"separated"``: the highest intensity [g] where nothing failed and the lowest where
+        everything failed (where one intensity has both outcomes and the others none: the nearest on
+        either side of it, or that intensity where there is none); the step lies between. NaN otherwise.
     message : str
         One sentence for a person: the fit, or why there is none.
     """
@@ -369,16 +370,41 @@ def _no_finite_fit(x_g, n, z):
                 "be estimated; simulate at least two intensities.")
     survived_max = float(x_g[z < n].max())
     failed_min = float(x_g[z > 0].min())
-    if survived_max <= failed_min:
+    if survived_max < failed_min:
         return (SEPARATED, (survived_max, failed_min),
                 f"every simulation up to {survived_max:.3g} g survived and every one from "
                 f"{failed_min:.3g} g failed: the median lies between and the data cannot "
                 "estimate a dispersion (β → 0); simulate intensities between these two.")
+    if survived_max == failed_min:
+        return _separated_at_one_intensity(x_g, n, z, survived_max)
     if float(x_g[z > 0].max()) <= float(x_g[z < n].min()):
         return (DECREASING, (math.nan, math.nan),
                 "every failure is at a lower intensity than every survival: the outcomes fit "
                 "no fragility.")
     return None
+
+
+def _separated_at_one_intensity(x_g, n, z, at_g: float):
+    """(status, separation_g, message) of outcomes pure on either side of the one intensity ``at_g`` that has
+    both: all survived below it, all failed above (quasi-separation: the likelihood still grows as β → 0).
+    The step lies between the highest intensity with no failure and the lowest with no survival (``at_g``
+    where there is none on that side)."""
+    used = n > 0
+    here = used & (x_g == at_g)
+    failed, trials = int(z[here].sum()), int(n[here].sum())
+    below, above = x_g[used & (x_g < at_g)], x_g[used & (x_g > at_g)]
+    low_g = float(below.max()) if below.size else at_g
+    high_g = float(above.min()) if above.size else at_g
+    parts = []
+    if below.size:
+        parts.append(f"every simulation up to {low_g:.3g} g survived")
+    parts.append(f"{failed} of {trials} failed at {at_g:.3g} g")
+    if above.size:
+        parts.append(f"every one from {high_g:.3g} g failed")
+    text = ", ".join(parts[:-1]) + (" and " if len(parts) > 1 else "") + parts[-1]
+    return (SEPARATED, (low_g, high_g),
+            f"{text}: the failures rise from none to all within these intensities, too steeply for the data "
+            f"to estimate a dispersion (β → 0); simulate intensities between {low_g:.3g} and {high_g:.3g} g.")
 
 
 def _empty(status, message, separation=(math.nan, math.nan), **totals) -> FragilityFit:

@@ -8,13 +8,12 @@ This module writes each item as one component:
 
 * ``ID``: the item, made safe for pelicun (:func:`pelicun_component_id`:
   pelicun splits its random-variable tags on ``-``);
-* ``Demand-Type`` ``Peak Floor Acceleration`` in ``g``, ``Demand-Offset`` 0
-  (the floor the item stands on; pelicun's default ``DemandOffset``
-  ``{"PFA": -1}`` then reads the PFA of that floor's slab, as for the FEMA
-  P-58 unanchored contents ``E.20.22.*``); where the fragility was fitted on
-  stripes of ground acceleration passed through the building, ``Peak Ground
-  Acceleration`` (the library's ``PGA``, as its Hazus ground-intensity
-  fragilities), the demand at location 0 (the ground) whatever floor the item
+* ``Demand-Type`` ``Peak Floor Acceleration`` in ``g``, ``Demand-Offset`` 0,
+  as for the FEMA P-58 unanchored contents ``E.20.22.*``; where the fragility
+  was fitted on stripes of ground acceleration passed through the building,
+  ``Peak Ground Acceleration`` (the library's ``PGA``, as its Hazus
+  ground-intensity fragilities), with ``Demand-Offset`` −(its story) so that
+  pelicun reads the PGA at location 0 (the ground) whatever story the item
   stands on: the building is inside the fragility;
 * ``Demand-Directional`` 1 by default: the fragility was fitted on the floor
   acceleration along the direction simulated, so pelicun must feed it the PFA
@@ -25,6 +24,24 @@ This module writes each item as one component:
   overturns (``overturn``), each ``lognormal`` with ``Theta_0`` = θ [g] and
   ``Theta_1`` = β; one damage state per limit state (DS1, DS2), so no
   ``DamageStateWeights``.
+
+Stories: how pelicun counts them
+--------------------------------
+pelicun counts a component's ``Location`` in stories from 1 (the ground
+story, standing on the ground slab) to the number of stories (``roof`` is one
+more), and its floor accelerations ``PFA-<loc>-<dir>`` in levels from 0 (the
+ground) up. A PFA component at story ``s`` reads ``PFA-(s + Demand-Offset +
+DemandOffset["PFA"])``; pelicun's default ``DemandOffset`` is ``{"PFA": -1}``,
+so with ``Demand-Offset`` 0 it reads ``PFA-(s − 1)``, the slab it stands on
+(``pelicun/model/demand_model.py``, ``_get_required_demand_type``;
+``pelicun/settings/default_config.json``). assess numbers floors from 0 (the
+ground). An item on assess floor ``f`` is therefore at pelicun ``Location``
+``f + 1`` (:func:`pelicun_location`): written as ``f``, a ground-floor item
+would ask for ``PFA--1`` (pelicun refuses it) and an upper-floor item would
+silently read the floor below. ``cmp_marginals.csv`` (:func:`component_table`)
+gives every item its ``Location`` so counted. pelicun has no level below the
+ground: a basement item (floor −1, −2, …) is put at story 1, reading the
+ground's PFA (``PFA-0``), and its row's ``Comment`` says so.
 
 How pelicun reads two limit states
 ----------------------------------
@@ -49,11 +66,15 @@ format tests (``tests/test_data_format.py`` of [1]).
 
 Using the files in a FEMA P-58 assessment (pelicun 3.10)
 --------------------------------------------------------
-Give each item a row of the asset model (component marginals) with its
-``ID``, ``Units`` ``ea``, the ``Location`` (story) it stands on, the
-``Direction`` (1 or 2) of the PFA that runs along the simulated direction,
-and ``Theta_0`` = 1; then load the exported table before the library's::
+``cmp_marginals.csv`` is the asset model's rows for the items (component
+marginals, the ``CMP_QNT.csv`` of pelicun's examples): ``ID``, ``Units``
+``ea``, ``Location`` (the story, counted as above), ``Direction`` 1 (the
+building direction whose PFA runs along the item's width: change it to 2
+where it runs along the building's second direction), ``Theta_0`` (the
+item's quantity), ``Blocks`` (one block per item), ``Comment``. Load it, and
+the exported fragilities before the library's::
 
+    asmnt.asset.load_cmp_model({"marginals": "fragility/cmp_marginals.csv"})
     asmnt.damage.load_model_parameters(
         ["fragility/fragility.csv", "PelicunDefault/FEMA P-58/fragility.csv"], cmp_set)
 
@@ -98,6 +119,12 @@ COLUMNS = (
 SIGNIFICANT_DIGITS = 4
 CSV_NAME = "fragility.csv"
 JSON_NAME = "fragility.json"
+#: The asset model's rows for the items (pelicun's component marginals).
+COMPONENTS_NAME = "cmp_marginals.csv"
+#: Columns of :data:`COMPONENTS_NAME`, as pelicun's ``load_cmp_model`` reads them (the first is the index).
+COMPONENT_COLUMNS = ("ID", "Units", "Location", "Direction", "Theta_0", "Blocks", "Comment")
+#: pelicun's default ``DemandOffset`` of a PFA demand (its ``settings/default_config.json``).
+PELICUN_PFA_OFFSET = -1
 
 _LIMIT_STATES = (
     ("LS1", "DS1", "beyond_clearance",
@@ -145,6 +172,33 @@ class ItemFragilities:
     description: str
     beyond_clearance: LimitStateFragility
     overturn: LimitStateFragility
+    #: The floor it stands on, as assess numbers floors (0 = ground; :func:`pelicun_location`).
+    floor: int = 0
+    #: How many identical items the component stands for.
+    quantity: int = 1
+    #: A sentence for the metadata's ``Comments`` (e.g. how the level's answer compares), or "".
+    comment: str = ""
+
+
+def pelicun_location(floor: int) -> int:
+    """pelicun's ``Location`` (story, 1 = the ground story) of an item on assess ``floor`` (0 = ground).
+
+    With ``Demand-Offset`` 0 and pelicun's default ``DemandOffset`` ``{"PFA": -1}``, the component then
+    reads ``PFA-floor``, the floor it stands on (module docstring). Below ground, story 1 (``PFA-0``).
+
+    >>> [pelicun_location(f) for f in (0, 1, 6, -1)]
+    [1, 2, 7, 1]
+    """
+    return int(floor) + 1 if int(floor) >= 0 else 1
+
+
+def pelicun_pfa_level(location: int) -> int:
+    """The level of the PFA that pelicun feeds a component at ``location`` with ``Demand-Offset`` 0.
+
+    >>> pelicun_pfa_level(pelicun_location(3))
+    3
+    """
+    return int(location) + PELICUN_PFA_OFFSET
 
 
 def pelicun_component_id(name) -> str:
@@ -175,8 +229,10 @@ def fragility_table(items, directional=True, demand="PFA") -> pd.DataFrame:
     _check_ids(items)
     rows = []
     for item in items:
+        # PGA: offset back to location 0, the ground, from the item's story
+        offset = -pelicun_location(item.floor) if demand == "PGA" else 0
         row = {"ID": item.component_id, "Incomplete": 0, "Demand-Type": DEMAND_TYPES[demand],
-               "Demand-Unit": DEMAND_UNIT, "Demand-Offset": 0,
+               "Demand-Unit": DEMAND_UNIT, "Demand-Offset": offset,
                "Demand-Directional": 1 if directional else 0}
         for (ls, _ds, _mode, _text, _repair), state in zip(
                 _LIMIT_STATES, (item.beyond_clearance, item.overturn)):
@@ -189,6 +245,29 @@ def fragility_table(items, directional=True, demand="PFA") -> pd.DataFrame:
             row["Incomplete"] = 1
         rows.append(row)
     return pd.DataFrame(rows, columns=list(COLUMNS))
+
+
+def component_table(items) -> pd.DataFrame:
+    """The rows of ``cmp_marginals.csv``: each item at the story pelicun counts (:func:`pelicun_location`).
+
+    >>> item = ItemFragilities("cabinet_1", "Cabinet", LimitStateFragility(0.35, 0.4),
+    ...                        LimitStateFragility(0.8, 0.5), floor=2, quantity=3)
+    >>> print(component_table([item]).to_csv(index=False, lineterminator="\\n"), end="")
+    ID,Units,Location,Direction,Theta_0,Blocks,Comment
+    cabinet_1,ea,3,1,3,3,assess floor 2: pelicun story 3 (reads PFA-2)
+    """
+    items = list(items)
+    _check_ids(items)
+    rows = []
+    for item in items:
+        location = pelicun_location(item.floor)
+        comment = f"assess floor {item.floor}: pelicun story {location} (reads PFA-{pelicun_pfa_level(location)})"
+        if item.floor < 0:
+            comment = (f"assess floor {item.floor}, below ground: pelicun counts no story below the ground; story "
+                       f"{location} reads PFA-{pelicun_pfa_level(location)}, the ground's")
+        rows.append({"ID": item.component_id, "Units": "ea", "Location": location, "Direction": 1,
+                     "Theta_0": int(item.quantity), "Blocks": int(item.quantity), "Comment": comment})
+    return pd.DataFrame(rows, columns=list(COMPONENT_COLUMNS))
 
 
 def fragility_metadata(items, directional=True, demand="PFA") -> dict:
@@ -228,20 +307,23 @@ def fragility_metadata(items, directional=True, demand="PFA") -> dict:
 
 
 def pelicun_fragility_files(items, directional=True, demand="PFA") -> dict[str, bytes]:
-    """``fragility.csv`` and ``fragility.json`` as bytes, by name (nothing written); ``demand``: ``PFA`` or
-    ``PGA``, the acceleration the fragilities are in (:data:`DEMAND_TYPES`)."""
+    """``fragility.csv``, ``fragility.json`` and ``cmp_marginals.csv`` as bytes, by name (nothing written);
+    ``demand``: ``PFA`` or ``PGA``, the acceleration the fragilities are in (:data:`DEMAND_TYPES`)."""
     items = list(items)
     csv_text = fragility_table(items, directional, demand).to_csv(index=False, lineterminator="\n")
     json_text = json.dumps(fragility_metadata(items, directional, demand), indent=2, ensure_ascii=False) + "\n"
-    return {CSV_NAME: csv_text.encode("utf-8"), JSON_NAME: json_text.encode("utf-8")}
+    components = component_table(items).to_csv(index=False, lineterminator="\n")
+    return {CSV_NAME: csv_text.encode("utf-8"), JSON_NAME: json_text.encode("utf-8"),
+            COMPONENTS_NAME: components.encode("utf-8")}
 
 
-def write_pelicun_fragility(folder, items, directional=True) -> tuple[Path, Path]:
-    """Write ``fragility.csv`` and ``fragility.json`` into ``folder``; return their paths.
+def write_pelicun_fragility(folder, items, directional=True, demand="PFA") -> tuple[Path, Path]:
+    """Write ``fragility.csv``, ``fragility.json`` and ``cmp_marginals.csv`` into ``folder``; return the paths
+    of the first two (the third is ``folder / COMPONENTS_NAME``).
 
-    Both are built in memory first, so a failure leaves no half-written pair.
+    All are built in memory first, so a failure leaves no half-written set.
     """
-    files = pelicun_fragility_files(items, directional)
+    files = pelicun_fragility_files(items, directional, demand)
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     for name, content in files.items():
@@ -275,7 +357,8 @@ def _comments(item: ItemFragilities, directional: bool, demand: str = "PFA") -> 
             lines.append(f"{ls} ({mode}): median {_rounded(state.median_g):g} g, beta "
                          f"{_rounded(state.beta):g}. {state.note}".strip())
         elif ls == "LS1":
-            lines.append(f"{ls} ({mode}): no fragility, hence Incomplete. {state.note}".strip())
+            lines.append(f"{ls} ({mode}): no fragility, hence Incomplete. {state.note[:1].upper()}{state.note[1:]}"
+                         .strip())
         else:
             lines.append(f"{ls} ({mode}) not defined: {state.note}".strip())
     a, b = item.beyond_clearance, item.overturn
@@ -284,10 +367,17 @@ def _comments(item: ItemFragilities, directional: bool, demand: str = "PFA") -> 
                      "P(DS>=1) = max(P(LS1), P(LS2)).")
     direction = ("along the component's direction (Demand-Directional 1)." if directional
                  else "non-directional (pelicun: 1.2 x the larger direction).")
+    location = pelicun_location(item.floor)
     if demand == "PGA":
         lines.append("Fragility in PGA (ground), through the building: the ground motions were scaled to "
                      "each stripe of peak ground acceleration and passed through the building to the floor "
-                     "the item stands on. Demand: peak ground acceleration (PGA, location 0), " + direction)
+                     f"the item stands on (assess floor {item.floor}, pelicun story {location}). Demand: peak "
+                     f"ground acceleration (PGA, location 0: Demand-Offset -{location} from story {location}), "
+                     + direction)
     else:
-        lines.append("Demand: peak floor acceleration of the floor the item stands on, " + direction)
+        lines.append(f"Demand: peak floor acceleration of the floor the item stands on (assess floor {item.floor}, "
+                     f"pelicun story {location}: PFA-{pelicun_pfa_level(location)} with Demand-Offset 0 and "
+                     "pelicun's default DemandOffset PFA -1), " + direction)
+    if item.comment:
+        lines.append(item.comment)
     return "\n".join(lines)

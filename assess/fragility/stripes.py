@@ -63,6 +63,7 @@ import numpy as np
 import pandas as pd
 from scipy import stats
 
+from assess.fragility.agreement import AT_LEVEL_COLUMNS, level_comparison_sentence
 from assess.fragility.msa import FITTED, FragilityFit, fit_lognormal_fragilities
 from assess.hazard.openquake import OpenQuakeHazard
 from assess.hazard.risk_integral import annual_rates_of_curve, openquake_failure_rate, probability_in_years
@@ -77,8 +78,8 @@ STRIPE_PGA_G = (0.05, 2.0)
 RAREST_RATE_PER_YR = 1.0 / 10_000.0
 MODES = ("beyond_clearance", "overturn")
 
-#: Columns the hazard curve adds to ``summary.csv`` (docs/outputs.md), then the fragilities they rest on.
-CURVE_COLUMNS = [
+#: Columns the fragility fits add to ``summary.csv`` (docs/outputs.md), then the fragilities they rest on.
+FIT_COLUMNS = [
     "annual_rate_beyond_clearance", "annual_rate_overturn", "p50yr_beyond_clearance", "p50yr_overturn",
     "annual_rate_beyond_clearance_low", "annual_rate_beyond_clearance_high", "annual_rate_overturn_low",
     "annual_rate_overturn_high", "p50yr_beyond_clearance_low", "p50yr_beyond_clearance_high",
@@ -87,6 +88,9 @@ CURVE_COLUMNS = [
     "fragility_beyond_clearance_se_ln_median", "fragility_overturn_median_g", "fragility_overturn_beta",
     "fragility_overturn_se_ln_median", "pfa_per_pga", "curve_note",
 ]
+#: Columns the hazard curve adds to ``summary.csv`` (docs/outputs.md); the last, the fragilities at the level's
+#: own accelerations (:data:`assess.fragility.agreement.AT_LEVEL_COLUMNS`), per level: added by the pipeline.
+CURVE_COLUMNS = FIT_COLUMNS + AT_LEVEL_COLUMNS
 
 
 @dataclass
@@ -96,7 +100,7 @@ class CurveRisk:
     Attributes
     ----------
     table : DataFrame
-        One row per freestanding item (``id``), :data:`CURVE_COLUMNS`.
+        One row per freestanding item (``id``), :data:`FIT_COLUMNS`.
     fits : dict
         ``{(id, mode): FragilityFit}`` for the export and the report.
     stripes : DataFrame
@@ -441,10 +445,13 @@ def item_rates(fit: FragilityFit, mode: str, hazard: OpenQuakeHazard, levels_g, 
     elif fit.status == "separated":
         survived_g, failed_g = fit.separation_g
         central, low, high = rate_at(math.sqrt(survived_g * failed_g)), rate_at(failed_g), rate_at(survived_g)
-        note = (f"{mode}: {words} in every simulation above {survived_g:.2g} g and in none below {failed_g:.2g} g "
-                f"(a step, no fitted slope): the rate of a step between them")
+        mixed = outcomes[(outcomes["failures"] > 0) & (outcomes["failures"] < outcomes["trials"])]
+        between = "".join(f", {int(r.failures)} of {int(r.trials)} at {r.pfa_g:.2g} g"
+                          for r in mixed.itertuples(index=False))
+        note = (f"{mode}: {words} in no simulation up to {survived_g:.2g} g{between} and in every one from "
+                f"{failed_g:.2g} g (a step, no fitted slope): the rate of a step between them")
         if survived_g == failed_g:
-            note = (f"{mode}: {words} in every simulation above {survived_g:.2g} g and in none below it "
+            note = (f"{mode}: {words} in no simulation below {survived_g:.2g} g{between} and in every one above "
                     "(a step there, no fitted slope)")
     elif fit.status == "no_failures":
         top_g = float(np.max(stripes_g))
@@ -571,7 +578,7 @@ def fit_and_integrate(cases: pd.DataFrame, hazard: OpenQuakeHazard, levels_g, ra
         row["curve_note"] = note_prefix + "; ".join(notes)
         rows.append(row)
     name = f"{_file_name(hazard.path)}, site {hazard.site.label()}"
-    return CurveRisk(table=pd.DataFrame(rows)[["id"] + CURVE_COLUMNS], fits=fits, stripes=stripes,
+    return CurveRisk(table=pd.DataFrame(rows)[["id"] + FIT_COLUMNS], fits=fits, stripes=stripes,
                      floors=floors, curve=name, runs=len(runs), notes=curve_notes, fit_p=fit_p,
                      intensity=intensity)
 
@@ -603,12 +610,23 @@ def export_items(curve: CurveRisk, summary: pd.DataFrame) -> list:
             states.append(state)
         items.append(ItemFragilities(component_id=pelicun_component_id(row.id),
                                      description=f"{row.name} ({row.id}), floor {row.floor}", beyond_clearance=states[0],
-                                     overturn=states[1]))
+                                     overturn=states[1], floor=int(row.floor), quantity=int(row.quantity),
+                                     comment=_level_comment(row._asdict(), level_comparison_sentence)))
     return items
 
 
+def _level_comment(row: dict, sentence) -> str:
+    """The item's sentence on the level's answer beside this fragility (``sentence``:
+    :func:`assess.fragility.agreement.level_comparison_sentence`), where the summary has the columns."""
+    if not all(column in row for column in AT_LEVEL_COLUMNS):
+        return ""
+    text = sentence(row)
+    return f"At the level assessed: {text}" if text else ""
+
+
 def fragility_files(curve: CurveRisk, summary: pd.DataFrame) -> dict[str, bytes]:
-    """``fragility/fragility.csv`` + ``.json`` (pelicun's format) and ``fragility/stripes.csv`` (the outcomes
+    """``fragility/fragility.csv`` + ``.json`` (pelicun's format), ``fragility/cmp_marginals.csv`` (the items at
+    the stories pelicun counts) and ``fragility/stripes.csv`` (the outcomes
     the fits rest on; its stripes ``pga_g`` where they are of ground acceleration), by path, as bytes."""
     from assess.fragility.pelicun_export import pelicun_fragility_files
 

@@ -50,6 +50,9 @@ class Inventory:
         The ``site`` sheet (:mod:`assess.inventory.site_building`), None when the workbook has none.
     building : BuildingSheet or None
         The ``building`` sheet, None when the workbook has none.
+    warnings : tuple of Implausible
+        Items whose size or density no equipment has (:mod:`assess.inventory.plausibility`), each with
+        its cell; the items are assessed as written.
     """
 
     path: Path
@@ -58,6 +61,7 @@ class Inventory:
     settings: dict = field(default_factory=dict)
     site: SiteSheet | None = None
     building: BuildingSheet | None = None
+    warnings: tuple = ()
 
     @property
     def levels(self) -> list[str]:

@@ -30,7 +30,7 @@ import pandas as pd
 
 from assess.data import default_settings
 from assess.errors import InputError, Problem
-from assess.inventory import schema, units, xlsx
+from assess.inventory import plausibility, schema, units, xlsx
 from assess.inventory.model import Inventory
 from assess.inventory.schema import (BUILDING, EQUIPMENT, HAZARD, SETTINGS, SITE, UNUSABLE, CellError,
                                      Header, SheetSpec)
@@ -132,8 +132,13 @@ def read_workbook(path: str | Path) -> Inventory:
     building = read_building(tables["building"], reports["building"]) if "building" in tables else None
     if problems:
         raise InputError(problems)  # assess.errors lists the first 50 and counts the rest
+    warnings = ()
+    if "equipment" in tables:  # sizes and densities no equipment has: warned, assessed as written
+        warnings = tuple(plausibility.equipment_warnings(tables["equipment"].rows, tables["equipment"].headers,
+                                                         given, sheets["equipment"]))
     return Inventory(path=path, equipment=_frame(equipment, _EQUIPMENT_TYPES),
-                     hazard=_frame(hazard, _HAZARD_TYPES), settings=settings, site=site, building=building)
+                     hazard=_frame(hazard, _HAZARD_TYPES), settings=settings, site=site, building=building,
+                     warnings=warnings)
 
 
 # ---------------------------------------------------------------- the file

@@ -64,7 +64,31 @@ def curve_context(result, numbering: str = "ground_0") -> dict | None:
     notable = {mode: [str(i) for i in free.loc[_at_least(free, mode), "id"]] for mode in MODE_WORDS}
     return {"curve": curve.curve, "rows": rows, "lead": lead_sentence(notable, len(free)),
             "floors": [f["basis"] for _, f in sorted(curve.floors.items())], "runs": curve.runs,
-            "stripes": _stripes_sentence(curve), "notes": list(curve.notes)}
+            "stripes": _stripes_sentence(curve), "notes": list(curve.notes), **governs_sentences(free)}
+
+
+def governs_sentences(free: pd.DataFrame) -> dict:
+    """Which answer to use: ``governs`` (one sentence, always) and ``apart`` (one per item whose level answer
+    and fragility at the level's accelerations differ by :data:`~assess.fragility.agreement.APART` or more)."""
+    from assess.fragility.agreement import APART, level_comparison_sentence
+
+    apart = [text for text in (level_comparison_sentence(row, why=False) for _, row in free.iterrows()) if text]
+    governs = (
+        "Which to use: at the design level, the level's answer governs (the risk classes, the advice, "
+        "p_beyond_clearance and p_overturn in summary.csv): it takes each motion from the model that holds for "
+        "it, the paper's regression where a pulse, IM in its fitted range and no uplift make it hold, the "
+        "engine otherwise. The fragilities (these rates, fragility/ and pelicun with it) run the engine under "
+        "the same motions' histories for every motion and every stripe: the regression holds over too narrow "
+        "a range of intensity to give a stripe from 0.05 to 2 g; where the engine answers at the level too, "
+        "the fragility is one lognormal over every stripe, which smooths the level's outcomes. summary.csv "
+        "gives each fragility at this level's accelerations (p_beyond_clearance_fragility, "
+        "p_overturn_fragility); ")
+    if apart:
+        governs += (f"for {len(apart)} of the {len(free)} items it differs from the level's answer by "
+                    f"{APART:.0%} or more:")
+    else:
+        governs += f"for every item it lies within {APART:.0%} of the level's answer."
+    return {"governs": governs, "apart": apart}
 
 
 def _at_least(free: pd.DataFrame, mode: str) -> pd.Series:

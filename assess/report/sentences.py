@@ -24,6 +24,7 @@ FLAG_TITLES = {
     "uplift": "Uplifts and rocks",
     "cg_not_mid_height": "Centre of mass not at mid-height",
     "derived_floor_motion": "Floor motion derived from the ground motion",
+    "implausible_input": "Size or density no equipment has: check the workbook cell",
 }
 
 
