@@ -98,23 +98,40 @@ _PAIR_PLUS = (1, 1, 0, 2, 3, 2, 3, 0, 0, 0)
 _SINGLE = (1, 2, 3, 0)
 
 
+@njit(cache=True, inline="always")
+def lever_arms_at(xi, sin_t, cos_t, hcg):
+    """:func:`lever_arms` from sin θ and cos θ (worked out once per angle by the time loop) [m]."""
+    return -xi * cos_t + hcg * sin_t, -xi * sin_t - hcg * cos_t
+
+
+@njit(cache=True, inline="always")
+def corner_gap_at(y, sin_t, cos_t, xi, hcg):
+    """:func:`corner_gap` from sin θ and cos θ [m]."""
+    return y - xi * sin_t - hcg * cos_t
+
+
+@njit(cache=True, inline="always")
+def corner_x_at(x, sin_t, cos_t, xi, hcg):
+    """:func:`corner_x` from sin θ and cos θ [m]."""
+    return x + xi * cos_t - hcg * sin_t
+
+
 @njit(cache=True)
 def lever_arms(xi, theta, hcg):
     """θ-components of w_N and w_T of the corner at body offset (ξ, −h) [m]."""
-    cos_t, sin_t = np.cos(theta), np.sin(theta)
-    return -xi * cos_t + hcg * sin_t, -xi * sin_t - hcg * cos_t
+    return lever_arms_at(xi, np.sin(theta), np.cos(theta), hcg)
 
 
 @njit(cache=True)
 def corner_gap(y, theta, xi, hcg):
     """Height of the corner at body offset (ξ, −h) above the floor [m]."""
-    return y - xi * np.sin(theta) - hcg * np.cos(theta)
+    return corner_gap_at(y, np.sin(theta), np.cos(theta), xi, hcg)
 
 
 @njit(cache=True)
 def corner_x(x, theta, xi, hcg):
     """Horizontal position of the corner at body offset (ξ, −h) [m]."""
-    return x + xi * np.cos(theta) - hcg * np.sin(theta)
+    return corner_x_at(x, np.sin(theta), np.cos(theta), xi, hcg)
 
 
 @njit(cache=True)
@@ -259,6 +276,20 @@ def solve_contacts(prev_m, prev_p, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv
             if violation < best[0]:
                 best = (violation, st_m, st_p, v, pnm, pnp)
     return best[1], best[2], best[3], best[4], best[5]
+
+
+@njit(cache=True, inline="always")
+def first_candidate(prev_m, prev_p, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s, tol):
+    """The candidate :func:`solve_contacts` tries first, the previous states (no change), solved.
+
+    Returns (whether it is one of the candidates and holds to ``tol``, v⁺, P_N−, P_T−, P_N+, P_T+): where
+    it holds, :func:`solve_contacts` returns it; its impulses are the pivot's cone margin
+    (:func:`cone_margin`) all the same.
+    """
+    violation, v, pnm, ptm, pnp, ptp = contact_candidate(prev_m, prev_p, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p,
+                                                         inv_j, mu, mu_s)
+    listed = not (act_m and act_p) or prev_m == OPEN or prev_p == OPEN or prev_m == prev_p
+    return listed and violation <= tol, v, pnm, ptm, pnp, ptp
 
 
 @njit(cache=True, inline="always")
