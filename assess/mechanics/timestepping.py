@@ -182,7 +182,8 @@ def _event_fraction(pm, pp, relocate, v, vcc, pnm, pnp, g0_m, g0_p, vx, vy, w, h
 
 
 @njit(cache=True)
-def _step(q, h, a_mid, a_change, prev_m, prev_p, b, hcg, inv_j, mu, mu_s, gravity, e_override, split, locate):
+def _step(q, h, a_mid, a_change, prev_m, prev_p, b, hcg, radius, inv_j, mu, mu_s, gravity, e_override, split,
+          locate):
     """One Moreau–Jean step of length h from q = [x, y, θ, ẋ, ẏ, θ̇], updated in place.
 
     The floor acceleration is ``a_mid`` in the middle of the step and changes by
@@ -198,9 +199,8 @@ def _step(q, h, a_mid, a_change, prev_m, prev_p, b, hcg, inv_j, mu, mu_s, gravit
     alone, as in the exact sliding kernel) is left to the rest of the step.
     ``q[6]``, ``q[7]`` hold sin θ and cos θ, kept so (each angle's sine and
     cosine are worked out once).
-    Returns (state−, state+, fraction of the step taken, mode).
+    ``radius`` is R = √(b² + h²) [m]. Returns (state−, state+, fraction of the step taken, mode).
     """
-    radius = np.hypot(b, hcg)
     tol = _CONTACT_TOLERANCE * gravity * h
     x, y, theta, vx, vy, w = q[0], q[1], q[2], q[3], q[4], q[5]
     act_tol = _ACTIVE_GAP_RATIO * radius
@@ -392,7 +392,7 @@ def _simulate(accel_g, dt_s, n_sub, tail_steps, b, hcg, inv_j, mu, mu_s, gravity
             theta_start = q[2]
             a_start, a_end = a0 + (a1 - a0) * start, a0 + (a1 - a0) * end
             st_m, st_p, frac, mode = _step(q, (end - start) * h, 0.5 * (a_start + a_end), a_end - a_start, st_m, st_p,
-                                           b, hcg, inv_j, mu, mu_s, gravity, e_override, sub == 0,
+                                           b, hcg, radius, inv_j, mu, mu_s, gravity, e_override, sub == 0,
                                            sub < _MAX_ARRIVALS_PER_STEP)
             t_start = (step + start) * h
             start, sub = (end, 0) if frac == 1.0 else (start + frac * (end - start), sub + 1)
