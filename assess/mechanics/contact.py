@@ -187,11 +187,39 @@ def _both_stick(vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu_s):
 
 
 @njit(cache=True, inline="always")
+def _lone_pivot(minus, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu_s):
+    """:func:`contact_candidate` of one sticking corner, the other open: its two equations written out
+    (the general path's terms with a zero factor dropped; the same operations otherwise)."""
+    rn, rt = (rn_m, rt_m) if minus else (rn_p, rt_p)
+    a11, b1 = 1.0 + rn * rn * inv_j, -(vf[1] + rn * vf[2])
+    a12, a21, a22, b2 = rn * rt * inv_j, rt * rn * inv_j, 1.0 + rt * rt * inv_j, -(vf[0] + rt * vf[2])
+    det = a11 * a22 - a12 * a21
+    if abs(det) <= 1e-14 * (abs(a11 * a22) + abs(a12 * a21)):
+        return np.inf, vf, 0.0, 0.0, 0.0, 0.0
+    lam1, lam2 = (b1 * a22 - a12 * b2) / det, (a11 * b2 - a21 * b1) / det
+    v = (vf[0] + lam2, vf[1] + lam1, vf[2] + (rn * lam1 + rt * lam2) * inv_j)
+    violation = 0.0
+    if minus:
+        if act_m:
+            violation = max(0.0, -lam1, abs(lam2) - mu_s * lam1)
+        if act_p:
+            violation = max(violation, max(0.0, -(v[1] + rn_p * v[2])))
+        return violation, v, lam1, lam2, 0.0, 0.0
+    if act_m:
+        violation = max(0.0, -(v[1] + rn_m * v[2]))
+    if act_p:
+        violation = max(violation, max(0.0, -lam1, abs(lam2) - mu_s * lam1))
+    return violation, v, 0.0, 0.0, lam1, lam2
+
+
+@njit(cache=True, inline="always")
 def contact_candidate(st_m, st_p, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s):
     """Velocity and impulses for assumed corner states; returns (violation, v⁺, P_N−, P_T−, P_N+, P_T+)."""
     if act_m and act_p and st_m == STICK and st_p == STICK:
         violation, pnm, ptm, pnp, ptp = _both_stick(vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu_s)
         return violation, (0.0, 0.0, 0.0), pnm, ptm, pnp, ptp
+    if (st_m == STICK and st_p == OPEN) or (st_m == OPEN and st_p == STICK):
+        return _lone_pivot(st_m == STICK, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu_s)
     # up to two (row, direction) pairs: row · v⁺ = 0 with an impulse λ along the direction
     n = 0
     r1 = d1 = r2 = d2 = (0.0, 0.0, 0.0)
