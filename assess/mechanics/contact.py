@@ -98,19 +98,19 @@ _PAIR_PLUS = (1, 1, 0, 2, 3, 2, 3, 0, 0, 0)
 _SINGLE = (1, 2, 3, 0)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def lever_arms_at(xi, sin_t, cos_t, hcg):
     """:func:`lever_arms` from sin θ and cos θ (worked out once per angle by the time loop) [m]."""
     return -xi * cos_t + hcg * sin_t, -xi * sin_t - hcg * cos_t
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def corner_gap_at(y, sin_t, cos_t, xi, hcg):
     """:func:`corner_gap` from sin θ and cos θ [m]."""
     return y - xi * sin_t - hcg * cos_t
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def corner_x_at(x, sin_t, cos_t, xi, hcg):
     """:func:`corner_x` from sin θ and cos θ [m]."""
     return x + xi * cos_t - hcg * sin_t
@@ -186,7 +186,7 @@ def _both_stick(vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu_s):
     return violation, pnm, ptm, pnp, t
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _lone_pivot(minus, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu_s):
     """:func:`contact_candidate` of one sticking corner, the other open: its two equations written out
     (the general path's terms with a zero factor dropped; the same operations otherwise)."""
@@ -306,7 +306,7 @@ def solve_contacts(prev_m, prev_p, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv
     return best[1], best[2], best[3], best[4], best[5]
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def first_candidate(prev_m, prev_p, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s, tol):
     """The candidate :func:`solve_contacts` tries first, the previous states (no change), solved.
 
