@@ -99,22 +99,39 @@ _SINGLE = (1, 2, 3, 0)
 
 
 @njit(cache=True)
+def lever_arms_at(xi, sin_t, cos_t, hcg):
+    """:func:`lever_arms` from sin θ and cos θ (worked out once per angle by the time loop) [m]."""
+    return -xi * cos_t + hcg * sin_t, -xi * sin_t - hcg * cos_t
+
+
+@njit(cache=True)
+def corner_gap_at(y, sin_t, cos_t, xi, hcg):
+    """:func:`corner_gap` from sin θ and cos θ [m]."""
+    return y - xi * sin_t - hcg * cos_t
+
+
+@njit(cache=True)
+def corner_x_at(x, sin_t, cos_t, xi, hcg):
+    """:func:`corner_x` from sin θ and cos θ [m]."""
+    return x + xi * cos_t - hcg * sin_t
+
+
+@njit(cache=True)
 def lever_arms(xi, theta, hcg):
     """θ-components of w_N and w_T of the corner at body offset (ξ, −h) [m]."""
-    cos_t, sin_t = np.cos(theta), np.sin(theta)
-    return -xi * cos_t + hcg * sin_t, -xi * sin_t - hcg * cos_t
+    return lever_arms_at(xi, np.sin(theta), np.cos(theta), hcg)
 
 
 @njit(cache=True)
 def corner_gap(y, theta, xi, hcg):
     """Height of the corner at body offset (ξ, −h) above the floor [m]."""
-    return y - xi * np.sin(theta) - hcg * np.cos(theta)
+    return corner_gap_at(y, np.sin(theta), np.cos(theta), xi, hcg)
 
 
 @njit(cache=True)
 def corner_x(x, theta, xi, hcg):
     """Horizontal position of the corner at body offset (ξ, −h) [m]."""
-    return x + xi * np.cos(theta) - hcg * np.sin(theta)
+    return corner_x_at(x, np.sin(theta), np.cos(theta), xi, hcg)
 
 
 @njit(cache=True)
@@ -169,6 +186,32 @@ def _both_stick(vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu_s):
     return violation, pnm, ptm, pnp, t
 
 
+@njit(cache=True)
+def _lone_pivot(minus, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu_s):
+    """:func:`contact_candidate` of one sticking corner, the other open: its two equations written out
+    (the general path's terms with a zero factor dropped; the same operations otherwise)."""
+    rn, rt = (rn_m, rt_m) if minus else (rn_p, rt_p)
+    a11, b1 = 1.0 + rn * rn * inv_j, -(vf[1] + rn * vf[2])
+    a12, a21, a22, b2 = rn * rt * inv_j, rt * rn * inv_j, 1.0 + rt * rt * inv_j, -(vf[0] + rt * vf[2])
+    det = a11 * a22 - a12 * a21
+    if abs(det) <= 1e-14 * (abs(a11 * a22) + abs(a12 * a21)):
+        return np.inf, vf, 0.0, 0.0, 0.0, 0.0
+    lam1, lam2 = (b1 * a22 - a12 * b2) / det, (a11 * b2 - a21 * b1) / det
+    v = (vf[0] + lam2, vf[1] + lam1, vf[2] + (rn * lam1 + rt * lam2) * inv_j)
+    violation = 0.0
+    if minus:
+        if act_m:
+            violation = max(0.0, -lam1, abs(lam2) - mu_s * lam1)
+        if act_p:
+            violation = max(violation, max(0.0, -(v[1] + rn_p * v[2])))
+        return violation, v, lam1, lam2, 0.0, 0.0
+    if act_m:
+        violation = max(0.0, -(v[1] + rn_m * v[2]))
+    if act_p:
+        violation = max(violation, max(0.0, -lam1, abs(lam2) - mu_s * lam1))
+    return violation, v, 0.0, 0.0, lam1, lam2
+
+
 # Not inlined at numba's IR level (inline="always"): it is called at six sites, inside functions that are
 # themselves inlined, and retyping each copy made compiling the general solver take ~4x longer (100 s vs 26 s
 # under load; benchmarks/bench_assessment.py: the runs cost 4 % more CPU without it). LLVM still inlines it.
@@ -178,6 +221,8 @@ def contact_candidate(st_m, st_p, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_
     if act_m and act_p and st_m == STICK and st_p == STICK:
         violation, pnm, ptm, pnp, ptp = _both_stick(vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu_s)
         return violation, (0.0, 0.0, 0.0), pnm, ptm, pnp, ptp
+    if (st_m == STICK and st_p == OPEN) or (st_m == OPEN and st_p == STICK):
+        return _lone_pivot(st_m == STICK, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu_s)
     # up to two (row, direction) pairs: row · v⁺ = 0 with an impulse λ along the direction
     n = 0
     r1 = d1 = r2 = d2 = (0.0, 0.0, 0.0)
@@ -262,6 +307,20 @@ def solve_contacts(prev_m, prev_p, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv
             if violation < best[0]:
                 best = (violation, st_m, st_p, v, pnm, pnp)
     return best[1], best[2], best[3], best[4], best[5]
+
+
+@njit(cache=True)
+def first_candidate(prev_m, prev_p, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s, tol):
+    """The candidate :func:`solve_contacts` tries first, the previous states (no change), solved.
+
+    Returns (whether it is one of the candidates and holds to ``tol``, v⁺, P_N−, P_T−, P_N+, P_T+): where
+    it holds, :func:`solve_contacts` returns it; its impulses are the pivot's cone margin
+    (:func:`cone_margin`) all the same.
+    """
+    violation, v, pnm, ptm, pnp, ptp = contact_candidate(prev_m, prev_p, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p,
+                                                         inv_j, mu, mu_s)
+    listed = not (act_m and act_p) or prev_m == OPEN or prev_p == OPEN or prev_m == prev_p
+    return listed and violation <= tol, v, pnm, ptm, pnp, ptp
 
 
 @njit(cache=True, inline="always")

@@ -117,8 +117,9 @@ from numba import njit, parallel_chunksize, prange
 from .block import MODES, Block, BlockResponse, summary_mode
 from .case_records import CASES_PER_CHUNK, checked_record, checked_records
 from .contact import (CODE_REST, CODE_ROCK, CODE_SLIDE, OPEN, SLIP_POS, STICK, VELOCITY_RATIO, cone_margin,
-                      contact_candidate, corner_gap, corner_x, impact, lever_arms, project_onto_floor, solve_contacts,
-                      step_mode)
+                      contact_candidate,
+                      corner_gap_at, corner_x_at, first_candidate, impact, lever_arms_at, project_onto_floor,
+                      solve_contacts, step_mode)
 from .geometry import STANDARD_GRAVITY_M_S2
 
 #: Largest time step in dimensionless time, p·Δt [-].
@@ -141,12 +142,12 @@ _HALF_PI = 0.5 * np.pi
 
 # --------------------------------------------------------------------------- time loop
 @njit(cache=True, inline="always")
-def _event_fraction(pm, pp, relocate, v, vf, g0_m, g0_p, vx, vy, w, h, rn_m, rt_m, rn_p, rt_p, act_m, act_p, inv_j,
-                    mu, mu_s, tol):
+def _event_fraction(pm, pp, relocate, v, vcc, pnm, pnp, g0_m, g0_p, vx, vy, w, h, rn_m, rn_p, rt_m, rt_p, tol):
     """Fraction of the step at which a corner arrives or a slip reverses (1 if neither).
 
     With ``relocate`` (the contact states changed in the step) the velocity is
     that of the previous contact states ("carry on"), else the solved one ``v``;
+    (``vcc``, with its normal impulses ``pnm`` and ``pnp``, from :func:`contact_candidate`);
     either is linear in the step, so an open corner's gap is quadratic in the
     fraction τ (its first zero found by bisection) and a slipping corner's
     tangential velocity passes zero at :math:`\\tau = v_{T,k}/(v_{T,k} - v_{T,k+1})`.
@@ -156,7 +157,6 @@ def _event_fraction(pm, pp, relocate, v, vf, g0_m, g0_p, vx, vy, w, h, rn_m, rt_
     """
     vc, carry = v, False
     if relocate:
-        _, vcc, pnm, _, pnp, _ = contact_candidate(pm, pp, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s)
         if min(pnm, pnp) >= -tol:  # else a lift-off: no velocity jump, only arrivals to locate
             vc, carry = vcc, True
     frac, arrived = 1.0, 0
@@ -182,7 +182,8 @@ def _event_fraction(pm, pp, relocate, v, vf, g0_m, g0_p, vx, vy, w, h, rn_m, rt_
 
 
 @njit(cache=True)
-def _step(q, h, a_mid, a_change, prev_m, prev_p, b, hcg, inv_j, mu, mu_s, gravity, e_override, split, locate):
+def _step(q, h, a_mid, a_change, prev_m, prev_p, b, hcg, radius, inv_j, mu, mu_s, gravity, e_override, split,
+          locate):
     """One Moreau–Jean step of length h from q = [x, y, θ, ẋ, ẏ, θ̇], updated in place.
 
     The floor acceleration is ``a_mid`` in the middle of the step and changes by
@@ -196,34 +197,44 @@ def _step(q, h, a_mid, a_change, prev_m, prev_p, b, hcg, inv_j, mu, mu_s, gravit
     (:func:`_event_fraction`). The impact, the slip, or the stick test of the
     stopped corner (handed on as sticking, so μs applies to the rest of the step
     alone, as in the exact sliding kernel) is left to the rest of the step.
-    Returns (state−, state+, fraction of the step taken, mode).
+    ``q[6]``, ``q[7]`` hold sin θ and cos θ, kept so (each angle's sine and
+    cosine are worked out once).
+    ``radius`` is R = √(b² + h²) [m]. Returns (state−, state+, fraction of the step taken, mode).
     """
-    radius = np.hypot(b, hcg)
     tol = _CONTACT_TOLERANCE * gravity * h
     x, y, theta, vx, vy, w = q[0], q[1], q[2], q[3], q[4], q[5]
     act_tol = _ACTIVE_GAP_RATIO * radius
-    g0_m, g0_p = corner_gap(y, theta, -b, hcg), corner_gap(y, theta, b, hcg)
+    sin_t, cos_t = q[6], q[7]
+    g0_m, g0_p = corner_gap_at(y, sin_t, cos_t, -b, hcg), corner_gap_at(y, sin_t, cos_t, b, hcg)
     on_m, on_p = g0_m <= act_tol, g0_p <= act_tol
     if (on_m and prev_m == OPEN) or (on_p and prev_p == OPEN):
         prev_m, prev_p, vx, vy, w = impact(vx, vy, w, theta, prev_m, prev_p, on_m, on_p, b, hcg, inv_j, mu, mu_s,
                                            e_override, tol, VELOCITY_RATIO * np.sqrt(gravity * radius))
     theta_mid, y_mid = theta + 0.5 * h * w, y + 0.5 * h * vy
-    act_m = on_m or corner_gap(y_mid, theta_mid, -b, hcg) <= 0.0
-    act_p = on_p or corner_gap(y_mid, theta_mid, b, hcg) <= 0.0
-    rn_m, rt_m = lever_arms(-b, theta_mid, hcg)
-    rn_p, rt_p = lever_arms(b, theta_mid, hcg)
+    sin_mid, cos_mid = np.sin(theta_mid), np.cos(theta_mid)
+    act_m = on_m or corner_gap_at(y_mid, sin_mid, cos_mid, -b, hcg) <= 0.0
+    act_p = on_p or corner_gap_at(y_mid, sin_mid, cos_mid, b, hcg) <= 0.0
+    rn_m, rt_m = lever_arms_at(-b, sin_mid, cos_mid, hcg)
+    rn_p, rt_p = lever_arms_at(b, sin_mid, cos_mid, hcg)
     vf = (vx - h * a_mid * gravity, vy - h * gravity, w)
     pm, pp = (prev_m if act_m else OPEN), (prev_p if act_p else OPEN)
+    # the previous states' candidate, the first that solve_contacts tries: kept if it holds
+    v0, pnm0, ptm0, pnp0, ptp0 = vf, 0.0, 0.0, 0.0, 0.0
     if act_m or act_p:
-        st_m, st_p, v, _, _ = solve_contacts(pm, pp, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s,
-                                             tol)
+        held, v0, pnm0, ptm0, pnp0, ptp0 = first_candidate(pm, pp, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j,
+                                                           mu, mu_s, tol)
+        if held:
+            st_m, st_p, v = pm, pp, v0
+        else:
+            st_m, st_p, v, _, _ = solve_contacts(pm, pp, act_m, act_p, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s,
+                                                 tol)
     else:
         st_m, st_p, v = OPEN, OPEN, vf
     frac, event = 1.0, 0  # event: 0 none or a slip reversal, ±1 the corner that arrives, 2 a slip onset
     relocate = split and (st_m != pm or st_p != pp)
     if relocate or (locate and (pm == OPEN or pp == OPEN)):
-        frac, vc, carry, event = _event_fraction(pm, pp, relocate, v, vf, g0_m, g0_p, vx, vy, w, h, rn_m, rt_m, rn_p,
-                                                 rt_p, act_m, act_p, inv_j, mu, mu_s, tol)
+        frac, vc, carry, event = _event_fraction(pm, pp, relocate, v, v0, pnm0, pnp0, g0_m, g0_p, vx, vy, w, h,
+                                                 rn_m, rn_p, rt_m, rt_p, tol)
         if frac < 1.0:
             if carry:
                 st_m, st_p = pm, pp
@@ -237,7 +248,7 @@ def _step(q, h, a_mid, a_change, prev_m, prev_p, b, hcg, inv_j, mu, mu_s, gravit
                                   or (pp == STICK and pm == OPEN and st_m == OPEN and st_p != OPEN)):
         # a lone sticking pivot: where does its cone margin, linear in the floor acceleration, change sign?
         kept = (st_m if pm == STICK else st_p) == STICK
-        c_mid = cone_margin(pm, pp, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s)
+        c_mid = mu_s * pnm0 - abs(ptm0) if pm == STICK else mu_s * pnp0 - abs(ptp0)  # cone_margin at vf
         a_end = a_mid + (0.5 if kept else -0.5) * a_change  # the end of the step, or its start
         c_end = cone_margin(pm, pp, (vx - h * a_end * gravity, vf[1], w), rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s)
         if kept and c_mid >= 0.0 > c_end:
@@ -251,8 +262,9 @@ def _step(q, h, a_mid, a_change, prev_m, prev_p, b, hcg, inv_j, mu, mu_s, gravit
     a_step = a_mid - 0.5 * (1.0 - frac) * a_change  # the floor acceleration in the middle of the step taken
     if event != 0:  # taken up to an arrival or a slip onset: afresh, with its own middle
         theta_mid = theta + 0.5 * h * w
-        rn_m, rt_m = lever_arms(-b, theta_mid, hcg)
-        rn_p, rt_p = lever_arms(b, theta_mid, hcg)
+        sin_mid, cos_mid = np.sin(theta_mid), np.cos(theta_mid)
+        rn_m, rt_m = lever_arms_at(-b, sin_mid, cos_mid, hcg)
+        rn_p, rt_p = lever_arms_at(b, sin_mid, cos_mid, hcg)
         vf = (vx - h * a_step * gravity, vy - h * gravity, w)
         _, v, _, _, _, _ = contact_candidate(st_m, st_p, True, True, vf, rn_m, rt_m, rn_p, rt_p, inv_j, mu, mu_s)
     override = e_override >= 0.0 and ((st_m == STICK and pm == OPEN and st_p == OPEN and pp != OPEN)
@@ -270,27 +282,31 @@ def _step(q, h, a_mid, a_change, prev_m, prev_p, b, hcg, inv_j, mu, mu_s, gravit
     # a pivot that sticks on keeps its place on the floor
     keep_m = pm == STICK and st_m == STICK and st_p == OPEN
     keep_p = pp == STICK and st_p == STICK and st_m == OPEN
-    anchor = corner_x(x, theta, b if keep_p else -b, hcg)
+    anchor = corner_x_at(x, sin_t, cos_t, b if keep_p else -b, hcg)
     x += 0.5 * h * (vx + vq[0])
     y += 0.5 * h * (vy + vq[1])
     theta += 0.5 * h * (w + vq[2])
+    sin_t, cos_t = np.sin(theta), np.cos(theta)
     # an arriving corner is put on the floor, to be taken as an impact by the next step
-    fix_m = st_m != OPEN or event == -1 or corner_gap(y, theta, -b, hcg) < 0.0
-    fix_p = st_p != OPEN or event == 1 or corner_gap(y, theta, b, hcg) < 0.0
-    if fix_m or fix_p:
-        y, theta = project_onto_floor(y, theta, fix_m, fix_p, b, hcg, inv_j, 1e-15 * radius)
+    fix_m = st_m != OPEN or event == -1 or corner_gap_at(y, sin_t, cos_t, -b, hcg) < 0.0
+    fix_p = st_p != OPEN or event == 1 or corner_gap_at(y, sin_t, cos_t, b, hcg) < 0.0
+    if fix_m != fix_p:  # one corner: a vertical shift (project_onto_floor), θ as integrated
+        y -= corner_gap_at(y, sin_t, cos_t, -b if fix_m else b, hcg)
+    elif fix_m:
+        y, theta = project_onto_floor(y, theta, True, True, b, hcg, inv_j, 1e-15 * radius)
+        sin_t, cos_t = np.sin(theta), np.cos(theta)
     if keep_m or keep_p:
-        x += anchor - corner_x(x, theta, b if keep_p else -b, hcg)
+        x += anchor - corner_x_at(x, sin_t, cos_t, b if keep_p else -b, hcg)
     # contact states of the step, gaps at its end, velocities in its middle
     v_mid = (0.5 * (vx + v[0]), 0.5 * (vy + v[1]), 0.5 * (w + v[2]))
-    mode = step_mode(st_m, st_p, v_mid, rn_m, rt_m, rn_p, rt_p, corner_gap(y, theta, -b, hcg),
-                     corner_gap(y, theta, b, hcg), radius, gravity)
+    mode = step_mode(st_m, st_p, v_mid, rn_m, rt_m, rn_p, rt_p, corner_gap_at(y, sin_t, cos_t, -b, hcg),
+                     corner_gap_at(y, sin_t, cos_t, b, hcg), radius, gravity)
     if st_m == STICK and st_p == STICK:
         v = (0.0, 0.0, 0.0)
     if frac < 1.0 and event == 0:  # the reversing corners have stopped
         st_m = STICK if st_m >= SLIP_POS and abs(v[0] + rt_m * v[2]) <= 1e-9 * abs(vx) + tol else st_m
         st_p = STICK if st_p >= SLIP_POS and abs(v[0] + rt_p * v[2]) <= 1e-9 * abs(vx) + tol else st_p
-    q[0], q[1], q[2], q[3], q[4], q[5] = x, y, theta, v[0], v[1], v[2]
+    q[0], q[1], q[2], q[3], q[4], q[5], q[6], q[7] = x, y, theta, v[0], v[1], v[2], sin_t, cos_t
     return st_m, st_p, frac, mode
 
 
@@ -315,7 +331,8 @@ def _simulate(accel_g, dt_s, n_sub, tail_steps, b, hcg, inv_j, mu, mu_s, gravity
     # at rest flat, or at rest on one corner at θ0 with that corner where it stood
     side0 = 1.0 if theta0 >= 0.0 else -1.0
     q = np.array([hcg * np.sin(theta0) + side0 * b * (1.0 - np.cos(theta0)),
-                  side0 * b * np.sin(theta0) + hcg * np.cos(theta0), theta0, 0.0, 0.0, 0.0])
+                  side0 * b * np.sin(theta0) + hcg * np.cos(theta0), theta0, 0.0, 0.0, 0.0, np.sin(theta0),
+                  np.cos(theta0)])  # and sin θ, cos θ (:func:`_step`)
     st_m = STICK if theta0 <= 0.0 else OPEN
     st_p = STICK if theta0 >= 0.0 else OPEN
     resting = theta0 == 0.0
@@ -375,7 +392,7 @@ def _simulate(accel_g, dt_s, n_sub, tail_steps, b, hcg, inv_j, mu, mu_s, gravity
             theta_start = q[2]
             a_start, a_end = a0 + (a1 - a0) * start, a0 + (a1 - a0) * end
             st_m, st_p, frac, mode = _step(q, (end - start) * h, 0.5 * (a_start + a_end), a_end - a_start, st_m, st_p,
-                                           b, hcg, inv_j, mu, mu_s, gravity, e_override, sub == 0,
+                                           b, hcg, radius, inv_j, mu, mu_s, gravity, e_override, sub == 0,
                                            sub < _MAX_ARRIVALS_PER_STEP)
             t_start = (step + start) * h
             start, sub = (end, 0) if frac == 1.0 else (start + frac * (end - start), sub + 1)
@@ -393,7 +410,7 @@ def _simulate(accel_g, dt_s, n_sub, tail_steps, b, hcg, inv_j, mu, mu_s, gravity
                 overturned, theta_max = True, _HALF_PI
                 t_over = t_start + (step * h + start * h - t_start) * min(1.0, max(0.0, reach))
             else:
-                u = q[0] - hcg * np.sin(q[2]) - b * np.sign(q[2]) * (1.0 - np.cos(q[2]))
+                u = q[0] - hcg * q[6] - b * np.sign(q[2]) * (1.0 - q[7])
                 u_max, theta_max = max(u_max, abs(u)), max(theta_max, abs(q[2]))
         if overturned:
             break
