@@ -217,3 +217,17 @@ def test_the_item_strips_draw_every_history_inside_the_strip_in_either_unit(unit
             xs += [float(x) for x in re.findall(r'<text x="([\d.]+)" y="[\d.]+" text-anchor="middle" font-size="9"',
                                                  strip)]
             assert xs and all(0 < x <= width for x in xs), (name, xs, width)
+
+
+def test_work_orders_label_floors_as_the_report_does():
+    """Under ground_1 the work orders' floor headings count the ground floor 1, as the tables do."""
+    result = make_result()  # items on floors 0, 1 and 2
+    result = dataclasses.replace(result, summary=result.summary.assign(action_kind="anchor"))
+
+    def headings(html):
+        section = html[html.index("Work orders by floor"):]
+        return re.findall(r"<h3>Floor ([^<]+) <span", section)
+
+    assert headings(render_html(result)) == ["0", "1", "2"]
+    us = dataclasses.replace(result, settings={**result.settings, "floor_numbering": "ground_1"})
+    assert headings(render_html(us)) == ["1", "2", "3"]

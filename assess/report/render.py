@@ -383,7 +383,8 @@ def report_context(result) -> dict:
         "hazard_notes": list(result.hazard_notes),
         "method_notes": method_notes(summary),
         "changes": changes(result.comparison),
-        "work_orders": work_order_sentences(result.work_orders()),
+        "work_orders": [{**floor, "floor": floor_text(floor["floor"], numbering)}  # labelled as every floor is
+                        for floor in work_order_sentences(result.work_orders())],
         "curve": curve_context(result, numbering),
         "costs": costs_context(result, {r["id"]: r["anchor"] for r in rows}),
         "title": title_block(settings, code_edition(result)),
