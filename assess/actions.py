@@ -47,23 +47,13 @@ WORK_ORDER_TEXT = {
 }
 
 
-def chance_text(probability: float) -> str:
-    """A probability as every table and sentence writes it (:func:`assess.quantity_text.percent_text`):
-    never 0 % when it is not 0.
-
-    >>> chance_text(0.0), chance_text(0.003), chance_text(0.4), chance_text(0.998), chance_text(1.0)
-    ('0%', '<1%', '40%', '>99%', '100%')
-    """
-    return percent_text(probability)
-
-
 def _plural(count: int, word: str) -> str:
     return f"{count} {word}{'' if count == 1 else 's'}"
 
 
 def suite_share_text(probability: float, row: dict) -> str:
     """"2 of its 3 motions" for records, "12% of its 30 simulated histories" otherwise (never "0%" for a
-    probability above 0: :func:`chance_text`).
+    probability above 0: :func:`~assess.quantity_text.percent_text`).
 
     >>> suite_share_text(0.002, {"suite_motions": 3, "suite_histories": 30})
     '<1% of its 30 simulated histories (3 motions)'
@@ -72,9 +62,9 @@ def suite_share_text(probability: float, row: dict) -> str:
     if histories == motions:
         count = probability * motions
         if abs(count - round(count)) > 1e-9:  # runs weighted over a range of mu
-            return f"a weighted {chance_text(probability)} of its {_plural(motions, 'motion')} over its range of mu"
+            return f"a weighted {percent_text(probability)} of its {_plural(motions, 'motion')} over its range of mu"
         return f"{int(round(count))} of its {_plural(motions, 'motion')}"
-    return f"{chance_text(probability)} of its {histories} simulated histories ({_plural(motions, 'motion')})"
+    return f"{percent_text(probability)} of its {histories} simulated histories ({_plural(motions, 'motion')})"
 
 
 def room_to_gain_cm(row: dict) -> float:
@@ -182,7 +172,7 @@ def _more_than_spare(row: dict, system: str, settings: dict) -> str:
 
 def _room_numbers(row: dict, system: str) -> str:
     return (f"it needs {length_text(row['demand_room_cm'], system, 'up')} to be low risk and has "
-            f"{length_text(row['clearance_cm'], system, 'down')} ({chance_text(row['p_beyond_clearance'])} chance "
+            f"{length_text(row['clearance_cm'], system, 'down')} ({percent_text(row['p_beyond_clearance'])} chance "
             "of sliding past it)")
 
 
@@ -192,9 +182,9 @@ def _lowered_text(row: dict, lowered: dict, system: str) -> str:
     return (f"With its heavy contents moved low (centre of mass at {float(lowered['cg_fraction']):.0%} of its "
             f"height, {length_text(lowered['cg_height_cm'], system)} instead of "
             f"{length_text(row['cg_height_cm'], system)}) the engine gives overturning "
-            f"{chance_text(lowered['p_overturn'])} (as loaded {chance_text(row['p_overturn'])}) and sliding past "
-            f"its room {chance_text(lowered['p_beyond_clearance'])} (as loaded "
-            f"{chance_text(row['p_beyond_clearance'])}), and {rocks}, under the same motions")
+            f"{percent_text(lowered['p_overturn'])} (as loaded {percent_text(row['p_overturn'])}) and sliding past "
+            f"its room {percent_text(lowered['p_beyond_clearance'])} (as loaded "
+            f"{percent_text(row['p_beyond_clearance'])}), and {rocks}, under the same motions")
 
 
 def action_sentence(kind: str, row: dict, uplift: bool, lowered: dict | None, settings: dict) -> str:
@@ -242,7 +232,7 @@ def what_if_sentence(kind: str, row: dict, lowered: dict | None, settings: dict)
                   "are not, tether it." if kind == "lock_casters" else "")
         return (f"Given {length_text(row['demand_room_cm'], system, 'up')} of room (it has "
                 f"{length_text(row['clearance_cm'], system, 'down')}), its chance of sliding past it would be "
-                f"{chance_text(float(settings['risk_pf_moderate']))}: low risk.{locked}")
+                f"{percent_text(float(settings['risk_pf_moderate']))}: low risk.{locked}")
     return ""
 
 

@@ -39,15 +39,18 @@ import math
 import numpy as np
 import pandas as pd
 
+from assess.risk_classes import ROCKING_HARM_SEVERITY, SLIDING_SEVERITY
+
 #: Share of ``value`` lost when the item overturns: all of it (``value`` is what its failure costs).
 LOSS_RATIO_OVERTURN = 1.0
 #: Share of ``value`` lost when it slides past its room: it hits a wall or a neighbour, pulls its utility
-#: lines or blocks a door, and is mostly repaired, not replaced. Our judgement, the same share of an
-#: overturning's cost that the order of action gives sliding past the room (decisions.SLIDING_SEVERITY).
-LOSS_RATIO_BEYOND_CLEARANCE = 0.5
+#: lines or blocks a door, and is mostly repaired, not replaced. Our judgement: the share of an
+#: overturning's cost the order of action gives sliding past the room, one number for both.
+LOSS_RATIO_BEYOND_CLEARANCE = SLIDING_SEVERITY
 #: Share of ``value`` lost when rocking harms it or its contents without overturning it (contents thrown
-#: off shelves, impacts on the base). Our judgement: half of sliding past the room.
-LOSS_RATIO_ROCKING_HARM = 0.25
+#: off shelves, impacts on the base). Our judgement: half of sliding past the room, the share the order of
+#: action gives it too.
+LOSS_RATIO_ROCKING_HARM = ROCKING_HARM_SEVERITY
 
 #: Actions after which the item is taken to neither slide, rock nor overturn (held in place), until the
 #: summary gives the probabilities after the action (``p_overturn_after``, ``p_beyond_clearance_after``).

@@ -25,7 +25,8 @@ from assess.mechanics.modes import ROCK, SLIDE_ROCK
 from assess.quantity_text import length_text, system_of
 from assess.result import Flag
 from assess.risk_classes import (
-    Chances, classify_risk, deciding_chance, performance_objective, risk_range, risk_reason, rocking_harm_counts,
+    ROCKING_HARM_SEVERITY, SLIDING_SEVERITY, Chances, classify_risk, deciding_chance, performance_objective,
+    risk_range, risk_reason, rocking_harm_counts,
 )
 
 UPLIFT_MODES = (ROCK, SLIDE_ROCK)
@@ -146,12 +147,6 @@ def decide_item(item, row: dict, uplift: bool, settings: dict, site: AnchorageSi
 
 #: Weight of what an item's failure costs (the workbook's ``consequence``), for the order of action.
 CONSEQUENCE_WEIGHTS = {"life-safety": 5.0, "hazardous": 4.0, "critical": 3.0, "valuable": 2.0, "ordinary": 1.0}
-#: Share of an overturning's cost that sliding past the room carries (it hits, pulls its lines, blocks).
-SLIDING_SEVERITY = 0.5
-#: Share of an overturning's cost that rocking which harms the item or its contents carries: it damages
-#: the item or what it holds where it stands, without toppling or moving it (half of sliding's share: a
-#: judgement, as the two severities above).
-ROCKING_HARM_SEVERITY = 0.25
 
 
 def priority_score(consequence: str, chances: Chances) -> float:

@@ -36,6 +36,15 @@ from dataclasses import dataclass
 
 from assess.quantity_text import percent_text
 
+#: Share of an overturning's cost that sliding past the room carries (it hits, pulls its lines, blocks):
+#: the weight of that mode in the order of action (:func:`assess.decisions.priority_score`) and in the
+#: loss (:mod:`assess.costs`). A judgement.
+SLIDING_SEVERITY = 0.5
+#: Share of an overturning's cost that rocking which harms the item or its contents carries: it damages
+#: the item or what it holds where it stands, without toppling or moving it (half of sliding's share: a
+#: judgement, as the one above).
+ROCKING_HARM_SEVERITY = 0.25
+
 OPERATIONAL, POSITION_RETENTION, LIFE_SAFETY = "operational", "position retention", "life safety"
 #: The performance objective (ASCE 41-17 nonstructural performance level) of each consequence.
 OBJECTIVES = {"critical": OPERATIONAL, "hazardous": POSITION_RETENTION, "valuable": POSITION_RETENTION,
