@@ -94,10 +94,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit, parallel_chunksize, prange
+from numba import njit
 
-from .case_records import CASES_PER_CHUNK, checked_record, checked_records
+from .case_records import checked_record, checked_records
 from .geometry import housner_restitution
+from .threads import run_case_ranges
 
 #: Largest Runge-Kutta step in dimensionless time p·h [-].
 MAX_STEP_DIMENSIONLESS = 0.01
@@ -382,12 +383,13 @@ def _simulate(accel_g, dt_s, n_tail, alpha, p, e, kappa, theta_init, theta_dot_i
     return theta_max, uplift, overturned, overturn_time, impacts
 
 
-@njit(cache=True, parallel=True)
-def _cases(accel_flat, offsets, dts, tails, record_index, alpha, p, e, kappa, friction_stop, theta_max, uplift,
-           overturned, overturn_time, impacts, friction_demand, normal_min):
-    """Case i: block (alpha[i], p[i], e[i], kappa[i]) from rest under record ``record_index[i]``."""
+@njit(cache=True, nogil=True)
+def _cases(start, stop, accel_flat, offsets, dts, tails, record_index, alpha, p, e, kappa, friction_stop, theta_max,
+           uplift, overturned, overturn_time, impacts, friction_demand, normal_min):
+    """Cases start to stop − 1: case i is block (alpha[i], p[i], e[i], kappa[i]) from rest under record
+    ``record_index[i]`` (:func:`assess.mechanics.threads.run_case_ranges`)."""
     empty = np.empty(0)
-    for i in prange(alpha.size):
+    for i in range(start, stop):
         j = record_index[i]
         counts = np.zeros(2, dtype=np.int64)
         forces = np.empty(2)
@@ -694,9 +696,8 @@ def _run_cases(records, dts, record_index, alpha, p, e, kappa, tail_s, friction_
     uplift, overturned = np.zeros(n, dtype=np.bool_), np.zeros(n, dtype=np.bool_)
     impacts = np.zeros(n, dtype=np.int64)
     friction_demand, normal_min = np.empty(n), np.empty(n)
-    with parallel_chunksize(CASES_PER_CHUNK):
-        _cases(accel_flat, offsets, dts, tails, record_index, alpha, p, e, kappa, friction_stop, theta_max, uplift,
-               overturned, overturn_time, impacts, friction_demand, normal_min)
+    run_case_ranges(_cases, n, accel_flat, offsets, dts, tails, record_index, alpha, p, e, kappa, friction_stop,
+                    theta_max, uplift, overturned, overturn_time, impacts, friction_demand, normal_min)
     return RockingPeaks(theta_max_over_alpha=theta_max, uplift=uplift, overturned=overturned,
                         overturn_time_s=overturn_time, impacts=impacts,
                         friction_demand_max=friction_demand, normal_force_min_over_weight=normal_min)

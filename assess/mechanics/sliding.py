@@ -58,11 +58,12 @@ from dataclasses import dataclass
 from typing import Optional
 
 import numpy as np
-from numba import get_num_threads, njit, prange
+from numba import njit
 
 from assess.mechanics.case_records import checked_record
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
 from assess.mechanics.stick_slip import COULOMB, stick_slip_record
+from assess.mechanics.threads import run_case_ranges
 
 @dataclass(frozen=True)
 class SlidingResult:
@@ -125,22 +126,11 @@ def _peaks_of_block(accel_2d, lengths, dt, mu_k, mu_s, gravity, peak, residual, 
         residual[i, r] = res
 
 
-@njit(cache=True, parallel=True)
-def _peaks_parallel(accel_2d, lengths, dt, mu_k, mu_s, gravity):
-    peak = np.empty((mu_k.shape[0], accel_2d.shape[0]))
-    residual = np.empty_like(peak)
-    for i in prange(mu_k.shape[0]):
+@njit(cache=True, nogil=True)
+def _peaks_of_blocks(start, stop, accel_2d, lengths, dt, mu_k, mu_s, gravity, peak, residual):
+    """Blocks start to stop − 1 under every record (:func:`assess.mechanics.threads.run_case_ranges`)."""
+    for i in range(start, stop):
         _peaks_of_block(accel_2d, lengths, dt, mu_k, mu_s, gravity, peak, residual, i)
-    return peak, residual
-
-
-@njit(cache=True)
-def _peaks_serial(accel_2d, lengths, dt, mu_k, mu_s, gravity):
-    peak = np.empty((mu_k.shape[0], accel_2d.shape[0]))
-    residual = np.empty_like(peak)
-    for i in range(mu_k.shape[0]):
-        _peaks_of_block(accel_2d, lengths, dt, mu_k, mu_s, gravity, peak, residual, i)
-    return peak, residual
 
 
 def _check_friction(mu, mu_static):
@@ -214,8 +204,8 @@ def sliding_peaks_batch(floor_accel_g_2d, dt_s, mu_array, mu_static_array=None, 
     """Peak and residual sliding of many blocks under many records (peaks only, in parallel).
 
     Each (block, record) pair is solved by the same exact kernel as
-    :func:`sliding_response`; blocks are spread over threads (numba ``prange``;
-    with fewer blocks than twice the threads, a serial loop).
+    :func:`sliding_response`; blocks are spread over threads
+    (:func:`assess.mechanics.threads.run_case_ranges`).
     Memory is the two result arrays: nothing per time step is kept.
 
     Parameters
@@ -268,6 +258,8 @@ def sliding_peaks_batch(floor_accel_g_2d, dt_s, mu_array, mu_static_array=None, 
     mu_k, mu_s = _check_friction(np.atleast_1d(np.asarray(mu_array, dtype=float)),
                                  None if mu_static_array is None
                                  else np.atleast_1d(np.asarray(mu_static_array, dtype=float)))
-    # fewer blocks than threads: a parallel region would only add its start-up cost
-    kernel = _peaks_parallel if mu_k.shape[0] >= 2 * get_num_threads() else _peaks_serial
-    return kernel(accel, lengths, dt, np.ascontiguousarray(mu_k), np.ascontiguousarray(mu_s), STANDARD_GRAVITY_M_S2)
+    peak = np.empty((mu_k.shape[0], accel.shape[0]))
+    residual = np.empty_like(peak)
+    run_case_ranges(_peaks_of_blocks, mu_k.shape[0], accel, lengths, dt, np.ascontiguousarray(mu_k),
+                    np.ascontiguousarray(mu_s), STANDARD_GRAVITY_M_S2, peak, residual)
+    return peak, residual

@@ -112,15 +112,17 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit, parallel_chunksize, prange
+from numba import njit
 
 from .block import MODES, Block, BlockResponse, summary_mode
-from .case_records import CASES_PER_CHUNK, checked_record, checked_records
+from .case_records import checked_record, checked_records
 from .contact import (CODE_REST, CODE_ROCK, CODE_SLIDE, OPEN, SLIP_POS, STICK, VELOCITY_RATIO, cone_margin,
                       contact_candidate,
                       corner_gap_at, corner_x_at, first_candidate, impact, lever_arms_at, project_onto_floor,
                       solve_contacts, step_mode)
 from .geometry import STANDARD_GRAVITY_M_S2
+from . import warmup
+from .threads import run_case_ranges
 
 #: Largest time step in dimensionless time, p·Δt [-].
 STEP_DIMENSIONLESS = 2e-3
@@ -421,12 +423,13 @@ def _simulate(accel_g, dt_s, n_sub, tail_steps, b, hcg, inv_j, mu, mu_s, gravity
     return u_max, u, theta_max, uplift, overturned, t_over, visited, n_hist, mode_t, mode_c, n_modes
 
 
-@njit(cache=True, parallel=True)
-def _cases(accel_flat, offsets, dts, record_index, n_sub, tail_steps, b, hcg, inv_j, mu, mu_s, gravity, e_override,
-           u_max, u_res, theta_max, uplift, overturned, t_over, visited):
-    """Case i: block i (its constants at index i) from rest under record ``record_index[i]``."""
+@njit(cache=True, nogil=True)
+def _cases(start, stop, accel_flat, offsets, dts, record_index, n_sub, tail_steps, b, hcg, inv_j, mu, mu_s, gravity,
+           e_override, u_max, u_res, theta_max, uplift, overturned, t_over, visited):
+    """Cases start to stop − 1: case i is block i (its constants at index i) from rest under record
+    ``record_index[i]`` (:func:`assess.mechanics.threads.run_case_ranges`)."""
     empty, empty_c = np.empty(0), np.empty(0, dtype=np.int64)
-    for i in prange(b.size):
+    for i in range(start, stop):
         j = record_index[i]
         out = _simulate(accel_flat[offsets[j]:offsets[j + 1]], dts[j], n_sub[i], tail_steps[i], b[i],
                         hcg[i], inv_j[i], mu[i], mu_s[i], gravity, e_override[i], 0.0, empty, empty, empty,
@@ -518,6 +521,7 @@ def simulate_time_stepping(block: Block, floor_accel_g, dt_s, *, time_step_s=Non
     n_samples = accel.size + (tail_steps + n_sub - 1) // n_sub if return_history else 0
     hist_u, hist_theta = np.full(n_samples, np.nan), np.full(n_samples, np.nan)
     b, hcg, inv_j, mu, mu_s, e = _block_constants(block)
+    warmup.wait()
     out = _simulate(accel, dt, n_sub, tail_steps, b, hcg, inv_j, mu, mu_s, STANDARD_GRAVITY_M_S2, e, theta0,
                     hist_u, hist_theta, np.empty(64), np.empty(64, dtype=np.int64))
     u_max, u_res, theta_max, uplift, overturned, t_over, _, n_hist, mode_t, mode_c, n_modes = out
@@ -552,7 +556,7 @@ class TimeSteppingPeaks:
 
 
 def time_stepping_peaks_batch(blocks, records_g, dt_s, *, time_step_s=None, tail_s=10.0) -> TimeSteppingPeaks:
-    """Peaks of many blocks under many records, in parallel (numba ``prange`` over pairs).
+    """Peaks of many blocks under many records, in parallel (threads over pairs).
 
     Each (block, record) pair is integrated as by :func:`simulate_time_stepping`
     from rest; only peaks are kept, so memory grows with n_blocks × n_records.
@@ -631,10 +635,10 @@ def _run_cases(blocks, records, dts, record_index, time_step_s, tail_s) -> TimeS
     u_max, u_res, theta_max, t_over = (np.empty(n) for _ in range(4))
     uplift, overturned = np.zeros(n, dtype=np.bool_), np.zeros(n, dtype=np.bool_)
     visited = np.zeros(n, dtype=np.int64)
-    with parallel_chunksize(CASES_PER_CHUNK):
-        _cases(accel_flat, offsets, dts, record_index, np.ascontiguousarray(steps[:, 0]),
-               np.ascontiguousarray(steps[:, 1]), b, hcg, inv_j, mu, mu_s, STANDARD_GRAVITY_M_S2, e, u_max, u_res,
-               theta_max, uplift, overturned, t_over, visited)
+    warmup.wait()  # a first run: the kernel may be compiling in a second process, to load from the cache
+    run_case_ranges(_cases, n, accel_flat, offsets, dts, record_index, np.ascontiguousarray(steps[:, 0]),
+                    np.ascontiguousarray(steps[:, 1]), b, hcg, inv_j, mu, mu_s, STANDARD_GRAVITY_M_S2, e, u_max, u_res,
+                    theta_max, uplift, overturned, t_over, visited)
     alpha = np.array([blk.alpha_rad for blk in blocks], dtype=float)
     mode = np.array([_summary_of(mask) for mask in visited.tolist()], dtype=object)
     return TimeSteppingPeaks(sliding_max_m=u_max, sliding_residual_m=u_res, theta_max_over_alpha=theta_max / alpha,

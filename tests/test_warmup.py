@@ -1,0 +1,71 @@
+"""A first run compiles the general solver in a second process (assess.mechanics.warmup)."""
+import os
+import subprocess
+import sys
+import textwrap
+
+import pytest
+
+
+def run_python(code, cache_dir, timeout_s=300):
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(cache_dir))
+    done = subprocess.run([sys.executable, "-c", textwrap.dedent(code)], env=env, capture_output=True, text=True,
+                          timeout=timeout_s)
+    assert done.returncode == 0, done.stderr[-2000:]
+    return done.stdout
+
+
+def test_an_empty_cache_is_filled_by_the_second_process_and_the_solver_then_loads_from_it(tmp_path):
+    out = run_python("""
+        import numba
+        numba.set_num_threads(min(2, numba.config.NUMBA_NUM_THREADS))
+        from assess.mechanics import warmup
+        print(warmup.general_solver_cached())
+        warmup.start()
+        started = warmup._process is not None
+        warmup.wait()
+        print(started, warmup.general_solver_cached())
+        warmup.start()  # cached now: nothing to do
+        print(warmup._process is None)
+    """, tmp_path)
+    if numba_threads() < 2:
+        assert out.split() == ["False", "False", "False", "True"]
+    else:
+        assert out.split() == ["False", "True", "True", "True"]
+        assert any(name.startswith("timestepping._cases") for name in os.listdir(cache_files(tmp_path)))
+
+
+def test_nothing_starts_on_one_thread(tmp_path):
+    out = run_python("""
+        import numba
+        numba.set_num_threads(1)
+        from assess.mechanics import warmup
+        warmup.start()
+        print(warmup._process is None)
+    """, tmp_path)
+    assert out.split() == ["True"]
+
+
+def test_the_second_process_is_stopped_when_the_first_ends(tmp_path):
+    if numba_threads() < 2:
+        pytest.skip("needs two numba threads")
+    pid = int(run_python("""
+        from assess.mechanics import warmup
+        warmup.start()
+        print(warmup._process.pid)
+    """, tmp_path))
+    with pytest.raises(ProcessLookupError):
+        os.kill(pid, 0)
+
+
+def numba_threads():
+    import numba
+    return numba.config.NUMBA_NUM_THREADS
+
+
+def cache_files(cache_dir):
+    """The folder numba writes assess.mechanics' cache into, under NUMBA_CACHE_DIR."""
+    for root, _dirs, files in os.walk(cache_dir):
+        if any(name.endswith(".nbi") for name in files):
+            return root
+    raise AssertionError(f"no numba cache index under {cache_dir}")
