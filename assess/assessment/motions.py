@@ -12,10 +12,12 @@ from __future__ import annotations
 
 import functools
 import warnings
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Callable
 
+import numba
 import numpy as np
 import pandas as pd
 
@@ -324,7 +326,7 @@ def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str, settings
     """
     synthetic = str(settings.get("simulate_motions", "synthetic")).strip().lower() == "synthetic"
     count = int(settings.get("synthetic_realizations", 5))
-    motions, kinds = {}, {}
+    motions, kinds, to_synthesize = {}, {}, {}
     for row in level_motions.itertuples(index=False):
         k = int(row.motion_key)
         if getattr(row, "from_ground", -1) >= 0:
@@ -335,11 +337,7 @@ def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str, settings
             continue
         pta, tp, vp = float(row.pta_g), float(row.tp_s), float(row.vp_m_s)
         if synthetic and np.isfinite(vp):
-            with warnings.catch_warnings():  # a pulse above PTA is said in the record's name
-                warnings.simplefilter("ignore")
-                records = synthesize_motion(pta, tp, vp, n_realizations=count,
-                                            seed=np.random.default_rng([seed, k]))
-            motions[k], kinds[k] = [(r, r.name) for r in records], SYNTHETIC
+            to_synthesize[k], kinds[k] = (pta, tp, vp), SYNTHETIC
             continue
         pulse = row.pulse or DEFAULT_PULSE
         record = pulse_record(pulse, pta, tp)
@@ -347,7 +345,17 @@ def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str, settings
         if synthetic:
             note += " (no vp given to synthesise from)"
         motions[k], kinds[k] = [(record, f"{note}, {pta:g} g, Tp {tp:g} s")], PULSE
-    return motions, kinds
+
+    def synthesized(k):
+        pta, tp, vp = to_synthesize[k]
+        return synthesize_motion(pta, tp, vp, n_realizations=count, seed=np.random.default_rng([seed, k]))
+
+    # each motion from its own seed, so the threads change when, not what (the filter kernel releases the GIL)
+    with warnings.catch_warnings(), ThreadPoolExecutor(max(1, numba.get_num_threads())) as pool:
+        warnings.simplefilter("ignore")  # a pulse above PTA is said in the record's name
+        for k, records in zip(to_synthesize, pool.map(synthesized, to_synthesize)):
+            motions[k] = [(r, r.name) for r in records]
+    return {k: motions[k] for k in kinds}, kinds  # in the sheet's order
 
 
 def _record_pairs(level_motions: pd.DataFrame, motions: dict, workbook_name: str, notes: list,

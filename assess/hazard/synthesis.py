@@ -401,7 +401,7 @@ def rezaeian_residual(n_samples, dt_s, arias_intensity_m_s, d5_95_s, t_mid_s, rn
     return accel
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _filtered_noise_sums(omega, noise, zeta, dt_s, memory_decay_times):
     """Σ h(t − t_i; t_i) u_i and Σ h²(t − t_i; t_i) at every sample (see :func:`rezaeian_residual`).
 
