@@ -86,12 +86,13 @@ from dataclasses import dataclass
 from typing import Optional
 
 import numpy as np
-from numba import get_num_threads, njit, prange
+from numba import njit
 
 from assess.mechanics.case_records import checked_record
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
 from assess.mechanics.sliding import _check_friction
 from assess.mechanics.stick_slip import _velocity_root
+from assess.mechanics.threads import run_case_ranges
 
 #: Default longest substep [s]; measured accuracy in the module docstring.
 DEFAULT_MAX_SUBSTEP_S = 1.0e-3
@@ -376,22 +377,11 @@ def _peaks_of_block_2d(ax_2d, ay_2d, lengths, dt, mu_k, mu_s, gravity, max_subst
         residual[i, r] = math.sqrt(res_x * res_x + res_y * res_y)
 
 
-@njit(cache=True, parallel=True)
-def _peaks_parallel_2d(ax_2d, ay_2d, lengths, dt, mu_k, mu_s, gravity, max_substep):
-    peak = np.empty((mu_k.shape[0], ax_2d.shape[0]))
-    residual = np.empty_like(peak)
-    for i in prange(mu_k.shape[0]):
+@njit(cache=True, nogil=True)
+def _peaks_of_blocks_2d(start, stop, ax_2d, ay_2d, lengths, dt, mu_k, mu_s, gravity, max_substep, peak, residual):
+    """Blocks start to stop − 1 under every record pair (:func:`assess.mechanics.threads.run_case_ranges`)."""
+    for i in range(start, stop):
         _peaks_of_block_2d(ax_2d, ay_2d, lengths, dt, mu_k, mu_s, gravity, max_substep, peak, residual, i)
-    return peak, residual
-
-
-@njit(cache=True)
-def _peaks_serial_2d(ax_2d, ay_2d, lengths, dt, mu_k, mu_s, gravity, max_substep):
-    peak = np.empty((mu_k.shape[0], ax_2d.shape[0]))
-    residual = np.empty_like(peak)
-    for i in range(mu_k.shape[0]):
-        _peaks_of_block_2d(ax_2d, ay_2d, lengths, dt, mu_k, mu_s, gravity, max_substep, peak, residual, i)
-    return peak, residual
 
 
 def _pad(records):
@@ -410,8 +400,8 @@ def sliding_2d_peaks_batch(floor_accel_x_g_2d, floor_accel_y_g_2d, dt_s, mu_arra
     """Peak distance from rest and residual distance of many blocks under many two-component records.
 
     Each (block, record pair) is solved by the kernel of :func:`sliding_response_2d`;
-    blocks are spread over threads (numba ``prange``; with fewer blocks than twice
-    the threads, a serial loop), as in :func:`assess.mechanics.sliding.sliding_peaks_batch`.
+    blocks are spread over threads (:func:`assess.mechanics.threads.run_case_ranges`), as in
+    :func:`assess.mechanics.sliding.sliding_peaks_batch`.
 
     Parameters
     ----------
@@ -460,6 +450,8 @@ def sliding_2d_peaks_batch(floor_accel_x_g_2d, floor_accel_y_g_2d, dt_s, mu_arra
     mu_k, mu_s = _check_friction(np.atleast_1d(np.asarray(mu_array, dtype=float)),
                                  None if mu_static_array is None
                                  else np.atleast_1d(np.asarray(mu_static_array, dtype=float)))
-    kernel = _peaks_parallel_2d if mu_k.shape[0] >= 2 * get_num_threads() else _peaks_serial_2d
-    return kernel(ax, ay, lengths, dt, np.ascontiguousarray(mu_k), np.ascontiguousarray(mu_s),
-                  STANDARD_GRAVITY_M_S2, _check_substep(max_substep_s))
+    peak = np.empty((mu_k.shape[0], ax.shape[0]))
+    residual = np.empty_like(peak)
+    run_case_ranges(_peaks_of_blocks_2d, mu_k.shape[0], ax, ay, lengths, dt, np.ascontiguousarray(mu_k),
+                    np.ascontiguousarray(mu_s), STANDARD_GRAVITY_M_S2, _check_substep(max_substep_s), peak, residual)
+    return peak, residual
