@@ -16,12 +16,13 @@ import importlib
 _HOMES = {
     "render_html": "assess.report.render",
     "render_pdf": "assess.report.pdf",
+    "pdf_process": "assess.report.pdf",
     "fragility_curve": "assess.report.figures",
     "data_only_url_fetcher": "assess.report.pdf",
     "RefusedURLError": "assess.report.pdf",
 }
 
-__all__ = ["render_html", "render_pdf", "fragility_curve", "data_only_url_fetcher",
+__all__ = ["render_html", "render_pdf", "pdf_process", "fragility_curve", "data_only_url_fetcher",
            "RefusedURLError"]
 
 

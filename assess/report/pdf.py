@@ -156,6 +156,11 @@ def _ignore_interrupts():
     signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
+def _warm_up() -> None:
+    """In the second process, while the first one still writes the HTML: import WeasyPrint."""
+    _weasyprint()
+
+
 def second_core() -> bool:
     """Whether this process may use a second core (its CPU affinity, where the system tells it)."""
     try:
@@ -165,10 +170,18 @@ def second_core() -> bool:
 
 
 @contextlib.contextmanager
-def _second_process():
-    """A pool of one process started with 'spawn' (a fresh interpreter: no fork of this process's
-    threads), SIGINT blocked while it starts so that it never sees Ctrl-C; ended on leaving (on an
-    error or Ctrl-C too: it holds nothing that needs saving, the PDF is written by this process)."""
+def pdf_process(processes: int | None = None):
+    """A pool of one process for :func:`render_pdf`'s appendix, or None where ``processes`` (default: 2
+    where the machine has a second core, else 1) is 1.
+
+    Started with 'spawn' (a fresh interpreter: no fork of this process's threads), SIGINT blocked while
+    it starts so that it never sees Ctrl-C, and made to import WeasyPrint at once, so that a caller that
+    enters this before writing the HTML finds it ready. Ended on leaving, on an error or Ctrl-C too: it
+    holds nothing that needs saving (the PDF is written by this process).
+    """
+    if (processes if processes is not None else (2 if second_core() else 1)) < 2:
+        yield None
+        return
     context = multiprocessing.get_context("spawn")
     try:
         blocked = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
@@ -180,72 +193,88 @@ def _second_process():
         if blocked is not None:
             signal.pthread_sigmask(signal.SIG_SETMASK, blocked)
     with pool:  # terminate() on leaving
+        pool.apply_async(_warm_up)
         yield pool
 
 
-def render_pdf(html: str, *, url_fetcher=None, processes: int | None = None) -> bytes:
+def render_pdf(html: str, *, url_fetcher=None, processes: int | None = None, pool=None) -> bytes:
     """The PDF of a report's HTML, fetching nothing from the network or the disk.
 
-    A report with an appendix is rendered as two documents and merged (:func:`merge`), the appendix in
-    a second process where ``processes`` (default: 2 where the machine has a second core, else 1) is 2;
-    the bytes are the same either way. ``url_fetcher`` defaults to :func:`data_only_url_fetcher`; pass
-    one to inspect its ``refused`` list afterwards (both parts are then rendered in this process, with it).
+    A report with an appendix is rendered as two documents and joined (:func:`merge`), the appendix in
+    ``pool`` (from :func:`pdf_process`), or in a second process started here where ``processes``
+    (default: 2 where the machine has a second core, else 1) is 2; the bytes are the same either way.
+    ``url_fetcher`` defaults to :func:`data_only_url_fetcher`; pass one to inspect its ``refused`` list
+    afterwards (both parts are then rendered in this process, with it).
     """
     body, appendix = split_appendix(html)
     if appendix is None:
         return render_part(html, url_fetcher)
-    if processes is None:
-        processes = 2 if second_core() else 1
-    if processes < 2 or url_fetcher is not None:
+    if url_fetcher is not None:
         return merge(render_part(body, url_fetcher), render_part(appendix, url_fetcher))
-    with _second_process() as pool:
-        pending = pool.apply_async(render_part, (appendix,))
-        body_pdf = render_part(body)
-        appendix_pdf = pending.get()
-    return merge(body_pdf, appendix_pdf)
+    if pool is None:
+        with pdf_process(processes) as started:
+            if started is not None:
+                return render_pdf(html, pool=started)
+        return merge(render_part(body), render_part(appendix))
+    pending = pool.apply_async(render_part, (appendix,))
+    joined = Joined(render_part(body))  # reads the body's PDF while the appendix is still being drawn
+    return joined.with_appendix(pending.get())
 
 
 # --------------------------------------------------------------------------- one PDF
 def merge(body_pdf: bytes, appendix_pdf: bytes) -> bytes:
-    """One PDF of the body's pages then the appendix's, labelled 1, 2 … and A-1, A-2 …
+    """One PDF of the body's pages then the appendix's, labelled 1, 2 … and A-1, A-2 … (:class:`Joined`)."""
+    return Joined(body_pdf).with_appendix(appendix_pdf)
+
+
+class Joined:
+    """The body's PDF, read, to which :meth:`with_appendix` adds the appendix's pages.
 
     The body's links to an anchor of the appendix (``ELSEWHERE`` + name, :func:`render_part`) become
     links to that anchor's named destination; the bookmarks of the body come first, then the appendix's;
     the document's metadata and language are the body's.
     """
-    import pypdf
-    from pypdf.generic import NameObject, TextStringObject
 
-    body, appendix = pypdf.PdfReader(io.BytesIO(body_pdf)), pypdf.PdfReader(io.BytesIO(appendix_pdf))
-    writer = pypdf.PdfWriter()
-    writer.append(body)
-    writer.append(appendix)
-    names = set(writer.named_destinations) | set(appendix.named_destinations)
-    for page in writer.pages:
-        annotations = page.get("/Annots")
-        if annotations is None:
-            continue
-        kept = []
-        for reference in annotations:
-            annotation = reference.get_object()
-            action = annotation.get("/A")
-            uri = str(action.get_object().get("/URI", "")) if action is not None else ""
-            if uri.startswith(ELSEWHERE):
-                name = uri[len(ELSEWHERE):]
-                if name not in names:
-                    continue  # WeasyPrint drops a link to an anchor that is nowhere, so do we
-                del annotation["/A"]
-                annotation[NameObject("/Dest")] = TextStringObject(name)
-            kept.append(reference)
-        annotations.get_object()[:] = kept
-    count = len(body.pages)
-    writer.set_page_label(0, count - 1, "/D")
-    writer.set_page_label(count, count + len(appendix.pages) - 1, "/D", prefix=APPENDIX_PAGE_PREFIX)
-    if body.metadata:
-        writer.add_metadata(dict(body.metadata))
-    language = body.trailer["/Root"].get("/Lang")
-    if language is not None:
-        writer._root_object[NameObject("/Lang")] = language
-    output = io.BytesIO()
-    writer.write(output)
-    return output.getvalue()
+    def __init__(self, body_pdf: bytes):
+        import pypdf
+
+        self.body = pypdf.PdfReader(io.BytesIO(body_pdf))
+        self.writer = pypdf.PdfWriter()
+        self.writer.append(self.body)
+
+    def with_appendix(self, appendix_pdf: bytes) -> bytes:
+        import pypdf
+        from pypdf.generic import NameObject, TextStringObject
+
+        body, writer = self.body, self.writer
+        appendix = pypdf.PdfReader(io.BytesIO(appendix_pdf))
+        writer.append(appendix)
+        names = set(writer.named_destinations) | set(appendix.named_destinations)
+        for page in writer.pages:
+            annotations = page.get("/Annots")
+            if annotations is None:
+                continue
+            kept = []
+            for reference in annotations:
+                annotation = reference.get_object()
+                action = annotation.get("/A")
+                uri = str(action.get_object().get("/URI", "")) if action is not None else ""
+                if uri.startswith(ELSEWHERE):
+                    name = uri[len(ELSEWHERE):]
+                    if name not in names:
+                        continue  # WeasyPrint drops a link to an anchor that is nowhere, so do we
+                    del annotation["/A"]
+                    annotation[NameObject("/Dest")] = TextStringObject(name)
+                kept.append(reference)
+            annotations.get_object()[:] = kept
+        count = len(body.pages)
+        writer.set_page_label(0, count - 1, "/D")
+        writer.set_page_label(count, count + len(appendix.pages) - 1, "/D", prefix=APPENDIX_PAGE_PREFIX)
+        if body.metadata:
+            writer.add_metadata(dict(body.metadata))
+        language = body.trailer["/Root"].get("/Lang")
+        if language is not None:
+            writer._root_object[NameObject("/Lang")] = language
+        output = io.BytesIO()
+        writer.write(output)
+        return output.getvalue()
