@@ -96,10 +96,13 @@ def _descendants(pid: int) -> set[int]:
     found, todo = set(), [pid]
     while todo:
         parent = todo.pop()
-        for task in Path(f"/proc/{parent}/task").iterdir():
-            children = {int(c) for c in (task / "children").read_text().split()}
-            todo.extend(children - found)
-            found |= children
+        try:
+            tasks = list(Path(f"/proc/{parent}/task").iterdir())
+            children = {int(c) for task in tasks for c in (task / "children").read_text().split()}
+        except OSError:  # the process has just ended
+            continue
+        todo.extend(children - found)
+        found |= children
     return found
 
 
