@@ -35,7 +35,7 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: st
             if "html" in formats:
                 files["report.html"] = html.encode()
             if "pdf" in formats:
-                files["report.pdf"] = report.render_pdf(html, pool=pdf_process)
+                files["report.pdf"] = report.render_pdf(html, process=pdf_process)
     return files
 
 

@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 
 from assess.report import render_html
-from assess.report.pdf import ELSEWHERE, render_pdf, split_appendix
+from assess.report.pdf import ELSEWHERE, pdf_process, render_pdf, split_appendix
 from tests.commands import LAB, child_env
 from tests.test_report import make_result
 
@@ -90,6 +90,14 @@ def test_every_link_of_the_body_lands_on_its_item_in_the_appendix(pdf, result):
         assert anchor in targets, anchor
         page = page_of[destinations[anchor].page.idnum]
         assert labels[page].startswith("A-") and item_id in _text(reader.pages[page]), (anchor, labels[page])
+
+
+def test_a_second_process_that_dies_is_an_error_not_a_wait_without_end(html):
+    with pdf_process(processes=2) as process:
+        process.process.kill()
+        with pytest.raises(RuntimeError, match="ended without it") as raised:
+            render_pdf(html, process=process)
+    assert raised.value.__context__ is None  # not a BrokenPipeError, which the commands read as stdout's reader gone
 
 
 def _descendants(pid: int) -> set[int]:

@@ -151,16 +151,6 @@ def render_part(html: str, url_fetcher=None) -> bytes:
         return document.write_pdf()
 
 
-def _ignore_interrupts():
-    """In the second process: Ctrl-C is the first process's to act on (it ends this one)."""
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-
-
-def _warm_up() -> None:
-    """In the second process, while the first one still writes the HTML: import WeasyPrint."""
-    _weasyprint()
-
-
 def second_core() -> bool:
     """Whether this process may use a second core (its CPU affinity, where the system tells it)."""
     try:
@@ -169,39 +159,85 @@ def second_core() -> bool:
         return (os.cpu_count() or 1) > 1
 
 
+def _serve(connection) -> None:
+    """The second process: import WeasyPrint at once (while the first one still writes the HTML), then
+    draw the HTML documents it is sent, one PDF each, until the pipe closes. Ctrl-C is the first
+    process's to act on (it ends this one)."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    _weasyprint()
+    while True:
+        try:
+            html = connection.recv()
+        except EOFError:
+            return
+        connection.send_bytes(render_part(html))
+
+
+class AppendixProcess:
+    """A second process that draws the appendix (:func:`_serve`), started with 'spawn' (a fresh
+    interpreter: no fork of this process's threads), SIGINT blocked while it starts so that it never sees
+    Ctrl-C. :meth:`draw` sends it an HTML document, :meth:`pdf` waits for its PDF; a process that ended
+    without one (killed, crashed) is an error, not a wait without end."""
+
+    def __init__(self):
+        context = multiprocessing.get_context("spawn")
+        self.connection, theirs = context.Pipe()
+        self.process = context.Process(target=_serve, args=(theirs,), name="assess-pdf-appendix", daemon=True)
+        try:
+            blocked = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+        except (AttributeError, ValueError):
+            blocked = None
+        try:
+            self.process.start()
+        finally:
+            if blocked is not None:
+                signal.pthread_sigmask(signal.SIG_SETMASK, blocked)
+            theirs.close()  # only the second process holds its end: it closing is seen here as EOF
+
+    def draw(self, html: str) -> None:
+        try:
+            self.connection.send(html)
+        except OSError:  # it has ended: pdf() says so (not a BrokenPipeError, which reads as stdout's reader gone)
+            pass
+
+    def pdf(self) -> bytes:
+        try:
+            return self.connection.recv_bytes()
+        except (EOFError, OSError):
+            pass
+        self.process.join(timeout=5)
+        raise RuntimeError("the process drawing the PDF's appendix ended without it "
+                           f"(exit code {self.process.exitcode})")
+
+    def close(self) -> None:
+        """End the process (at once: it holds nothing that needs saving, the PDF is written by this one)."""
+        self.connection.close()
+        if self.process.is_alive():
+            self.process.terminate()
+        self.process.join()
+
+
 @contextlib.contextmanager
 def pdf_process(processes: int | None = None):
-    """A pool of one process for :func:`render_pdf`'s appendix, or None where ``processes`` (default: 2
-    where the machine has a second core, else 1) is 1.
-
-    Started with 'spawn' (a fresh interpreter: no fork of this process's threads), SIGINT blocked while
-    it starts so that it never sees Ctrl-C, and made to import WeasyPrint at once, so that a caller that
-    enters this before writing the HTML finds it ready. Ended on leaving, on an error or Ctrl-C too: it
-    holds nothing that needs saving (the PDF is written by this process).
-    """
+    """An :class:`AppendixProcess` for :func:`render_pdf`, or None where ``processes`` (default: 2 where
+    the machine has a second core, else 1) is 1. It imports WeasyPrint as soon as it starts, so that a
+    caller that enters this before writing the HTML finds it ready. Ended on leaving, on an error or
+    Ctrl-C too."""
     if (processes if processes is not None else (2 if second_core() else 1)) < 2:
         yield None
         return
-    context = multiprocessing.get_context("spawn")
+    process = AppendixProcess()
     try:
-        blocked = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
-    except (AttributeError, ValueError):
-        blocked = None
-    try:
-        pool = context.Pool(1, initializer=_ignore_interrupts)
+        yield process
     finally:
-        if blocked is not None:
-            signal.pthread_sigmask(signal.SIG_SETMASK, blocked)
-    with pool:  # terminate() on leaving
-        pool.apply_async(_warm_up)
-        yield pool
+        process.close()
 
 
-def render_pdf(html: str, *, url_fetcher=None, processes: int | None = None, pool=None) -> bytes:
+def render_pdf(html: str, *, url_fetcher=None, processes: int | None = None, process=None) -> bytes:
     """The PDF of a report's HTML, fetching nothing from the network or the disk.
 
     A report with an appendix is rendered as two documents and joined (:func:`merge`), the appendix in
-    ``pool`` (from :func:`pdf_process`), or in a second process started here where ``processes``
+    ``process`` (from :func:`pdf_process`), or in a second process started here where ``processes``
     (default: 2 where the machine has a second core, else 1) is 2; the bytes are the same either way.
     ``url_fetcher`` defaults to :func:`data_only_url_fetcher`; pass one to inspect its ``refused`` list
     afterwards (both parts are then rendered in this process, with it).
@@ -211,14 +247,14 @@ def render_pdf(html: str, *, url_fetcher=None, processes: int | None = None, poo
         return render_part(html, url_fetcher)
     if url_fetcher is not None:
         return merge(render_part(body, url_fetcher), render_part(appendix, url_fetcher))
-    if pool is None:
+    if process is None:
         with pdf_process(processes) as started:
             if started is not None:
-                return render_pdf(html, pool=started)
+                return render_pdf(html, process=started)
         return merge(render_part(body), render_part(appendix))
-    pending = pool.apply_async(render_part, (appendix,))
+    process.draw(appendix)
     joined = Joined(render_part(body))  # reads the body's PDF while the appendix is still being drawn
-    return joined.with_appendix(pending.get())
+    return joined.with_appendix(process.pdf())
 
 
 # --------------------------------------------------------------------------- one PDF
