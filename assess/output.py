@@ -6,6 +6,8 @@ formulas (:func:`assess.tables.neutralise_formulas`).
 """
 from __future__ import annotations
 
+import contextlib
+
 from assess import report
 from assess.fragility.stripes import fragility_files
 from assess.quantity_text import system_of
@@ -25,6 +27,21 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: st
     results of the other levels of the same run, add their sheets to summary.xlsx
     after this level's.
     """
+    # the PDF's second process starts first, so that it has imported WeasyPrint by the time the HTML is made
+    with report.pdf_process() if "pdf" in formats else contextlib.nullcontext() as pdf_process:
+        files = _tables(result, formats, units, other_levels)
+        if "html" in formats or "pdf" in formats:
+            html = report.render_html(result)
+            if "html" in formats:
+                files["report.html"] = html.encode()
+            if "pdf" in formats:
+                files["report.pdf"] = report.render_pdf(html, process=pdf_process)
+    return files
+
+
+def _tables(result: AssessmentResult, formats: tuple[str, ...], units: str | None,
+            other_levels: tuple[AssessmentResult, ...]) -> dict[str, bytes]:
+    """The files of a run that are tables (CSV, and summary.xlsx where ``formats`` has ``xlsx``)."""
     units = system_of(result.settings or {}) if units is None else system_of(units)
     summary = with_us_units(result.summary) if units == "us" else result.summary
     files = {
@@ -44,10 +61,4 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: st
                         ("floors.csv", result.floors)):
         if table is not None:
             files[name] = csv_text(table).encode()
-    if "html" in formats or "pdf" in formats:
-        html = report.render_html(result)
-        if "html" in formats:
-            files["report.html"] = html.encode()
-        if "pdf" in formats:
-            files["report.pdf"] = report.render_pdf(html)
     return files

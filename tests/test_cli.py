@@ -195,7 +195,7 @@ def test_failure_while_rendering_leaves_old_outputs_untouched(tmp_path, monkeypa
     out.mkdir()
     (out / "summary.csv").write_text("previous run\n")
 
-    def broken(html):
+    def broken(html, **_):
         raise RuntimeError("renderer crashed")
 
     import assess.report
@@ -475,7 +475,7 @@ def test_an_interrupt_a_library_swallows_still_stops_the_run(tmp_path, monkeypat
 
     import assess.report
 
-    def render_swallowing(html):
+    def render_swallowing(html, **_):
         try:
             os.kill(os.getpid(), signal.SIGINT)
             for _ in range(10**6):

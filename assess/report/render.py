@@ -1,7 +1,7 @@
-"""The risk report: HTML from a jinja2 template, PDF from that HTML with WeasyPrint.
+"""The risk report: HTML from a jinja2 template, PDF from that HTML with WeasyPrint (:mod:`assess.report.pdf`).
 
 Nothing the report shows is fetched: the stylesheet is inlined, the figures
-are SVG embedded as ``data:`` URIs, and :func:`render_pdf` renders with a URL
+are SVG, inline or embedded as ``data:`` URIs, and :func:`render_pdf` renders with a URL
 fetcher that refuses every URL that is not a ``data:`` URI. Text from the
 workbook (names, rooms, ids, motions, actions) is escaped by jinja2's
 autoescape. The report carries no timestamp, so the same result gives the
@@ -10,12 +10,8 @@ same HTML byte for byte.
 from __future__ import annotations
 
 import base64
-import contextlib
 import dataclasses
-import functools
 import math
-import os
-import urllib.parse
 from importlib import resources
 from pathlib import Path
 
@@ -34,6 +30,7 @@ from assess.report.costs import costs_context
 from assess.report.curve import curve_context
 from assess.risk_classes import rule_text
 from assess.report.method import floor_motion_route
+from assess.report.pdf import RefusedURLError, data_only_url_fetcher, decode_data_uri, render_pdf  # noqa: F401
 from assess.report.references import reference_rows
 from assess.report.sentences import (
     DASH, action_groups, after_text, case_outcomes, changes, cm_interval_text, finite, flag_groups, floor_text, format_cm,
@@ -419,92 +416,3 @@ def _with_summary(result, summary: pd.DataFrame):
 def render_html(result) -> str:
     """The risk report of ``result`` as one self-contained HTML document."""
     return make_environment().get_template(TEMPLATE_NAME).render(report_context(result))
-
-
-# --------------------------------------------------------------------------- PDF
-def _weasyprint():
-    import weasyprint
-    from weasyprint.urls import URLFetcher, URLFetcherResponse
-
-    return weasyprint, URLFetcher, URLFetcherResponse
-
-
-class RefusedURLError(ValueError):
-    """The report tried to load something that is not embedded as a ``data:`` URI."""
-
-
-@functools.cache
-def _data_only_fetcher_class():
-    _, URLFetcher, URLFetcherResponse = _weasyprint()
-
-    class DataOnlyURLFetcher(URLFetcher):
-        """A WeasyPrint URL fetcher that decodes ``data:`` URIs and refuses everything else.
-
-        It never opens a connection or a file: ``data:`` URIs are decoded here,
-        not by urllib. Every refused URL is kept in :attr:`refused` (WeasyPrint
-        catches the error, logs it and renders without the resource).
-        """
-
-        def __init__(self):
-            super().__init__(allowed_protocols=("data",), fail_on_errors=False)
-            self.refused: list[str] = []
-
-        def fetch(self, url, headers=None):
-            if not str(url).lower().startswith("data:"):
-                self.refused.append(str(url))
-                raise RefusedURLError(f"refused to fetch {url!r}: the report may only use "
-                                      "resources embedded as data: URIs")
-            media_type, body = decode_data_uri(str(url))
-            return URLFetcherResponse(url, body=body, headers={"Content-Type": media_type})
-
-    return DataOnlyURLFetcher
-
-
-def decode_data_uri(url: str) -> tuple[str, bytes]:
-    """``(media type, bytes)`` of a ``data:`` URI (RFC 2397)."""
-    header, comma, payload = url[len("data:"):].partition(",")
-    if not comma:
-        raise RefusedURLError(f"malformed data: URI {url[:60]!r}")
-    parameters = header.split(";")
-    is_base64 = bool(parameters) and parameters[-1].strip().lower() == "base64"
-    if is_base64:
-        parameters = parameters[:-1]
-    media_type = ";".join(parameters) or "text/plain;charset=US-ASCII"
-    if is_base64:
-        body = base64.b64decode(urllib.parse.unquote_to_bytes(payload), validate=False)
-    else:
-        body = urllib.parse.unquote_to_bytes(payload)
-    return media_type, body
-
-
-def data_only_url_fetcher():
-    """A new fetcher that serves ``data:`` URIs and refuses every other URL."""
-    return _data_only_fetcher_class()()
-
-
-def render_pdf(html: str, *, url_fetcher=None) -> bytes:
-    """The PDF of a report's HTML, fetching nothing from the network or the disk.
-
-    ``url_fetcher`` defaults to :func:`data_only_url_fetcher`; pass one to
-    inspect its ``refused`` list afterwards.
-    """
-    weasyprint, _, _ = _weasyprint()
-    fetcher = data_only_url_fetcher() if url_fetcher is None else url_fetcher
-    document = weasyprint.HTML(string=html, base_url=None, url_fetcher=fetcher)
-    with _fixed_build_date():
-        return document.write_pdf()
-
-
-@contextlib.contextmanager
-def _fixed_build_date():
-    """Pin the dates WeasyPrint and fontTools write into the PDF, so that the same
-    report gives the same bytes (SOURCE_DATE_EPOCH, reproducible-builds.org).
-    A value the user has set is kept; the environment is restored afterwards."""
-    previous = os.environ.get("SOURCE_DATE_EPOCH")
-    if previous is None:
-        os.environ["SOURCE_DATE_EPOCH"] = "0"
-    try:
-        yield
-    finally:
-        if previous is None:
-            os.environ.pop("SOURCE_DATE_EPOCH", None)

@@ -1,0 +1,316 @@
+"""The PDF of a report's HTML: WeasyPrint, the body and its appendix on two cores, merged with pypdf.
+
+The risk report ends in an appendix (the item-by-item blocks, between the
+``<!-- appendix -->`` and ``<!-- /appendix -->`` markers of the template)
+whose pages are numbered A-1, A-2 … as engineering reports number theirs.
+The body and the appendix are laid out as two documents, each with its own
+page numbers: the appendix in a second process while this one lays out the
+body, where the machine has a second core (:func:`render_pdf`), the one after
+the other where it has not. The two PDFs are then joined (:func:`merge`):
+the pages keep their labels (1, 2 … then A-1, A-2 …, as a PDF viewer shows
+them), the body's links to an item's block in the appendix are made to point
+there, and the bookmarks of both follow one another. The bytes depend on the
+HTML only, not on whether a second process drew the appendix.
+
+This module imports neither pandas nor matplotlib, so that the second process
+starts quickly (it imports this module and WeasyPrint, nothing else).
+
+Nothing the report shows is fetched: the stylesheet is inlined, the figures
+are SVG, inline or as ``data:`` URIs, and the URL fetcher refuses every URL
+that is not a ``data:`` URI.
+"""
+from __future__ import annotations
+
+import base64
+import contextlib
+import functools
+import io
+import multiprocessing
+import os
+import signal
+import urllib.parse
+
+#: The markers around the appendix in the report's HTML (templates/report.html.j2).
+APPENDIX_START, APPENDIX_END = "<!-- appendix -->", "<!-- /appendix -->"
+#: What the appendix's pages are labelled with before their number (A-1, A-2 …).
+APPENDIX_PAGE_PREFIX = "A-"
+#: A link of the body to an anchor of the appendix, as WeasyPrint writes it into the body's PDF, before
+#: :func:`merge` turns it into a link to the anchor's page (never left in a merged PDF).
+ELSEWHERE = "assess-appendix:"
+
+
+# --------------------------------------------------------------------------- fetching nothing
+def _weasyprint():
+    import weasyprint
+    from weasyprint.urls import URLFetcher, URLFetcherResponse
+
+    return weasyprint, URLFetcher, URLFetcherResponse
+
+
+class RefusedURLError(ValueError):
+    """The report tried to load something that is not embedded as a ``data:`` URI."""
+
+
+@functools.cache
+def _data_only_fetcher_class():
+    _, URLFetcher, URLFetcherResponse = _weasyprint()
+
+    class DataOnlyURLFetcher(URLFetcher):
+        """A WeasyPrint URL fetcher that decodes ``data:`` URIs and refuses everything else.
+
+        It never opens a connection or a file: ``data:`` URIs are decoded here,
+        not by urllib. Every refused URL is kept in :attr:`refused` (WeasyPrint
+        catches the error, logs it and renders without the resource).
+        """
+
+        def __init__(self):
+            super().__init__(allowed_protocols=("data",), fail_on_errors=False)
+            self.refused: list[str] = []
+
+        def fetch(self, url, headers=None):
+            if not str(url).lower().startswith("data:"):
+                self.refused.append(str(url))
+                raise RefusedURLError(f"refused to fetch {url!r}: the report may only use "
+                                      "resources embedded as data: URIs")
+            media_type, body = decode_data_uri(str(url))
+            return URLFetcherResponse(url, body=body, headers={"Content-Type": media_type})
+
+    return DataOnlyURLFetcher
+
+
+def decode_data_uri(url: str) -> tuple[str, bytes]:
+    """``(media type, bytes)`` of a ``data:`` URI (RFC 2397)."""
+    header, comma, payload = url[len("data:"):].partition(",")
+    if not comma:
+        raise RefusedURLError(f"malformed data: URI {url[:60]!r}")
+    parameters = header.split(";")
+    is_base64 = bool(parameters) and parameters[-1].strip().lower() == "base64"
+    if is_base64:
+        parameters = parameters[:-1]
+    media_type = ";".join(parameters) or "text/plain;charset=US-ASCII"
+    if is_base64:
+        body = base64.b64decode(urllib.parse.unquote_to_bytes(payload), validate=False)
+    else:
+        body = urllib.parse.unquote_to_bytes(payload)
+    return media_type, body
+
+
+def data_only_url_fetcher():
+    """A new fetcher that serves ``data:`` URIs and refuses every other URL."""
+    return _data_only_fetcher_class()()
+
+
+@contextlib.contextmanager
+def _fixed_build_date():
+    """Pin the dates WeasyPrint and fontTools write into the PDF, so that the same
+    report gives the same bytes (SOURCE_DATE_EPOCH, reproducible-builds.org).
+    A value the user has set is kept; the environment is restored afterwards."""
+    previous = os.environ.get("SOURCE_DATE_EPOCH")
+    if previous is None:
+        os.environ["SOURCE_DATE_EPOCH"] = "0"
+    try:
+        yield
+    finally:
+        if previous is None:
+            os.environ.pop("SOURCE_DATE_EPOCH", None)
+
+
+# --------------------------------------------------------------------------- the two parts
+def split_appendix(html: str) -> tuple[str, str | None]:
+    """``(body, appendix)``: two HTML documents, the report without its appendix and the appendix alone
+    (the same head, so the same stylesheet and title); ``(html, None)`` where there is no appendix.
+
+    >>> split_appendix("<html><head></head><body><p>a</p><!-- appendix --><p>b</p><!-- /appendix --></body></html>")
+    ('<html><head></head><body><p>a</p></body></html>', '<html><head></head><body><p>b</p></body></html>')
+    """
+    start = html.find(APPENDIX_START)
+    end = html.find(APPENDIX_END, start + 1)
+    body_open = html.find("<body")
+    if start < 0 or end < 0 or not 0 <= body_open < start:
+        return html, None
+    body_open = html.index(">", body_open) + 1
+    body_close = html.rfind("</body>")
+    if body_close < end:
+        return html, None
+    appendix = html[start + len(APPENDIX_START):end]
+    return html[:start] + html[end + len(APPENDIX_END):], html[:body_open] + appendix + html[body_close:]
+
+
+def render_part(html: str, url_fetcher=None) -> bytes:
+    """The PDF of one HTML document. A link to an anchor the document does not hold (one in the
+    appendix) is written as a link to ``ELSEWHERE`` + the anchor, for :func:`merge` to resolve."""
+    weasyprint, _, _ = _weasyprint()
+    fetcher = data_only_url_fetcher() if url_fetcher is None else url_fetcher
+    with _fixed_build_date():
+        document = weasyprint.HTML(string=html, base_url=None, url_fetcher=fetcher).render()
+        anchors = {name for page in document.pages for name in page.anchors}
+        for page in document.pages:
+            page.links = [("external", ELSEWHERE + target, rectangle, box)
+                          if kind == "internal" and target not in anchors else (kind, target, rectangle, box)
+                          for kind, target, rectangle, box in page.links]
+        return document.write_pdf()
+
+
+def second_core() -> bool:
+    """Whether this process may use a second core (its CPU affinity, where the system tells it)."""
+    try:
+        return len(os.sched_getaffinity(0)) > 1
+    except AttributeError:  # macOS, Windows
+        return (os.cpu_count() or 1) > 1
+
+
+def _serve(connection) -> None:
+    """The second process: import WeasyPrint at once (while the first one still writes the HTML), then
+    draw the HTML documents it is sent, one PDF each, until the pipe closes. Ctrl-C is the first
+    process's to act on (it ends this one)."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    _weasyprint()
+    while True:
+        try:
+            html = connection.recv()
+        except EOFError:
+            return
+        connection.send_bytes(render_part(html))
+
+
+class AppendixProcess:
+    """A second process that draws the appendix (:func:`_serve`), started with 'spawn' (a fresh
+    interpreter: no fork of this process's threads), SIGINT blocked while it starts so that it never sees
+    Ctrl-C. :meth:`draw` sends it an HTML document, :meth:`pdf` waits for its PDF; a process that ended
+    without one (killed, crashed) is an error, not a wait without end."""
+
+    def __init__(self):
+        context = multiprocessing.get_context("spawn")
+        self.connection, theirs = context.Pipe()
+        self.process = context.Process(target=_serve, args=(theirs,), name="assess-pdf-appendix", daemon=True)
+        try:
+            blocked = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+        except (AttributeError, ValueError):
+            blocked = None
+        try:
+            self.process.start()
+        finally:
+            if blocked is not None:
+                signal.pthread_sigmask(signal.SIG_SETMASK, blocked)
+            theirs.close()  # only the second process holds its end: it closing is seen here as EOF
+
+    def draw(self, html: str) -> None:
+        try:
+            self.connection.send(html)
+        except OSError:  # it has ended: pdf() says so (not a BrokenPipeError, which reads as stdout's reader gone)
+            pass
+
+    def pdf(self) -> bytes:
+        try:
+            return self.connection.recv_bytes()
+        except (EOFError, OSError):
+            pass
+        self.process.join(timeout=5)
+        raise RuntimeError("the process drawing the PDF's appendix ended without it "
+                           f"(exit code {self.process.exitcode})")
+
+    def close(self) -> None:
+        """End the process (at once: it holds nothing that needs saving, the PDF is written by this one)."""
+        self.connection.close()
+        if self.process.is_alive():
+            self.process.terminate()
+        self.process.join()
+
+
+@contextlib.contextmanager
+def pdf_process(processes: int | None = None):
+    """An :class:`AppendixProcess` for :func:`render_pdf`, or None where ``processes`` (default: 2 where
+    the machine has a second core, else 1) is 1. It imports WeasyPrint as soon as it starts, so that a
+    caller that enters this before writing the HTML finds it ready. Ended on leaving, on an error or
+    Ctrl-C too."""
+    if (processes if processes is not None else (2 if second_core() else 1)) < 2:
+        yield None
+        return
+    process = AppendixProcess()
+    try:
+        yield process
+    finally:
+        process.close()
+
+
+def render_pdf(html: str, *, url_fetcher=None, processes: int | None = None, process=None) -> bytes:
+    """The PDF of a report's HTML, fetching nothing from the network or the disk.
+
+    A report with an appendix is rendered as two documents and joined (:func:`merge`), the appendix in
+    ``process`` (from :func:`pdf_process`), or in a second process started here where ``processes``
+    (default: 2 where the machine has a second core, else 1) is 2; the bytes are the same either way.
+    ``url_fetcher`` defaults to :func:`data_only_url_fetcher`; pass one to inspect its ``refused`` list
+    afterwards (both parts are then rendered in this process, with it).
+    """
+    body, appendix = split_appendix(html)
+    if appendix is None:
+        return render_part(html, url_fetcher)
+    if url_fetcher is not None:
+        return merge(render_part(body, url_fetcher), render_part(appendix, url_fetcher))
+    if process is None:
+        with pdf_process(processes) as started:
+            if started is not None:
+                return render_pdf(html, process=started)
+        return merge(render_part(body), render_part(appendix))
+    process.draw(appendix)
+    joined = Joined(render_part(body))  # reads the body's PDF while the appendix is still being drawn
+    return joined.with_appendix(process.pdf())
+
+
+# --------------------------------------------------------------------------- one PDF
+def merge(body_pdf: bytes, appendix_pdf: bytes) -> bytes:
+    """One PDF of the body's pages then the appendix's, labelled 1, 2 … and A-1, A-2 … (:class:`Joined`)."""
+    return Joined(body_pdf).with_appendix(appendix_pdf)
+
+
+class Joined:
+    """The body's PDF, read, to which :meth:`with_appendix` adds the appendix's pages.
+
+    The body's links to an anchor of the appendix (``ELSEWHERE`` + name, :func:`render_part`) become
+    links to that anchor's named destination; the bookmarks of the body come first, then the appendix's;
+    the document's metadata and language are the body's.
+    """
+
+    def __init__(self, body_pdf: bytes):
+        import pypdf
+
+        self.body = pypdf.PdfReader(io.BytesIO(body_pdf))
+        self.writer = pypdf.PdfWriter()
+        self.writer.append(self.body)
+
+    def with_appendix(self, appendix_pdf: bytes) -> bytes:
+        import pypdf
+        from pypdf.generic import NameObject, TextStringObject
+
+        body, writer = self.body, self.writer
+        appendix = pypdf.PdfReader(io.BytesIO(appendix_pdf))
+        writer.append(appendix)
+        names = set(writer.named_destinations) | set(appendix.named_destinations)
+        for page in writer.pages:
+            annotations = page.get("/Annots")
+            if annotations is None:
+                continue
+            kept = []
+            for reference in annotations:
+                annotation = reference.get_object()
+                action = annotation.get("/A")
+                uri = str(action.get_object().get("/URI", "")) if action is not None else ""
+                if uri.startswith(ELSEWHERE):
+                    name = uri[len(ELSEWHERE):]
+                    if name not in names:
+                        continue  # WeasyPrint drops a link to an anchor that is nowhere, so do we
+                    del annotation["/A"]
+                    annotation[NameObject("/Dest")] = TextStringObject(name)
+                kept.append(reference)
+            annotations.get_object()[:] = kept
+        count = len(body.pages)
+        writer.set_page_label(0, count - 1, "/D")
+        writer.set_page_label(count, count + len(appendix.pages) - 1, "/D", prefix=APPENDIX_PAGE_PREFIX)
+        if body.metadata:
+            writer.add_metadata(dict(body.metadata))
+        language = body.trailer["/Root"].get("/Lang")
+        if language is not None:
+            writer._root_object[NameObject("/Lang")] = language
+        output = io.BytesIO()
+        writer.write(output)
+        return output.getvalue()

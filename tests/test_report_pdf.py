@@ -1,0 +1,160 @@
+"""report.pdf in two parts (assess/report/pdf.py): the body and Appendix A (item by item) laid out apart,
+on two cores where there are two, and joined into one file whose page labels, links and bytes do not depend
+on how many processes drew it."""
+from __future__ import annotations
+
+import io
+import os
+import re
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from assess.report import render_html
+from assess.report.pdf import ELSEWHERE, pdf_process, render_pdf, split_appendix
+from tests.commands import LAB, child_env
+from tests.test_report import make_result
+
+pypdf = pytest.importorskip("pypdf")
+
+
+@pytest.fixture(scope="module")
+def result():
+    return make_result()
+
+
+@pytest.fixture(scope="module")
+def html(result) -> str:
+    return render_html(result)
+
+
+@pytest.fixture(scope="module")
+def pdf(html) -> bytes:
+    return render_pdf(html, processes=2)
+
+
+def test_the_bytes_do_not_depend_on_the_processes_that_drew_them(html, pdf):
+    assert render_pdf(html, processes=1) == pdf
+    assert render_pdf(html, processes=2) == pdf
+
+
+def test_the_appendix_holds_every_item_block_and_the_body_none(html, result):
+    body, appendix = split_appendix(html)
+    freestanding = result.summary[result.summary["risk"] != "anchored"]
+    assert appendix.count('<div class="item-detail"') == len(freestanding) > 0
+    assert '<div class="item-detail"' not in body and 'id="details"' not in body
+    assert body.count("<style>") == appendix.count("<style>") == 1  # the same stylesheet heads both
+    assert split_appendix("<html><body><p>no appendix</p></body></html>")[1] is None
+
+
+def _text(page) -> str:
+    return " ".join(page.extract_text().split())
+
+
+def test_pages_are_labelled_as_their_footers_number_them(pdf):
+    reader = pypdf.PdfReader(io.BytesIO(pdf))
+    labels = reader.page_labels
+    body = [label for label in labels if not label.startswith("A-")]
+    appendix = [label for label in labels if label.startswith("A-")]
+    assert body == [str(k) for k in range(1, len(body) + 1)] and labels[:len(body)] == body
+    assert appendix == [f"A-{k}" for k in range(1, len(appendix) + 1)] and len(appendix) >= 1
+    for page, label in zip(reader.pages, labels):
+        total = len(appendix) if label.startswith("A-") else len(body)
+        prefix = "A-" if label.startswith("A-") else ""
+        assert f"Page {label} of {prefix}{total}" in _text(page), label
+    assert "Appendix A. Item by item" in _text(reader.pages[len(body)])
+    # the appendix's pages are headed as the body's (not its first: the report's title page)
+    assert "earthquake risk report" in _text(reader.pages[len(body)])
+
+
+def test_every_link_of_the_body_lands_on_its_item_in_the_appendix(pdf, result):
+    reader = pypdf.PdfReader(io.BytesIO(pdf))
+    labels = reader.page_labels
+    page_of = {page.indirect_reference.idnum: k for k, page in enumerate(reader.pages)}
+    destinations = reader.named_destinations
+    targets = set()
+    for page in reader.pages:
+        for reference in page.get("/Annots", []):
+            annotation = reference.get_object()
+            action = annotation.get("/A")
+            assert action is None or not str(action.get_object().get("/URI", "")).startswith(ELSEWHERE)
+            if "/Dest" in annotation:
+                assert str(annotation["/Dest"]) in destinations, annotation["/Dest"]
+                targets.add(str(annotation["/Dest"]))
+    for item_id in result.summary.loc[result.summary["risk"] == "high", "id"].astype(str):
+        anchor = "item-" + re.sub(r"[^A-Za-z0-9_-]", "_", item_id)
+        assert anchor in targets, anchor
+        page = page_of[destinations[anchor].page.idnum]
+        assert labels[page].startswith("A-") and item_id in _text(reader.pages[page]), (anchor, labels[page])
+
+
+def test_a_second_process_that_dies_is_an_error_not_a_wait_without_end(html):
+    with pdf_process(processes=2) as process:
+        process.process.kill()
+        with pytest.raises(RuntimeError, match="ended without it") as raised:
+            render_pdf(html, process=process)
+    assert raised.value.__context__ is None  # not a BrokenPipeError, which the commands read as stdout's reader gone
+
+
+def _descendants(pid: int) -> set[int]:
+    found, todo = set(), [pid]
+    while todo:
+        parent = todo.pop()
+        try:
+            tasks = list(Path(f"/proc/{parent}/task").iterdir())
+            children = {int(c) for task in tasks for c in (task / "children").read_text().split()}
+        except OSError:  # the process has just ended
+            continue
+        todo.extend(children - found)
+        found |= children
+    return found
+
+
+def _spawned_child(pid: int) -> bool:
+    for child in _descendants(pid):
+        try:
+            if b"spawn_main" in Path(f"/proc/{child}/cmdline").read_bytes():
+                return True
+        except OSError:
+            pass
+    return False
+
+
+@pytest.mark.skipif(not Path("/proc/self/task").exists() or len(os.sched_getaffinity(0)) < 2,
+                    reason="needs Linux's /proc and a second core (the second process)")
+def test_ctrl_c_while_two_processes_draw_the_pdf_exits_130_and_leaves_no_process(tmp_path):
+    """Ctrl-C at the terminal reaches the whole process group, the second process too: the run exits 130 in
+    one line, no traceback from either process, the folder as it was, and no process of the run is left."""
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "summary.csv").write_text("previous\n")
+    process = subprocess.Popen([sys.executable, "-m", "assess", str(LAB), "--hazard", "2in50", "--out", str(out)],
+                               cwd=tmp_path, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                               env=child_env(), start_new_session=True)
+    try:
+        deadline = time.monotonic() + 300
+        while not _spawned_child(process.pid):
+            assert process.poll() is None and time.monotonic() < deadline, "the second process never started"
+            time.sleep(0.05)
+        time.sleep(1.5)  # into the drawing
+        os.killpg(process.pid, signal.SIGINT)
+        stderr = process.communicate(timeout=300)[1]
+    finally:
+        if process.poll() is None:
+            os.killpg(process.pid, signal.SIGKILL)
+    lines = stderr.splitlines()
+    assert process.returncode == 130, stderr
+    assert lines[-1] == "assess: interrupted; nothing was written." and "Traceback" not in stderr, stderr
+    assert sorted(p.name for p in out.iterdir()) == ["summary.csv"] and (out / "summary.csv").read_text() == "previous\n"
+    deadline = time.monotonic() + 10
+    while True:  # the second process (and multiprocessing's resource tracker) end with the run
+        try:
+            os.killpg(process.pid, 0)
+        except ProcessLookupError:
+            break
+        assert time.monotonic() < deadline, "a process of the run outlived it"
+        time.sleep(0.1)
