@@ -159,6 +159,28 @@ def _rk4(theta, w, side, alpha, accel_start, slope, h):
 
 
 @njit(cache=True)
+def _first_root_of_quadratic(a, b, c, h):
+    """Smallest root in (0, h) of a x² + b x + c (−1 if there is none).
+
+    Taylor's quadratic of side·θ − target about the start of a step, a first guess at
+    the event that does not fall back on the wrong side of the peak of a small rock, as
+    the chord does (Newton from there would step away from the root).
+    """
+    best = -1.0
+    if a == 0.0:
+        if b != 0.0:
+            best = -c / b
+    else:
+        disc = b * b - 4.0 * a * c
+        if disc >= 0.0:
+            q = -0.5 * (b + np.copysign(np.sqrt(disc), b))
+            for x in (q / a, c / q if q != 0.0 else -1.0):
+                if 0.0 < x < h and (best < 0.0 or x < best):
+                    best = x
+    return best if 0.0 < best < h else -1.0
+
+
+@njit(cache=True)
 def _locate(theta, w, side, alpha, accel_start, slope, h, g_end, target):
     """Step length in (0, h] at which side·θ = target, by safeguarded Newton.
 
@@ -167,7 +189,9 @@ def _locate(theta, w, side, alpha, accel_start, slope, h, g_end, target):
     """
     g_lo = side * theta - target
     lo, hi = 0.0, h
-    tau = h * g_lo / (g_lo - g_end)
+    tau = _first_root_of_quadratic(0.5 * side * _rhs(theta, side, accel_start, alpha), side * w, g_lo, h)
+    if not (lo < tau < hi):  # the chord
+        tau = h * g_lo / (g_lo - g_end)
     if not (lo < tau < hi):
         tau = 0.5 * h
     th, wt = theta, w
@@ -182,6 +206,12 @@ def _locate(theta, w, side, alpha, accel_start, slope, h, g_end, target):
             hi = tau
         dg = side * wt
         tau_new = tau - g / dg if dg != 0.0 else 0.5 * (lo + hi)
+        if abs(tau_new - tau) <= 1e-15 * h:  # converged (before the bracket, whose end tau now is)
+            tau_new = min(max(tau_new, lo), hi)
+            if tau_new != tau:
+                tau = tau_new
+                th, wt = _rk4(theta, w, side, alpha, accel_start, slope, tau)
+            break
         if not (lo < tau_new < hi):
             tau_new = 0.5 * (lo + hi)
         if abs(tau_new - tau) <= 1e-15 * h:
