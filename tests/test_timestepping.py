@@ -325,9 +325,8 @@ def test_froude_similitude(records, factor):
 def test_train_of_small_rocks_against_event_driven_solver(records):
     """Kobe Takatori × 0.6, first 12 s, on a 1.8 m block with b/h = 0.3, μ = 0.33: ~230 small rocks.
 
-    The rocking kernel finds θmax/α = 0.0272 (0.0260 with steps p·h ≤ 0.01) and a pivot friction
-    demand of 0.317 < μ: pure rocking, two trains of small rocks near the uplift threshold, rest
-    between and after. The
+    The rocking kernel finds θmax/α = 0.0260 and a pivot friction demand of 0.317 < μ: pure
+    rocking, two trains of small rocks near the uplift threshold, rest between and after. The
     first version of this solver gained energy at the impacts of such trains (a corner arriving in
     the second half of a step was carried past the floor and projected back, keeping the energy
     gained) and overturned the block at 9.2 s; with steps of dt/40 its peak was 4 times too small,

@@ -44,9 +44,9 @@ with θ'' = d²θ/d(pt)². The kernel reports the largest |F|/N and the smallest
 N/(mg) over the rocking phases, evaluated at the end of every integration step
 and just before and just after every impact, where |θ̇| and with it the
 centripetal term w² peak (at the step ends alone, the largest demand was
-missed by 1.5 % in one run of 100 at p·h ≤ 0.01 and by 4 % at p·h ≤ 0.1, against
-0.002 % with these, on the runs of the comparison below); a caller that must be sure the block rocked
-compares them with μ_s and 0 (:mod:`assess.mechanics.engine`). A Housner
+missed by 1.5 % in one run of 100 with steps p·h ≤ 0.01, against 0.001 % with
+these, on the runs of the comparison below); a caller that must be sure the
+block rocked compares them with μ_s and 0 (:mod:`assess.mechanics.engine`). A Housner
 impact needs a friction impulse ratio of :math:`(1-e)/((1+e)\\tan\\alpha)`,
 which never exceeds tan α (for κ ≥ 1), so a block with μ_s ≥ tan α cannot slip
 at an impact.
@@ -69,7 +69,10 @@ sample interval is integrated with the classical Runge-Kutta scheme in the
 dimensionless time τ = p t, with sub-steps of at most
 ``MAX_STEP_DIMENSIONLESS`` (so p·h ≤ 0.1: one step per sample for most
 blocks and records, p·dt being 0.01-0.08 for blocks of 0.8-2.4 m under
-records sampled at 0.005-0.02 s). Impacts (θ = 0), overturning
+records sampled at 0.005-0.02 s) and, in a small rock, of at most
+``ROCK_STEP_FRACTION`` = 0.1 of its time scale
+:math:`\\sqrt{2|\\theta|/\\alpha + (\\dot\\theta/p\\alpha)^2}` (its duration is
+about twice that, in τ), down to 1/16 of the first bound. Impacts (θ = 0), overturning
 (|θ| = π/2) and uplift (|ü_g| = g tan α, from the linear input) are located
 inside a step (the first two by safeguarded Newton iteration on the length of
 a single Runge-Kutta step), and the remainder of the step is integrated
@@ -80,11 +83,14 @@ exactly: a block with all lengths scaled by λ under the same accelerations
 compressed in time by √λ gives the same θ/α history. Against steps of
 p·h ≤ 0.002, on 300 blocks (0.8-2.4 m, b/h 0.17-1.5) under the 18 pyslammer
 records at their scale and three times it (10,800 runs, 5,900 of them rocking
-to the end), θmax/α differs by 7e-9 in the median run, 6e-4 in one run of
-100, and by more than 0.01 in 21 runs (9 at p·h ≤ 0.01, which differs by up
-to 0.43 itself), long trains of small rocks or rocks past 0.6α whose outcome
-any step moves; 8 overturning verdicts of 1,892 differ (6 at
-p·h ≤ 0.01), every one after a rock to 0.67α-1.08α.
+to the end), θmax/α differs by 3e-9 in the median run, 4e-5 in one run of
+100 and by more than 0.01 in 9 (with steps of p·h ≤ 0.01 alone: 2e-10, 2e-5,
+9; of 0.1 alone: 7e-9, 6e-4, 21), long trains of small rocks or rocks past
+0.6α whose outcome any step moves (p·h ≤ 0.01 moves it by up to 0.43); 6
+overturning verdicts of 1,892 differ (6 and 8), every one after a rock to
+0.65α-1.0α. On the Kobe train of small rocks of
+:mod:`assess.mechanics.timestepping`, θmax/α is 0.02600 as by the
+event-driven solver (0.02602 with steps of 0.01 alone, 0.0272 with 0.1 alone).
 
 References
 ----------
@@ -114,6 +120,11 @@ from .geometry import housner_restitution
 
 #: Largest Runge-Kutta step in dimensionless time p·h [-].
 MAX_STEP_DIMENSIONLESS = 0.1
+#: Largest Runge-Kutta step as a fraction of the time scale of the current rock,
+#: :math:`\sqrt{2|\theta|/\alpha + (\dot\theta/p\alpha)^2}` [-].
+ROCK_STEP_FRACTION = 0.1
+#: Most times a step is cut for a small rock [-].
+MAX_REFINEMENT = 16
 #: An impact leaving |θ̇| below this multiple of p·α, with the floor pushing the
 #: block back, puts the block at rest [-].
 REST_ANGULAR_VELOCITY_RATIO = 1e-5
@@ -353,6 +364,11 @@ def _simulate(accel_g, dt_s, n_tail, alpha, p, e, kappa, theta_init, theta_dot_i
             s_end = min(s_end, dtau)
             h = s_end - s
             full = True
+            h_rock = max(ROCK_STEP_FRACTION * np.sqrt(2.0 * abs(theta) / alpha + (w / alpha) ** 2),
+                         h_nominal / MAX_REFINEMENT)
+            if h_rock < h:  # a small rock: steps of at most a fraction of its time scale
+                h = h_rock
+                full = False
             if theta == 0.0 and w != 0.0:
                 # leaving the floor: do not step over a whole micro-rock
                 thdd0 = _rhs(0.0, side, accel_s, alpha)

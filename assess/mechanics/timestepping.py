@@ -81,8 +81,8 @@ time by √λ takes the same steps (Froude similitude to round-off).
 which the block rocks on one sticking corner with the other off the floor,
 the interval is first integrated in one step of the rocking kernel's
 equation of motion and Runge-Kutta scheme (:mod:`assess.mechanics.rocking`;
-for a block with p·dt ≤ its largest step, 0.1, and a rock whose time scale τ
-above is at least p·dt/``RIGID_ROCK_STEP_FRACTION``, 0.2). The step is kept
+where the kernel itself would take the interval in one step: p·dt at most
+0.1 and at most 0.1 τ, τ the time scale of the rock above). The step is kept
 if the other corner stays off the floor (θ keeps its sign on the cubic
 Hermite interpolant of the step), the block does not reach π/2, and at the
 end of the step the pivot's normal force is positive and its friction within
@@ -92,8 +92,8 @@ Such phases, ~94 % of the steps before, then take one step a sample instead
 of 6-40. On the 387 runs of 300 blocks (0.8-2.4 m, b/h 0.17-1.5, μ 0.1-0.7)
 under the 18 pyslammer records that the rocking kernel hands on, against the
 event-driven solver: θmax/α within 1e-6 in the median run, 7e-3 in one of 100,
-0.020 at most (Moreau–Jean steps alone: 2e-6, 0.016, 0.036), sliding within
-0.5 mm in one of 100 and 2 mm at most (0.7 mm, 1.7 mm), overturning verdicts
+0.022 at most (Moreau–Jean steps alone: 2e-6, 0.016, 0.036), sliding within
+0.4 mm in one of 100 and 0.7 mm at most (0.7 mm, 1.7 mm), overturning verdicts
 the same in all 387 (one differs with the steps alone). The steps alone are
 taken when ``time_step_s`` is given.
 
@@ -142,6 +142,7 @@ from .contact import (CODE_REST, CODE_ROCK, CODE_SLIDE, OPEN, SLIP_POS, STICK, V
                       solve_contacts, step_mode)
 from .geometry import STANDARD_GRAVITY_M_S2
 from .rocking import MAX_STEP_DIMENSIONLESS as ROCKING_STEP_DIMENSIONLESS
+from .rocking import ROCK_STEP_FRACTION as ROCKING_STEP_FRACTION
 from .rocking import _hermite_extremum, _pivot_forces, _rk4
 
 #: Largest time step in dimensionless time, p·Δt [-].
@@ -159,9 +160,6 @@ _MAX_ARRIVALS_PER_STEP = 4
 ROCK_STEP_FRACTION = 0.03
 #: Most steps a step is cut into for small rocks [-].
 MAX_REFINEMENT = 16
-#: A sample interval on one sticking pivot is integrated by the rocking equation if p·dt is at
-#: most this fraction of the rock's time scale (as for ``ROCK_STEP_FRACTION``) [-].
-RIGID_ROCK_STEP_FRACTION = 0.2
 _HALF_PI = 0.5 * np.pi
 
 
@@ -184,7 +182,7 @@ def _rocking_step(q, hs, a_start, a_end, b, hcg, alpha, p, kappa, mu_s, act_tol)
     if theta == 0.0 or corner_gap_at(q[1], q[6], q[7], -xi, hcg) <= act_tol:
         return -1.0
     tau = p * hs
-    if tau > RIGID_ROCK_STEP_FRACTION * np.sqrt(2.0 * abs(theta) / alpha + (w / alpha) ** 2):
+    if tau > ROCKING_STEP_FRACTION * np.sqrt(2.0 * abs(theta) / alpha + (w / alpha) ** 2):
         return -1.0
     th1, w1 = _rk4(theta, w, side, alpha, a_start, (a_end - a_start) / tau, tau)
     if not (0.0 < side * th1 < _HALF_PI):
