@@ -79,23 +79,25 @@ time by √λ takes the same steps (Froude similitude to round-off).
 
 **Rocking on one sticking pivot.** At the start of a sample interval in
 which the block rocks on one sticking corner with the other off the floor,
-the interval is first integrated in one step of the rocking kernel's
-equation of motion and Runge-Kutta scheme (:mod:`assess.mechanics.rocking`;
-where the kernel itself would take the interval in one step: p·dt at most
-0.1 and at most 0.1 τ, τ the time scale of the rock above). The step is kept
-if the other corner stays off the floor (θ keeps its sign on the cubic
-Hermite interpolant of the step), the block does not reach π/2, and at the
-end of the step the pivot's normal force is positive and its friction within
-μs N (the kernel's pivot forces); otherwise the Moreau–Jean steps take the
-interval, locating the arrival, the slip onset or the lift-off as above.
-Such phases, ~94 % of the steps before, then take one step a sample instead
-of 6-40. On the 387 runs of 300 blocks (0.8-2.4 m, b/h 0.17-1.5, μ 0.1-0.7)
-under the 18 pyslammer records that the rocking kernel hands on, against the
-event-driven solver: θmax/α within 1e-6 in the median run, 7e-3 in one of 100,
-0.022 at most (Moreau–Jean steps alone: 2e-6, 0.016, 0.036), sliding within
-0.4 mm in one of 100 and 0.7 mm at most (0.7 mm, 1.7 mm), overturning verdicts
-the same in all 387 (one differs with the steps alone). The steps alone are
-taken when ``time_step_s`` is given.
+the interval is first integrated by the rocking kernel's equation of motion
+and Runge-Kutta steps (:mod:`assess.mechanics.rocking`, for a block with p·dt
+at most its largest step, 0.1; steps of at most 0.1 of the time scale τ of
+the rock above, as the kernel takes them). The interval is kept if after
+every step the other corner has stayed off the floor (θ keeps its sign on the
+cubic Hermite interpolant of the step), the block has not reached π/2, and
+the pivot's normal force is positive and its friction within μs N (the
+kernel's pivot forces); otherwise the Moreau–Jean steps take the interval,
+locating the arrival, the slip onset or the lift-off as above. Such phases,
+~94 % of the steps before, then take one step a sample (more in small rocks)
+instead of 6-40. Against the event-driven solver, on the runs that the
+rocking kernel hands on of 600 blocks (0.8-2.4 m, b/h 0.17-1.5, μ 0.1-0.7)
+under the 18 pyslammer records (387 and 363 runs, two draws): θmax/α within
+1e-6 and 7e-7 in the median run, 0.011 and 0.002 in one of 100, 0.022 and
+0.013 at most (Moreau–Jean steps alone: 2e-6 and 1e-6, 0.016 and 0.003,
+0.036 and 0.013), sliding within 0.5 mm in one of 100 and 0.7 mm at most
+(steps alone 0.7 mm, 1.7 mm), overturning verdicts the same in all 750 (two
+differ with the steps alone). The steps alone are taken when ``time_step_s``
+is given.
 
 **Trains of small rocks.** A block rocking a little near the uplift threshold
 makes long trains of micro-rocks (the Kobe Takatori record at 0.6 on a 1.8 m
@@ -107,8 +109,9 @@ is an impulse at the start of the next step from a consistent velocity, a
 single corner is projected vertically, the position update is exact for
 linear forcing, slip onsets are located and small rocks get shorter steps.
 The solver then converges at second order to the event-driven solver
-(θmax/α 0.02606 at the default step, 0.02600 with steps of dt/1000, the
-event-driven 0.02600, same rests). Such responses stay ill-conditioned: the
+(θmax/α 0.02606 at the default step without the rocking steps above, 0.02600
+with steps of dt/1000, the event-driven 0.02600, same rests; with them
+0.02599). Such responses stay ill-conditioned: the
 event-driven θmax/α moves by 3 % when the record is scaled by 1 ± 1e-7, by a
 factor 2 at 1 ± 1e-5, and the block overturns at 1 − 1e-4; a comparison on
 them is meaningful to that extent only.
@@ -142,6 +145,7 @@ from .contact import (CODE_REST, CODE_ROCK, CODE_SLIDE, OPEN, SLIP_POS, STICK, V
                       solve_contacts, step_mode)
 from .geometry import STANDARD_GRAVITY_M_S2
 from .rocking import MAX_STEP_DIMENSIONLESS as ROCKING_STEP_DIMENSIONLESS
+from .rocking import MAX_REFINEMENT as _RIGID_MAX_REFINEMENT
 from .rocking import ROCK_STEP_FRACTION as ROCKING_STEP_FRACTION
 from .rocking import _hermite_extremum, _pivot_forces, _rk4
 
@@ -166,40 +170,50 @@ _HALF_PI = 0.5 * np.pi
 # --------------------------------------------------------------------------- time loop
 @njit(cache=True)
 def _rocking_step(q, hs, a_start, a_end, b, hcg, alpha, p, kappa, mu_s, act_tol):
-    """One step of the exact rocking equation over ``hs`` [s] for a block on one sticking pivot.
+    """The exact rocking equation over ``hs`` [s] for a block on one sticking pivot.
 
-    The rocking kernel's Runge-Kutta step (:mod:`assess.mechanics.rocking`) in τ = p t
-    from θ, θ̇ of ``q``, the pivot (the corner on the side of θ) held where it is; taken
-    only if the other corner stays off the floor (the cubic Hermite interpolant of the
-    step keeps θ on its side), |θ| < π/2, and at the end of the step the pivot's normal
-    force is positive and its friction within μs N. Then ``q`` is updated and the
-    step's largest |θ| returned; else ``q`` is left as it was and −1 returned, for the
-    Moreau–Jean steps to take the interval with its events.
+    The rocking kernel's Runge-Kutta steps (:mod:`assess.mechanics.rocking`) in τ = p t,
+    as the kernel takes them (at most ``ROCK_STEP_FRACTION`` of the rock's time scale,
+    down to 1/16 of p·hs), from θ, θ̇ of ``q``, the pivot (the corner on the side of θ)
+    held where it is; taken only if after every step the other corner has stayed off
+    the floor (the cubic Hermite interpolant of the step keeps θ on its side),
+    |θ| < π/2, and the pivot's normal force is positive and its friction within μs N.
+    Then ``q`` is updated and the largest |θ| returned; else ``q`` is left as it was
+    and −1 returned, for the Moreau–Jean steps to take the interval with its events.
     """
     theta, w = q[2], q[5] / p
     side = 1.0 if theta > 0.0 else -1.0
     xi = side * b
     if theta == 0.0 or corner_gap_at(q[1], q[6], q[7], -xi, hcg) <= act_tol:
         return -1.0
-    tau = p * hs
-    if tau > ROCKING_STEP_FRACTION * np.sqrt(2.0 * abs(theta) / alpha + (w / alpha) ** 2):
-        return -1.0
-    th1, w1 = _rk4(theta, w, side, alpha, a_start, (a_end - a_start) / tau, tau)
-    if not (0.0 < side * th1 < _HALF_PI):
-        return -1.0
-    peak = abs(th1)
-    if w * w1 < 0.0:
-        thp = _hermite_extremum(theta, w, th1, w1, tau)[1]
-        if side * thp <= 0.0:
+    tau_all = p * hs
+    slope = (a_end - a_start) / tau_all
+    done, peak = 0.0, abs(theta)
+    for _ in range(4 * _RIGID_MAX_REFINEMENT):
+        if tau_all - done <= 1e-12 * tau_all:
+            break
+        h = min(tau_all - done, max(ROCKING_STEP_FRACTION * np.sqrt(2.0 * abs(theta) / alpha + (w / alpha) ** 2),
+                                    tau_all / _RIGID_MAX_REFINEMENT))
+        accel = a_start + slope * done
+        th1, w1 = _rk4(theta, w, side, alpha, accel, slope, h)
+        if not (0.0 < side * th1 < _HALF_PI):
             return -1.0
-        peak = max(peak, abs(thp))
-    friction, normal = _pivot_forces(th1, w1, side, a_end, alpha, kappa)
-    if not (normal > 0.0 and abs(friction) <= mu_s * normal):
+        if w * w1 < 0.0:
+            thp = _hermite_extremum(theta, w, th1, w1, h)[1]
+            if side * thp <= 0.0:
+                return -1.0
+            peak = max(peak, abs(thp))
+        friction, normal = _pivot_forces(th1, w1, side, accel + slope * h, alpha, kappa)
+        if not (normal > 0.0 and abs(friction) <= mu_s * normal):
+            return -1.0
+        theta, w, done = th1, w1, done + h
+        peak = max(peak, abs(theta))
+    else:
         return -1.0
     pivot_x = corner_x_at(q[0], q[6], q[7], xi, hcg)
-    sin_t, cos_t = np.sin(th1), np.cos(th1)
-    rate = w1 * p
-    q[0], q[1], q[2] = pivot_x - xi * cos_t + hcg * sin_t, xi * sin_t + hcg * cos_t, th1
+    sin_t, cos_t = np.sin(theta), np.cos(theta)
+    rate = w * p
+    q[0], q[1], q[2] = pivot_x - xi * cos_t + hcg * sin_t, xi * sin_t + hcg * cos_t, theta
     q[3], q[4], q[5] = (xi * sin_t + hcg * cos_t) * rate, (xi * cos_t - hcg * sin_t) * rate, rate
     q[6], q[7] = sin_t, cos_t
     return peak
@@ -568,7 +582,9 @@ def simulate_time_stepping(block: Block, floor_accel_g, dt_s, *, time_step_s=Non
         Largest time step [s]; each sample interval is cut into equal steps no
         longer than this. Default: ``max(4, ceil(p dt / 2e-3))`` steps a sample.
         Either way, steps are cut further while the block rocks a little
-        (module docstring, *Time step*).
+        (module docstring, *Time step*). Given, the Moreau–Jean steps alone
+        are taken (by default, intervals of rocking on one sticking pivot are
+        integrated by the rocking equation: *Rocking on one sticking pivot*).
     tail_s : float
         Longest run-out after the record [s]; it stops earlier when the block is at rest.
     return_history : bool
