@@ -84,9 +84,9 @@ and Runge-Kutta steps (:mod:`assess.mechanics.rocking`, for a block with p·dt
 at most its largest step, 0.1; steps of at most 0.1 of the time scale τ of
 the rock above, as the kernel takes them). The interval is kept if after
 every step the other corner has stayed off the floor (θ keeps its sign on the
-cubic Hermite interpolant of the step), the block has not reached π/2, and
-the pivot's normal force is positive and its friction within μs N (the
-kernel's pivot forces); otherwise the Moreau–Jean steps take the interval,
+cubic Hermite interpolant of the step), the block has not reached π/2, and,
+there and at the start, the pivot's normal force is positive and its friction
+within μs N (the kernel's pivot forces); otherwise the Moreau–Jean steps take the interval,
 locating the arrival, the slip onset or the lift-off as above. Such phases,
 ~94 % of the steps before, then take one step a sample (more in small rocks)
 instead of 6-40. Against the event-driven solver, on the runs that the
@@ -175,9 +175,10 @@ def _rocking_step(q, hs, a_start, a_end, b, hcg, alpha, p, kappa, mu_s, act_tol)
     The rocking kernel's Runge-Kutta steps (:mod:`assess.mechanics.rocking`) in τ = p t,
     as the kernel takes them (at most ``ROCK_STEP_FRACTION`` of the rock's time scale,
     down to 1/16 of p·hs), from θ, θ̇ of ``q``, the pivot (the corner on the side of θ)
-    held where it is; taken only if after every step the other corner has stayed off
-    the floor (the cubic Hermite interpolant of the step keeps θ on its side),
-    |θ| < π/2, and the pivot's normal force is positive and its friction within μs N.
+    held where it is; taken only if the pivot's normal force is positive and its
+    friction within μs N at the start and after every step, and after every step the
+    other corner has stayed off the floor (the cubic Hermite interpolant of the step
+    keeps θ on its side) and |θ| < π/2.
     Then ``q`` is updated and the largest |θ| returned; else ``q`` is left as it was
     and −1 returned, for the Moreau–Jean steps to take the interval with its events.
     """
@@ -185,6 +186,9 @@ def _rocking_step(q, hs, a_start, a_end, b, hcg, alpha, p, kappa, mu_s, act_tol)
     side = 1.0 if theta > 0.0 else -1.0
     xi = side * b
     if theta == 0.0 or corner_gap_at(q[1], q[6], q[7], -xi, hcg) <= act_tol:
+        return -1.0
+    friction, normal = _pivot_forces(theta, w, side, a_start, alpha, kappa)
+    if not (normal > 0.0 and abs(friction) <= mu_s * normal):
         return -1.0
     tau_all = p * hs
     slope = (a_end - a_start) / tau_all
