@@ -3,9 +3,6 @@ from __future__ import annotations
 
 import numpy as np
 
-#: Cases a thread takes at a time in the parallel kernels (small: run times differ by orders of magnitude).
-CASES_PER_CHUNK = 4
-
 
 def checked_record(floor_accel_g, dt_s, *, min_samples: int = 0):
     """A floor acceleration record [g] as a contiguous float array, and its sample interval [s] as a float.

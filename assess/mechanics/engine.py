@@ -16,9 +16,10 @@ it, and by the general solver otherwise:
    slide from rest before it uplifts, nor slip at a Housner impact (see the
    rocking module), so these two checks are the whole proof.
 3. **General solver** otherwise (slide-rock, flight): the Moreau–Jean
-   time-stepping scheme of :mod:`assess.mechanics.timestepping`, whose
-   results the event-driven solver of :mod:`assess.mechanics.event_driven`
-   confirms in the tests.
+   time-stepping scheme of :mod:`assess.mechanics.timestepping` (which takes
+   the intervals where the block rocks on one sticking pivot by the rocking
+   kernel's steps), whose results the event-driven solver of
+   :mod:`assess.mechanics.event_driven` confirms in the tests.
 
 After the record the floor is at rest and the block is followed for
 ``tail_s`` more seconds (run-out of sliding, free rocking, or a late
