@@ -143,32 +143,50 @@ def _rhs(theta, side, accel_g, alpha):
 
 
 @njit(cache=True)
+def _pivot_forces_and_rhs(theta, w, side, accel_g, alpha, kappa):
+    """(F, N)/(m g) at the pivot of a block rocking on corner ``side`` without slipping, and θ''.
+
+    See "Contact forces" in the module docstring; ``w`` = θ̇/p. θ'' is
+    :func:`_rhs` of the same state, to the bit (sin and cos of −φ and φ).
+    """
+    phi = theta - side * alpha
+    sin_phi, cos_phi = np.sin(phi), np.cos(phi)
+    thdd = -(-sin_phi + accel_g * cos_phi)
+    friction = (cos_phi * thdd - sin_phi * w * w) / kappa + accel_g
+    normal = 1.0 + (-sin_phi * thdd - cos_phi * w * w) / kappa
+    return friction, normal, thdd
+
+
+@njit(cache=True)
 def _pivot_forces(theta, w, side, accel_g, alpha, kappa):
     """(F, N)/(m g) at the pivot of a block rocking on corner ``side`` without slipping.
 
     See "Contact forces" in the module docstring; ``w`` = θ̇/p.
     """
-    phi = theta - side * alpha
-    thdd = -(np.sin(-phi) + accel_g * np.cos(phi))
-    friction = (np.cos(phi) * thdd - np.sin(phi) * w * w) / kappa + accel_g
-    normal = 1.0 + (-np.sin(phi) * thdd - np.cos(phi) * w * w) / kappa
+    friction, normal, _ = _pivot_forces_and_rhs(theta, w, side, accel_g, alpha, kappa)
     return friction, normal
 
 
 @njit(cache=True)
 def _track_pivot_forces(forces, theta, w, side, accel_g, alpha, kappa):
-    """Update ``forces`` = (max |F|/N, min N/(mg)) with the pivot forces of this state."""
-    friction, normal = _pivot_forces(theta, w, side, accel_g, alpha, kappa)
+    """Update ``forces`` = (max |F|/N, min N/(mg)) with the pivot forces of this state; returns its θ''."""
+    friction, normal, thdd = _pivot_forces_and_rhs(theta, w, side, accel_g, alpha, kappa)
     forces[1] = min(forces[1], normal)
     forces[0] = max(forces[0], abs(friction) / normal if normal > 0.0 else np.inf)
+    return thdd
 
 
 @njit(cache=True)
 def _rk4(theta, w, side, alpha, accel_start, slope, h):
     """One classical Runge-Kutta step of length h (τ units), floor accel linear in τ."""
+    return _rk4_from(theta, w, side, alpha, accel_start, slope, h, _rhs(theta, side, accel_start, alpha))
+
+
+@njit(cache=True)
+def _rk4_from(theta, w, side, alpha, accel_start, slope, h, k1w):
+    """:func:`_rk4` given θ'' at the start of the step, ``k1w`` (the pivot forces' own, once tracked)."""
     accel_mid = accel_start + slope * 0.5 * h
     k1t = w
-    k1w = _rhs(theta, side, accel_start, alpha)
     k2t = w + 0.5 * h * k1w
     k2w = _rhs(theta + 0.5 * h * k1t, side, accel_mid, alpha)
     k3t = w + 0.5 * h * k2w
@@ -302,6 +320,7 @@ def _simulate(accel_g, dt_s, n_tail, alpha, p, e, kappa, theta_init, theta_dot_i
     disproved, stopping = False, friction_stop < np.inf
     forces[0] = 0.0
     forces[1] = 1.0
+    theta_k1, w_k1, side_k1, accel_k1, thdd_k1 = np.nan, np.nan, 0.0, np.nan, np.nan  # no θ'' known yet
     if record:
         hist_theta[0] = theta
         hist_theta_dot[0] = w * p
@@ -376,13 +395,17 @@ def _simulate(accel_g, dt_s, n_tail, alpha, p, e, kappa, theta_init, theta_dot_i
                 if side * thdd0 < 0.0 and 0.5 * abs(w / thdd0) < h:
                     h = 0.5 * abs(w / thdd0)
                     full = False
-            th1, w1 = _rk4(theta, w, side, alpha, accel_s, slope, h)
+            if theta == theta_k1 and w == w_k1 and side == side_k1 and accel_s == accel_k1:
+                k1w = thdd_k1  # θ'' of this state, worked out with its pivot forces
+            else:
+                k1w = _rhs(theta, side, accel_s, alpha)
+            th1, w1 = _rk4_from(theta, w, side, alpha, accel_s, slope, h, k1w)
             attempt = 0
             while theta == 0.0 and w != 0.0 and side * th1 < 0.0 and attempt < 12:
                 h *= 0.25
                 full = False
                 attempt += 1
-                th1, w1 = _rk4(theta, w, side, alpha, accel_s, slope, h)
+                th1, w1 = _rk4_from(theta, w, side, alpha, accel_s, slope, h, k1w)
             if side * th1 >= _HALF_PI:
                 tau = _locate(theta, w, side, alpha, accel_s, slope, h, side * th1 - _HALF_PI, _HALF_PI)[0]
                 overturned = True
@@ -431,7 +454,9 @@ def _simulate(accel_g, dt_s, n_tail, alpha, p, e, kappa, theta_init, theta_dot_i
             theta, w = th1, w1
             theta_max = max(theta_max, abs(theta))
             s = s_end if full else s + h
-            _track_pivot_forces(forces, theta, w, side, a0 + slope * s, alpha, kappa)
+            # at the end of the interval the floor is at the next sample, where the next step starts
+            theta_k1, w_k1, side_k1, accel_k1 = theta, w, side, (a1 if s >= dtau else a0 + slope * s)
+            thdd_k1 = _track_pivot_forces(forces, theta, w, side, accel_k1, alpha, kappa)
         if disproved:
             break
         if overturned:

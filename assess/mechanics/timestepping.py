@@ -148,7 +148,7 @@ from . import warmup
 from .rocking import MAX_STEP_DIMENSIONLESS as ROCKING_STEP_DIMENSIONLESS
 from .rocking import MAX_REFINEMENT as _RIGID_MAX_REFINEMENT
 from .rocking import ROCK_STEP_FRACTION as ROCKING_STEP_FRACTION
-from .rocking import _hermite_extremum, _pivot_forces, _rk4
+from .rocking import _hermite_extremum, _pivot_forces_and_rhs, _rk4_from
 from .threads import run_case_ranges
 
 #: Largest time step in dimensionless time, p·Δt [-].
@@ -189,7 +189,7 @@ def _rocking_step(q, hs, a_start, a_end, b, hcg, alpha, p, kappa, mu_s, act_tol)
     xi = side * b
     if theta == 0.0 or corner_gap_at(q[1], q[6], q[7], -xi, hcg) <= act_tol:
         return -1.0
-    friction, normal = _pivot_forces(theta, w, side, a_start, alpha, kappa)
+    friction, normal, thdd = _pivot_forces_and_rhs(theta, w, side, a_start, alpha, kappa)
     if not (normal > 0.0 and abs(friction) <= mu_s * normal):
         return -1.0
     tau_all = p * hs
@@ -201,7 +201,7 @@ def _rocking_step(q, hs, a_start, a_end, b, hcg, alpha, p, kappa, mu_s, act_tol)
         h = min(tau_all - done, max(ROCKING_STEP_FRACTION * np.sqrt(2.0 * abs(theta) / alpha + (w / alpha) ** 2),
                                     tau_all / _RIGID_MAX_REFINEMENT))
         accel = a_start + slope * done
-        th1, w1 = _rk4(theta, w, side, alpha, accel, slope, h)
+        th1, w1 = _rk4_from(theta, w, side, alpha, accel, slope, h, thdd)  # θ'' known with the pivot forces
         if not (0.0 < side * th1 < _HALF_PI):
             return -1.0
         if w * w1 < 0.0:
@@ -209,7 +209,7 @@ def _rocking_step(q, hs, a_start, a_end, b, hcg, alpha, p, kappa, mu_s, act_tol)
             if side * thp <= 0.0:
                 return -1.0
             peak = max(peak, abs(thp))
-        friction, normal = _pivot_forces(th1, w1, side, accel + slope * h, alpha, kappa)
+        friction, normal, thdd = _pivot_forces_and_rhs(th1, w1, side, a_start + slope * (done + h), alpha, kappa)
         if not (normal > 0.0 and abs(friction) <= mu_s * normal):
             return -1.0
         theta, w, done = th1, w1, done + h
