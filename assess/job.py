@@ -28,7 +28,6 @@ from assess.errors import InputError, Problem
 from assess.hazard.levels import parse_level
 from assess.hazard.openquake import read_openquake_hazard
 from assess.inventory import read_workbook
-from assess.mechanics import warmup
 from assess.mechanics.runner import LocalRunner
 from assess.folders import check_output_folder
 from assess.report.calibration import render_calibration_html
@@ -72,9 +71,9 @@ def open_runner(scheduler: str | None, say: Say, cache_folder: Path | None = Non
     the end (a cluster's client)."""
     if scheduler is not None:
         say(f"connecting to the Dask scheduler at {scheduler}")
-    else:  # a first run after install: the general solver compiles on another core meanwhile
-        warmup.start()
     engine = engine_runner(scheduler, tls)
+    if scheduler is None:  # a first run after install: the general solver compiles on another core meanwhile
+        engine.warm_up()
     try:
         yield engine if cache_folder is None else CachingRunner(engine, cache_folder)
     finally:

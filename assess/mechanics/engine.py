@@ -51,6 +51,7 @@ from .modes import REST, ROCK, SLIDE
 from .rocking import rocking_case_peaks, rocking_response
 from .sliding import sliding_peaks_batch, sliding_response
 from .timestepping import simulate_time_stepping, time_stepping_case_peaks
+from . import warmup
 
 SLIDING_KERNEL = "sliding kernel"
 VELOCITY_FRICTION_KERNEL = "sliding kernel (velocity-dependent friction)"
@@ -291,6 +292,7 @@ def _pure_sliding_response(result, block, accel, dt_s, tail_s, return_history, s
 
 
 def _general(block, accel, dt_s, tail_s, return_history):
+    warmup.wait()  # a first run: the solver may be compiling in a second process, to load from the cache
     response = simulate_time_stepping(block, accel, dt_s, tail_s=tail_s, return_history=return_history)
     return _named(response, GENERAL)
 
@@ -416,6 +418,7 @@ def simulate_cases(blocks: Sequence[Block], records_g: Sequence[np.ndarray], dt_
     timing(GENERAL)
     for idx in _calls(np.concatenate(general) if general else np.zeros(0, dtype=np.int64), GENERAL_CASES_PER_CALL):
         records, dts, index = _records_of(records_g, dt_s, record_index[idx])
+        warmup.wait()  # a first run: the solver may be compiling in a second process, to load from the cache
         peaks = time_stepping_case_peaks([blocks[i] for i in idx], records, dts, index, tail_s=tail_s)
         sliding_max[idx], residual[idx] = peaks.sliding_max_m, peaks.sliding_residual_m
         theta_max[idx], uplift[idx], overturned[idx] = peaks.theta_max_over_alpha, peaks.uplift, peaks.overturned

@@ -44,6 +44,7 @@ from .engine import (DEFAULT_TAIL_S, ELASTIC_INTERFACE_KERNEL, EVENT_DRIVEN, GEN
                      VELOCITY_FRICTION_KERNEL, BlockOnInterface,
                      CasePeaks, SlidingInterface, checked_record_index, pure_sliding_proved, simulate,
                      simulate_cases)
+from . import warmup
 from .modes import REST, SLIDE
 from .sliding_2d import sliding_2d_peaks_batch
 
@@ -276,6 +277,11 @@ class LocalRunner(RunnerBase):
         result = run_cases(cases, progress=progress)
         self._count(cases, len(cases))
         return result
+
+    def warm_up(self) -> None:
+        """On a first run after install, compile the general solver in a second process meanwhile
+        (:mod:`assess.mechanics.warmup`); the engine waits for it before the solver's first use."""
+        warmup.start()
 
 
 def run_responses(runs, runner: Optional[Runner] = None, *, tail_s=DEFAULT_TAIL_S, history=False,

@@ -144,7 +144,6 @@ from .contact import (CODE_REST, CODE_ROCK, CODE_SLIDE, OPEN, SLIP_POS, STICK, V
                       corner_gap_at, corner_x_at, first_candidate, impact, lever_arms_at, project_onto_floor,
                       solve_contacts, step_mode)
 from .geometry import STANDARD_GRAVITY_M_S2
-from . import warmup
 from .rocking import MAX_STEP_DIMENSIONLESS as ROCKING_STEP_DIMENSIONLESS
 from .rocking import MAX_REFINEMENT as _RIGID_MAX_REFINEMENT
 from .rocking import ROCK_STEP_FRACTION as ROCKING_STEP_FRACTION
@@ -626,7 +625,6 @@ def simulate_time_stepping(block: Block, floor_accel_g, dt_s, *, time_step_s=Non
     n_samples = accel.size + (tail_steps + n_sub - 1) // n_sub if return_history else 0
     hist_u, hist_theta = np.full(n_samples, np.nan), np.full(n_samples, np.nan)
     b, hcg, inv_j, mu, mu_s, e = _block_constants(block)
-    warmup.wait()
     out = _simulate(accel, dt, n_sub, tail_steps, b, hcg, inv_j, mu, mu_s, STANDARD_GRAVITY_M_S2, e, theta0,
                     hist_u, hist_theta, np.empty(64), np.empty(64, dtype=np.int64), time_step_s is None)
     u_max, u_res, theta_max, uplift, overturned, t_over, _, n_hist, mode_t, mode_c, n_modes = out
@@ -740,7 +738,6 @@ def _run_cases(blocks, records, dts, record_index, time_step_s, tail_s) -> TimeS
     u_max, u_res, theta_max, t_over = (np.empty(n) for _ in range(4))
     uplift, overturned = np.zeros(n, dtype=np.bool_), np.zeros(n, dtype=np.bool_)
     visited = np.zeros(n, dtype=np.int64)
-    warmup.wait()  # a first run: the kernel may be compiling in a second process, to load from the cache
     run_case_ranges(_cases, n, accel_flat, offsets, dts, record_index, np.ascontiguousarray(steps[:, 0]),
                     np.ascontiguousarray(steps[:, 1]), b, hcg, inv_j, mu, mu_s, STANDARD_GRAVITY_M_S2, e,
                     np.full(n, time_step_s is None), u_max, u_res, theta_max, uplift, overturned, t_over, visited)
