@@ -72,8 +72,9 @@ def open_runner(scheduler: str | None, say: Say, cache_folder: Path | None = Non
     if scheduler is not None:
         say(f"connecting to the Dask scheduler at {scheduler}")
     engine = engine_runner(scheduler, tls)
-    if scheduler is None:  # a first run after install: the general solver compiles on another core meanwhile
-        engine.warm_up()
+    warm_up = getattr(engine, "warm_up", None)  # this machine's runner: on a first run after install, the
+    if warm_up is not None:                      # general solver compiles on another core meanwhile
+        warm_up()
     try:
         yield engine if cache_folder is None else CachingRunner(engine, cache_folder)
     finally:
