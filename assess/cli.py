@@ -341,7 +341,16 @@ def _warn(message: str) -> None:
     print(f"assess: {printable(message)}", file=sys.stderr)
 
 
+def _warm_up(args: argparse.Namespace) -> None:
+    """A first run after install on this machine: the general solver compiles while the core imports
+    (:meth:`assess.mechanics.runner.LocalRunner.warm_up`)."""
+    if args.scheduler is None:
+        from assess.mechanics.runner import LocalRunner
+        LocalRunner().warm_up(args.jobs)
+
+
 def _assess(args: argparse.Namespace, say) -> int:
+    _warm_up(args)
     from assess import job  # the core: seconds to import, not needed for --help or a wrong option
 
     levels = job.run_job(job.AssessmentJob(
@@ -374,6 +383,7 @@ def _calibrate(args: argparse.Namespace, say) -> int:
 
 
 def _batch(args: argparse.Namespace, say) -> int:
+    _warm_up(args)
     from assess import job  # the core: seconds to import, not needed for --help or a wrong option
 
     staged, runner, out_dir = job.run_batch(job.BatchJob(

@@ -278,10 +278,11 @@ class LocalRunner(RunnerBase):
         self._count(cases, len(cases))
         return result
 
-    def warm_up(self) -> None:
+    def warm_up(self, threads: int | None = None) -> None:
         """On a first run after install, compile the general solver in a second process meanwhile
-        (:mod:`assess.mechanics.warmup`); the engine waits for it before the solver's first use."""
-        warmup.start()
+        (:mod:`assess.mechanics.warmup`; ``threads``: the engine's, if not yet set); the engine waits
+        for it before the solver's first use."""
+        warmup.start(threads)
 
 
 def run_responses(runs, runner: Optional[Runner] = None, *, tail_s=DEFAULT_TAIL_S, history=False,

@@ -42,10 +42,13 @@ def general_solver_cached() -> bool:
         return True
 
 
-def start() -> None:
-    """Compile the general solver in a second process if it is not cached (see the module docstring)."""
+def start(threads: int | None = None) -> None:
+    """Compile the general solver in a second process if it is not cached (see the module docstring).
+
+    ``threads``: the threads the engine will use, if not yet set (``--jobs``); default numba's.
+    """
     global _process
-    if _process is not None or numba.get_num_threads() < 2 or general_solver_cached():
+    if _process is not None or (threads or numba.get_num_threads()) < 2 or general_solver_cached():
         return
     try:
         _process = subprocess.Popen([sys.executable, "-m", "assess.mechanics.warmup"], stdin=subprocess.DEVNULL,
