@@ -12,7 +12,6 @@ import io
 import math
 import re
 import urllib.request
-import zlib
 from pathlib import Path
 
 import numpy as np
@@ -148,17 +147,8 @@ def _data_uris(html: str) -> list[str]:
 
 
 def _page_count(pdf: bytes) -> int:
-    try:
-        import pypdf
-    except ImportError:
-        # page objects may sit in compressed object streams: inflate every stream too
-        chunks = [pdf]
-        for stream in re.findall(rb"stream\r?\n(.*?)\r?\nendstream", pdf, re.S):
-            try:
-                chunks.append(zlib.decompress(stream))
-            except zlib.error:
-                pass
-        return sum(len(re.findall(rb"/Type\s*/Page\b", chunk)) for chunk in chunks)
+    import pypdf
+
     return len(pypdf.PdfReader(io.BytesIO(pdf)).pages)
 
 

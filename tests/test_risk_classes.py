@@ -4,7 +4,6 @@ The rule is fed hand-made demand rows, each expectation the documented threshold
 end-to-end check takes its expected rotations from the independent Housner ODE of
 tests/rocking_reference.py, not from the pipeline.
 """
-from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -20,6 +19,7 @@ from assess.quantity_text import percent_text
 from assess.report.sentences import format_percent
 from assess.risk_classes import CLASS_ORDER, Chances, classify_risk, risk_reason
 from rocking_reference import reference_rocking
+from tests.test_governing_demand import DT_S, _sine_record
 
 SETTINGS = default_settings()
 CONSEQUENCES = ("life-safety", "hazardous", "critical", "valuable", "ordinary")
@@ -155,17 +155,6 @@ def test_one_formatting_of_a_chance():
 
 
 # ------------------------------------------------------------------ end to end
-
-DT_S = 0.005
-
-
-def _sine_record(folder: Path, name: str, ap_g: float, tp_s: float) -> tuple[Path, np.ndarray]:
-    time_s = np.arange(0.0, tp_s + DT_S / 2, DT_S)
-    accel = np.concatenate([ap_g * np.sin(2 * np.pi * time_s / tp_s), np.zeros(int(3.0 / DT_S))])
-    path = folder / f"{name}.csv"
-    pd.DataFrame({"time_s": np.arange(accel.size) * DT_S, "accel_g": accel}).to_csv(path, index=False)
-    return path, accel
-
 
 def _rack(item_id, floor, consequence):
     # b/h = 0.2 across its width, 1.0 across its depth (it rocks one way only); mu = 0.9 >= b/h

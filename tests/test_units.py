@@ -9,11 +9,12 @@ here by hand, not taken from assess. Also the small refusals that come with the 
 from __future__ import annotations
 
 import dataclasses
+import io
 import math
 import re
-import zlib
 
 import pandas as pd
+import pypdf
 import pytest
 
 from assess import actions, cli, job
@@ -44,19 +45,9 @@ def _inch_sheets() -> dict:
 
 
 def _media_boxes(pdf: bytes) -> set[tuple[int, int]]:
-    """The page sizes [pt] of a PDF, rounded, from its /MediaBox entries (compressed streams inflated)."""
-    chunks = [pdf]
-    for stream in re.findall(rb"stream\r?\n(.*?)\r?\nendstream", pdf, re.S):
-        try:
-            chunks.append(zlib.decompress(stream))
-        except zlib.error:
-            pass
-    boxes = set()
-    for chunk in chunks:
-        for box in re.findall(rb"/MediaBox\s*\[\s*([-\d.\s]+)\]", chunk):
-            x0, y0, x1, y1 = (float(v) for v in box.split())
-            boxes.add((round(x1 - x0), round(y1 - y0)))
-    return boxes
+    """The page sizes [pt] of a PDF, rounded, as pypdf reads them."""
+    return {(round(float(page.mediabox.width)), round(float(page.mediabox.height)))
+            for page in pypdf.PdfReader(io.BytesIO(pdf)).pages}
 
 
 @pytest.fixture(scope="module")

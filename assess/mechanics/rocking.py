@@ -158,16 +158,6 @@ def _pivot_forces_and_rhs(theta, w, side, accel_g, alpha, kappa):
 
 
 @njit(cache=True)
-def _pivot_forces(theta, w, side, accel_g, alpha, kappa):
-    """(F, N)/(m g) at the pivot of a block rocking on corner ``side`` without slipping.
-
-    See "Contact forces" in the module docstring; ``w`` = θ̇/p.
-    """
-    friction, normal, _ = _pivot_forces_and_rhs(theta, w, side, accel_g, alpha, kappa)
-    return friction, normal
-
-
-@njit(cache=True)
 def _track_pivot_forces(forces, theta, w, side, accel_g, alpha, kappa):
     """Update ``forces`` = (max |F|/N, min N/(mg)) with the pivot forces of this state; returns its θ''."""
     friction, normal, thdd = _pivot_forces_and_rhs(theta, w, side, accel_g, alpha, kappa)

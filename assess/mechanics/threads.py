@@ -57,7 +57,7 @@ def run_case_ranges(kernel, n_cases: int, *args) -> None:
     """
     threads = numba.get_num_threads()
     ranges = case_ranges(n_cases, threads)
-    if len(ranges) <= 1 or threads <= 1:
+    if len(ranges) <= 1:  # one thread, or too few cases to share
         for start, stop in ranges:
             kernel(start, stop, *args)
         return
