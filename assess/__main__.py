@@ -1,5 +1,3 @@
-import sys
+from assess.cli import run
 
-from assess.cli import main
-
-sys.exit(main())
+run()

@@ -7,6 +7,7 @@ its output folder is checked on small workbooks (tests/workbooks.py). The comman
 process (tests/commands.py) except where the test is about the process: Ctrl-C, a closed pipe,
 the installed wheel.
 """
+import json
 import os
 import shutil
 import subprocess
@@ -522,3 +523,24 @@ def test_a_closed_pipe_exits_quietly(tmp_path):
                            cwd=tmp_path, capture_output=True, text=True, env=child_env())
     assert shell.stdout == '{\n  "alpha' and "Error" not in shell.stderr and "internal" not in shell.stderr
     assert shell.returncode in (0, 141)  # 0 when head read everything before closing
+
+
+@pytest.mark.parametrize("argv, code", [
+    (["simulate", "--height-cm", "200", "--width-cm", "80", "--mu", "0.3", "--pulse", "B", "--ap-g", "0.5",
+      "--tp-s", "1", "--json"], 0),
+    (["no-such-workbook.xlsx", "--hazard", "2in50", "--quiet"], 2),
+])
+def test_the_command_ends_at_once_after_its_exit_handlers(tmp_path, argv, code):
+    """``cli.run`` (the ``assess`` command) skips the interpreter's teardown, not what must happen on
+    leaving: the exit handlers run, after everything printed, and the exit code is main()'s."""
+    script = ("import atexit, sys\nfrom assess import cli\n"
+              "atexit.register(lambda: print('exit handler ran', flush=True))\n"
+              f"sys.argv = ['assess'] + {argv!r}\ncli.run()\nprint('not reached')\n")
+    done = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, capture_output=True, text=True,
+                          env=child_env(), timeout=300)
+    assert done.returncode == code, done.stderr
+    assert done.stdout.endswith("exit handler ran\n") and "not reached" not in done.stdout
+    if code == 0:
+        assert json.loads(done.stdout[:-len("exit handler ran\n")])["overturned"] in (True, False)
+    else:
+        assert "no-such-workbook.xlsx" in done.stderr and "Traceback" not in done.stderr
