@@ -27,15 +27,17 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: st
     results of the other levels of the same run, add their sheets to summary.xlsx
     after this level's.
     """
-    # the PDF's second process starts first, so that it has imported WeasyPrint by the time the HTML is made
+    # the PDF's second process starts first, so that it has imported WeasyPrint by the time the HTML is made,
+    # and is sent the appendix before the figures are drawn (render_html), so that it lays it out meanwhile
     with report.pdf_process() if "pdf" in formats else contextlib.nullcontext() as pdf_process:
-        files = _tables(result, formats, units, other_levels)
+        html = None
         if "html" in formats or "pdf" in formats:
-            html = report.render_html(result)
-            if "html" in formats:
-                files["report.html"] = html.encode()
-            if "pdf" in formats:
-                files["report.pdf"] = report.render_pdf(html, process=pdf_process)
+            html = report.render_html(result, appendix_ready=None if pdf_process is None else pdf_process.draw)
+        files = _tables(result, formats, units, other_levels)
+        if "html" in formats:
+            files["report.html"] = html.encode()
+        if "pdf" in formats:
+            files["report.pdf"] = report.render_pdf(html, process=pdf_process)
     return files
 
 

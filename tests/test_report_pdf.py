@@ -42,6 +42,30 @@ def test_the_bytes_do_not_depend_on_the_processes_that_drew_them(html, pdf):
     assert render_pdf(html, processes=2) == pdf
 
 
+def test_the_appendix_is_handed_on_before_the_figures_are_drawn(result, html, monkeypatch):
+    """render_html hands the appendix's document on first, the very one split_appendix cuts out of the
+    whole report, so that the second process lays it out while this one draws the figures."""
+    from assess.report import render
+
+    events = []
+    draw_figures = render.report_figures
+    monkeypatch.setattr(render, "report_figures", lambda r: events.append("figures") or draw_figures(r))
+    assert render.render_html(result, appendix_ready=events.append) == html
+    assert events == [split_appendix(html)[1], "figures"]
+
+
+def test_a_process_sent_another_appendix_first_still_draws_this_one(html, pdf):
+    """What the second process was sent early is dropped where it is not the report's appendix."""
+    _, appendix = split_appendix(html)
+    with pdf_process(2) as process:
+        process.draw(appendix.replace("Appendix A. Item by item", "Not this appendix"))
+        assert not process.drawing(appendix)
+        assert render_pdf(html, process=process) == pdf
+        process.draw(appendix)
+        assert process.drawing(appendix)
+        assert render_pdf(html, process=process) == pdf and process.sent == []
+
+
 def test_the_appendix_holds_every_item_block_and_the_body_none(html, result):
     body, appendix = split_appendix(html)
     freestanding = result.summary[result.summary["risk"] != "anchored"]

@@ -4,7 +4,7 @@ The risk report ends in an appendix (the item-by-item blocks, between the
 ``<!-- appendix -->`` and ``<!-- /appendix -->`` markers of the template)
 whose pages are numbered A-1, A-2 … as engineering reports number theirs.
 The body and the appendix are laid out as two documents, each with its own
-page numbers: the appendix in a second process while this one lays out the
+page numbers: the appendix in a second process while this one draws the figures and lays out the
 body, where the machine has a second core (:func:`render_pdf`), the one after
 the other where it has not. The two PDFs are then joined (:func:`merge`):
 the pages keep their labels (1, 2 … then A-1, A-2 …, as a PDF viewer shows
@@ -28,6 +28,7 @@ import io
 import multiprocessing
 import os
 import signal
+import threading
 import urllib.parse
 
 #: The markers around the appendix in the report's HTML (templates/report.html.j2).
@@ -161,23 +162,27 @@ def second_core() -> bool:
 
 def _serve(connection) -> None:
     """The second process: import WeasyPrint at once (while the first one still writes the HTML), then
-    draw the HTML documents it is sent, one PDF each, until the pipe closes. Ctrl-C is the first
-    process's to act on (it ends this one)."""
+    draw the HTML documents it is sent, one PDF each, until the pipe closes. A document is taken off the
+    pipe as soon as it is sent, even while WeasyPrint is still being imported, so that the first process
+    never waits on a full pipe. Ctrl-C is the first process's to act on (it ends this one)."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
-    _weasyprint()
+    importing = threading.Thread(target=_weasyprint, name="import WeasyPrint")
+    importing.start()
     while True:
         try:
             html = connection.recv()
         except EOFError:
             return
+        importing.join()
         connection.send_bytes(render_part(html))
 
 
 class AppendixProcess:
     """A second process that draws the appendix (:func:`_serve`), started with 'spawn' (a fresh
     interpreter: no fork of this process's threads), SIGINT blocked while it starts so that it never sees
-    Ctrl-C. :meth:`draw` sends it an HTML document, :meth:`pdf` waits for its PDF; a process that ended
-    without one (killed, crashed) is an error, not a wait without end."""
+    Ctrl-C. :meth:`draw` sends it an HTML document, :meth:`pdf` waits for the PDF of the last one sent
+    (those of any sent before it are read and dropped); a process that ended without one (killed,
+    crashed) is an error, not a wait without end."""
 
     def __init__(self):
         context = multiprocessing.get_context("spawn")
@@ -193,18 +198,29 @@ class AppendixProcess:
             if blocked is not None:
                 signal.pthread_sigmask(signal.SIG_SETMASK, blocked)
             theirs.close()  # only the second process holds its end: it closing is seen here as EOF
+        self.sent: list[str] = []  # the documents sent whose PDF is not read yet
 
     def draw(self, html: str) -> None:
+        self.sent.append(html)
         try:
             self.connection.send(html)
         except OSError:  # it has ended: pdf() says so (not a BrokenPipeError, which reads as stdout's reader gone)
             pass
 
+    def drawing(self, html: str) -> bool:
+        """Whether ``html`` is the last document sent, its PDF not read yet."""
+        return bool(self.sent) and self.sent[-1] == html
+
     def pdf(self) -> bytes:
+        pdf = None
         try:
-            return self.connection.recv_bytes()
+            while self.sent:
+                pdf = self.connection.recv_bytes()
+                self.sent.pop(0)
         except (EOFError, OSError):
-            pass
+            pdf = None
+        if pdf is not None:
+            return pdf
         self.process.join(timeout=5)
         raise RuntimeError("the process drawing the PDF's appendix ended without it "
                            f"(exit code {self.process.exitcode})")
@@ -252,7 +268,8 @@ def render_pdf(html: str, *, url_fetcher=None, processes: int | None = None, pro
             if started is not None:
                 return render_pdf(html, process=started)
         return merge(render_part(body), render_part(appendix))
-    process.draw(appendix)
+    if not process.drawing(appendix):  # it may have been sent before the figures were drawn (render_html)
+        process.draw(appendix)
     joined = Joined(render_part(body))  # reads the body's PDF while the appendix is still being drawn
     return joined.with_appendix(process.pdf())
 

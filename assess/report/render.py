@@ -12,6 +12,7 @@ from __future__ import annotations
 import base64
 import dataclasses
 import math
+from collections.abc import Callable
 from importlib import resources
 from pathlib import Path
 
@@ -30,7 +31,7 @@ from assess.report.costs import costs_context
 from assess.report.curve import curve_context
 from assess.risk_classes import rule_text
 from assess.report.method import floor_motion_route
-from assess.report.pdf import RefusedURLError, data_only_url_fetcher, decode_data_uri, render_pdf  # noqa: F401
+from assess.report.pdf import RefusedURLError, data_only_url_fetcher, decode_data_uri, render_pdf, split_appendix  # noqa: F401
 from assess.report.references import reference_rows
 from assess.report.sentences import (
     DASH, action_groups, after_text, case_outcomes, changes, cm_interval_text, finite, flag_groups, floor_text, format_cm,
@@ -324,8 +325,9 @@ def _data_uri(svg: str) -> str:
     return "data:image/svg+xml;base64," + base64.b64encode(svg.encode("utf-8")).decode("ascii")
 
 
-def report_context(result) -> dict:
-    """Everything the template shows, formatted (pure: no clock, no I/O)."""
+def report_context(result, with_figures: bool = True) -> dict:
+    """Everything the template shows, formatted (pure: no clock, no I/O); its ``figures``
+    (:func:`report_figures`, the slow part) None where ``with_figures`` is false."""
     summary = _sorted_summary(result.summary)
     settings = result.settings or {}
     system = system_of(settings)
@@ -335,8 +337,6 @@ def report_context(result) -> dict:
         row["anchor"] = anchor
     counts = result.risk_counts()
     zeta, eta, sigma, im_min, im_max = figures.regression_constants(result)
-    sorted_result = _with_summary(result, summary)
-    demand_svgs = figures.sliding_demand_figures(sorted_result, system=system)
     return {
         "version": assess.__version__,
         "facility": text(result.facility),
@@ -365,17 +365,7 @@ def report_context(result) -> dict:
                        or "Konstantinidis & Makris (2010)"},
         "anchorage": anchorage_method(result.anchorage, summary),
         "class_rule": rule_text(settings) if "risk_overturn_high" in settings else "",
-        "figures": {
-            "demand": [_data_uri(svg) for svg in demand_svgs],
-            "fragility": _data_uri(figures.fragility_figure(sorted_result)),
-            "regression": _data_uri(figures.regression_figure(sorted_result)),
-            "simulation": (_data_uri(figures.simulation_vs_regression_figure(result, system))
-                           if result.simulated else None),
-            "histories": [{"uri": _data_uri(figures.history_figure(h, system)), "id": h["id"], "name": h["name"],
-                           "motion": h["motion"], "sim_motion": h["sim_motion"], "solver": h["solver"],
-                           "direction": h["direction"]}
-                          for h in list(result.histories)[:HISTORY_FIGURES]],
-        },
+        "figures": report_figures(result) if with_figures else None,
         "simulation": case_outcomes(result),
         "hazard_notes": list(result.hazard_notes),
         "method_notes": method_notes(summary),
@@ -388,6 +378,24 @@ def report_context(result) -> dict:
         "route": floor_motion_route(result),
         "references": reference_rows(),
         "stylesheet": Markup(template_text(STYLESHEET_NAME)),  # our own file, not user text
+    }
+
+
+def report_figures(result) -> dict:
+    """The report's figures (matplotlib, as SVG ``data:`` URIs), by the template's name for them."""
+    summary = _sorted_summary(result.summary)
+    system = system_of(result.settings or {})
+    sorted_result = _with_summary(result, summary)
+    return {
+        "demand": [_data_uri(svg) for svg in figures.sliding_demand_figures(sorted_result, system=system)],
+        "fragility": _data_uri(figures.fragility_figure(sorted_result)),
+        "regression": _data_uri(figures.regression_figure(sorted_result)),
+        "simulation": (_data_uri(figures.simulation_vs_regression_figure(result, system))
+                       if result.simulated else None),
+        "histories": [{"uri": _data_uri(figures.history_figure(h, system)), "id": h["id"], "name": h["name"],
+                       "motion": h["motion"], "sim_motion": h["sim_motion"], "solver": h["solver"],
+                       "direction": h["direction"]}
+                      for h in list(result.histories)[:HISTORY_FIGURES]],
     }
 
 
@@ -413,6 +421,17 @@ def _with_summary(result, summary: pd.DataFrame):
     return dataclasses.replace(result, summary=summary)
 
 
-def render_html(result) -> str:
-    """The risk report of ``result`` as one self-contained HTML document."""
-    return make_environment().get_template(TEMPLATE_NAME).render(report_context(result))
+def render_html(result, appendix_ready: Callable[[str], None] | None = None) -> str:
+    """The risk report of ``result`` as one self-contained HTML document.
+
+    ``appendix_ready``, where given, is handed the document of the report's appendix alone (as
+    :func:`assess.report.pdf.split_appendix` makes it from the whole report) as soon as it is made, before
+    the figures are drawn, so that a second process can start laying it out (:func:`assess.output.render_outputs`).
+    """
+    template = make_environment().get_template(TEMPLATE_NAME)
+    context = report_context(result, with_figures=False)
+    if appendix_ready is not None:
+        _, appendix = split_appendix(template.render(context, appendix_only=True))
+        if appendix is not None:
+            appendix_ready(appendix)
+    return template.render(context, figures=report_figures(result), appendix_only=False)
