@@ -17,7 +17,17 @@ the run is done twice and the second (compiled, cached) time is reported:
   its record; the run-out after the record is not counted), overall and per
   solver, against a plain compiled loop (numba, one explicit stick-slip update
   per sample per block, threads over blocks; ``bench_sliding.py``): the
-  baseline of what the hardware does with the simplest possible kernel.
+  baseline of what the hardware does with the simplest possible kernel;
+* the engine against the compiled-loop limit of the physics each case needs: the
+  same cases, each by the simplest compiled loop of its physics, threads over
+  cases. A case the sliding kernel ran: the plain stick-slip loop. A case the
+  rocking kernel or the general solver ran: the plain rocking loop of
+  ``bench_rocking.py`` (fixed Runge-Kutta steps, impacts at the step where θ
+  changes sign, not located, no rest logic, stopped at overturning), at p·h ≤ 0.01
+  (the step at which bench_rocking compares it with the kernel) and at p·h ≤ 0.1
+  (the kernel's own largest step: the stricter limit, as no loop without event
+  location is that accurate at that step). A slide-rock case has the rocking loop
+  as its limit, though it also slides: a limit lower than its physics.
 
 With ``--building STOREYS`` the items stand on the floors of a building of that many storeys (3.6 m
 each, a steel moment frame, T1 from ASCE 7 Table 12.8-2, 5 % damping: :mod:`assess.building`), item i
@@ -34,6 +44,8 @@ from collections import Counter
 
 import numba
 import numpy as np
+
+from bench_rocking import plain_one_at
 
 from assess.mechanics.block import Block
 from assess.mechanics.engine import GENERAL, ROCKING_KERNEL, SLIDING_KERNEL, simulate_cases
@@ -72,6 +84,62 @@ def plain_loop_block_steps_per_s(records, dts, n_blocks, repeat=3):
         plain_loop_parallel(accel_2d, lengths, dt, mu, STANDARD_GRAVITY_M_S2)
         best = min(best, time.perf_counter() - start)
     return n_blocks * int(lengths.sum()) / best
+
+
+@numba.njit(cache=True)
+def _plain_sliding_one(accel, dt, mu, gravity):
+    """bench_sliding's plain stick-slip loop for one block under one record: peak |u|."""
+    u = v = top = 0.0
+    for k in range(accel.size):
+        a = accel[k]
+        if v == 0.0:
+            if abs(a) <= mu:
+                continue
+            direction = -1.0 if a > 0.0 else 1.0
+        else:
+            direction = 1.0 if v > 0.0 else -1.0
+        v_new = v - gravity * (a + direction * mu) * dt
+        if v_new * direction < 0.0:
+            v_new = 0.0
+        u += 0.5 * (v + v_new) * dt
+        v = v_new
+        top = max(top, abs(u))
+    return top
+
+
+@numba.njit(cache=True, parallel=True)
+def _plain_cases(accel_flat, offsets, dts, record, rocks, mu, alpha, p, e, step, gravity):
+    """Each case by the plain loop of its physics (``rocks``: the rocking loop, else the sliding one)."""
+    out = np.empty(record.size)
+    for c in numba.prange(record.size):
+        j = record[c]
+        accel = accel_flat[offsets[j]:offsets[j + 1]]
+        if rocks[c]:
+            out[c] = plain_one_at(accel, dts[j], alpha[c], p[c], e[c], step)
+        else:
+            out[c] = _plain_sliding_one(accel, dts[j], mu[c], gravity)
+    return out
+
+
+def physics_limit_seconds(blocks, records, dts, index, solver, step, repeat=2):
+    """Seconds the plain loops of each case's physics take for all the cases (best of ``repeat``)."""
+    flat = np.concatenate([np.asarray(r, dtype=float) for r in records])
+    offsets = np.concatenate(([0], np.cumsum([r.size for r in records]))).astype(np.int64)
+    dts = np.asarray(dts, dtype=float)
+    rocks = solver != SLIDING_KERNEL
+    mu = np.array([b.mu for b in blocks])
+    alpha = np.array([b.alpha_rad for b in blocks])
+    p = np.array([b.p_rad_s for b in blocks])
+    e = np.array([b.restitution_effective for b in blocks])
+    args = (flat, offsets, dts, np.asarray(index, dtype=np.int64), rocks, mu, alpha, p, e, step,
+            STANDARD_GRAVITY_M_S2)
+    _plain_cases(*args)  # compile or load
+    best = np.inf
+    for _ in range(repeat):
+        start = time.perf_counter()
+        _plain_cases(*args)
+        best = min(best, time.perf_counter() - start)
+    return best
 
 
 def floor_histories(records, dts, storeys):
@@ -142,6 +210,10 @@ def main():
     print(f"block-steps per second: engine {engine_rate:.3e} overall; plain compiled loop {baseline:.3e} "
           f"({args.baseline_blocks} blocks x {len(records)} records); the engine at {engine_rate / baseline:.1%} "
           "of the plain loop")
+    for step in (0.01, 0.1):
+        limit = physics_limit_seconds(blocks, records, dts, index, peaks.solver, step)
+        print(f"the compiled-loop limit of each case's physics (rocking loop at p·h <= {step:g}): {limit:.2f} s; "
+              f"the engine at {seconds / limit:.1f}x it")
     modes = Counter(peaks.mode.tolist())
     print("modes: " + ", ".join(f"{k} {v}" for k, v in sorted(modes.items())))
     print(f"overturned: {int(peaks.overturned.sum())}")

@@ -51,7 +51,13 @@ def load_records():
 def _plain_one(accel, dt, alpha, p, e):
     """The simplest compiled rocking loop: fixed RK4 steps (p h <= 0.01), impacts at the
     step where theta changes sign (not located), no rest logic. Peak |theta|/alpha."""
-    n_sub = max(1, int(np.ceil(p * dt / 0.01)))
+    return plain_one_at(accel, dt, alpha, p, e, 0.01)
+
+
+@numba.njit(cache=True)
+def plain_one_at(accel, dt, alpha, p, e, step):
+    """:func:`_plain_one` with fixed RK4 steps of p h <= ``step``."""
+    n_sub = max(1, int(np.ceil(p * dt / step)))
     h = p * dt / n_sub
     theta, w, side, peak = 0.0, 0.0, 1.0, 0.0
     for k in range(accel.size - 1):
