@@ -17,7 +17,7 @@ from assess.tables import csv_text, neutralise_formulas, restore_text, summary_t
 
 
 def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: str | None = None,
-                   other_levels: tuple[AssessmentResult, ...] = ()) -> dict[str, bytes]:
+                   other_levels: tuple[AssessmentResult, ...] = (), pdf_process=None) -> dict[str, bytes]:
     """All files of a run, by name, as bytes (nothing is written here).
 
     ``formats`` may hold ``html``, ``pdf`` (the report) and ``xlsx``
@@ -25,11 +25,14 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: st
     inches beside centimetres in US units). ``units`` (``si`` or ``us``) defaults to the result's
     settings' (``--units`` or the workbook's, :func:`assess.quantity_text.system_of`). ``other_levels``, the
     results of the other levels of the same run, add their sheets to summary.xlsx
-    after this level's.
+    after this level's. ``pdf_process``, the second process that draws the PDF's appendix
+    (:func:`assess.report.pdf_process`), is started here where not given: a caller that renders several
+    reports (``assess batch``) starts one for all of them.
     """
     # the PDF's second process starts first, so that it has imported WeasyPrint by the time the HTML is made,
     # and is sent the appendix before the figures are drawn (render_html), so that it lays it out meanwhile
-    with report.pdf_process() if "pdf" in formats else contextlib.nullcontext() as pdf_process:
+    started = report.pdf_process() if "pdf" in formats and pdf_process is None else contextlib.nullcontext(pdf_process)
+    with started as pdf_process:
         html = None
         if "html" in formats or "pdf" in formats:
             html = report.render_html(result, appendix_ready=None if pdf_process is None else pdf_process.draw)
