@@ -28,6 +28,9 @@ References
 from __future__ import annotations
 
 import functools
+import json
+from importlib import resources
+from pathlib import Path
 
 import numpy as np
 from scipy import optimize
@@ -262,14 +265,31 @@ def type_b_approximation(gamma, nu):
 _READING_PHASES = 24
 
 
-@functools.lru_cache(maxsize=16)
-def _type_b_reading_table(gamma):
+#: The file of :func:`type_b_reading_table` at the synthesis' default γ (``python -m
+#: assess.hazard.near_fault_pulse`` writes it; tests/test_synthesis.py recomputes it): the 24 fits take
+#: about 0.25 s, which every run that synthesises motions would spend again.
+READING_TABLE_FILE = "type_b_reading.json"
+
+
+def type_b_reading_table(gamma) -> tuple[np.ndarray, np.ndarray]:
+    """(phases ν, readings): :func:`type_b_approximation` at 24 phases on [0, π), each as
+    (|vp_B| / peak velocity, T_B / Tp), worked out."""
     phases = np.linspace(0.0, np.pi, _READING_PHASES, endpoint=False)
     readings = []
     for nu in phases:
         amplitude, period = type_b_approximation(gamma, nu)
         readings.append((abs(amplitude) / abs(pulse_peak_factor(gamma, nu)), period))
     return phases, np.array(readings)
+
+
+@functools.lru_cache(maxsize=16)
+def _type_b_reading_table(gamma):
+    """:func:`type_b_reading_table`, read from :data:`READING_TABLE_FILE` where it holds ``gamma``."""
+    with resources.files("assess.data").joinpath(READING_TABLE_FILE).open("r") as handle:
+        stored = json.load(handle)
+    if float(stored["gamma"]) == gamma:
+        return np.asarray(stored["phases"], dtype=float), np.asarray(stored["readings"], dtype=float)
+    return type_b_reading_table(gamma)
 
 
 def type_b_reading(gamma, nu):
@@ -288,3 +308,12 @@ def type_b_reading(gamma, nu):
     extended = np.concatenate([phases, [period]])
     values = np.vstack([readings, readings[:1]])
     return float(np.interp(nu, extended, values[:, 0])), float(np.interp(nu, extended, values[:, 1]))
+
+
+if __name__ == "__main__":  # writes READING_TABLE_FILE (floats as Python writes them: read back exactly)
+    from assess.hazard.synthesis import DEFAULT_PULSE_GAMMA
+
+    gamma = DEFAULT_PULSE_GAMMA
+    phases, readings = type_b_reading_table(gamma)
+    text = json.dumps({"gamma": gamma, "phases": phases.tolist(), "readings": readings.tolist()}, indent=1)
+    (Path(__file__).resolve().parents[1] / "data" / READING_TABLE_FILE).write_text(text + "\n")
