@@ -299,10 +299,12 @@ def _suite_strip(runs: pd.DataFrame, clearance_cm: float | None, system: str = "
         mine = runs[runs["motion_key"] == key]
         label = strip_label_lines(text(mine["motion"].iloc[0]))
         extra = (len(label) - 1) * (STRIP_FONT_PX + 1)
-        lines.append({"y": y + extra / 2.0, "label": label, "label_y": y - extra / 2.0 + 3,
-                      "dots": [{"x": STRIP_LEFT + float(v) * scale, "overturned": bool(o)}
-                               for v, o in zip(pd.to_numeric(mine["sliding_cm"], errors="coerce").fillna(0.0) * per_cm,
-                                               mine["overturned"])]})
+        line_y = y + extra / 2.0
+        xs = STRIP_LEFT + pd.to_numeric(mine["sliding_cm"], errors="coerce").fillna(0.0).to_numpy(float) * per_cm * scale
+        overturned = mine["overturned"].to_numpy(bool)
+        lines.append({"y": line_y, "label": label, "label_y": y - extra / 2.0 + 3,
+                      "dots": [float(x) for x in xs[~overturned]],
+                      "crosses": strip_crosses_path(xs[overturned], line_y)})
         y += STRIP_ROW + extra
     axis_y = y - STRIP_ROW / 2.0 + 4
     height = axis_y + 12
@@ -310,6 +312,25 @@ def _suite_strip(runs: pd.DataFrame, clearance_cm: float | None, system: str = "
     return {"width": STRIP_WIDTH, "height": height, "left": STRIP_LEFT, "lines": lines, "axis_y": axis_y,
             "line_height": STRIP_FONT_PX + 1, "font": STRIP_FONT_PX, "ticks": ticks,
             "clearance_x": None if clearance is None else STRIP_LEFT + clearance * scale}
+
+
+#: A cross of the strip (an overturned history): the "×" of DejaVu Sans at 9 px, drawn as two strokes
+#: [px]: half its width and height, its centre below the line's y, the width of its strokes (the glyph's
+#: outline, glyph "multiply" in font units of 2048 per em: arms' ends 1376.5 - 858.5 = 518 from the centre,
+#: 170 thick, centre 642 above the baseline at y + 3).
+CROSS_HALF_PX, CROSS_DROP_PX, CROSS_STROKE_PX = 2.28, 0.18, 0.75
+
+
+def strip_crosses_path(xs, y: float) -> str:
+    """The crosses of one strip line, one at each x [px], as the ``d`` of one SVG path ("" for none): one
+    path node to draw instead of one text node (laid out letter by letter by the PDF's renderer) each.
+
+    >>> strip_crosses_path([100.0], 15.0)
+    'M97.7 12.9l4.56 4.56m0-4.56l-4.56 4.56'
+    """
+    side = f"{2 * CROSS_HALF_PX:.2f}"
+    top = y + CROSS_DROP_PX - CROSS_HALF_PX
+    return "".join(f"M{x - CROSS_HALF_PX:.1f} {top:.1f}l{side} {side}m0-{side}l-{side} {side}" for x in xs)
 
 
 def _nice_ticks(top: float) -> list[float]:
