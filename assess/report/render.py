@@ -303,7 +303,7 @@ def _suite_strip(runs: pd.DataFrame, clearance_cm: float | None, system: str = "
         xs = STRIP_LEFT + pd.to_numeric(mine["sliding_cm"], errors="coerce").fillna(0.0).to_numpy(float) * per_cm * scale
         overturned = mine["overturned"].to_numpy(bool)
         lines.append({"y": line_y, "label": label, "label_y": y - extra / 2.0 + 3,
-                      "dots": [float(x) for x in xs[~overturned]],
+                      "dots": strip_dot_paths(xs[~overturned], line_y),
                       "crosses": strip_crosses_path(xs[overturned], line_y)})
         y += STRIP_ROW + extra
     axis_y = y - STRIP_ROW / 2.0 + 4
@@ -331,6 +331,34 @@ def strip_crosses_path(xs, y: float) -> str:
     side = f"{2 * CROSS_HALF_PX:.2f}"
     top = y + CROSS_DROP_PX - CROSS_HALF_PX
     return "".join(f"M{x - CROSS_HALF_PX:.1f} {top:.1f}l{side} {side}m0-{side}l-{side} {side}" for x in xs)
+
+
+#: Radius of a dot of the strip (a history that did not overturn) [px]; a quarter circle as a cubic Bézier curve
+#: has its control points this fraction of the radius from its ends (4/3·(√2 − 1), the usual circle).
+DOT_RADIUS_PX, CIRCLE_KAPPA = 2.2, 4.0 / 3.0 * (math.sqrt(2.0) - 1.0)
+
+
+def strip_dot_paths(xs, y: float, radius: float = DOT_RADIUS_PX) -> list[str]:
+    """The dots of one strip line, one at each x [px], as the ``d`` of a few SVG paths: each path holds dots
+    that do not touch one another, so that drawn half-opaque, one path after another, dots that overlap darken
+    where they overlap as separate circles do (the same colour and opacity: the order does not matter), with a
+    node per path instead of per dot.
+
+    >>> strip_dot_paths([10.0, 12.0, 20.0], 5.0)
+    ['M7.8 5.0a2.2 2.2 0 1 0 4.4 0a2.2 2.2 0 1 0 -4.4 0M17.8 5.0a2.2 2.2 0 1 0 4.4 0a2.2 2.2 0 1 0 -4.4 0', 'M9.8 5.0a2.2 2.2 0 1 0 4.4 0a2.2 2.2 0 1 0 -4.4 0']
+    """
+    layers: list[list[float]] = []  # each layer's x, rounded as drawn, in the order given
+    for x in (round(float(x), 1) for x in xs):
+        for layer in layers:
+            if all(abs(x - other) >= 2 * radius for other in layer):
+                layer.append(x)
+                break
+        else:
+            layers.append([x])
+    r, k = radius, radius * (1.0 - CIRCLE_KAPPA)
+    circle = (f"c0 {r - k:.2f} {-k:.2f} {r:.2f} {-r:.2f} {r:.2f}s{-r:.2f} {-k:.2f} {-r:.2f} {-r:.2f}"
+              f"s{k:.2f} {-r:.2f} {r:.2f} {-r:.2f}s{r:.2f} {k:.2f} {r:.2f} {r:.2f}z")
+    return ["".join(f"M{x + radius:.1f} {y:.1f}{circle}" for x in layer) for layer in layers]
 
 
 def _nice_ticks(top: float) -> list[float]:
