@@ -204,8 +204,10 @@ STRIP_WIDTH, STRIP_LEFT, STRIP_ROW, STRIP_FONT_PX, STRIP_LABEL_CHARS = 660, 250,
 #: by letter, each word not left-aligned a PDF group of its own (a third of the appendix's PDF, which the merge
 #: then reads and writes again). A line of words is WORD_LINE_PX high (a name on two lines: one under the other,
 #: as the SVG's 9 px); DejaVu Sans' ascent and descent [em] (its hhea table, 1901 and 483 of 2048 units) put its
-#: baseline where the SVG text's was; a centred word (an axis' number) is centred in a box WORD_MIDDLE_PX wide.
-WORD_LINE_PX, FONT_ASCENT_EM, FONT_DESCENT_EM, WORD_MIDDLE_PX = 9.0, 1901 / 2048, 483 / 2048, 80.0
+#: baseline where the SVG text's was; a centred word (an axis' number) is centred in a box WORD_MIDDLE_PX wide, a
+#: word that ends at its x (a motion's name) ends a box WORD_END_PX wide (wider than any name's line, so that a
+#: long one runs out to the left, never over the dots).
+WORD_LINE_PX, FONT_ASCENT_EM, FONT_DESCENT_EM, WORD_MIDDLE_PX, WORD_END_PX = 9.0, 1901 / 2048, 483 / 2048, 80.0, 400.0
 
 
 def _item_details(rows: list[dict], summary: pd.DataFrame, runs: pd.DataFrame | None,
@@ -235,19 +237,19 @@ def figure_word(lines, x: float, baseline_y: float, anchor: str = "start", size_
                 colour: str = "black", width_px: float = STRIP_WIDTH) -> dict:
     """A word (or a name on two lines) to lay over an SVG ``width_px`` wide, as SVG text at ``x``, ``baseline_y``
     [px] with ``text-anchor`` ``anchor`` ('start', 'middle', 'end') would be: its lines and its CSS position, in a
-    box of a given width (from the SVG's left edge to ``x`` for 'end', from ``x`` to its right edge for 'start'),
-    which the renderer need not measure its words to size.
+    box of a given width (ending at ``x`` for 'end', from ``x`` to the SVG's right edge for 'start'), which the
+    renderer need not measure its words to size.
 
     >>> figure_word("0", 100.0, 20.0, "middle", 7.5)["style"]
     'left: 60.0px; width: 80px; text-align: center; top: 12.90px; font-size: 7.5px; color: black'
     >>> figure_word(["a", "b"], 244, 18.0, "end")["style"]
-    'left: 0; width: 244px; text-align: right; top: 10.73px; font-size: 8px; color: black'
+    'left: -156px; width: 400px; text-align: right; top: 10.73px; font-size: 8px; color: black'
     """
     lines = [lines] if isinstance(lines, str) else list(lines)
     ascent, height = FONT_ASCENT_EM * size_px, (FONT_ASCENT_EM + FONT_DESCENT_EM) * size_px
     top = baseline_y - ((WORD_LINE_PX - height) / 2.0 + ascent)
     if anchor == "end":
-        where = f"left: 0; width: {x:g}px; text-align: right"
+        where = f"left: {x - WORD_END_PX:g}px; width: {WORD_END_PX:g}px; text-align: right"
     elif anchor == "middle":
         where = f"left: {x - WORD_MIDDLE_PX / 2.0:.1f}px; width: {WORD_MIDDLE_PX:g}px; text-align: center"
     else:
