@@ -182,3 +182,37 @@ def test_ctrl_c_while_two_processes_draw_the_pdf_exits_130_and_leaves_no_process
             break
         assert time.monotonic() < deadline, "a process of the run outlived it"
         time.sleep(0.1)
+
+
+def _words_past_their_cell(html: str) -> list[str]:
+    """The words of the appendix's item tables (table.kv) that WeasyPrint lays out past the right edge of their
+    cell's content (into the next column or off the page)."""
+    weasyprint = pytest.importorskip("weasyprint")
+    from weasyprint.formatting_structure import boxes
+
+    from assess.report.pdf import data_only_url_fetcher
+
+    _, appendix = split_appendix(html)
+    document = weasyprint.HTML(string=appendix, url_fetcher=data_only_url_fetcher()).render()
+    past = []
+
+    def walk(box, cell):
+        if isinstance(box, boxes.TableCellBox):
+            cell = box
+        if cell is not None and isinstance(box, boxes.TextBox):
+            if box.position_x + box.width > cell.content_box_x() + cell.width + 0.5:
+                past.append(box.text)
+        for child in getattr(box, "children", None) or ():
+            walk(child, cell)
+
+    for page in document.pages:
+        walk(page._page_box, None)  # the laid-out boxes of the page (WeasyPrint keeps them there)
+    return past
+
+
+def test_no_word_of_an_item_table_runs_past_its_cell(html):
+    """On paper the item tables have fixed column widths (templates/report.css): their headings ("Chance of rocking
+    that harms it", one line) and values fit their columns, as they did when WeasyPrint measured them."""
+    assert _words_past_their_cell(html) == []
+    narrow = html.replace("table.kv col.kv-th { width: 30%; }", "table.kv col.kv-th { width: 20%; }")
+    assert narrow != html and "Chance of rocking that harms it" in _words_past_their_cell(narrow)

@@ -179,16 +179,16 @@ def _with_runs_and_history(result, motion_name):
 def test_a_long_motion_name_is_shown_whole_in_the_strip_and_the_history_has_a_time_axis():
     long_name = "Gilroy Historic Building, floor 2 (interpolated between floors 1 and 3) at 0.71 g"
     html = render_html(_with_runs_and_history(make_result(simulated=True), long_name))
-    detail = re.search(r'<div class="item-detail" id="item-F-01">.*?</div>', html, re.S).group(0)
-    strip = re.search(r'<svg class="strip".*?</svg>', detail, re.S).group(0)
-    shown = " ".join(re.findall(r"<tspan[^>]*>(.*?)</tspan>", strip))
-    assert long_name in shown
-    assert all(len(part) <= 52 for part in re.findall(r"<tspan[^>]*>(.*?)</tspan>", strip))
-    assert "[cm]</text>" in strip
-    spark = re.search(r'<svg class="spark".*?</svg>', detail, re.S).group(0)
+    detail = html.split('<div class="item-detail" id="item-F-01">')[1].split('<div class="item-detail"')[0]
+    strip = re.search(r'<svg class="strip".*?</svg>.*?</div>', detail, re.S).group(0)  # the SVG, then its words
+    names = [name.split("<br>") for name in re.findall(r'<span class="figure-word" [^>]*>(.*?)</span>', strip)]
+    assert long_name in [" ".join(lines) for lines in names]
+    assert all(len(line) <= 52 for lines in names for line in lines)
+    assert "[cm]</span>" in strip
+    spark = re.search(r'<svg class="spark".*?</svg>.*?</div>', detail, re.S).group(0)
     for title in ("time [s]", "sliding [cm]", "θ/α [–]"):
-        assert f">{title}</text>" in spark
-    ticks = [float(t) for t in re.findall(r'text-anchor="middle" font-size="7.5">([0-9.]+)</text>', spark)]
+        assert f">{title}</span>" in spark
+    ticks = [float(t) for t in re.findall(r'text-align: center[^>]*font-size: 7.5px[^>]*>([0-9.]+)</span>', spark)]
     assert ticks[0] == 0 and ticks[-1] <= 12.0 < ticks[-1] + (ticks[1] - ticks[0])
 
 

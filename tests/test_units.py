@@ -204,9 +204,8 @@ def test_the_item_strips_draw_every_history_inside_the_strip_in_either_unit(unit
         assert strips, "no item strip drawn"
         for strip in strips:
             width = float(re.search(r'width="(\d+)"', strip).group(1))
-            xs = [float(x) for x in re.findall(r'<circle cx="([\d.]+)"', strip)]
-            xs += [float(x) for x in re.findall(r'<text x="([\d.]+)" y="[\d.]+" text-anchor="middle" font-size="9"',
-                                                 strip)]
+            marks = " ".join(re.findall(r'<path d="([^"]+)" fill="(?:#2c3e50|none)"', strip))  # dots, crosses
+            xs = [float(x) for x in re.findall(r"M([\d.]+) [\d.]+", marks)]  # where each dot or cross begins
             assert xs and all(0 < x <= width for x in xs), (name, xs, width)
 
 

@@ -200,6 +200,15 @@ SPARK_LEFT, SPARK_RIGHT, SPARK_TOP, SPARK_BOTTOM = 46, 46, 11, 15
 #: Size of an item's suite strip [px]: width, left margin for the motion names, height of a one-line row,
 #: font size of a name, and the widest name on one line [characters] (longer ones wrap on two lines).
 STRIP_WIDTH, STRIP_LEFT, STRIP_ROW, STRIP_FONT_PX, STRIP_LABEL_CHARS = 660, 250, 13, 8, 52
+#: The words of an item's strip and history plot (the motions' names, the axes' titles and numbers) are HTML laid
+#: over their SVG, at the SVG's own coordinates [px], not SVG text: the PDF's renderer lays SVG text out letter
+#: by letter, each word not left-aligned a PDF group of its own (a third of the appendix's PDF, which the merge
+#: then reads and writes again). A line of words is WORD_LINE_PX high (a name on two lines: one under the other,
+#: as the SVG's 9 px); DejaVu Sans' ascent and descent [em] (its hhea table, 1901 and 483 of 2048 units) put its
+#: baseline where the SVG text's was; a centred word (an axis' number) is centred in a box WORD_MIDDLE_PX wide, a
+#: word that ends at its x (a motion's name) ends a box WORD_END_PX wide (wider than any name's line, so that a
+#: long one runs out to the left, never over the dots).
+WORD_LINE_PX, FONT_ASCENT_EM, FONT_DESCENT_EM, WORD_MIDDLE_PX, WORD_END_PX = 9.0, 1901 / 2048, 483 / 2048, 80.0, 400.0
 
 
 def _item_details(rows: list[dict], summary: pd.DataFrame, runs: pd.DataFrame | None,
@@ -223,6 +232,30 @@ def _item_details(rows: list[dict], summary: pd.DataFrame, runs: pd.DataFrame | 
                         "theta": format_significant(item.get("theta_max_over_alpha"), 2),
                         "alpha": format_significant(item.get("alpha_rad"), 2)})
     return details
+
+
+def figure_word(lines, x: float, baseline_y: float, anchor: str = "start", size_px: float = 8.0,
+                colour: str = "black", width_px: float = STRIP_WIDTH) -> dict:
+    """A word (or a name on two lines) to lay over an SVG ``width_px`` wide, as SVG text at ``x``, ``baseline_y``
+    [px] with ``text-anchor`` ``anchor`` ('start', 'middle', 'end') would be: its lines and its CSS position, in a
+    box of a given width (ending at ``x`` for 'end', from ``x`` to the SVG's right edge for 'start'), which the
+    renderer need not measure its words to size.
+
+    >>> figure_word("0", 100.0, 20.0, "middle", 7.5)["style"]
+    'left: 60.0px; width: 80px; text-align: center; top: 12.90px; font-size: 7.5px; color: black'
+    >>> figure_word(["a", "b"], 244, 18.0, "end")["style"]
+    'left: -156px; width: 400px; text-align: right; top: 10.73px; font-size: 8px; color: black'
+    """
+    lines = [lines] if isinstance(lines, str) else list(lines)
+    ascent, height = FONT_ASCENT_EM * size_px, (FONT_ASCENT_EM + FONT_DESCENT_EM) * size_px
+    top = baseline_y - ((WORD_LINE_PX - height) / 2.0 + ascent)
+    if anchor == "end":
+        where = f"left: {x - WORD_END_PX:g}px; width: {WORD_END_PX:g}px; text-align: right"
+    elif anchor == "middle":
+        where = f"left: {x - WORD_MIDDLE_PX / 2.0:.1f}px; width: {WORD_MIDDLE_PX:g}px; text-align: center"
+    else:
+        where = f"left: {x:g}px; width: {width_px - x:g}px"
+    return {"lines": lines, "style": f"{where}; top: {top:.2f}px; font-size: {size_px:g}px; color: {colour}"}
 
 
 def _history_spark(history: dict, system: str = "si") -> dict:
@@ -256,12 +289,20 @@ def _history_spark(history: dict, system: str = "si") -> dict:
                         clearance if np.isfinite(clearance) else 0.0, 0.1)
     theta_limit = max(float(np.nanmax(np.abs(theta))) if np.isfinite(theta).any() else 0.0, 1.0)
     sliding_text, theta_text = format_significant(sliding_limit, 2), format_significant(theta_limit, 2)
+    sliding_ticks = [("+" + sliding_text, top), ("0", middle), ("−" + sliding_text, bottom)]
+    theta_ticks = [("+" + theta_text, top), ("0", middle), ("−" + theta_text, bottom)]
+    time_ticks = [{"x": float(x_of(t)), "label": f"{t:g}"} for t in _nice_ticks(span * 1.0001)]
+    blue, red, grey = "#2c3e50", "#c0392b", "#5d6d7e"
+    words = [figure_word(f"sliding [{length_unit(system)}]", x0, top - 4, colour=blue, width_px=SPARK_WIDTH),
+             figure_word("θ/α [–]", x1, top - 4, "end", colour=red, width_px=SPARK_WIDTH)]
+    words += [figure_word(label, x0 - 3, y + 3, "end", 7.5, blue, SPARK_WIDTH) for label, y in sliding_ticks]
+    words += [figure_word(label, x1 + 3, y + 3, "start", 7.5, red, SPARK_WIDTH) for label, y in theta_ticks]
+    words += [figure_word(t["label"], t["x"], bottom + 12, "middle", 7.5, width_px=SPARK_WIDTH) for t in time_ticks]
+    words.append(figure_word("time [s]", x1 + 4, bottom + 12, colour=grey, width_px=SPARK_WIDTH))
     return {"width": SPARK_WIDTH, "height": SPARK_HEIGHT, "x0": x0, "x1": x1, "top": top, "bottom": bottom,
             "middle": middle, "sliding": points(sliding, sliding_limit), "theta": points(theta, theta_limit),
             "sliding_limit": sliding_text, "theta_limit": theta_text, "duration": f"{span:.0f}",
-            "sliding_ticks": [("+" + sliding_text, top), ("0", middle), ("−" + sliding_text, bottom)],
-            "theta_ticks": [("+" + theta_text, top), ("0", middle), ("−" + theta_text, bottom)],
-            "time_ticks": [{"x": float(x_of(t)), "label": f"{t:g}"} for t in _nice_ticks(span * 1.0001)],
+            "time_ticks": time_ticks, "words": words,
             "clearance_y": float(y_of(clearance, sliding_limit)) if np.isfinite(clearance) else None,
             "motion": text(history.get("sim_motion")), "overturned": bool(history.get("overturned")),
             "direction": history.get("direction")}
@@ -296,21 +337,77 @@ def _suite_strip(runs: pd.DataFrame, clearance_cm: float | None, system: str = "
     scale = (STRIP_WIDTH - STRIP_LEFT - 10) / top
     motions = list(dict.fromkeys(runs["motion_key"]))
     lines, y = [], 15.0  # below the axis titles
+    words = [figure_word("motion", STRIP_LEFT - 6, 7, "end", colour="#5d6d7e")]
     for key in motions:
         mine = runs[runs["motion_key"] == key]
         label = strip_label_lines(text(mine["motion"].iloc[0]))
         extra = (len(label) - 1) * (STRIP_FONT_PX + 1)
-        lines.append({"y": y + extra / 2.0, "label": label, "label_y": y - extra / 2.0 + 3,
-                      "dots": [{"x": STRIP_LEFT + float(v) * scale, "overturned": bool(o)}
-                               for v, o in zip(pd.to_numeric(mine["sliding_cm"], errors="coerce").fillna(0.0) * per_cm,
-                                               mine["overturned"])]})
+        line_y = y + extra / 2.0
+        sliding_of_run = pd.to_numeric(mine["sliding_cm"], errors="coerce").fillna(0.0).to_numpy(float) * per_cm
+        xs = STRIP_LEFT + sliding_of_run * scale
+        overturned = mine["overturned"].to_numpy(bool)
+        words.append(figure_word(label, STRIP_LEFT - 6, y - extra / 2.0 + 3, "end", STRIP_FONT_PX))
+        lines.append({"y": line_y,
+                      "dots": strip_dot_paths(xs[~overturned], line_y),
+                      "crosses": strip_crosses_path(xs[overturned], line_y)})
         y += STRIP_ROW + extra
     axis_y = y - STRIP_ROW / 2.0 + 4
     height = axis_y + 12
-    ticks = [{"x": STRIP_LEFT + t * scale, "label": f"{t:g}"} for t in _nice_ticks(top)]
+    words += [figure_word(f"{t:g}", STRIP_LEFT + t * scale, axis_y + 11, "middle") for t in _nice_ticks(top)]
+    words.append(figure_word(f"peak sliding of a history [{length_unit(system)}]", STRIP_LEFT - 10, axis_y + 11,
+                             "end", colour="#5d6d7e"))
     return {"width": STRIP_WIDTH, "height": height, "left": STRIP_LEFT, "lines": lines, "axis_y": axis_y,
-            "line_height": STRIP_FONT_PX + 1, "font": STRIP_FONT_PX, "ticks": ticks,
+            "words": words,
             "clearance_x": None if clearance is None else STRIP_LEFT + clearance * scale}
+
+
+#: A cross of the strip (an overturned history): the "×" of DejaVu Sans at 9 px, drawn as two strokes
+#: [px]: half its width and height, its centre below the line's y, the width of its strokes (the glyph's
+#: outline, glyph "multiply" in font units of 2048 per em: arms' ends 1376.5 - 858.5 = 518 from the centre,
+#: 170 thick, centre 642 above the baseline at y + 3).
+CROSS_HALF_PX, CROSS_DROP_PX, CROSS_STROKE_PX = 2.28, 0.18, 0.75
+
+
+def strip_crosses_path(xs, y: float) -> str:
+    """The crosses of one strip line, one at each x [px], as the ``d`` of one SVG path ("" for none): one
+    path node to draw instead of one text node (laid out letter by letter by the PDF's renderer) each.
+
+    >>> strip_crosses_path([100.0], 15.0)
+    'M97.7 12.9l4.56 4.56m0-4.56l-4.56 4.56'
+    """
+    side = f"{2 * CROSS_HALF_PX:.2f}"
+    top = y + CROSS_DROP_PX - CROSS_HALF_PX
+    return "".join(f"M{x - CROSS_HALF_PX:.1f} {top:.1f}l{side} {side}m0-{side}l-{side} {side}" for x in xs)
+
+
+#: Radius of a dot of the strip (a history that did not overturn) [px]; a quarter circle as a cubic Bézier curve
+#: has its control points this fraction of the radius from its ends (4/3·(√2 − 1), the usual circle).
+DOT_RADIUS_PX, CIRCLE_KAPPA = 2.2, 4.0 / 3.0 * (math.sqrt(2.0) - 1.0)
+
+
+def strip_dot_paths(xs, y: float, radius: float = DOT_RADIUS_PX) -> list[str]:
+    """The dots of one strip line, one at each x [px], as the ``d`` of a few SVG paths: each path holds dots
+    that do not touch one another, so that drawn half-opaque, one path after another, dots that overlap darken
+    where they overlap as separate circles do (the same colour and opacity: the order does not matter), with a
+    node per path instead of per dot.
+
+    >>> [layer.count("M") for layer in strip_dot_paths([10.0, 12.0, 20.0], 5.0)]  # 10 and 12 overlap
+    [2, 1]
+    >>> strip_dot_paths([10.0], 5.0)[0]  # from (12.2, 5) round through (10, 7.2), (7.8, 5), (10, 2.8)
+    'M12.2 5.0c0 1.22 -0.98 2.20 -2.20 2.20s-2.20 -0.98 -2.20 -2.20s0.98 -2.20 2.20 -2.20s2.20 0.98 2.20 2.20z'
+    """
+    layers: list[list[float]] = []  # each layer's x, rounded as drawn, in the order given
+    for x in (round(float(x), 1) for x in xs):
+        for layer in layers:
+            if all(abs(x - other) >= 2 * radius for other in layer):
+                layer.append(x)
+                break
+        else:
+            layers.append([x])
+    r, k = radius, radius * (1.0 - CIRCLE_KAPPA)
+    circle = (f"c0 {r - k:.2f} {-k:.2f} {r:.2f} {-r:.2f} {r:.2f}s{-r:.2f} {-k:.2f} {-r:.2f} {-r:.2f}"
+              f"s{k:.2f} {-r:.2f} {r:.2f} {-r:.2f}s{r:.2f} {k:.2f} {r:.2f} {r:.2f}z")
+    return ["".join(f"M{x + radius:.1f} {y:.1f}{circle}" for x in layer) for layer in layers]
 
 
 def _nice_ticks(top: float) -> list[float]:
