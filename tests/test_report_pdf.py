@@ -150,6 +150,30 @@ def _spawned_child(pid: int) -> bool:
 
 @pytest.mark.skipif(not Path("/proc/self/task").exists() or len(os.sched_getaffinity(0)) < 2,
                     reason="needs Linux's /proc and a second core (the second process)")
+def test_ctrl_c_as_the_second_process_starts_is_acted_on_once_it_has_started():
+    """An interrupt that comes while the second process is being started (told what to run) is held back
+    until it is, then acted on: the process is ended and the interrupt raised, and the second process
+    never prints a half-read start ("EOFError: Ran out of input")."""
+    script = """
+import multiprocessing, os, signal, sys, time
+from assess.report import pdf
+start = multiprocessing.context.SpawnProcess.start
+def interrupted_start(self):
+    os.kill(os.getpid(), signal.SIGINT)  # Ctrl-C as it starts
+    time.sleep(0.1)
+    start(self)
+    print('started', flush=True)
+multiprocessing.context.SpawnProcess.start = interrupted_start
+try:
+    pdf.AppendixProcess()
+except KeyboardInterrupt:
+    print('interrupted', [p.name for p in multiprocessing.active_children()], flush=True)
+"""
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120, env=child_env())
+    assert done.stdout.split("\n")[:2] == ["started", "interrupted []"], (done.stdout, done.stderr)
+    assert "Error" not in done.stderr, done.stderr
+
+
 def test_ctrl_c_while_two_processes_draw_the_pdf_exits_130_and_leaves_no_process(tmp_path):
     """Ctrl-C at the terminal reaches the whole process group, the second process too: the run exits 130 in
     one line, no traceback from either process, the folder as it was, and no process of the run is left."""

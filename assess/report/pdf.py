@@ -188,8 +188,17 @@ class AppendixProcess:
         context = multiprocessing.get_context("spawn")
         self.connection, theirs = context.Pipe()
         self.process = context.Process(target=_serve, args=(theirs,), name="assess-pdf-appendix", daemon=True)
+        self.sent: list[str] = []  # the documents sent whose PDF is not read yet
+        # Ctrl-C while it starts would leave it half-told what to run (it then prints "EOFError: Ran out of
+        # input"): the interrupt is held back until it has started (any thread of this process may take
+        # the signal, so blocking it in this one is not enough), then acted on, the process ended first
+        pending = []
         try:
-            blocked = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+            previous = signal.signal(signal.SIGINT, lambda signum, frame: pending.append(signum))
+        except ValueError:  # not the main thread: its handler is the main thread's to run
+            previous = None
+        try:
+            blocked = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})  # the new process inherits it
         except (AttributeError, ValueError):
             blocked = None
         try:
@@ -198,7 +207,11 @@ class AppendixProcess:
             if blocked is not None:
                 signal.pthread_sigmask(signal.SIG_SETMASK, blocked)
             theirs.close()  # only the second process holds its end: it closing is seen here as EOF
-        self.sent: list[str] = []  # the documents sent whose PDF is not read yet
+            if previous is not None:
+                signal.signal(signal.SIGINT, previous)
+        if pending:
+            self.close()
+            signal.raise_signal(signal.SIGINT)
 
     def draw(self, html: str) -> None:
         self.sent.append(html)
