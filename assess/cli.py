@@ -8,9 +8,7 @@ head``), as for any command stopped by a closed pipe.
 from __future__ import annotations
 
 import argparse
-import atexit
 import json
-import os
 import sys
 import traceback
 from pathlib import Path
@@ -300,25 +298,6 @@ def main(argv: list[str] | None = None) -> int:
             return interrupted()
         except BrokenPipeError:
             return reader_gone()
-
-
-def run() -> None:
-    """The ``assess`` command and ``python -m assess``: :func:`main`, then the process ends at once.
-
-    A run has imported pandas, numba, matplotlib and WeasyPrint; letting the interpreter take them apart
-    one by one costs about half a second after the last file is written. So the exit handlers run (they
-    end the helper processes, :mod:`assess.mechanics.warmup` and the PDF's), the streams are flushed and
-    the process ends with :func:`os._exit`, its exit code that of :func:`main`. ``--help`` and a wrong
-    option leave through argparse's ``SystemExit`` as before.
-    """
-    code = main()
-    atexit._run_exitfuncs()  # what the interpreter runs first on leaving; os._exit skips only the rest
-    for stream in (sys.stdout, sys.stderr):
-        try:
-            stream.flush()
-        except (OSError, ValueError):  # the reader went away or the stream is closed: nothing to save
-            pass
-    os._exit(code)
 
 
 def _main(argv: list[str] | None) -> int:

@@ -265,7 +265,7 @@ def type_b_approximation(gamma, nu):
 _READING_PHASES = 24
 
 
-#: The file of :func:`type_b_reading_table` at the synthesis' default γ (``python -m
+#: The file of :func:`type_b_reading_table` at the synthesis' default γ 2.3 (``python -m
 #: assess.hazard.near_fault_pulse`` writes it; tests/test_synthesis.py recomputes it): the 24 fits take
 #: about 0.25 s, which every run that synthesises motions would spend again.
 READING_TABLE_FILE = "type_b_reading.json"
@@ -310,10 +310,9 @@ def type_b_reading(gamma, nu):
     return float(np.interp(nu, extended, values[:, 0])), float(np.interp(nu, extended, values[:, 1]))
 
 
-if __name__ == "__main__":  # writes READING_TABLE_FILE (floats as Python writes them: read back exactly)
-    from assess.hazard.synthesis import DEFAULT_PULSE_GAMMA
-
-    gamma = DEFAULT_PULSE_GAMMA
+if __name__ == "__main__":  # writes READING_TABLE_FILE again, for its γ (floats as Python writes them: read back exactly)
+    path = Path(__file__).resolve().parents[1] / "data" / READING_TABLE_FILE
+    gamma = float(json.loads(path.read_text())["gamma"])
     phases, readings = type_b_reading_table(gamma)
     text = json.dumps({"gamma": gamma, "phases": phases.tolist(), "readings": readings.tolist()}, indent=1)
-    (Path(__file__).resolve().parents[1] / "data" / READING_TABLE_FILE).write_text(text + "\n")
+    path.write_text(text + "\n")
