@@ -14,22 +14,11 @@ from pathlib import Path
 
 import pytest
 
-from assess.report import render_html
 from assess.report.pdf import ELSEWHERE, pdf_process, render_pdf, split_appendix
 from tests.commands import LAB, child_env
-from tests.test_report import make_result
+from tests.test_report import html, result  # noqa: F401, F811 (test_report's fixtures: its sample result and report)
 
 pypdf = pytest.importorskip("pypdf")
-
-
-@pytest.fixture(scope="module")
-def result():
-    return make_result()
-
-
-@pytest.fixture(scope="module")
-def html(result) -> str:
-    return render_html(result)
 
 
 @pytest.fixture(scope="module")
