@@ -13,7 +13,7 @@ import sys
 import traceback
 from pathlib import Path
 
-from assess import __version__
+from assess import __version__, startup
 from assess.errors import InputError, Problem, printable
 from assess.folders import write_file_atomically
 from assess.site_option import joined_oq_site
@@ -341,30 +341,24 @@ def _warn(message: str) -> None:
     print(f"assess: {printable(message)}", file=sys.stderr)
 
 
-def _warm_up(args: argparse.Namespace) -> None:
-    """A first run after install on this machine: the general solver compiles while the core imports
-    (:meth:`assess.mechanics.runner.LocalRunner.warm_up`)."""
-    if args.scheduler is None:
-        from assess.mechanics.runner import LocalRunner
-        LocalRunner().warm_up(args.jobs)
-
-
 def _assess(args: argparse.Namespace, say) -> int:
-    _warm_up(args)
-    from assess import job  # the core: seconds to import, not needed for --help or a wrong option
+    startup.warm_up(args.scheduler, args.jobs)
+    with startup.pdf_process(args.format) as pdf_process:
+        from assess import job  # the core: seconds to import, not needed for --help or a wrong option
 
-    levels = job.run_job(job.AssessmentJob(
-        args.workbook, args.hazard, out=args.out, formats=args.format, units=args.units, jobs=args.jobs,
-        seed=args.seed, oq_hazard=args.oq_hazard, oq_site=args.oq_site, derive_floors=args.derive_floors,
-        calibration=args.calibration, compare_with=args.compare_with, scheduler=args.scheduler,
-        scheduler_tls=_tls(args), allow_records_outside=args.allow_records_outside), say, warn=_warn)
-    for level in levels:
-        written = write_uninterrupted(level.files, level.out_dir)
-        counts = level.result.risk_counts()
-        say(f"{level.result.level_label}: {counts['high']} high, {counts['moderate']} moderate, {counts['low']} "
-            f"low risk, {counts['anchored']} anchored")
-        for path in written:
-            print(path)
+        levels = job.run_job(job.AssessmentJob(
+            args.workbook, args.hazard, out=args.out, formats=args.format, units=args.units, jobs=args.jobs,
+            seed=args.seed, oq_hazard=args.oq_hazard, oq_site=args.oq_site, derive_floors=args.derive_floors,
+            calibration=args.calibration, compare_with=args.compare_with, scheduler=args.scheduler,
+            scheduler_tls=_tls(args), allow_records_outside=args.allow_records_outside, pdf_process=pdf_process),
+            say, warn=_warn)
+        for level in levels:
+            written = write_uninterrupted(level.files, level.out_dir)
+            counts = level.result.risk_counts()
+            say(f"{level.result.level_label}: {counts['high']} high, {counts['moderate']} moderate, "
+                f"{counts['low']} low risk, {counts['anchored']} anchored")
+            for path in written:
+                print(path)
     return EXIT_OK
 
 
@@ -383,7 +377,7 @@ def _calibrate(args: argparse.Namespace, say) -> int:
 
 
 def _batch(args: argparse.Namespace, say) -> int:
-    _warm_up(args)
+    startup.warm_up(args.scheduler, args.jobs)
     from assess import job  # the core: seconds to import, not needed for --help or a wrong option
 
     staged, runner, out_dir = job.run_batch(job.BatchJob(

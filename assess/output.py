@@ -27,15 +27,16 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: st
     results of the other levels of the same run, add their sheets to summary.xlsx
     after this level's. ``pdf_process``, the second process that draws the PDF's appendix
     (:func:`assess.report.pdf_process`), is started here where not given: a caller that renders several
-    reports (``assess batch``) starts one for all of them.
+    reports (``assess batch``) starts one for all of them, and one that starts it before making the result
+    (the ``assess`` command) with :data:`assess.report.FIGURE_MODULES` has it draw some of the figures too.
     """
     # the PDF's second process starts first, so that it has imported WeasyPrint by the time the HTML is made,
-    # and is sent the appendix before the figures are drawn (render_html), so that it lays it out meanwhile
+    # and is sent the appendix before this one draws the figures (render_html), so that it lays it out meanwhile
     started = report.pdf_process() if "pdf" in formats and pdf_process is None else contextlib.nullcontext(pdf_process)
     with started as pdf_process:
         html = None
         if "html" in formats or "pdf" in formats:
-            html = report.render_html(result, appendix_ready=None if pdf_process is None else pdf_process.draw)
+            html = report.render_html(result, pdf_process if "pdf" in formats else None)
         files = _tables(result, formats, units, other_levels)
         if "html" in formats:
             files["report.html"] = html.encode()

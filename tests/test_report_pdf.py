@@ -31,16 +31,67 @@ def test_the_bytes_do_not_depend_on_the_processes_that_drew_them(html, pdf):
     assert render_pdf(html, processes=2) == pdf
 
 
-def test_the_appendix_is_handed_on_before_the_figures_are_drawn(result, html, monkeypatch):
-    """render_html hands the appendix's document on first, the very one split_appendix cuts out of the
-    whole report, so that the second process lays it out while this one draws the figures."""
-    from assess.report import render
+def test_the_appendix_is_handed_on_before_this_process_draws_figures(result, html, monkeypatch):
+    """render_html asks the second process for its figures, then hands it the appendix's document, the very
+    one split_appendix cuts out of the whole report, and only then draws its own figures, so that the second
+    process lays the appendix out while this one draws; where the second process gives no figures, this one
+    draws them too, and the report is the same."""
+    from assess.report import FIGURE_MODULES, figures, render
 
     events = []
-    draw_figures = render.report_figures
-    monkeypatch.setattr(render, "report_figures", lambda r: events.append("figures") or draw_figures(r))
-    assert render.render_html(result, appendix_ready=events.append) == html
-    assert events == [split_appendix(html)[1], "figures"]
+
+    class Answered:
+        def result(self):
+            return None  # as a second process that died: this one draws them
+
+    class Process:
+        modules = FIGURE_MODULES
+
+        def call(self, function, jobs):
+            events.append(("call", function.__name__, tuple(jobs)))
+            return Answered()
+
+        def draw(self, document):
+            events.append(document)
+
+    drawn = figures.sliding_demand_figures
+    monkeypatch.setattr(figures, "sliding_demand_figures", lambda *a, **k: events.append("drawing") or drawn(*a, **k))
+    assert render.render_html(result, Process()) == html
+    elsewhere = tuple(name for name in render.ELSEWHERE_FIGURES if name != "simulation" or result.simulated)
+    assert events == [("call", "draw_figures", elsewhere), split_appendix(html)[1], "drawing"]
+
+
+def test_the_second_process_draws_its_figures_and_the_report_is_the_same(result, html):
+    """Started with the figures' modules, the second process answers the call for its figures (not this
+    process drawing them after all), with the bytes this process would draw, and joins the PDF's parts."""
+    from assess.report import FIGURE_MODULES, render
+    from assess.report.pdf import Call
+
+    answers = []
+    result_of = Call.result
+
+    def recorded(call):
+        value = result_of(call)
+        answers.append(call.reply[0])
+        return value
+
+    with pdf_process(2, modules=FIGURE_MODULES) as process:
+        Call.result = recorded
+        try:
+            assert render.render_html(result, process) == html
+            assert render_pdf(html, process=process) == render_pdf(html, processes=1)
+        finally:
+            Call.result = result_of
+    assert answers == [True, True]  # the figures, then the merge: both done there
+
+
+def test_figures_a_dead_second_process_owes_are_drawn_here(result):
+    from assess.report import FIGURE_MODULES, render
+
+    with pdf_process(2, modules=FIGURE_MODULES) as process:
+        process.process.kill()
+        process.process.join()
+        assert render.report_figures(result, process) == render.report_figures(result)
 
 
 def test_a_process_sent_another_appendix_first_still_draws_this_one(html, pdf):

@@ -284,6 +284,12 @@ class LocalRunner(RunnerBase):
         for it before the solver's first use."""
         warmup.start(threads)
 
+    @staticmethod
+    def warming_up() -> bool:
+        """Whether this run compiles the general solver in a second process (:meth:`warm_up` started it:
+        a first run after install)."""
+        return warmup.running()
+
 
 def run_responses(runs, runner: Optional[Runner] = None, *, tail_s=DEFAULT_TAIL_S, history=False,
                   solver="auto") -> list:

@@ -58,6 +58,11 @@ def start(threads: int | None = None) -> None:
     atexit.register(_stop)
 
 
+def running() -> bool:
+    """Whether this run started the general solver's compilation (:func:`start`): a first run after install."""
+    return _process is not None
+
+
 def wait() -> None:
     """Wait for the compile :func:`start` began, if any (the general solver then loads from the cache)."""
     global _process

@@ -12,6 +12,10 @@ does, does not import pandas and matplotlib.
 """
 import importlib
 
+#: What the PDF's second process (``pdf_process(modules=FIGURE_MODULES)``) imports as it starts so that it can
+#: draw some of the report's figures while the first one draws the others (:func:`render.report_figures`).
+FIGURE_MODULES = ("assess.report.render",)
+
 #: Each public name and the module that defines it.
 _HOMES = {
     "render_html": "assess.report.render",
@@ -23,7 +27,7 @@ _HOMES = {
 }
 
 __all__ = ["render_html", "render_pdf", "pdf_process", "fragility_curve", "data_only_url_fetcher",
-           "RefusedURLError"]
+           "RefusedURLError", "FIGURE_MODULES"]
 
 
 def __getattr__(name: str):

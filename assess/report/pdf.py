@@ -24,10 +24,13 @@ from __future__ import annotations
 import base64
 import contextlib
 import functools
+import importlib
 import io
 import multiprocessing
 import os
+import queue
 import signal
+import sys
 import threading
 import urllib.parse
 
@@ -160,35 +163,87 @@ def second_core() -> bool:
         return (os.cpu_count() or 1) > 1
 
 
-def _serve(connection) -> None:
-    """The second process: import WeasyPrint at once (while the first one still writes the HTML), then
-    draw the HTML documents it is sent, one PDF each, until the pipe closes. A document is taken off the
-    pipe as soon as it is sent, even while WeasyPrint is still being imported, so that the first process
-    never waits on a full pipe. Ctrl-C is the first process's to act on (it ends this one)."""
+def _import(modules: tuple[str, ...]) -> None:
+    """WeasyPrint and pypdf (:func:`merge`), then ``modules`` (what the calls it will be sent need: :meth:`AppendixProcess.call`), at a
+    lower priority than the first process's work, where the system lets a thread have its own (Linux)."""
+    if sys.platform == "linux":  # setpriority(2): on Linux a thread's id names the thread alone
+        with contextlib.suppress(OSError):
+            os.setpriority(os.PRIO_PROCESS, threading.get_native_id(), IMPORT_NICENESS)
+    _weasyprint()
+    for name in ("pypdf", *modules):
+        importlib.import_module(name)
+
+
+#: How much lower the second process's imports run than the first process (its assessment, which uses both
+#: cores at times): they take a core only when it is idle (setpriority(2); 19 is the lowest priority).
+IMPORT_NICENESS = 10
+
+
+def _serve(connection, modules: tuple[str, ...] = ()) -> None:
+    """The second process: import WeasyPrint and ``modules`` at once (while the first one still works on the
+    result), then answer what it is sent, in order, until the pipe closes: an HTML document with its PDF, a
+    call ``(function, args)`` with ``(True, function(*args))``, or ``(False, why)`` where the call failed
+    (the first process then does that work itself). What is sent is read off the pipe at once, by a thread
+    of its own, even while the imports run or a call is answered, so that the first process never waits on
+    a full pipe. Ctrl-C is the first process's to act on (it ends this one)."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
-    importing = threading.Thread(target=_weasyprint, name="import WeasyPrint")
+    importing = threading.Thread(target=_import, args=(modules,), name="import WeasyPrint")
     importing.start()
-    while True:
-        try:
-            html = connection.recv()
-        except EOFError:
-            return
+    requests = queue.SimpleQueue()
+
+    def read() -> None:
+        while True:
+            try:
+                requests.put(connection.recv())
+            except (EOFError, OSError):
+                requests.put(None)
+                return
+
+    threading.Thread(target=read, name="read requests", daemon=True).start()
+    while (request := requests.get()) is not None:
         importing.join()
-        connection.send_bytes(render_part(html))
+        if isinstance(request, str):
+            connection.send_bytes(render_part(request))
+            continue
+        function, args = request
+        try:
+            reply = (True, function(*args))
+        except Exception as error:  # noqa: BLE001 -- the first process does the work itself, and says nothing
+            reply = (False, f"{type(error).__name__}: {error}")
+        connection.send(reply)
+
+
+class Call:
+    """The answer to :meth:`AppendixProcess.call`, once read: :meth:`result`."""
+
+    def __init__(self, process: "AppendixProcess"):
+        self.process, self.read, self.reply = process, False, (False, "not answered")
+
+    def result(self):
+        """The call's value, or None where the second process failed it or ended first."""
+        while not self.read and self.process.sent and self.process.read_one():
+            pass
+        done, value = self.reply
+        return value if done else None
 
 
 class AppendixProcess:
-    """A second process that draws the appendix (:func:`_serve`), started with 'spawn' (a fresh
+    """A second process that draws the appendix (:func:`_serve`), and whatever else it is given to do meanwhile
+    (:meth:`call`: the figures it draws while this process draws the others), started with 'spawn' (a fresh
     interpreter: no fork of this process's threads), SIGINT blocked while it starts so that it never sees
     Ctrl-C. :meth:`draw` sends it an HTML document, :meth:`pdf` waits for the PDF of the last one sent
     (those of any sent before it are read and dropped); a process that ended without one (killed,
-    crashed) is an error, not a wait without end."""
+    crashed) is an error, not a wait without end. ``modules`` are imported as it starts, beside WeasyPrint.
+    """
 
-    def __init__(self):
+    def __init__(self, modules: tuple[str, ...] = ()):
         context = multiprocessing.get_context("spawn")
         self.connection, theirs = context.Pipe()
-        self.process = context.Process(target=_serve, args=(theirs,), name="assess-pdf-appendix", daemon=True)
-        self.sent: list[str] = []  # the documents sent whose PDF is not read yet
+        self.modules = tuple(modules)
+        self.process = context.Process(target=_serve, args=(theirs, self.modules), name="assess-pdf-appendix",
+                                       daemon=True)
+        self.sent: list = []  # what was sent and is not answered yet, in order: an HTML document or a Call
+        self.last_pdf: tuple[str, bytes] | None = None  # the last PDF read, and its document
         # Ctrl-C while it starts would leave it half-told what to run (it then prints "EOFError: Ran out of
         # input"): the interrupt is held back until it has started (any thread of this process may take
         # the signal, so blocking it in this one is not enough), then acted on, the process ended first
@@ -214,26 +269,48 @@ class AppendixProcess:
             signal.raise_signal(signal.SIGINT)
 
     def draw(self, html: str) -> None:
-        self.sent.append(html)
+        self._send(html, html)
+
+    def call(self, function, *args) -> Call:
+        """Have the second process run ``function(*args)`` (both picklable; the function by its module's
+        name), before what is sent after; :meth:`Call.result` waits for it."""
+        call = Call(self)
+        self._send(call, (function, args))
+        return call
+
+    def _send(self, pending, request) -> None:
+        self.sent.append(pending)
         try:
-            self.connection.send(html)
+            self.connection.send(request)
         except OSError:  # it has ended: pdf() says so (not a BrokenPipeError, which reads as stdout's reader gone)
             pass
 
     def drawing(self, html: str) -> bool:
         """Whether ``html`` is the last document sent, its PDF not read yet."""
-        return bool(self.sent) and self.sent[-1] == html
+        documents = [sent for sent in self.sent if isinstance(sent, str)]
+        return bool(documents) and documents[-1] == html
+
+    def read_one(self) -> bool:
+        """Read the answer to the oldest request not answered (a call's is kept in its :class:`Call`, a PDF
+        as :attr:`last_pdf`, its document's beside it); False where the process ended without it."""
+        pending = self.sent[0]
+        try:
+            if isinstance(pending, Call):
+                pending.reply, pending.read = self.connection.recv(), True
+            else:
+                self.last_pdf = (pending, self.connection.recv_bytes())
+        except (EOFError, OSError):
+            return False
+        self.sent.pop(0)
+        return True
 
     def pdf(self) -> bytes:
-        pdf = None
-        try:
-            while self.sent:
-                pdf = self.connection.recv_bytes()
-                self.sent.pop(0)
-        except (EOFError, OSError):
-            pdf = None
-        if pdf is not None:
-            return pdf
+        """The PDF of the last document sent (:meth:`draw`)."""
+        documents = [sent for sent in self.sent if isinstance(sent, str)]
+        while documents and any(sent is documents[-1] for sent in self.sent) and self.read_one():
+            pass
+        if documents and self.last_pdf is not None and self.last_pdf[0] is documents[-1]:
+            return self.last_pdf[1]
         self.process.join(timeout=5)
         raise RuntimeError("the process drawing the PDF's appendix ended without it "
                            f"(exit code {self.process.exitcode})")
@@ -247,15 +324,15 @@ class AppendixProcess:
 
 
 @contextlib.contextmanager
-def pdf_process(processes: int | None = None):
+def pdf_process(processes: int | None = None, modules: tuple[str, ...] = ()):
     """An :class:`AppendixProcess` for :func:`render_pdf`, or None where ``processes`` (default: 2 where
-    the machine has a second core, else 1) is 1. It imports WeasyPrint as soon as it starts, so that a
-    caller that enters this before writing the HTML finds it ready. Ended on leaving, on an error or
-    Ctrl-C too."""
+    the machine has a second core, else 1) is 1. It imports WeasyPrint and ``modules`` as soon as it starts,
+    so that a caller that enters this before making the result finds it ready. Ended on leaving, on an error
+    or Ctrl-C too."""
     if (processes if processes is not None else (2 if second_core() else 1)) < 2:
         yield None
         return
-    process = AppendixProcess()
+    process = AppendixProcess(modules)
     try:
         yield process
     finally:
@@ -283,8 +360,10 @@ def render_pdf(html: str, *, url_fetcher=None, processes: int | None = None, pro
         return merge(render_part(body), render_part(appendix))
     if not process.drawing(appendix):  # it may have been sent before the figures were drawn (render_html)
         process.draw(appendix)
-    joined = Joined(render_part(body))  # reads the body's PDF while the appendix is still being drawn
-    return joined.with_appendix(process.pdf())
+    body_pdf = render_part(body)
+    appendix_pdf = process.pdf()
+    # joined there, where pypdf is imported already and the work of this process is done
+    return process.call(merge, body_pdf, appendix_pdf).result() or merge(body_pdf, appendix_pdf)
 
 
 # --------------------------------------------------------------------------- one PDF

@@ -12,7 +12,6 @@ from __future__ import annotations
 import base64
 import dataclasses
 import math
-from collections.abc import Callable
 from importlib import resources
 from pathlib import Path
 
@@ -26,7 +25,7 @@ from assess.actions import work_order_sentences
 from assess.anchorage.item import anchorage_sentence
 from assess.anchorage.method import anchorage_method
 from assess.quantity_text import length_unit, length_value, system_of
-from assess.report import figures
+from assess.report import FIGURE_MODULES, figures
 from assess.report.costs import costs_context
 from assess.report.curve import curve_context
 from assess.risk_classes import rule_text
@@ -478,22 +477,58 @@ def report_context(result, with_figures: bool = True) -> dict:
     }
 
 
-def report_figures(result) -> dict:
-    """The report's figures (matplotlib, as SVG ``data:`` URIs), by the template's name for them."""
+def report_figures(result, process=None, appendix: str | None = None) -> dict:
+    """The report's figures (matplotlib, as SVG ``data:`` URIs), by the template's name for them.
+
+    ``process``, a second process (:func:`assess.report.pdf_process`) that has imported
+    :data:`assess.report.FIGURE_MODULES`, draws those of :data:`ELSEWHERE_FIGURES` meanwhile (the same
+    functions, so the same bytes; where it cannot, this one does), then lays out ``appendix``, the appendix's
+    document, where given. One started without them would import them first: this one draws them all then.
+    """
     summary = _sorted_summary(result.summary)
     system = system_of(result.settings or {})
     sorted_result = _with_summary(result, summary)
-    return {
-        "demand": [_data_uri(svg) for svg in figures.sliding_demand_figures(sorted_result, system=system)],
-        "fragility": _data_uri(figures.fragility_figure(sorted_result)),
-        "regression": _data_uri(figures.regression_figure(sorted_result)),
-        "simulation": (_data_uri(figures.simulation_vs_regression_figure(result, system))
-                       if result.simulated else None),
-        "histories": [{"uri": _data_uri(figures.history_figure(h, system)), "id": h["id"], "name": h["name"],
+    elsewhere = {name: job for name, job in _figure_jobs(result, sorted_result, system).items()
+                 if name in ELSEWHERE_FIGURES}
+    ready = process is not None and set(FIGURE_MODULES) <= set(getattr(process, "modules", ()))
+    call = process.call(draw_figures, elsewhere) if ready and elsewhere else None
+    if process is not None and appendix is not None:
+        process.draw(appendix)
+    drawn = {
+        "demand": figures.sliding_demand_figures(sorted_result, system=system),
+        "histories": [{"svg": figures.history_figure(h, system), "id": h["id"], "name": h["name"],
                        "motion": h["motion"], "sim_motion": h["sim_motion"], "solver": h["solver"],
                        "direction": h["direction"]}
                       for h in list(result.histories)[:HISTORY_FIGURES]],
     }
+    drawn.update((call.result() if call is not None else None) or draw_figures(elsewhere))
+    return {
+        "demand": [_data_uri(svg) for svg in drawn["demand"]],
+        "fragility": _data_uri(drawn["fragility"]),
+        "regression": _data_uri(drawn["regression"]),
+        "simulation": _data_uri(drawn["simulation"]) if drawn.get("simulation") is not None else None,
+        "histories": [{"uri": _data_uri(history.pop("svg")), **history} for history in drawn["histories"]],
+    }
+
+
+#: The figures a second process draws while this one draws the others (about half of the time each).
+ELSEWHERE_FIGURES = ("fragility", "regression", "simulation")
+
+
+def _figure_jobs(result, sorted_result, system: str) -> dict:
+    """The figures :data:`ELSEWHERE_FIGURES` as ``name -> (function, arguments)``, their result without its
+    histories (which they do not draw, and which are most of its bytes)."""
+    light, light_sorted = (dataclasses.replace(r, histories=()) for r in (result, sorted_result))
+    jobs = {"fragility": (figures.fragility_figure, (light_sorted,)),
+            "regression": (figures.regression_figure, (light_sorted,))}
+    if result.simulated:
+        jobs["simulation"] = (figures.simulation_vs_regression_figure, (light, system))
+    return jobs
+
+
+def draw_figures(jobs: dict) -> dict:
+    """``name -> SVG`` of ``name -> (function, arguments)`` (what a second process is sent to draw)."""
+    return {name: function(*arguments) for name, (function, arguments) in jobs.items()}
 
 
 def report_units(system: str, numbering: str) -> dict:
@@ -518,17 +553,16 @@ def _with_summary(result, summary: pd.DataFrame):
     return dataclasses.replace(result, summary=summary)
 
 
-def render_html(result, appendix_ready: Callable[[str], None] | None = None) -> str:
+def render_html(result, process=None) -> str:
     """The risk report of ``result`` as one self-contained HTML document.
 
-    ``appendix_ready``, where given, is handed the document of the report's appendix alone (as
-    :func:`assess.report.pdf.split_appendix` makes it from the whole report) as soon as it is made, before
-    the figures are drawn, so that a second process can start laying it out (:func:`assess.output.render_outputs`).
+    ``process``, where given (a second process, :func:`assess.report.pdf_process`, or anything with its
+    ``draw`` and ``call``), is sent the document of the report's appendix alone (as
+    :func:`assess.report.pdf.split_appendix` makes it from the whole report) as soon as it is made, after
+    the figures it draws (:func:`report_figures`), so that it lays the appendix out while this process
+    draws the other figures and lays out the body (:func:`assess.output.render_outputs`).
     """
     template = make_environment().get_template(TEMPLATE_NAME)
     context = report_context(result, with_figures=False)
-    if appendix_ready is not None:
-        _, appendix = split_appendix(template.render(context, appendix_only=True))
-        if appendix is not None:
-            appendix_ready(appendix)
-    return template.render(context, figures=report_figures(result), appendix_only=False)
+    _, appendix = split_appendix(template.render(context, appendix_only=True)) if process is not None else (None, None)
+    return template.render(context, figures=report_figures(result, process, appendix), appendix_only=False)
