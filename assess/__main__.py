@@ -3,6 +3,7 @@ import atexit
 import os
 import sys
 
+from assess import startup
 from assess.cli import main
 
 
@@ -13,8 +14,10 @@ def run() -> None:
     one by one costs about half a second after the last file is written. So the exit handlers run (they
     end the helper processes, :mod:`assess.mechanics.warmup` and the PDF's), the streams are flushed and
     the process ends with :func:`os._exit`, its exit code that of :func:`~assess.cli.main`. ``--help`` and
-    a wrong option leave through argparse's ``SystemExit`` as before.
+    a wrong option leave through argparse's ``SystemExit`` as before. The garbage collector is set for a
+    process that ends with its run (:func:`assess.startup.as_command`).
     """
+    startup.as_command()
     code = main()
     atexit._run_exitfuncs()  # what the interpreter runs first on leaving; os._exit skips only the rest
     for stream in (sys.stdout, sys.stderr):

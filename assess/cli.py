@@ -346,6 +346,8 @@ def _assess(args: argparse.Namespace, say) -> int:
     with startup.pdf_process(args.format) as pdf_process:
         from assess import job  # the core: seconds to import, not needed for --help or a wrong option
 
+        startup.core_imported()
+
         levels = job.run_job(job.AssessmentJob(
             args.workbook, args.hazard, out=args.out, formats=args.format, units=args.units, jobs=args.jobs,
             seed=args.seed, oq_hazard=args.oq_hazard, oq_site=args.oq_site, derive_floors=args.derive_floors,

@@ -6,6 +6,34 @@ the figures' modules by the time the result is made (:func:`assess.report.render
 from __future__ import annotations
 
 import contextlib
+import gc
+
+#: The cyclic garbage collector's thresholds in the command (Python's default: 700, 10, 10). A run makes
+#: hundreds of thousands of objects that live until it ends (the libraries it imports, the result, the
+#: report's layout); with the default thresholds the collector scans them again and again: 1.05 s of a
+#: 9.6 s run of the lab job, 0.14 s with these, for 3 % more memory. Cycles are still collected, a
+#: thirtieth as often.
+COMMAND_GC_THRESHOLDS = (20_000, 50, 50)
+
+#: Whether this process is the ``assess`` command (:func:`as_command`), which ends when its run does.
+_command = False
+
+
+def as_command() -> None:
+    """This process is the ``assess`` command (:func:`assess.__main__.run`): its garbage collector runs less
+    often (:data:`COMMAND_GC_THRESHOLDS`), and leaves alone what the core's imports made (:func:`core_imported`).
+    Not for a process that calls :func:`assess.cli.main` among other work (the tests)."""
+    global _command
+    _command = True
+    gc.set_threshold(*COMMAND_GC_THRESHOLDS)
+
+
+def core_imported() -> None:
+    """The core is imported: in the command (:func:`as_command`), what the imports made lives until the
+    process ends, so the garbage collector need not scan it again (:func:`gc.freeze`; the lab report's body
+    is laid out in 0.15 s less)."""
+    if _command:
+        gc.freeze()
 
 
 def warm_up(scheduler: str | None, jobs: int | None) -> None:

@@ -1,6 +1,9 @@
 """What the assess command starts before it imports the core (assess/startup.py)."""
 from __future__ import annotations
 
+import subprocess
+import sys
+
 from assess import report, startup
 from assess.report import pdf
 from assess.mechanics import warmup
@@ -21,3 +24,20 @@ def test_no_early_pdf_process_without_a_pdf_or_on_a_first_run(monkeypatch):
     assert warmup.running()
     with startup.pdf_process(("html", "pdf")) as process:
         assert process is None
+
+
+def test_the_command_collects_garbage_less_often_and_leaves_the_imports_alone():
+    """as_command (the assess command only, not a process that calls cli.main among other work)."""
+    script = ("import gc; from assess import startup; startup.core_imported(); print(gc.get_freeze_count() > 0); "
+              "startup.as_command(); startup.core_imported(); print(gc.get_threshold(), gc.get_freeze_count() > 0)")
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=60)
+    assert done.stdout.split("\n")[:2] == ["False", f"{startup.COMMAND_GC_THRESHOLDS} True"], done.stderr
+
+
+def test_the_second_process_warm_up_loads_what_a_first_report_loads():
+    from assess.report import render
+
+    render.warm_up()
+    assert render.report_template() is render.report_template()  # compiled once
+    module, _, function = report.FIGURE_MODULES[0].partition(":")
+    assert (module, function) == ("assess.report.render", "warm_up")

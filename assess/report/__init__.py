@@ -13,8 +13,9 @@ does, does not import pandas and matplotlib.
 import importlib
 
 #: What the PDF's second process (``pdf_process(modules=FIGURE_MODULES)``) imports as it starts so that it can
-#: draw some of the report's figures while the first one draws the others (:func:`render.report_figures`).
-FIGURE_MODULES = ("assess.report.render",)
+#: draw some of the report's figures while the first one draws the others (:func:`render.report_figures`), and
+#: then runs (``module:function``) to load the fonts its first figure and first PDF would load.
+FIGURE_MODULES = ("assess.report.render:warm_up",)
 
 #: Each public name and the module that defines it.
 _HOMES = {

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import base64
 import dataclasses
+import functools
 import math
 from importlib import resources
 from pathlib import Path
@@ -30,7 +31,8 @@ from assess.report.costs import costs_context
 from assess.report.curve import curve_context
 from assess.risk_classes import rule_text
 from assess.report.method import floor_motion_route
-from assess.report.pdf import RefusedURLError, data_only_url_fetcher, decode_data_uri, render_pdf, split_appendix  # noqa: F401
+from assess.report.pdf import (RefusedURLError, data_only_url_fetcher, decode_data_uri, render_part, render_pdf,  # noqa: F401
+                               split_appendix)
 from assess.report.references import reference_rows
 from assess.report.sentences import (
     DASH, action_groups, after_text, case_outcomes, changes, cm_interval_text, finite, flag_groups, floor_text, format_cm,
@@ -91,6 +93,23 @@ def make_environment() -> jinja2.Environment:
     environment.filters["cm"] = format_cm
     environment.filters["percent"] = format_percent
     return environment
+
+
+@functools.cache
+def report_template() -> jinja2.Template:
+    """The report's template, compiled once per process (:func:`make_environment`)."""
+    return make_environment().get_template(TEMPLATE_NAME)
+
+
+def warm_up() -> None:
+    """Pay now what a process's first report pays once: the template compiled, matplotlib's and WeasyPrint's
+    fonts loaded (a small figure and a small PDF in the report's style, not kept). The PDF's second process
+    runs it while the first one makes the result (:data:`assess.report.FIGURE_MODULES`)."""
+    report_template()
+    figures.warm_up()
+    render_part(f"<html><head><style>{template_text(STYLESHEET_NAME)}</style></head><body><h1>1</h1>"
+                "<p>a <b>b</b> <i>c</i> <code>d</code></p><table class='items'><tr><th>e</th><td>f</td></tr></table>"
+                "</body></html>")
 
 
 # --------------------------------------------------------------------------- context
@@ -485,30 +504,42 @@ def report_figures(result, process=None, appendix: str | None = None) -> dict:
     functions, so the same bytes; where it cannot, this one does), then lays out ``appendix``, the appendix's
     document, where given. One started without them would import them first: this one draws them all then.
     """
-    summary = _sorted_summary(result.summary)
-    system = system_of(result.settings or {})
-    sorted_result = _with_summary(result, summary)
-    elsewhere = {name: job for name, job in _figure_jobs(result, sorted_result, system).items()
-                 if name in ELSEWHERE_FIGURES}
-    ready = process is not None and set(FIGURE_MODULES) <= set(getattr(process, "modules", ()))
-    call = process.call(draw_figures, elsewhere) if ready and elsewhere else None
+    drawing = FigureDrawing(result, process)
     if process is not None and appendix is not None:
         process.draw(appendix)
-    drawn = {
-        "demand": figures.sliding_demand_figures(sorted_result, system=system),
-        "histories": [{"svg": figures.history_figure(h, system), "id": h["id"], "name": h["name"],
-                       "motion": h["motion"], "sim_motion": h["sim_motion"], "solver": h["solver"],
-                       "direction": h["direction"]}
-                      for h in list(result.histories)[:HISTORY_FIGURES]],
-    }
-    drawn.update((call.result() if call is not None else None) or draw_figures(elsewhere))
-    return {
-        "demand": [_data_uri(svg) for svg in drawn["demand"]],
-        "fragility": _data_uri(drawn["fragility"]),
-        "regression": _data_uri(drawn["regression"]),
-        "simulation": _data_uri(drawn["simulation"]) if drawn.get("simulation") is not None else None,
-        "histories": [{"uri": _data_uri(history.pop("svg")), **history} for history in drawn["histories"]],
-    }
+    return drawing.drawn()
+
+
+class FigureDrawing:
+    """The report's figures as they are drawn: those of :data:`ELSEWHERE_FIGURES` asked of ``process`` at
+    once (see :func:`report_figures`), the others drawn here by :meth:`drawn`, which returns them all."""
+
+    def __init__(self, result, process=None):
+        self.result = result
+        self.system = system_of(result.settings or {})
+        self.sorted_result = _with_summary(result, _sorted_summary(result.summary))
+        self.elsewhere = {name: job for name, job in _figure_jobs(result, self.sorted_result, self.system).items()
+                          if name in ELSEWHERE_FIGURES}
+        ready = process is not None and set(FIGURE_MODULES) <= set(getattr(process, "modules", ()))
+        self.call = process.call(draw_figures, self.elsewhere) if ready and self.elsewhere else None
+
+    def drawn(self) -> dict:
+        result, system = self.result, self.system
+        drawn = {
+            "demand": figures.sliding_demand_figures(self.sorted_result, system=system),
+            "histories": [{"svg": figures.history_figure(h, system), "id": h["id"], "name": h["name"],
+                           "motion": h["motion"], "sim_motion": h["sim_motion"], "solver": h["solver"],
+                           "direction": h["direction"]}
+                          for h in list(result.histories)[:HISTORY_FIGURES]],
+        }
+        drawn.update((self.call.result() if self.call is not None else None) or draw_figures(self.elsewhere))
+        return {
+            "demand": [_data_uri(svg) for svg in drawn["demand"]],
+            "fragility": _data_uri(drawn["fragility"]),
+            "regression": _data_uri(drawn["regression"]),
+            "simulation": _data_uri(drawn["simulation"]) if drawn.get("simulation") is not None else None,
+            "histories": [{"uri": _data_uri(history.pop("svg")), **history} for history in drawn["histories"]],
+        }
 
 
 #: The figures a second process draws while this one draws the others (about half of the time each).
@@ -557,12 +588,16 @@ def render_html(result, process=None) -> str:
     """The risk report of ``result`` as one self-contained HTML document.
 
     ``process``, where given (a second process, :func:`assess.report.pdf_process`, or anything with its
-    ``draw`` and ``call``), is sent the document of the report's appendix alone (as
-    :func:`assess.report.pdf.split_appendix` makes it from the whole report) as soon as it is made, after
-    the figures it draws (:func:`report_figures`), so that it lays the appendix out while this process
-    draws the other figures and lays out the body (:func:`assess.output.render_outputs`).
+    ``draw`` and ``call``), is asked for its figures first (:class:`FigureDrawing`), then sent the document
+    of the report's appendix alone (as :func:`assess.report.pdf.split_appendix` makes it from the whole
+    report) as soon as it is made, so that it lays the appendix out once it has drawn them, while this
+    process draws the other figures and lays out the body (:func:`assess.output.render_outputs`).
     """
-    template = make_environment().get_template(TEMPLATE_NAME)
+    drawing = FigureDrawing(result, process)
+    template = report_template()
     context = report_context(result, with_figures=False)
-    _, appendix = split_appendix(template.render(context, appendix_only=True)) if process is not None else (None, None)
-    return template.render(context, figures=report_figures(result, process, appendix), appendix_only=False)
+    if process is not None:
+        _, appendix = split_appendix(template.render(context, appendix_only=True))
+        if appendix is not None:
+            process.draw(appendix)
+    return template.render(context, figures=drawing.drawn(), appendix_only=False)
