@@ -227,43 +227,47 @@ def _item_demand(item_cases: pd.DataFrame, histories: pd.DataFrame | None, regre
     theta = 0.0
     severities = []
     planar_motions, uplift = set(), False
-    simulated = set(histories.index.droplevel(2)) if histories is not None else set()
-    for (key, node), unit in units.iterrows():
-        source, mu_weight = unit["demand_source"], float(unit["mu_weight"])
-        runs = None
-        if (key, node) in simulated:
-            runs = histories.loc[(key, node)]
-            theta = max(theta, float(runs["theta"].max()))
-            severities.extend(runs.loc[runs["mu_weight"] > 0.0, "severity"].tolist())
+    simulated = _runs_by_unit(histories)
+    regressed = {} if regression is None else dict(zip(
+        regression.index, zip(regression["median_cm"].to_numpy(), regression["pf"].to_numpy())))
+    lognormal = np.exp(constants.sigma * stats.norm.ppf((np.arange(_LOGNORMAL_POINTS) + 0.5) / _LOGNORMAL_POINTS))
+    for (key, node), source, mu_weight in zip(units.index, units["demand_source"].to_numpy(),
+                                              units["mu_weight"].to_numpy()):
+        mu_weight = float(mu_weight)
+        runs = simulated.get((key, node))
+        if runs is not None:
+            theta = max(theta, _nanmax(runs["theta"]))
+            severities.extend(runs["severity"][runs["mu_weight"] > 0.0].tolist())
         if source == REGRESSION:
             weight = mu_weight / n_motions
-            median_cm, pf = regression.loc[(key, node), ["median_cm", "pf"]]
+            median_cm, pf = regressed[(key, node)]
             if median_cm > 0.0:
-                quantiles = (np.arange(_LOGNORMAL_POINTS) + 0.5) / _LOGNORMAL_POINTS
-                values.extend(median_cm * np.exp(constants.sigma * stats.norm.ppf(quantiles)))
+                values.extend(median_cm * lognormal)
             else:
                 values.extend(np.zeros(_LOGNORMAL_POINTS))
             weights.extend(np.full(_LOGNORMAL_POINTS, weight / _LOGNORMAL_POINTS))
             exact_beyond += float(pf) * weight
             exact_weight += weight
             continue
-        share = 1.0 / (n_motions * len(runs))
+        count = len(runs["realization"])
+        share = 1.0 / (n_motions * count)
         if runs["planar"].any():
             planar_motions.add(key)
         uplift = uplift or bool((runs["uplift"] & (runs["mu_weight"] > 0.0)).any())
-        values.extend(runs["sliding_cm"].to_numpy())
-        weights.extend(np.full(len(runs), share * mu_weight))
-        history_parts.append(pd.DataFrame({
-            "motion_key": key, "realization": runs.index.to_numpy(), "share": share, "mass": mu_weight,
-            "beyond": mu_weight * (runs["sliding_cm"].to_numpy() > clearance_cm),
-            "overturn": mu_weight * runs["overturned"].to_numpy(dtype=float),
-            "harm": mu_weight * rocking_harm(runs["theta"].to_numpy(), runs["overturned"].to_numpy(),
-                                             harm_theta_over_alpha).astype(float)}))
+        values.extend(runs["sliding_cm"])
+        weights.extend(np.full(count, share * mu_weight))
+        history_parts.append({
+            "motion_key": np.full(count, key), "realization": runs["realization"], "share": np.full(count, share),
+            "mass": np.full(count, mu_weight),
+            "beyond": mu_weight * (runs["sliding_cm"] > clearance_cm),
+            "overturn": mu_weight * runs["overturned"].astype(float),
+            "harm": mu_weight * rocking_harm(runs["theta"], runs["overturned"], harm_theta_over_alpha).astype(float)})
     # per history: its weight (share × the μ weight of its simulated runs), and the μ-weighted share of its
     # runs beyond the clearance / overturned; the intervals count histories, not μ values
     sampled_weights, sampled_beyond, sampled_overturn, sampled_harm = [], [], [], []
     if history_parts:
-        per_history = pd.concat(history_parts).groupby(["motion_key", "realization"], sort=False).agg(
+        per_history = pd.DataFrame({column: np.concatenate([part[column] for part in history_parts])
+                                    for column in history_parts[0]}).groupby(["motion_key", "realization"], sort=False).agg(
             share=("share", "first"), mass=("mass", "sum"), beyond=("beyond", "sum"), overturn=("overturn", "sum"),
             harm=("harm", "sum"))
         sampled_weights = (per_history["share"] * per_history["mass"]).tolist()
@@ -298,6 +302,28 @@ def _item_demand(item_cases: pd.DataFrame, histories: pd.DataFrame | None, regre
         "p_rocking_harm": p_harm, "p_rocking_harm_low": p_harm_interval[0], "p_rocking_harm_high": p_harm_interval[1],
         "demand_mode": suite_mode(severities),
     }
+
+
+def _runs_by_unit(histories: pd.DataFrame | None) -> dict:
+    """An item's :func:`_per_history` table as ``(motion_key, mu_node) -> {column: array}`` (the runs of each
+    motion and μ value, in the table's order; ``realization`` from its index)."""
+    if histories is None:
+        return {}
+    columns = ("theta", "severity", "mu_weight", "planar", "uplift", "sliding_cm", "overturned")
+    arrays = {column: histories[column].to_numpy() for column in columns}
+    arrays["realization"] = histories.index.get_level_values(2).to_numpy()
+    units = pd.MultiIndex.from_arrays([histories.index.get_level_values(0), histories.index.get_level_values(1)])
+    out = {}
+    for unit, rows in pd.Series(np.arange(len(histories))).groupby(units.to_numpy(), sort=False).groups.items():
+        rows = np.sort(np.asarray(rows))
+        out[unit] = {column: array[rows] for column, array in arrays.items()}
+    return out
+
+
+def _nanmax(values: np.ndarray) -> float:
+    """The largest value that is not NaN (NaN where all are), as pandas' ``max``."""
+    finite = values[~np.isnan(values.astype(float))]
+    return float(finite.max()) if finite.size else float("nan")
 
 
 def _quantile_intervals(values, weights, sampled_weights, exact_weight: float) -> dict:
