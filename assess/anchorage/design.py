@@ -15,9 +15,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import asdict, dataclass
-from functools import lru_cache
 
-import pint
 
 from assess.anchorage.coefficients import canonical_edition, component_coefficients
 from assess.anchorage.equations import (
@@ -25,6 +23,7 @@ from assess.anchorage.equations import (
     force_asce7_16, force_asce7_22, force_bounds, govern, height_factor,
 )
 from assess.quantity_text import force_text
+from assess.units import conversion_factor
 
 
 @dataclass(frozen=True)
@@ -175,14 +174,9 @@ def design_force(edition, component_type, weight_n, sds_g, z_over_h, ip=None, pe
         anchor_shear_n=omega * force, anchor_tension_n=anchor_tension)
 
 
-@lru_cache(maxsize=1)
-def _registry() -> pint.UnitRegistry:
-    return pint.UnitRegistry()
-
-
-@lru_cache(maxsize=None)
 def _per_unit(source: str, target: str) -> float:
-    return float(_registry().Quantity(1.0, source).to(target).magnitude)
+    """Multiplier from ``source`` to ``target`` (the project's one pint registry, :mod:`assess.units`)."""
+    return conversion_factor(source, target)
 
 
 #: The force fields of :class:`AnchorageForces` converted by :func:`in_us_units`.

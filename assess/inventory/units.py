@@ -12,9 +12,8 @@ for accelerations, multiples of standard gravity g = 9.80665 m/s² (pint's
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
 
-import pint
+from assess.units import conversion_factor
 
 
 @dataclass(frozen=True)
@@ -59,15 +58,10 @@ VELOCITY = Dimension(
 )
 
 
-@lru_cache(maxsize=1)
-def _registry() -> pint.UnitRegistry:
-    return pint.UnitRegistry()
-
-
-@lru_cache(maxsize=None)
 def _factor(source_unit: str, target_unit: str) -> float:
-    """Multiplier taking a value in ``source_unit`` to ``target_unit`` (pint expressions)."""
-    return float(_registry().Quantity(1.0, source_unit).to(target_unit).magnitude)
+    """Multiplier taking a value in ``source_unit`` to ``target_unit`` (pint expressions; the project's one
+    registry, :func:`assess.units.conversion_factor`)."""
+    return conversion_factor(source_unit, target_unit)
 
 
 def to_canonical(value: float, dimension: Dimension, suffix: str) -> float:
