@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import contextlib
 import gc
+import os
 
 #: The cyclic garbage collector's thresholds in the command (Python's default: 700, 10, 10). A run makes
 #: hundreds of thousands of objects that live until it ends (the libraries it imports, the result, the
@@ -15,17 +16,25 @@ import gc
 #: thirtieth as often.
 COMMAND_GC_THRESHOLDS = (20_000, 50, 50)
 
+#: The threads of numpy's BLAS (OpenBLAS) in the command, where the user sets none: the command's matrices are
+#: small, and OpenBLAS's extra thread spins after each call, waiting for the next, on the core the PDF's second
+#: process works on (a later run of the lab job: about 1 CPU s less with one thread).
+BLAS_THREADS = {"OPENBLAS_NUM_THREADS": "1"}
+
 #: Whether this process is the ``assess`` command (:func:`as_command`), which ends when its run does.
 _command = False
 
 
 def as_command() -> None:
     """This process is the ``assess`` command (:func:`assess.__main__.run`): its garbage collector runs less
-    often (:data:`COMMAND_GC_THRESHOLDS`), and leaves alone what the core's imports made (:func:`core_imported`).
-    Not for a process that calls :func:`assess.cli.main` among other work (the tests)."""
+    often (:data:`COMMAND_GC_THRESHOLDS`), and leaves alone what the core's imports made (:func:`core_imported`);
+    numpy's BLAS uses one thread (:data:`BLAS_THREADS`). Not for a process that calls :func:`assess.cli.main`
+    among other work (the tests). Called before numpy is imported."""
     global _command
     _command = True
     gc.set_threshold(*COMMAND_GC_THRESHOLDS)
+    for name, value in BLAS_THREADS.items():
+        os.environ.setdefault(name, value)  # a user's own setting stands; the PDF's second process inherits it
 
 
 def core_imported() -> None:

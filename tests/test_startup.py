@@ -1,6 +1,7 @@
 """What the assess command starts before it imports the core (assess/startup.py)."""
 from __future__ import annotations
 
+import os
 import subprocess
 import sys
 
@@ -41,3 +42,13 @@ def test_the_second_process_warm_up_loads_what_a_first_report_loads():
     assert render.report_template() is render.report_template()  # compiled once
     module, _, function = report.FIGURE_MODULES[0].partition(":")
     assert (module, function) == ("assess.report.render", "warm_up")
+
+
+def test_the_command_gives_numpys_blas_one_thread_unless_the_user_set_it():
+    script = "import os; from assess import startup; startup.as_command(); print(os.environ['OPENBLAS_NUM_THREADS'])"
+    for given, expected in ((None, "1"), ("2", "2")):
+        env = {k: v for k, v in os.environ.items() if k != "OPENBLAS_NUM_THREADS"}
+        if given is not None:
+            env["OPENBLAS_NUM_THREADS"] = given
+        done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=60, env=env)
+        assert done.stdout.strip() == expected, done.stderr
