@@ -56,14 +56,15 @@ def warm_up(scheduler: str | None, jobs: int | None) -> None:
 
 
 def pdf_process(formats: tuple[str, ...]):
-    """The PDF's second process (a context manager), started now with the figures' modules
-    (:data:`assess.report.FIGURE_MODULES`), so that it draws some figures while this process draws the
-    others; None (a null context) without a PDF to draw, or on a first run after install, whose second
-    core compiles the general solver meanwhile (:func:`warm_up`): the report starts it itself then."""
+    """The PDF's processes (a context manager, :func:`assess.report.body_and_appendix_processes`), started now:
+    one imports the figures' modules (:data:`assess.report.FIGURE_MODULES`), draws some figures while this
+    process draws the others, then lays out the report's body; the other lays out its appendix. None (a null
+    context) without a PDF to draw, or on a first run after install, whose second core compiles the general
+    solver meanwhile (:func:`warm_up`): the report starts its one second process itself then."""
     from assess.mechanics.runner import LocalRunner
 
     if "pdf" not in formats or LocalRunner.warming_up():
         return contextlib.nullcontext(None)
     from assess import report  # assess.report.pdf alone: no pandas, no matplotlib
 
-    return report.pdf_process(modules=report.FIGURE_MODULES)
+    return report.body_and_appendix_processes(report.FIGURE_MODULES)

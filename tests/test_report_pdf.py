@@ -85,6 +85,22 @@ def test_the_second_process_draws_its_figures_and_the_report_is_the_same(result,
     assert answers == [True, True]  # the figures, then the merge: both done there
 
 
+def test_the_body_and_the_appendix_each_in_a_process_of_its_own_give_the_same_pdf(result, html, pdf):
+    """The assess command's processes: one draws figures then lays out the body, the other, niced, the
+    appendix; this process lays out nothing, and the report and its PDF are the same bytes."""
+    from assess.report import FIGURE_MODULES, render
+    from assess.report.pdf import body_and_appendix_processes
+
+    with body_and_appendix_processes(FIGURE_MODULES) as processes:
+        if processes is None:
+            pytest.skip("one core: no second process")
+        assert render.render_html(result, processes) == html
+        assert render_pdf(html, process=processes) == pdf
+        # it has answered, so it has lowered its priority first
+        assert os.getpriority(os.PRIO_PROCESS, processes.appendix.process.pid) > os.getpriority(os.PRIO_PROCESS, 0)
+        assert processes.body.sent == processes.appendix.sent == []  # every answer read
+
+
 def test_figures_a_dead_second_process_owes_are_drawn_here(result):
     from assess.report import FIGURE_MODULES, render
 

@@ -10,12 +10,19 @@ from assess.report import pdf
 from assess.mechanics import warmup
 
 
-def test_the_pdf_process_starts_early_with_the_figures_modules(monkeypatch):
+def test_the_pdf_processes_start_early_the_bodys_with_the_figures_modules(monkeypatch):
     monkeypatch.setattr(pdf, "second_core", lambda: True)
-    with startup.pdf_process(("html", "pdf")) as process:
-        assert process is not None and process.modules == report.FIGURE_MODULES
-        assert process.process.is_alive()
-    assert not process.process.is_alive()  # ended on leaving
+    with startup.pdf_process(("html", "pdf")) as processes:
+        assert processes is not None and processes.modules == processes.body.modules == report.FIGURE_MODULES
+        assert processes.appendix.modules == ()
+        assert processes.body.process.is_alive() and processes.appendix.process.is_alive()
+    assert not processes.body.process.is_alive() and not processes.appendix.process.is_alive()  # ended on leaving
+
+
+def test_one_core_starts_no_pdf_process(monkeypatch):
+    monkeypatch.setattr(pdf, "second_core", lambda: False)
+    with startup.pdf_process(("html", "pdf")) as processes:
+        assert processes is None
 
 
 def test_no_early_pdf_process_without_a_pdf_or_on_a_first_run(monkeypatch):

@@ -22,12 +22,13 @@ _HOMES = {
     "render_html": "assess.report.render",
     "render_pdf": "assess.report.pdf",
     "pdf_process": "assess.report.pdf",
+    "body_and_appendix_processes": "assess.report.pdf",
     "fragility_curve": "assess.report.figures",
     "data_only_url_fetcher": "assess.report.pdf",
     "RefusedURLError": "assess.report.pdf",
 }
 
-__all__ = ["render_html", "render_pdf", "pdf_process", "fragility_curve", "data_only_url_fetcher",
+__all__ = ["render_html", "render_pdf", "pdf_process", "body_and_appendix_processes", "fragility_curve", "data_only_url_fetcher",
            "RefusedURLError", "FIGURE_MODULES"]
 
 

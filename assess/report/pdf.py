@@ -192,14 +192,18 @@ SERVE_GC_THRESHOLDS = (20_000, 50, 50)
 IMPORT_NICENESS = 10
 
 
-def _serve(connection, modules: tuple[str, ...] = ()) -> None:
+def _serve(connection, modules: tuple[str, ...] = (), niceness: int = 0) -> None:
     """The second process: import WeasyPrint and ``modules`` at once (while the first one still works on the
     result), then answer what it is sent, in order, until the pipe closes: an HTML document with its PDF, a
     call ``(function, args)`` with ``(True, function(*args))``, or ``(False, why)`` where the call failed
     (the first process then does that work itself). What is sent is read off the pipe at once, by a thread
     of its own, even while the imports run or a call is answered, so that the first process never waits on
-    a full pipe. Ctrl-C is the first process's to act on (it ends this one)."""
+    a full pipe. Ctrl-C is the first process's to act on (it ends this one). ``niceness``: how much lower
+    than the first process it runs (:func:`os.nice`), where the system allows."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    if niceness:
+        with contextlib.suppress(AttributeError, OSError):  # no os.nice on Windows
+            os.nice(niceness)
     gc.set_threshold(*SERVE_GC_THRESHOLDS)
     importing = threading.Thread(target=_import, args=(modules,), name="import WeasyPrint")
     importing.start()
@@ -250,12 +254,12 @@ class AppendixProcess:
     crashed) is an error, not a wait without end. ``modules`` are imported as it starts, beside WeasyPrint.
     """
 
-    def __init__(self, modules: tuple[str, ...] = ()):
+    def __init__(self, modules: tuple[str, ...] = (), niceness: int = 0):
         context = multiprocessing.get_context("spawn")
         self.connection, theirs = context.Pipe()
         self.modules = tuple(modules)
-        self.process = context.Process(target=_serve, args=(theirs, self.modules), name="assess-pdf-appendix",
-                                       daemon=True)
+        self.process = context.Process(target=_serve, args=(theirs, self.modules, niceness),
+                                       name="assess-pdf-appendix", daemon=True)
         self.sent: list = []  # what was sent and is not answered yet, in order: an HTML document or a Call
         self.last_pdf: tuple[str, bytes] | None = None  # the last PDF read, and its document
         # Ctrl-C while it starts would leave it half-told what to run (it then prints "EOFError: Ran out of
@@ -339,6 +343,15 @@ class AppendixProcess:
         raise RuntimeError("the process drawing the PDF's appendix ended without it "
                            f"(exit code {self.process.exitcode})")
 
+    def lay_out_body(self, html: str) -> bytes:
+        """The PDF of the report's body ``html``, laid out by this process (the second one lays out the
+        appendix meanwhile)."""
+        return render_part(html)
+
+    def merged(self, body_pdf: bytes, appendix_pdf: bytes) -> bytes:
+        """:func:`merge`, in the second process, where pypdf is imported already and the work is done."""
+        return self.call(merge, body_pdf, appendix_pdf).result() or merge(body_pdf, appendix_pdf)
+
     def close(self) -> None:
         """End the process (at once: it holds nothing that needs saving, the PDF is written by this one), then
         the sending thread (its writes fail once the process has ended), then the pipe."""
@@ -366,11 +379,74 @@ def pdf_process(processes: int | None = None, modules: tuple[str, ...] = ()):
         process.close()
 
 
+#: How much lower than the first process the appendix's process runs when the body has a process of its own
+#: (:class:`BodyAndAppendixProcesses`): it takes the cores the others leave idle.
+APPENDIX_NICENESS = 10
+
+
+class BodyAndAppendixProcesses:
+    """Two second processes for one report: ``body`` imports ``modules`` (:data:`assess.report.FIGURE_MODULES`),
+    draws some figures (:meth:`call`) and lays out the report's body (:meth:`lay_out_body`); ``appendix`` lays
+    out the appendix (:meth:`draw`, :meth:`pdf`) at a lower priority (:data:`APPENDIX_NICENESS`), so that it
+    takes the core the others leave idle (while both draw figures, it waits). The first process lays out
+    nothing, and never imports WeasyPrint. The same interface as :class:`AppendixProcess`."""
+
+    def __init__(self, modules: tuple[str, ...] = ()):
+        self.appendix = AppendixProcess((), niceness=APPENDIX_NICENESS)
+        try:
+            self.body = AppendixProcess(modules)
+        except BaseException:  # Ctrl-C as it starts included
+            self.appendix.close()
+            raise
+        self.modules = self.body.modules
+
+    def call(self, function, *args) -> Call:
+        return self.body.call(function, *args)
+
+    def draw(self, html: str) -> None:
+        self.appendix.draw(html)
+
+    def drawing(self, html: str) -> bool:
+        return self.appendix.drawing(html)
+
+    def pdf(self) -> bytes:
+        return self.appendix.pdf()
+
+    def lay_out_body(self, html: str) -> bytes:
+        """The PDF of the report's body ``html``, laid out by the body's process."""
+        self.body.draw(html)
+        return self.body.pdf()
+
+    def merged(self, body_pdf: bytes, appendix_pdf: bytes) -> bytes:
+        return self.body.merged(body_pdf, appendix_pdf)
+
+    def close(self) -> None:
+        try:
+            self.body.close()
+        finally:
+            self.appendix.close()
+
+
+@contextlib.contextmanager
+def body_and_appendix_processes(modules: tuple[str, ...] = ()):
+    """:class:`BodyAndAppendixProcesses` where the machine has a second core (:func:`second_core`), else None
+    (this process then draws everything); ended on leaving, on an error or Ctrl-C too."""
+    if not second_core():
+        yield None
+        return
+    processes = BodyAndAppendixProcesses(modules)
+    try:
+        yield processes
+    finally:
+        processes.close()
+
+
 def render_pdf(html: str, *, url_fetcher=None, processes: int | None = None, process=None) -> bytes:
     """The PDF of a report's HTML, fetching nothing from the network or the disk.
 
     A report with an appendix is rendered as two documents and joined (:func:`merge`), the appendix in
-    ``process`` (from :func:`pdf_process`), or in a second process started here where ``processes``
+    ``process`` (from :func:`pdf_process`; or both parts, each in a process of its own, from
+    :func:`body_and_appendix_processes`), or in a second process started here where ``processes``
     (default: 2 where the machine has a second core, else 1) is 2; the bytes are the same either way.
     ``url_fetcher`` defaults to :func:`data_only_url_fetcher`; pass one to inspect its ``refused`` list
     afterwards (both parts are then rendered in this process, with it).
@@ -387,10 +463,8 @@ def render_pdf(html: str, *, url_fetcher=None, processes: int | None = None, pro
         return merge(render_part(body), render_part(appendix))
     if not process.drawing(appendix):  # it may have been sent before the figures were drawn (render_html)
         process.draw(appendix)
-    body_pdf = render_part(body)
-    appendix_pdf = process.pdf()
-    # joined there, where pypdf is imported already and the work of this process is done
-    return process.call(merge, body_pdf, appendix_pdf).result() or merge(body_pdf, appendix_pdf)
+    body_pdf = process.lay_out_body(body)
+    return process.merged(body_pdf, process.pdf())
 
 
 # --------------------------------------------------------------------------- one PDF
