@@ -428,7 +428,7 @@ def test_one_second_process_draws_every_buildings_pdf_appendix(tmp_path, monkeyp
     start, draw = pdf.AppendixProcess.__init__, pdf.AppendixProcess.draw
     monkeypatch.setattr(pdf, "second_core", lambda: True)  # as on this project's 2-core machine
     monkeypatch.setattr(pdf.AppendixProcess, "__init__",
-                        lambda self, *args: started.append(self) or start(self, *args))
+                        lambda self, *args, **kwargs: started.append(self) or start(self, *args, **kwargs))
     monkeypatch.setattr(pdf.AppendixProcess, "draw", lambda self, html: drawn.append(self) or draw(self, html))
     assert cli.main(["batch", str(portfolio), "--out", str(out), "--format", "pdf", "--quiet"]) == 0
     assert len(started) == 1 and drawn == started * len(ITEMS)
