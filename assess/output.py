@@ -37,11 +37,20 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: st
         html = None
         if "html" in formats or "pdf" in formats:
             html = report.render_html(result, pdf_process if "pdf" in formats else None)
-        files = _tables(result, formats, units, other_levels)
+        files: dict[str, bytes] = {}
+
+        def tables() -> None:
+            files.update(_tables(result, formats, units, other_levels))
+
+        pdf = None
+        if "pdf" in formats:  # the tables are made while the PDF's parts are laid out, where other processes do
+            pdf = report.render_pdf(html, process=pdf_process, meanwhile=tables)
+        else:
+            tables()
         if "html" in formats:
             files["report.html"] = html.encode()
-        if "pdf" in formats:
-            files["report.pdf"] = report.render_pdf(html, process=pdf_process)
+        if pdf is not None:
+            files["report.pdf"] = pdf
     return files
 
 

@@ -101,6 +101,21 @@ def test_the_body_and_the_appendix_each_in_a_process_of_its_own_give_the_same_pd
         assert processes.body.sent == processes.appendix.sent == []  # every answer read
 
 
+def test_what_this_process_does_meanwhile_runs_once_while_the_body_is_laid_out_elsewhere(html, pdf):
+    from assess.report import FIGURE_MODULES
+    from assess.report.pdf import body_and_appendix_processes
+
+    calls = []
+    assert render_pdf(html, processes=1, meanwhile=lambda: calls.append("alone")) == pdf
+    with body_and_appendix_processes(FIGURE_MODULES) as processes:
+        if processes is None:
+            pytest.skip("one core: no second process")
+        # when it runs, the body has been sent to its process and is not laid out yet (its PDF not read)
+        meanwhile = lambda: calls.append(("elsewhere", len(processes.body.sent)))  # noqa: E731
+        assert render_pdf(html, process=processes, meanwhile=meanwhile) == pdf
+    assert calls == ["alone", ("elsewhere", 1)]
+
+
 def test_figures_a_dead_second_process_owes_are_drawn_here(result):
     from assess.report import FIGURE_MODULES, render
 

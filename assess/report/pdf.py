@@ -34,6 +34,7 @@ import signal
 import sys
 import threading
 import urllib.parse
+from collections.abc import Callable
 from multiprocessing.reduction import ForkingPickler
 
 #: The markers around the appendix in the report's HTML (templates/report.html.j2).
@@ -343,9 +344,11 @@ class AppendixProcess:
         raise RuntimeError("the process drawing the PDF's appendix ended without it "
                            f"(exit code {self.process.exitcode})")
 
-    def lay_out_body(self, html: str) -> bytes:
+    def lay_out_body(self, html: str, meanwhile=None) -> bytes:
         """The PDF of the report's body ``html``, laid out by this process (the second one lays out the
-        appendix meanwhile)."""
+        appendix meanwhile), after ``meanwhile()`` where given."""
+        if meanwhile is not None:
+            meanwhile()
         return render_part(html)
 
     def merged(self, body_pdf: bytes, appendix_pdf: bytes) -> bytes:
@@ -412,9 +415,12 @@ class BodyAndAppendixProcesses:
     def pdf(self) -> bytes:
         return self.appendix.pdf()
 
-    def lay_out_body(self, html: str) -> bytes:
-        """The PDF of the report's body ``html``, laid out by the body's process."""
+    def lay_out_body(self, html: str, meanwhile=None) -> bytes:
+        """The PDF of the report's body ``html``, laid out by the body's process while this one runs
+        ``meanwhile()`` where given."""
         self.body.draw(html)
+        if meanwhile is not None:
+            meanwhile()
         return self.body.pdf()
 
     def merged(self, body_pdf: bytes, appendix_pdf: bytes) -> bytes:
@@ -441,7 +447,8 @@ def body_and_appendix_processes(modules: tuple[str, ...] = ()):
         processes.close()
 
 
-def render_pdf(html: str, *, url_fetcher=None, processes: int | None = None, process=None) -> bytes:
+def render_pdf(html: str, *, url_fetcher=None, processes: int | None = None, process=None,
+               meanwhile: Callable[[], None] | None = None) -> bytes:
     """The PDF of a report's HTML, fetching nothing from the network or the disk.
 
     A report with an appendix is rendered as two documents and joined (:func:`merge`), the appendix in
@@ -449,9 +456,14 @@ def render_pdf(html: str, *, url_fetcher=None, processes: int | None = None, pro
     :func:`body_and_appendix_processes`), or in a second process started here where ``processes``
     (default: 2 where the machine has a second core, else 1) is 2; the bytes are the same either way.
     ``url_fetcher`` defaults to :func:`data_only_url_fetcher`; pass one to inspect its ``refused`` list
-    afterwards (both parts are then rendered in this process, with it).
+    afterwards (both parts are then rendered in this process, with it). ``meanwhile``, where given, is
+    called once, while other processes lay the parts out where they do (:class:`BodyAndAppendixProcesses`),
+    else first.
     """
     body, appendix = split_appendix(html)
+    if appendix is None or url_fetcher is not None or process is None:
+        if meanwhile is not None:
+            meanwhile()
     if appendix is None:
         return render_part(html, url_fetcher)
     if url_fetcher is not None:
@@ -463,7 +475,7 @@ def render_pdf(html: str, *, url_fetcher=None, processes: int | None = None, pro
         return merge(render_part(body), render_part(appendix))
     if not process.drawing(appendix):  # it may have been sent before the figures were drawn (render_html)
         process.draw(appendix)
-    body_pdf = process.lay_out_body(body)
+    body_pdf = process.lay_out_body(body, meanwhile)
     return process.merged(body_pdf, process.pdf())
 
 
