@@ -13,7 +13,7 @@ import os
 #: hundreds of thousands of objects that live until it ends (the libraries it imports, the result, the
 #: report's layout); with the default thresholds the collector scans them again and again: 1.05 s of a
 #: 9.6 s run of the lab job, 0.14 s with these, for 3 % more memory. Cycles are still collected, a
-#: thirtieth as often.
+#: thirtieth as often. The PDF's second processes use them too (:func:`assess.report.pdf._serve`).
 COMMAND_GC_THRESHOLDS = (20_000, 50, 50)
 
 #: The threads of numpy's BLAS (OpenBLAS) in the command, where the user sets none: the command's matrices are

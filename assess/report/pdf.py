@@ -6,14 +6,16 @@ whose pages are numbered A-1, A-2 … as engineering reports number theirs.
 The body and the appendix are laid out as two documents, each with its own
 page numbers: the appendix in a second process while this one draws the figures and lays out the
 body, where the machine has a second core (:func:`render_pdf`), the one after
-the other where it has not. The two PDFs are then joined (:func:`merge`):
+the other where it has not; the ``assess`` command starts two processes as it starts
+(:func:`body_and_appendix_processes`), one drawing some figures then the body, the other the appendix,
+and lays out nothing itself. The two PDFs are then joined (:func:`merge`):
 the pages keep their labels (1, 2 … then A-1, A-2 …, as a PDF viewer shows
 them), the body's links to an item's block in the appendix are made to point
 there, and the bookmarks of both follow one another. The bytes depend on the
 HTML only, not on whether a second process drew the appendix.
 
 This module imports neither pandas nor matplotlib, so that the second process
-starts quickly (it imports this module and WeasyPrint, nothing else).
+starts quickly (it imports this module, WeasyPrint and pypdf, and the modules it is told to).
 
 Nothing the report shows is fetched: the stylesheet is inlined, the figures
 are SVG, inline or as ``data:`` URIs, and the URL fetcher refuses every URL
@@ -36,6 +38,8 @@ import threading
 import urllib.parse
 from collections.abc import Callable
 from multiprocessing.reduction import ForkingPickler
+
+from assess.startup import COMMAND_GC_THRESHOLDS
 
 #: The markers around the appendix in the report's HTML (templates/report.html.j2).
 APPENDIX_START, APPENDIX_END = "<!-- appendix -->", "<!-- /appendix -->"
@@ -167,9 +171,9 @@ def second_core() -> bool:
 
 
 def _import(modules: tuple[str, ...]) -> None:
-    """WeasyPrint and pypdf (:func:`merge`), then ``modules`` (``package.module``, or ``package.module:function``
-    to run that function once it is imported) (what the calls it will be sent need: :meth:`AppendixProcess.call`), at a
-    lower priority than the first process's work, where the system lets a thread have its own (Linux)."""
+    """Import WeasyPrint, pypdf (:func:`merge`) and ``modules`` (what the calls it will be sent need,
+    :meth:`AppendixProcess.call`; ``package.module:function`` also runs that function), at a lower priority
+    than the first process's work where the system lets a thread have its own (Linux)."""
     if sys.platform == "linux":  # setpriority(2): on Linux a thread's id names the thread alone
         with contextlib.suppress(OSError):
             os.setpriority(os.PRIO_PROCESS, threading.get_native_id(), IMPORT_NICENESS)
@@ -182,11 +186,6 @@ def _import(modules: tuple[str, ...]) -> None:
     gc.collect()  # what the function left behind, then
     gc.freeze()  # what the imports made lives until the process ends: the collector need not scan it again
 
-
-#: The garbage collector's thresholds in the second process (Python's default: 700, 10, 10): laying out a report
-#: makes objects by the hundred thousand, and the default thresholds scan them again and again (the lab
-#: report's body: 3.54 s CPU with them, 3.04 s with these after freezing what the imports made).
-SERVE_GC_THRESHOLDS = (20_000, 50, 50)
 
 #: How much lower the second process's imports run than the first process (its assessment, which uses both
 #: cores at times): they take a core only when it is idle (setpriority(2); 19 is the lowest priority).
@@ -205,7 +204,7 @@ def _serve(connection, modules: tuple[str, ...] = (), niceness: int = 0) -> None
     if niceness:
         with contextlib.suppress(AttributeError, OSError):  # no os.nice on Windows
             os.nice(niceness)
-    gc.set_threshold(*SERVE_GC_THRESHOLDS)
+    gc.set_threshold(*COMMAND_GC_THRESHOLDS)  # the command's (laying out the lab's body: 3.54 -> 3.04 CPU s)
     importing = threading.Thread(target=_import, args=(modules,), name="import WeasyPrint")
     importing.start()
     requests = queue.SimpleQueue()
@@ -341,7 +340,7 @@ class AppendixProcess:
         if documents and self.last_pdf is not None and self.last_pdf[0] is documents[-1]:
             return self.last_pdf[1]
         self.process.join(timeout=5)
-        raise RuntimeError("the process drawing the PDF's appendix ended without it "
+        raise RuntimeError("the second process drawing a part of the PDF ended without it "
                            f"(exit code {self.process.exitcode})")
 
     def lay_out_body(self, html: str, meanwhile=None) -> bytes:
