@@ -27,8 +27,9 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: st
     results of the other levels of the same run, add their sheets to summary.xlsx
     after this level's. ``pdf_process``, the second process that draws the PDF's appendix
     (:func:`assess.report.pdf_process`), is started here where not given: a caller that renders several
-    reports (``assess batch``) starts one for all of them, and one that starts it before making the result
-    (the ``assess`` command) with :data:`assess.report.FIGURE_MODULES` has it draw some of the figures too.
+    reports (``assess batch``) starts one for all of them. The ``assess`` command gives the two processes
+    it starts before making the result (:func:`assess.report.body_and_appendix_processes`): one draws some
+    of the figures then lays out the body, the other the appendix, and this one makes the tables meanwhile.
     """
     # the PDF's second process starts first, so that it has imported WeasyPrint by the time the HTML is made,
     # and is sent the appendix before this one draws the figures (render_html), so that it lays it out meanwhile

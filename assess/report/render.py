@@ -590,8 +590,9 @@ def render_html(result, process=None) -> str:
     ``process``, where given (a second process, :func:`assess.report.pdf_process`, or anything with its
     ``draw`` and ``call``), is asked for its figures first (:class:`FigureDrawing`), then sent the document
     of the report's appendix alone (as :func:`assess.report.pdf.split_appendix` makes it from the whole
-    report) as soon as it is made, so that it lays the appendix out once it has drawn them, while this
-    process draws the other figures and lays out the body (:func:`assess.output.render_outputs`).
+    report) as soon as it is made, so that the appendix is laid out while this process draws the other
+    figures (:func:`assess.output.render_outputs`; :class:`assess.report.pdf.BodyAndAppendixProcesses`
+    has a process for each).
     """
     drawing = FigureDrawing(result, process)
     template = report_template()
