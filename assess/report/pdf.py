@@ -192,18 +192,14 @@ def _import(modules: tuple[str, ...]) -> None:
 IMPORT_NICENESS = 10
 
 
-def _serve(connection, modules: tuple[str, ...] = (), niceness: int = 0) -> None:
+def _serve(connection, modules: tuple[str, ...] = ()) -> None:
     """The second process: import WeasyPrint and ``modules`` at once (while the first one still works on the
     result), then answer what it is sent, in order, until the pipe closes: an HTML document with its PDF, a
     call ``(function, args)`` with ``(True, function(*args))``, or ``(False, why)`` where the call failed
     (the first process then does that work itself). What is sent is read off the pipe at once, by a thread
     of its own, even while the imports run or a call is answered, so that the first process never waits on
-    a full pipe. Ctrl-C is the first process's to act on (it ends this one). ``niceness``: how much lower
-    than the first process it runs (:func:`os.nice`), where the system allows."""
+    a full pipe. Ctrl-C is the first process's to act on (it ends this one)."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
-    if niceness:
-        with contextlib.suppress(AttributeError, OSError):  # no os.nice on Windows
-            os.nice(niceness)
     gc.set_threshold(*COMMAND_GC_THRESHOLDS)  # the command's (laying out the lab's body: 3.54 -> 3.04 CPU s)
     importing = threading.Thread(target=_import, args=(modules,), name="import WeasyPrint")
     importing.start()
@@ -254,11 +250,11 @@ class AppendixProcess:
     crashed) is an error, not a wait without end. ``modules`` are imported as it starts, beside WeasyPrint.
     """
 
-    def __init__(self, modules: tuple[str, ...] = (), niceness: int = 0):
+    def __init__(self, modules: tuple[str, ...] = ()):
         context = multiprocessing.get_context("spawn")
         self.connection, theirs = context.Pipe()
         self.modules = tuple(modules)
-        self.process = context.Process(target=_serve, args=(theirs, self.modules, niceness),
+        self.process = context.Process(target=_serve, args=(theirs, self.modules),
                                        name="assess-pdf-appendix", daemon=True)
         self.sent: list = []  # what was sent and is not answered yet, in order: an HTML document or a Call
         self.last_pdf: tuple[str, bytes] | None = None  # the last PDF read, and its document
@@ -381,20 +377,15 @@ def pdf_process(processes: int | None = None, modules: tuple[str, ...] = ()):
         process.close()
 
 
-#: How much lower than the first process the appendix's process runs when the body has a process of its own
-#: (:class:`BodyAndAppendixProcesses`): it takes the cores the others leave idle.
-APPENDIX_NICENESS = 10
-
-
 class BodyAndAppendixProcesses:
     """Two second processes for one report: ``body`` imports ``modules`` (:data:`assess.report.FIGURE_MODULES`),
     draws some figures (:meth:`call`) and lays out the report's body (:meth:`lay_out_body`); ``appendix`` lays
-    out the appendix (:meth:`draw`, :meth:`pdf`) at a lower priority (:data:`APPENDIX_NICENESS`), so that it
-    takes the core the others leave idle (while both draw figures, it waits). The first process lays out
-    nothing, and never imports WeasyPrint. The same interface as :class:`AppendixProcess`."""
+    out the appendix (:meth:`draw`, :meth:`pdf`), sent once the figures are nearly drawn
+    (:func:`assess.report.render.render_html`), so that it does not take a core from them. The first process
+    lays out nothing, and never imports WeasyPrint. The same interface as :class:`AppendixProcess`."""
 
     def __init__(self, modules: tuple[str, ...] = ()):
-        self.appendix = AppendixProcess((), niceness=APPENDIX_NICENESS)
+        self.appendix = AppendixProcess(())
         try:
             self.body = AppendixProcess(modules)
         except BaseException:  # Ctrl-C as it starts included

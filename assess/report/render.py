@@ -13,6 +13,7 @@ import base64
 import dataclasses
 import functools
 import math
+from collections.abc import Callable
 from importlib import resources
 from pathlib import Path
 
@@ -523,7 +524,9 @@ class FigureDrawing:
         ready = process is not None and set(FIGURE_MODULES) <= set(getattr(process, "modules", ()))
         self.call = process.call(draw_figures, self.elsewhere) if ready and self.elsewhere else None
 
-    def drawn(self) -> dict:
+    def drawn(self, then: Callable[[], None] | None = None) -> dict:
+        """Every figure, by the template's name: this process's drawn here, then ``then()`` where given, then
+        the second process's collected (or drawn here, where it gave none)."""
         result, system = self.result, self.system
         drawn = {
             "demand": figures.sliding_demand_figures(self.sorted_result, system=system),
@@ -532,6 +535,8 @@ class FigureDrawing:
                            "direction": h["direction"]}
                           for h in list(result.histories)[:HISTORY_FIGURES]],
         }
+        if then is not None:
+            then()
         drawn.update((self.call.result() if self.call is not None else None) or draw_figures(self.elsewhere))
         return {
             "demand": [_data_uri(svg) for svg in drawn["demand"]],
@@ -590,15 +595,21 @@ def render_html(result, process=None) -> str:
     ``process``, where given (a second process, :func:`assess.report.pdf_process`, or anything with its
     ``draw`` and ``call``), is asked for its figures first (:class:`FigureDrawing`), then sent the document
     of the report's appendix alone (as :func:`assess.report.pdf.split_appendix` makes it from the whole
-    report) as soon as it is made, so that the appendix is laid out while this process draws the other
-    figures (:func:`assess.output.render_outputs`; :class:`assess.report.pdf.BodyAndAppendixProcesses`
-    has a process for each).
+    report) when a core is free for it: at once where it draws no figures, so that the appendix is laid out
+    while this process draws them; else once this process has drawn its own, the other's nearly done
+    (:func:`assess.output.render_outputs`; :class:`assess.report.pdf.BodyAndAppendixProcesses` has a
+    process for the appendix, which thus never takes a core from the figures, without being given a
+    lower priority that a busy machine would starve).
     """
     drawing = FigureDrawing(result, process)
     template = report_template()
     context = report_context(result, with_figures=False)
+    send = None
     if process is not None:
         _, appendix = split_appendix(template.render(context, appendix_only=True))
         if appendix is not None:
-            process.draw(appendix)
-    return template.render(context, figures=drawing.drawn(), appendix_only=False)
+            send = functools.partial(process.draw, appendix)
+    if send is not None and drawing.call is None:  # no figure is drawn elsewhere: a core is free for it now
+        send()
+        send = None
+    return template.render(context, figures=drawing.drawn(then=send), appendix_only=False)
