@@ -107,6 +107,12 @@ def _new_figure(height_in: float, width_in: float = FIGURE_WIDTH_IN) -> Figure:
     return figure
 
 
+def draw_figures(jobs: dict) -> dict:
+    """``name -> SVG`` of ``name -> (function, arguments)``: what a second process is sent to draw
+    (:class:`assess.report.render.FigureDrawing`)."""
+    return {name: function(*arguments) for name, (function, arguments) in jobs.items()}
+
+
 def warm_up() -> None:
     """Load what a process's first figure loads (matplotlib's fonts in the report's style): a small figure with
     text, drawn as SVG and dropped."""

@@ -58,6 +58,12 @@ def _weasyprint():
     return weasyprint, URLFetcher, URLFetcherResponse
 
 
+def warm_up() -> None:
+    """Load what a process's first PDF loads (WeasyPrint's fonts, regular, bold and italic): a small PDF, dropped.
+    The PDF's second processes run it while the first one makes the result."""
+    render_part("<html><body><h1>1</h1><p>a <b>b</b> <i>c</i> <code>d</code></p></body></html>")
+
+
 class RefusedURLError(ValueError):
     """The report tried to load something that is not embedded as a ``data:`` URI."""
 
@@ -171,14 +177,14 @@ def second_core() -> bool:
 
 
 def _import(modules: tuple[str, ...]) -> None:
-    """Import WeasyPrint, pypdf (:func:`merge`) and ``modules`` (what the calls it will be sent need,
-    :meth:`AppendixProcess.call`; ``package.module:function`` also runs that function), at a lower priority
-    than the first process's work where the system lets a thread have its own (Linux)."""
+    """Import WeasyPrint and ``modules`` (what the calls it will be sent need, :meth:`AppendixProcess.call`;
+    ``package.module:function`` also runs that function), at a lower priority than the first process's work
+    where the system lets a thread have its own (Linux)."""
     if sys.platform == "linux":  # setpriority(2): on Linux a thread's id names the thread alone
         with contextlib.suppress(OSError):
             os.setpriority(os.PRIO_PROCESS, threading.get_native_id(), IMPORT_NICENESS)
     _weasyprint()
-    for name in ("pypdf", *modules):
+    for name in modules:
         module, _, function = name.partition(":")
         imported = importlib.import_module(module)
         if function:
@@ -385,7 +391,7 @@ class BodyAndAppendixProcesses:
     lays out nothing, and never imports WeasyPrint. The same interface as :class:`AppendixProcess`."""
 
     def __init__(self, modules: tuple[str, ...] = ()):
-        self.appendix = AppendixProcess(())
+        self.appendix = AppendixProcess(("assess.report.pdf:warm_up",))
         try:
             self.body = AppendixProcess(modules)
         except BaseException:  # Ctrl-C as it starts included

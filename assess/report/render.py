@@ -32,8 +32,7 @@ from assess.report.costs import costs_context
 from assess.report.curve import curve_context
 from assess.risk_classes import rule_text
 from assess.report.method import floor_motion_route
-from assess.report.pdf import (RefusedURLError, data_only_url_fetcher, decode_data_uri, render_part, render_pdf,  # noqa: F401
-                               split_appendix)
+from assess.report.pdf import RefusedURLError, data_only_url_fetcher, decode_data_uri, render_pdf, split_appendix  # noqa: F401
 from assess.report.references import reference_rows
 from assess.report.sentences import (
     DASH, action_groups, after_text, case_outcomes, changes, cm_interval_text, finite, flag_groups, floor_text, format_cm,
@@ -100,17 +99,6 @@ def make_environment() -> jinja2.Environment:
 def report_template() -> jinja2.Template:
     """The report's template, compiled once per process (:func:`make_environment`)."""
     return make_environment().get_template(TEMPLATE_NAME)
-
-
-def warm_up() -> None:
-    """Pay now what a process's first report pays once: the template compiled, matplotlib's and WeasyPrint's
-    fonts loaded (a small figure and a small PDF in the report's style, not kept). The PDF's second process
-    runs it while the first one makes the result (:data:`assess.report.FIGURE_MODULES`)."""
-    report_template()
-    figures.warm_up()
-    render_part(f"<html><head><style>{template_text(STYLESHEET_NAME)}</style></head><body><h1>1</h1>"
-                "<p>a <b>b</b> <i>c</i> <code>d</code></p><table class='items'><tr><th>e</th><td>f</td></tr></table>"
-                "</body></html>")
 
 
 # --------------------------------------------------------------------------- context
@@ -522,7 +510,7 @@ class FigureDrawing:
         self.elsewhere = {name: job for name, job in _figure_jobs(result, self.sorted_result, self.system).items()
                           if name in ELSEWHERE_FIGURES}
         ready = process is not None and set(FIGURE_MODULES) <= set(getattr(process, "modules", ()))
-        self.call = process.call(draw_figures, self.elsewhere) if ready and self.elsewhere else None
+        self.call = process.call(figures.draw_figures, self.elsewhere) if ready and self.elsewhere else None
 
     def drawn(self, then: Callable[[], None] | None = None) -> dict:
         """Every figure, by the template's name: this process's drawn here, then ``then()`` where given, then
@@ -537,7 +525,7 @@ class FigureDrawing:
         }
         if then is not None:
             then()
-        drawn.update((self.call.result() if self.call is not None else None) or draw_figures(self.elsewhere))
+        drawn.update((self.call.result() if self.call is not None else None) or figures.draw_figures(self.elsewhere))
         return {
             "demand": [_data_uri(svg) for svg in drawn["demand"]],
             "fragility": _data_uri(drawn["fragility"]),
@@ -553,18 +541,14 @@ ELSEWHERE_FIGURES = ("fragility", "regression", "simulation")
 
 def _figure_jobs(result, sorted_result, system: str) -> dict:
     """The figures :data:`ELSEWHERE_FIGURES` as ``name -> (function, arguments)``, their result without its
-    histories (which they do not draw, and which are most of its bytes)."""
-    light, light_sorted = (dataclasses.replace(r, histories=()) for r in (result, sorted_result))
+    histories (which they do not draw, and which are most of its bytes) and its anchorage (whose classes the
+    second process would import, with pint and the building's model, to read it)."""
+    light, light_sorted = (dataclasses.replace(r, histories=(), anchorage=None) for r in (result, sorted_result))
     jobs = {"fragility": (figures.fragility_figure, (light_sorted,)),
             "regression": (figures.regression_figure, (light_sorted,))}
     if result.simulated:
         jobs["simulation"] = (figures.simulation_vs_regression_figure, (light, system))
     return jobs
-
-
-def draw_figures(jobs: dict) -> dict:
-    """``name -> SVG`` of ``name -> (function, arguments)`` (what a second process is sent to draw)."""
-    return {name: function(*arguments) for name, (function, arguments) in jobs.items()}
 
 
 def report_units(system: str, numbering: str) -> dict:
