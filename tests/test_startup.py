@@ -4,6 +4,9 @@ from __future__ import annotations
 import os
 import subprocess
 import sys
+import threading
+
+import pytest
 
 from assess import report, startup
 from assess.report import pdf
@@ -65,3 +68,16 @@ def test_the_command_gives_numpys_blas_one_thread_unless_the_user_set_it():
             env["OPENBLAS_NUM_THREADS"] = given
         done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=60, env=env)
         assert done.stdout.strip() == expected, done.stderr
+
+
+@pytest.mark.skipif(sys.platform != "linux", reason="a thread's own priority: Linux only")
+def test_the_second_process_lowers_its_imports_priority_only_on_an_idle_machine(monkeypatch):
+    lowered = []
+    monkeypatch.setattr(os, "setpriority", lambda which, who, value: lowered.append((which, who, value)))
+    cores = len(os.sched_getaffinity(0))
+    monkeypatch.setattr(os, "getloadavg", lambda: (cores + 1.0, 0.0, 0.0))  # a busy machine
+    pdf._import_priority()
+    assert lowered == []
+    monkeypatch.setattr(os, "getloadavg", lambda: (cores - 0.5, 0.0, 0.0))  # an idle one
+    pdf._import_priority()
+    assert lowered == [(os.PRIO_PROCESS, threading.get_native_id(), pdf.IMPORT_NICENESS)]
