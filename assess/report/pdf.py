@@ -381,13 +381,14 @@ class AppendixProcess:
 @contextlib.contextmanager
 def pdf_process(processes: int | None = None, modules: tuple[str, ...] = ()):
     """An :class:`AppendixProcess` for :func:`render_pdf`, or None where ``processes`` (default: 2 where
-    the machine has a second core, else 1) is 1. It imports WeasyPrint and ``modules`` as soon as it starts,
-    so that a caller that enters this before making the result finds it ready. Ended on leaving, on an error
-    or Ctrl-C too."""
+    the machine has a second core, else 1) is 1. It imports WeasyPrint, pypdf (it joins the parts,
+    :meth:`AppendixProcess.merged`) and ``modules`` as soon as it starts, and loads WeasyPrint's fonts, so that
+    a caller that enters this before making the result finds it ready. Ended on leaving, on an error or Ctrl-C
+    too."""
     if (processes if processes is not None else (2 if second_core() else 1)) < 2:
         yield None
         return
-    process = AppendixProcess(modules)
+    process = AppendixProcess(tuple(dict.fromkeys(("pypdf", "assess.report.pdf:warm_up", *modules))))
     try:
         yield process
     finally:
