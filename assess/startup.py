@@ -1,7 +1,7 @@
 """What the ``assess`` command starts before it imports the core (seconds of imports), so that the second
 core works meanwhile: on a first run after install, the general solver's compilation
 (:mod:`assess.mechanics.warmup`); on later runs, the PDF's second process, which has imported WeasyPrint and
-the figures' modules by the time the result is made (:func:`assess.report.render.report_figures`).
+the figures' modules by the time the result is made (:class:`assess.report.render.FigureDrawing`).
 """
 from __future__ import annotations
 

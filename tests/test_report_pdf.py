@@ -125,7 +125,7 @@ def test_figures_a_dead_second_process_owes_are_drawn_here(result):
     with pdf_process(2, modules=FIGURE_MODULES) as process:
         process.process.kill()
         process.process.join()
-        assert render.report_figures(result, process) == render.report_figures(result)
+        assert render.FigureDrawing(result, process).drawn() == render.report_figures(result)
 
 
 def test_a_process_sent_another_appendix_first_still_draws_this_one(html, pdf):

@@ -16,7 +16,6 @@ from __future__ import annotations
 import math
 from dataclasses import asdict, dataclass
 
-
 from assess.anchorage.coefficients import canonical_edition, component_coefficients
 from assess.anchorage.equations import (
     MINIMUM_DUCTILITY_REDUCTION, base_tension, component_importance_factor, ductility_reduction,
@@ -174,11 +173,6 @@ def design_force(edition, component_type, weight_n, sds_g, z_over_h, ip=None, pe
         anchor_shear_n=omega * force, anchor_tension_n=anchor_tension)
 
 
-def _per_unit(source: str, target: str) -> float:
-    """Multiplier from ``source`` to ``target`` (the project's one pint registry, :mod:`assess.units`)."""
-    return conversion_factor(source, target)
-
-
 #: The force fields of :class:`AnchorageForces` converted by :func:`in_us_units`.
 FORCE_FIELDS = ("weight_n", "force_equation_n", "force_minimum_n", "force_maximum_n", "force_n", "tension_n",
                 "anchor_shear_n", "anchor_tension_n")
@@ -193,13 +187,13 @@ def in_us_units(forces: AnchorageForces) -> dict:
     1000.0
     """
     out = {}
-    lbf, kip = _per_unit("newton", "lbf"), _per_unit("newton", "kip")
+    lbf, kip = conversion_factor("newton", "lbf"), conversion_factor("newton", "kip")
     values = asdict(forces)
     for name in FORCE_FIELDS:
         stem = name[:-2]
         out[f"{stem}_lbf"] = values[name] * lbf
         out[f"{stem}_kip"] = values[name] * kip
-    out["overturning_moment_lbf_ft"] = values["overturning_moment_nm"] * _per_unit("newton * meter", "lbf * foot")
+    out["overturning_moment_lbf_ft"] = values["overturning_moment_nm"] * conversion_factor("newton * meter", "lbf * foot")
     return out
 
 

@@ -236,7 +236,7 @@ def _item_demand(item_cases: pd.DataFrame, histories: pd.DataFrame | None, regre
         mu_weight = float(mu_weight)
         runs = simulated.get((key, node))
         if runs is not None:
-            theta = max(theta, _nanmax(runs["theta"]))
+            theta = max(theta, float(np.fmax.reduce(runs["theta"])))  # NaN skipped, as pandas' max
             severities.extend(runs["severity"][runs["mu_weight"] > 0.0].tolist())
         if source == REGRESSION:
             weight = mu_weight / n_motions
@@ -312,18 +312,8 @@ def _runs_by_unit(histories: pd.DataFrame | None) -> dict:
     columns = ("theta", "severity", "mu_weight", "planar", "uplift", "sliding_cm", "overturned")
     arrays = {column: histories[column].to_numpy() for column in columns}
     arrays["realization"] = histories.index.get_level_values(2).to_numpy()
-    units = pd.MultiIndex.from_arrays([histories.index.get_level_values(0), histories.index.get_level_values(1)])
-    out = {}
-    for unit, rows in pd.Series(np.arange(len(histories))).groupby(units.to_numpy(), sort=False).groups.items():
-        rows = np.sort(np.asarray(rows))
-        out[unit] = {column: array[rows] for column, array in arrays.items()}
-    return out
-
-
-def _nanmax(values: np.ndarray) -> float:
-    """The largest value that is not NaN (NaN where all are), as pandas' ``max``."""
-    finite = values[~np.isnan(values.astype(float))]
-    return float(finite.max()) if finite.size else float("nan")
+    return {unit: {column: array[rows] for column, array in arrays.items()}
+            for unit, rows in histories.groupby(level=[0, 1], sort=False).indices.items()}
 
 
 def _quantile_intervals(values, weights, sampled_weights, exact_weight: float) -> dict:

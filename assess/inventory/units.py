@@ -58,12 +58,6 @@ VELOCITY = Dimension(
 )
 
 
-def _factor(source_unit: str, target_unit: str) -> float:
-    """Multiplier taking a value in ``source_unit`` to ``target_unit`` (pint expressions; the project's one
-    registry, :func:`assess.units.conversion_factor`)."""
-    return conversion_factor(source_unit, target_unit)
-
-
 def to_canonical(value: float, dimension: Dimension, suffix: str) -> float:
     """Convert ``value`` given in ``suffix`` units to the dimension's canonical unit.
 
@@ -76,7 +70,7 @@ def to_canonical(value: float, dimension: Dimension, suffix: str) -> float:
     """
     if suffix == dimension.canonical:
         return float(value)
-    return float(value) * _factor(dimension.units[suffix], dimension.units[dimension.canonical])
+    return float(value) * conversion_factor(dimension.units[suffix], dimension.units[dimension.canonical])
 
 
 def label(dimension: Dimension, suffix: str) -> str:

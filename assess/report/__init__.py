@@ -14,7 +14,7 @@ import importlib
 
 #: What the PDF's second process that draws figures imports as it starts (``pdf_process(modules=FIGURE_MODULES)``,
 #: :func:`body_and_appendix_processes`), so that it can draw some of the report's figures while the first one draws
-#: the others (:func:`render.report_figures`), and runs (``module:function``): WeasyPrint's and matplotlib's fonts
+#: the others (:class:`render.FigureDrawing`), and runs (``module:function``): WeasyPrint's and matplotlib's fonts
 #: loaded as a first PDF and a first figure would load them; pypdf, which joins the PDF's parts there.
 FIGURE_MODULES = ("pypdf", "assess.report.pdf:warm_up", "assess.report.figures:warm_up")
 

@@ -58,6 +58,10 @@ def _weasyprint():
     return weasyprint, URLFetcher, URLFetcherResponse
 
 
+#: What a second process that lays out a part of the PDF runs as it starts (:func:`_import`).
+WARM_UP = f"{__name__}:warm_up"
+
+
 def warm_up() -> None:
     """Load what a process's first PDF loads (WeasyPrint's fonts, regular, bold and italic): a small PDF, dropped.
     The PDF's second processes run it while the first one makes the result."""
@@ -388,7 +392,7 @@ def pdf_process(processes: int | None = None, modules: tuple[str, ...] = ()):
     if (processes if processes is not None else (2 if second_core() else 1)) < 2:
         yield None
         return
-    process = AppendixProcess(tuple(dict.fromkeys(("pypdf", "assess.report.pdf:warm_up", *modules))))
+    process = AppendixProcess(tuple(dict.fromkeys(("pypdf", WARM_UP, *modules))))
     try:
         yield process
     finally:
@@ -403,7 +407,7 @@ class BodyAndAppendixProcesses:
     lays out nothing, and never imports WeasyPrint. The same interface as :class:`AppendixProcess`."""
 
     def __init__(self, modules: tuple[str, ...] = ()):
-        self.appendix = AppendixProcess(("assess.report.pdf:warm_up",))
+        self.appendix = AppendixProcess((WARM_UP,))
         try:
             self.body = AppendixProcess(modules)
         except BaseException:  # Ctrl-C as it starts included

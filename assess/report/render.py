@@ -485,23 +485,17 @@ def report_context(result, with_figures: bool = True) -> dict:
     }
 
 
-def report_figures(result, process=None, appendix: str | None = None) -> dict:
-    """The report's figures (matplotlib, as SVG ``data:`` URIs), by the template's name for them.
-
-    ``process``, a second process (:func:`assess.report.pdf_process`) that has imported
-    :data:`assess.report.FIGURE_MODULES`, draws those of :data:`ELSEWHERE_FIGURES` meanwhile (the same
-    functions, so the same bytes; where it cannot, this one does), then lays out ``appendix``, the appendix's
-    document, where given. One started without them would import them first: this one draws them all then.
-    """
-    drawing = FigureDrawing(result, process)
-    if process is not None and appendix is not None:
-        process.draw(appendix)
-    return drawing.drawn()
+def report_figures(result) -> dict:
+    """The report's figures (matplotlib, as SVG ``data:`` URIs), by the template's name for them, all drawn
+    here (:class:`FigureDrawing` shares them with a second process)."""
+    return FigureDrawing(result).drawn()
 
 
 class FigureDrawing:
-    """The report's figures as they are drawn: those of :data:`ELSEWHERE_FIGURES` asked of ``process`` at
-    once (see :func:`report_figures`), the others drawn here by :meth:`drawn`, which returns them all."""
+    """The report's figures as they are drawn: those of :data:`ELSEWHERE_FIGURES` asked at once of ``process``,
+    a second process (:func:`assess.report.pdf_process`) that has imported :data:`assess.report.FIGURE_MODULES`
+    (the same functions, so the same bytes; one started without them would import them first: this process
+    draws them all then), the others drawn here by :meth:`drawn`, which returns them all."""
 
     def __init__(self, result, process=None):
         self.result = result
@@ -512,9 +506,13 @@ class FigureDrawing:
         ready = process is not None and set(FIGURE_MODULES) <= set(getattr(process, "modules", ()))
         self.call = process.call(figures.draw_figures, self.elsewhere) if ready and self.elsewhere else None
 
-    def drawn(self, then: Callable[[], None] | None = None) -> dict:
-        """Every figure, by the template's name: this process's drawn here, then ``then()`` where given, then
-        the second process's collected (or drawn here, where it gave none)."""
+    def drawn(self, when_a_core_is_free: Callable[[], None] | None = None) -> dict:
+        """Every figure, by the template's name: this process's drawn here, the second process's collected (or
+        drawn here, where it gave none). ``when_a_core_is_free()``, where given, is run before this process
+        draws where no figure is drawn elsewhere, else once it has drawn its own (the other's nearly done)."""
+        if when_a_core_is_free is not None and self.call is None:
+            when_a_core_is_free()
+            when_a_core_is_free = None
         result, system = self.result, self.system
         drawn = {
             "demand": figures.sliding_demand_figures(self.sorted_result, system=system),
@@ -523,8 +521,8 @@ class FigureDrawing:
                            "direction": h["direction"]}
                           for h in list(result.histories)[:HISTORY_FIGURES]],
         }
-        if then is not None:
-            then()
+        if when_a_core_is_free is not None:
+            when_a_core_is_free()
         drawn.update((self.call.result() if self.call is not None else None) or figures.draw_figures(self.elsewhere))
         return {
             "demand": [_data_uri(svg) for svg in drawn["demand"]],
@@ -588,12 +586,6 @@ def render_html(result, process=None) -> str:
     drawing = FigureDrawing(result, process)
     template = report_template()
     context = report_context(result, with_figures=False)
-    send = None
-    if process is not None:
-        _, appendix = split_appendix(template.render(context, appendix_only=True))
-        if appendix is not None:
-            send = functools.partial(process.draw, appendix)
-    if send is not None and drawing.call is None:  # no figure is drawn elsewhere: a core is free for it now
-        send()
-        send = None
-    return template.render(context, figures=drawing.drawn(then=send), appendix_only=False)
+    appendix = None if process is None else split_appendix(template.render(context, appendix_only=True))[1]
+    send = None if appendix is None else functools.partial(process.draw, appendix)
+    return template.render(context, figures=drawing.drawn(when_a_core_is_free=send), appendix_only=False)
