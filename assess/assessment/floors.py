@@ -26,7 +26,6 @@ from assess.errors import InputError, Problem
 from assess.hazard.levels import HazardLevel
 from assess.hazard.records import Record
 from assess.inventory.site_building import BuildingSheet, SiteSheet
-from assess.mechanics.geometry import frequency_parameter
 from assess.site.asce7 import DesignSpectrum, from_design_values, from_mapped_values
 from assess.site.suite import GroundSuite, ground_suite
 from assess.site.target import level_target
@@ -81,25 +80,19 @@ def design_spectrum_of(site: SiteSheet, workbook_name: str) -> DesignSpectrum | 
     return None
 
 
-def periods_that_matter_s(equipment: pd.DataFrame, modes: BuildingModes | None) -> tuple[np.ndarray, float | None]:
+def periods_that_matter_s(modes: BuildingModes | None) -> tuple[np.ndarray, float | None]:
     """The periods a level's ground suite is matched over, and the shortest 90 %-mass mode's [s].
 
-    The building's modes that carry 90 % of its mass (ASCE 7-22 §16.2.3.1), and for the items their
-    rocking period 2π/p (Housner 1963; p the frequency parameter), within
-    :data:`ITEM_PERIOD_RANGE_S`; on its own (no building) the items' periods.
+    The building's modes that carry 90 % of its mass (ASCE 7-22 §16.2.3.1) and the band of rocking
+    periods 2π/p an item may have (Housner 1963; p the frequency parameter), :data:`ITEM_PERIOD_RANGE_S`,
+    whatever the workbook's items: the suite is the site's and the building's, so that editing an item
+    never changes the motions every other item is assessed under.
 
-    A uniform box 0.6 m square and 1.6 m tall: R = √(0.3² + 0.8²) = 0.8544 m, κ = 4/3, p = √(g/(κR))
-    = 2.934 rad/s, 2π/p = 2.142 s:
-
-    >>> items = pd.DataFrame({"width_m": [0.6], "depth_m": [0.6], "cg_height_m": [0.8], "height_m": [1.6]})
-    >>> periods, mass_period = periods_that_matter_s(items, None)
-    >>> [round(float(t), 3) for t in periods], mass_period
-    ([2.142], None)
+    >>> periods, mass_period = periods_that_matter_s(None)
+    >>> [float(t) for t in periods], mass_period
+    ([0.05, 4.0], None)
     """
-    half = 0.5 * np.minimum(equipment["width_m"].to_numpy(float), equipment["depth_m"].to_numpy(float))
-    p = frequency_parameter(half, equipment["cg_height_m"].to_numpy(float), equipment["height_m"].to_numpy(float))
-    item_periods = np.clip(2.0 * np.pi / np.asarray(p, dtype=float), *ITEM_PERIOD_RANGE_S)
-    periods = [np.unique(np.round(item_periods, 6))]
+    periods = [np.array(ITEM_PERIOD_RANGE_S, dtype=float)]
     mass_period = None
     if modes is not None:
         cumulative = np.cumsum(modes.effective_mass_ratio)
@@ -109,8 +102,8 @@ def periods_that_matter_s(equipment: pd.DataFrame, modes: BuildingModes | None) 
     return np.concatenate(periods), mass_period
 
 
-def site_suite(site: SiteSheet, level: HazardLevel, equipment: pd.DataFrame, modes: BuildingModes | None,
-               workbook_name: str, workbook_folder, seed: int) -> SiteSuite:
+def site_suite(site: SiteSheet, level: HazardLevel, modes: BuildingModes | None, workbook_name: str,
+               workbook_folder, seed: int, *, suite_size: int | None = None, progress=None) -> SiteSuite:
     """A level's ground suite from the site sheet (module docstring).
 
     Raises :class:`~assess.errors.InputError` naming the site sheet where the level names no target
@@ -120,18 +113,22 @@ def site_suite(site: SiteSheet, level: HazardLevel, equipment: pd.DataFrame, mod
     target = level_target(level, design=design, uhs_path=site.uhs_path or None,
                           oq_site=parse_site_choice(site.oq_site) if site.oq_site else None,
                           workbook=workbook_name, sheet=site.sheet)
-    periods, mass_period = periods_that_matter_s(equipment, modes)
+    periods, mass_period = periods_that_matter_s(modes)
     name = level.label or level.name
     try:
         suite = ground_suite(target, periods, level=name, records_folder=site.records_folder or None,
-                             workbook_folder=workbook_folder, suite_size=site.suite_size, base_seed=seed,
-                             mass_period_s=mass_period)
+                             workbook_folder=workbook_folder, suite_size=suite_size or site.suite_size,
+                             base_seed=seed, mass_period_s=mass_period, progress=progress)
     except ValueError as error:
-        key = "records" if site.records_folder else ("uhs" if level.has_probability else "suite_size")
+        # the cause's own cell: the records folder (too few records), else the uhs file (a target that ends
+        # below the range); a synthetic suite from an ASCE 7 spectrum is never refused
+        if site.records_folder:
+            key, fix = "records", "add records to the records folder, or give the level's motions in the hazard sheet."
+        else:
+            key, fix = "uhs", ("give a uniform-hazard spectrum that reaches the building's periods, or run the level "
+                               "DE or MCE_R.")
         raise InputError([Problem(workbook_name, f"the ground suite of level '{name}' cannot be made: {error}.",
-                                  "add records to the records folder, lower suite_size, or give the level's "
-                                  "motions in the hazard sheet.", sheet=site.sheet,
-                                  row=site.rows.get(key))]) from None
+                                  fix, sheet=site.sheet, row=site.rows.get(key))]) from None
     return SiteSuite(suite, design, periods)
 
 

@@ -92,8 +92,8 @@ def level_motions(inventory, level_text: str, progress: Progress, oq_hazard=None
     records, site, notes = {}, None, []
     if inventory.site is not None and not _has_ground_motions(motions):
         progress(f"making the ground suite of level {level_label} from the site sheet")
-        site = site_and_building.site_suite(inventory.site, level, freestanding, modes, workbook_name,
-                                           inventory.path.parent, seed)
+        site = site_and_building.site_suite(inventory.site, level, modes, workbook_name, inventory.path.parent,
+                                           seed)
         rows, records = _site_rows(site, level, level_label)
         motions = pd.concat([motions, rows], ignore_index=True) if len(motions) else rows
         notes.append(site_and_building.site_note(site, inventory.site))
