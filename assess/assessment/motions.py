@@ -35,6 +35,9 @@ from assess.hazard.records import MIN_DURATION_S, Record, pulse_record, read_rec
 from assess.hazard.synthesis import synthesize_motion
 
 Progress = Callable[[str], None]
+#: ``pulse_source`` of a motion with no pulse to identify (synthetic, or through the building): its Tp and vp are
+#: empty and the paper's regression does not apply to it.
+NO_PULSE = "no pulse: a synthetic or floor motion (the regression does not apply)"
 #: Pulse simulated for a motion given by PTA and Tp without a pulse type.
 DEFAULT_PULSE = "B"
 
@@ -164,6 +167,7 @@ MEMORY = "memory:"
 def _site_rows(site, level: HazardLevel, level_label: str) -> tuple[pd.DataFrame, dict[str, Record]]:
     """The ground suite as hazard rows at floor 0, each naming its history by a :data:`MEMORY` key."""
     records, rows = {}, []
+    synthetic = site.suite.method == "synthetic"
     for k, motion in enumerate(site.suite.motions):
         key = f"{MEMORY}{level_label}/{k + 1}"
         records[key] = motion.first
@@ -172,8 +176,9 @@ def _site_rows(site, level: HazardLevel, level_label: str) -> tuple[pd.DataFrame
             second = f"{key}/2"
             records[second] = motion.second
         rows.append({"level": level.name, "level_label": level_label, "motion": motion.name, "all_floors": False,
-                     "floor": 0, "pta_g": np.nan, "tp_s": np.nan, "vp_m_s": np.nan, "pulse": "",
-                     "record_path": key, "scale": 1.0, "record_2_path": second, "azimuth_deg": 0.0, "row": 0})
+                     "floor": 0, "pta_g": motion.first.pta_g if synthetic else np.nan, "tp_s": np.nan,
+                     "vp_m_s": np.nan, "pulse": "", "record_path": key, "scale": 1.0, "record_2_path": second,
+                     "azimuth_deg": 0.0, "row": 0, "no_pulse": synthetic})
     table = pd.DataFrame(rows)
     table["floor"] = table["floor"].astype("Int64")
     return table, records
@@ -203,7 +208,7 @@ def _with_building_rows(motions: pd.DataFrame, floors: list[int], workbook_name:
     for floor in floors:
         derived = ground.assign(floor=floor, from_ground=ground["motion_key"], record_path="", record_2_path="",
                                 scale=1.0, pta_g=np.nan, tp_s=np.nan, vp_m_s=np.nan, pulse="",
-                                pulse_source="measured from the floor's history through the building")
+                                pulse_source=NO_PULSE)
         derived["motion"] = [f"{name} @ floor {floor}" for name in ground["motion"]]
         rows.append(derived)
     out = pd.concat([motions, *rows], ignore_index=True)
@@ -244,9 +249,10 @@ def _through_building(motions: LevelMotions, histories: dict, kinds: dict, pairs
             kinds[k] = RECORD  # the engine under the floor's history governs (no pulse regression for it)
             if depth is not None:
                 pairs[k] = (width[floor][0], depth[floor][0])
-            first = width[floor][0]
-            fit = identify_pulse(first.accel_g, first.dt_s, models=("B",))
-            table.loc[index, ["pta_g", "tp_s", "vp_m_s"]] = [first.pta_g, fit.tp_s, fit.vp_m_s]
+            # a floor's motion is the building's filtered response, no pulse: the paper's regression (Tp, vp)
+            # does not apply to it, and the engine under the history governs
+            table.loc[index, ["pta_g", "tp_s", "vp_m_s", "pulse_source"]] = [width[floor][0].pta_g, np.nan, np.nan,
+                                                                              NO_PULSE]
     ground = [histories[int(k)][0][0] for k in sorted(derived["from_ground"].unique())]
     return site_and_building.floors_csv(modes, ground, sorted(int(f) for f in derived["floor"].unique()),
                                         motions.level_label)
@@ -285,6 +291,9 @@ def _measure_pulse_parameters(level_motions: pd.DataFrame, workbook_name: str,
     motions = level_motions.assign(pulse_source="workbook")
     notes = []
     for index, row in motions.iterrows():
+        if row.get("no_pulse") == True:  # noqa: E712 (NaN where the row has none)  a synthetic motion: stationary filtered noise, no pulse to fit
+            motions.at[index, "pulse_source"] = NO_PULSE
+            continue
         missing = [c for c in ("pta_g", "tp_s", "vp_m_s") if not np.isfinite(row[c])]
         if not row["record_path"] or not missing:
             continue

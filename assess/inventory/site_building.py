@@ -30,8 +30,7 @@ SITE_CLASSES_7_16 = ("A", "B", "C", "D", "E")
 RISK_CATEGORIES = ("I", "II", "III", "IV")
 DEFAULT_RISK_CATEGORY = "II"
 #: Motions in a level's ground suite: ASCE 7-22 §16.2.2 asks for at least 11.
-DEFAULT_SUITE_SIZE = 11
-MIN_SUITE_SIZE, MAX_SUITE_SIZE = 3, 100
+MIN_SUITE_SIZE, MAX_SUITE_SIZE = 3, 500
 DEFAULT_DAMPING = 0.05
 MAX_STOREYS = 200
 
@@ -63,8 +62,10 @@ class SiteSheet:
         The site to pick in a ``uhs`` file of several ("" when not given).
     records_folder : str
         Absolute path of a folder of ground-motion records, "" when none.
-    suite_size : int
-        Motions in a level's ground suite.
+    suite_size : int or None
+        Motions in a level's ground suite; None: the default of its route
+        (:data:`assess.site.suite.DEFAULT_SUITE_SIZE` records, :data:`assess.site.suite.SYNTHETIC_SUITE_SIZE`
+        synthetic motions).
     rows : dict
         The sheet row of each key given, to locate later problems.
     sheet : str
@@ -82,7 +83,7 @@ class SiteSheet:
     uhs_path: str = ""
     oq_site: str = ""
     records_folder: str = ""
-    suite_size: int = DEFAULT_SUITE_SIZE
+    suite_size: int | None = None
     rows: dict = field(default_factory=dict, compare=False)
     sheet: str = "site"
 
@@ -288,7 +289,7 @@ def read_site(table, folder: Path, report) -> SiteSheet | None:
                      s1_g=out.get("s1"), site_class=site_class, tl_s=out.get("tl"),
                      risk_category=risk, uhs_path=paths.get("uhs", ""), oq_site=out.get("oq_site", ""),
                      records_folder=paths.get("records", ""),
-                     suite_size=int(out.get("suite_size", DEFAULT_SUITE_SIZE)),
+                     suite_size=int(out["suite_size"]) if "suite_size" in out else None,
                      rows={name: row for name, (_, row) in values.items()}, sheet=table.title)
 
 

@@ -333,8 +333,13 @@ def strip_label_lines(label: str, limit: int = STRIP_LABEL_CHARS) -> list[str]:
     return [first, rest if len(rest) <= limit else rest[: limit - 1] + "…"]
 
 
+#: Most lines of an item's strip, one per motion; a larger suite is drawn as one line of all its histories.
+STRIP_MAX_LINES = 24
+
+
 def _suite_strip(runs: pd.DataFrame, clearance_cm: float | None, system: str = "si") -> dict | None:
-    """An item's suite as a strip; lengths in cm, or in inches for ``system`` ``'us'``."""
+    """An item's suite as a strip, one line per motion (all on one line beyond :data:`STRIP_MAX_LINES`
+    motions); lengths in cm, or in inches for ``system`` ``'us'``."""
     if runs.empty:
         return None
     per_cm = length_value(1.0, system)
@@ -343,11 +348,13 @@ def _suite_strip(runs: pd.DataFrame, clearance_cm: float | None, system: str = "
     top = max(float(sliding.max()), clearance or 0.0, 1.0) * 1.08
     scale = (STRIP_WIDTH - STRIP_LEFT - 10) / top
     motions = list(dict.fromkeys(runs["motion_key"]))
+    groups = [(key, runs[runs["motion_key"] == key], None) for key in motions]
+    if len(motions) > STRIP_MAX_LINES:  # a large suite: every history on one line, its density in the dots
+        groups = [(None, runs, f"all {len(motions)} motions ({len(runs)} histories)")]
     lines, y = [], 15.0  # below the axis titles
     words = [figure_word("motion", STRIP_LEFT - 6, 7, "end", colour="#5d6d7e")]
-    for key in motions:
-        mine = runs[runs["motion_key"] == key]
-        label = strip_label_lines(text(mine["motion"].iloc[0]))
+    for key, mine, name in groups:
+        label = strip_label_lines(name or text(mine["motion"].iloc[0]))
         extra = (len(label) - 1) * (STRIP_FONT_PX + 1)
         line_y = y + extra / 2.0
         sliding_of_run = pd.to_numeric(mine["sliding_cm"], errors="coerce").fillna(0.0).to_numpy(float) * per_cm
@@ -458,6 +465,7 @@ def report_context(result, with_figures: bool = True) -> dict:
         "details": _item_details(rows, summary, result.suite_runs, {str(h["id"]): h for h in result.histories},
                                  system),
         "u": report_units(system, numbering),
+        "strip_max_lines": STRIP_MAX_LINES,
         "high": [r for r in rows if r["risk"] == "high"],
         "moderate": [r for r in rows if r["risk"] == "moderate"],
         "rows": rows,

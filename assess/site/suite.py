@@ -5,7 +5,8 @@ Two routes, one result (:class:`GroundSuite`):
 **Records** (:func:`select_and_scale`), as ASCE 7-22 §16.2 asks of a suite for response-history
 analysis:
 
-* suite size: ``suite_size`` motions (default 11, the minimum of §16.2.2);
+* suite size: ``suite_size`` motions (default 11, the minimum of §16.2.2; a synthetic suite's default is
+  :data:`SYNTHETIC_SUITE_SIZE`, enough motions for an item's class to be clear);
 * period range (§16.2.3.1): from 0.2 T_min to 2 T_max, where T_min and T_max are the
   shortest and longest of the periods that matter here: the building's first modes and the
   items' own periods, passed in (:func:`period_range_s`);
@@ -43,6 +44,10 @@ Boore, D. M. (2001). Effect of baseline corrections on displacements and respons
   several recordings of the 1999 Chi-Chi, Taiwan, earthquake. Bull. Seismol. Soc. Am.
   91(5):1199-1211. doi:10.1785/0120000703
 Boore, D. M. (2010). doi:10.1785/0120090400 (RotD100).
+Clopper, C. J., Pearson, E. S. (1934). The use of confidence or fiducial limits illustrated in the case of the
+  binomial. Biometrika 26(4):404-413. doi:10.1093/biomet/26.4.404
+Hanley, J. A., Lippman-Hand, A. (1983). If nothing goes wrong, is everything all right? Interpreting zero
+  numerators. JAMA 249(13):1743-1745. doi:10.1001/jama.1983.03330370053031
 Gasparini, D. A., Vanmarcke, E. H. (1976). SIMQKE: a program for artificial motion
   generation. MIT Department of Civil Engineering, Report R76-4.
 NIST GCR 11-917-15 (2011). Selecting and scaling earthquake ground motions for performing
@@ -67,8 +72,16 @@ from assess.hazard.synthesis import rezaeian_residual
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
 from assess.site.spectrum import pseudo_acceleration_spectrum, rotd_spectrum
 
-#: Motions in a suite (ASCE 7-22 §16.2.2: at least 11).
+#: Records in a suite selected from a records folder (ASCE 7-22 §16.2.2: at least 11).
 DEFAULT_SUITE_SIZE = 11
+#: Synthetic motions in a suite: enough for an item that none of them overturns to be clearly ``low``. With n
+#: motions and no failure, the upper end of the 90 % Clopper-Pearson interval (Clopper & Pearson 1934) is
+#: 1 - 0.05^(1/n) (about 3/n, the "rule of three": Hanley & Lippman-Hand 1983); the lowest threshold a class
+#: turns on is overturning's 2.5 % (assess.risk_classes), so n >= ln 0.05 / ln 0.975 = 118.3: 120 motions put
+#: a 0-of-120 item's interval (0-2.5 %) inside ``low``. Eleven motions (ASCE 7's minimum for a building's
+#: own response) bound the same item only below 24 %, which spans every class. A synthetic motion costs
+#: what its matching costs (about 0.05 s), so the evidence is cheap where records are not.
+SYNTHETIC_SUITE_SIZE = 120
 #: Bounds of one record's amplitude scale factor (see the module docstring).
 DEFAULT_SCALE_BOUNDS = (0.25, 4.0)
 #: The suite's mean spectrum is at least this share of the target over the range (§16.2.3.2).
@@ -592,7 +605,7 @@ def synthetic_motion(target: Callable, lower_s: float, upper_s: float, seed: int
     return Record(matched * amplitude, dt_s, name), float(error)
 
 
-def synthetic_suite(target: Callable, periods_s, *, level: str, suite_size: int = DEFAULT_SUITE_SIZE,
+def synthetic_suite(target: Callable, periods_s, *, level: str, suite_size: int = SYNTHETIC_SUITE_SIZE,
                     base_seed: int = 0, dt_s: float = 0.005, tolerance: float = SYNTHETIC_TOLERANCE,
                     mass_period_s=None, progress: Callable | None = None) -> GroundSuite:
     """``suite_size`` spectrum-compatible synthetic motions for ``target`` (see the module docstring).
@@ -648,7 +661,7 @@ def synthetic_suite(target: Callable, periods_s, *, level: str, suite_size: int 
 
 
 def ground_suite(target: Callable, periods_s, *, level: str, records_folder=None, workbook_folder=None,
-                 suite_size: int = DEFAULT_SUITE_SIZE, base_seed: int = 0, mass_period_s=None,
+                 suite_size: int | None = None, base_seed: int = 0, mass_period_s=None,
                  progress: Callable | None = None) -> GroundSuite:
     """A level's ground suite: selected and scaled from ``records_folder``, or synthetic without it.
 
@@ -659,6 +672,8 @@ def ground_suite(target: Callable, periods_s, *, level: str, records_folder=None
     """
     if records_folder is not None:
         return select_and_scale(read_records_folder(records_folder, workbook_folder=workbook_folder), target,
-                                periods_s, level=level, suite_size=suite_size, mass_period_s=mass_period_s)
-    return synthetic_suite(target, periods_s, level=level, suite_size=suite_size, base_seed=base_seed,
+                                periods_s, level=level, suite_size=suite_size or DEFAULT_SUITE_SIZE,
+                                mass_period_s=mass_period_s)
+    return synthetic_suite(target, periods_s, level=level, suite_size=suite_size or SYNTHETIC_SUITE_SIZE,
+                           base_seed=base_seed,
                            mass_period_s=mass_period_s, progress=progress)
