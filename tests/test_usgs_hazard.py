@@ -267,3 +267,42 @@ def test_proc_self_environ_is_never_printed(tmp_path):
                         tmp_path / "out", cwd=tmp_path)
     commands.assert_refused(done, "not an OpenQuake hazard curve or map", "USGS nshmp-haz")
     assert os.environ.get("PATH", "PATH=") not in done.stderr
+
+
+# ------------------------------------------------------------------ end to end: the same numbers
+
+
+def test_an_assessment_over_an_nshmp_curve_matches_the_openquake_one_it_copies(tmp_path):
+    """The lab's one-year OpenQuake curve and an nshmp-haz file of its rates (-ln(1 - P), written in full):
+    the level's PGA, the motions' scaling, the fragilities' annual rates, expected annual losses and
+    benefit-cost ratios agree to 1e-9."""
+    from assess.inventory import read_workbook
+    from assess.pipeline import run_assessment
+    from test_hazard_curve import SQUAT, _rect_record
+    from workbooks import write_workbook
+
+    oq_path = Path(__file__).resolve().parents[1] / "inventories" / "lab-hazard-curve.csv"
+    lines = oq_path.read_text().splitlines()
+    assert "investigation_time=1.0" in lines[0]
+    header, row = lines[1].split(","), lines[2].split(",")
+    levels = [float(name[len("poe-"):]) for name in header[3:]]
+    usgs_path = write_nshmp(tmp_path / "hazout", levels, [-math.log1p(-float(p)) for p in row[3:]])
+    book = write_workbook(tmp_path / "w.xlsx", {
+        "equipment": [
+            {"id": "S1", "name": "low friction", "floor": 0, "mu": 0.15, "clearance_cm": 10, "value": 40_000,
+             "mitigation_cost": 1_500, **SQUAT},
+            {"id": "S2", "name": "more friction", "floor": 0, "mu": 0.30, "clearance_cm": 25, "value": 9_000,
+             "mitigation_cost": 800, **SQUAT}],
+        "hazard": [{"level": "2in50", "motion": "rect", "floor": 0, "record": "records/rect.csv"}],
+    }, files={"records/rect.csv": _rect_record()})
+    results = []
+    for path in (oq_path, usgs_path):
+        hazard = read_hazard_curve_file(path)
+        results.append(run_assessment(read_workbook(book), "2in50", oq_hazard=hazard, hazard_curve=hazard)
+                       .summary.set_index("id"))
+    oq, usgs = results
+    columns = ["pta_g", "annual_rate_beyond_clearance", "annual_rate_beyond_clearance_low",
+               "annual_rate_beyond_clearance_high", "p50yr_beyond_clearance", "expected_annual_loss",
+               "expected_annual_loss_after", "benefit_cost_ratio"]
+    assert oq[columns].notna().all().all(), oq[columns]
+    np.testing.assert_allclose(usgs[columns].to_numpy(float), oq[columns].to_numpy(float), rtol=1e-9)
