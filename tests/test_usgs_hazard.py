@@ -295,14 +295,46 @@ def test_an_assessment_over_an_nshmp_curve_matches_the_openquake_one_it_copies(t
              "mitigation_cost": 800, **SQUAT}],
         "hazard": [{"level": "2in50", "motion": "rect", "floor": 0, "record": "records/rect.csv"}],
     }, files={"records/rect.csv": _rect_record()})
-    results = []
-    for path in (oq_path, usgs_path):
-        hazard = read_hazard_curve_file(path)
-        results.append(run_assessment(read_workbook(book), "2in50", oq_hazard=hazard, hazard_curve=hazard)
-                       .summary.set_index("id"))
-    oq, usgs = results
+    runs = [run_assessment(read_workbook(book), "2in50", oq_hazard=hazard, hazard_curve=hazard)
+            for hazard in (read_hazard_curve_file(oq_path), read_hazard_curve_file(usgs_path))]
+    assert runs[0].curve_risk.curve.startswith("lab-hazard-curve.csv, site #0")
+    assert runs[1].curve_risk.curve.startswith("PGA/curves.csv (USGS nshmp-haz), site #0")
+    oq, usgs = (run.summary.set_index("id") for run in runs)
     columns = ["pta_g", "annual_rate_beyond_clearance", "annual_rate_beyond_clearance_low",
                "annual_rate_beyond_clearance_high", "p50yr_beyond_clearance", "expected_annual_loss",
                "expected_annual_loss_after", "benefit_cost_ratio"]
     assert oq[columns].notna().all().all(), oq[columns]
     np.testing.assert_allclose(usgs[columns].to_numpy(float), oq[columns].to_numpy(float), rtol=1e-9)
+
+
+def test_a_portfolio_row_naming_an_nshmp_curve_gets_the_rates_of_the_openquake_one(tmp_path):
+    """Two copies of one building in a portfolio, one with the lab's OpenQuake curve, one with its nshmp-haz
+    copy (in the portfolio's folder, as a row names it): the same annual rates, item by item and in total."""
+    import pandas as pd
+
+    from assess import cli
+    from test_batch import ITEMS, _write_building
+    from workbooks import write_workbook
+
+    site = tmp_path / "site"
+    site.mkdir()
+    oq_text = (Path(__file__).resolve().parents[1] / "inventories" / "lab-hazard-curve.csv").read_text()
+    (site / "lab-curve.csv").write_text(oq_text)
+    header, row = (line.split(",") for line in oq_text.splitlines()[1:3])
+    write_nshmp(site / "hazout", [float(name[len("poe-"):]) for name in header[3:]],
+                [-math.log1p(-float(p)) for p in row[3:]])
+    for name in ("oq", "usgs"):
+        _write_building(site, name, ITEMS["alpha"])
+    portfolio = write_workbook(site / "portfolio.xlsx", {"buildings": [
+        {"building": "oq", "workbook": "oq.xlsx", "level": "2in50", "oq_hazard": "lab-curve.csv"},
+        {"building": "usgs", "workbook": "usgs.xlsx", "level": "2in50", "oq_hazard": "hazout/PGA/curves.csv"}]})
+    out = tmp_path / "out"
+    assert cli.main(["batch", str(portfolio), "--out", str(out), "--format", "xlsx", "--quiet"]) == 0
+    oq, usgs = (pd.read_csv(out / name / "summary.csv").set_index("id") for name in ("oq", "usgs"))
+    columns = [c for c in oq.columns if c.startswith(("annual_rate_", "p50yr_"))]
+    assert oq["annual_rate_beyond_clearance"].notna().any()
+    pd.testing.assert_frame_equal(usgs[columns], oq[columns])
+    table = pd.read_csv(out / "portfolio.csv").set_index("building")
+    assert table.at["usgs", "hazard_curve"] == "curves.csv"
+    assert table.at["usgs", "annual_rate_beyond_clearance_units_total"] == \
+        table.at["oq", "annual_rate_beyond_clearance_units_total"]

@@ -577,7 +577,7 @@ def fit_and_integrate(cases: pd.DataFrame, hazard: OpenQuakeHazard, levels_g, ra
             row.update(rates)
         row["curve_note"] = note_prefix + "; ".join(notes)
         rows.append(row)
-    name = f"{_file_name(hazard.path)}, site {hazard.site.label()}"
+    name = f"{_curve_name(hazard)}, site {hazard.site.label()}"
     return CurveRisk(table=pd.DataFrame(rows)[["id"] + FIT_COLUMNS], fits=fits, stripes=stripes,
                      floors=floors, curve=name, runs=len(runs), notes=curve_notes, fit_p=fit_p,
                      intensity=intensity)
@@ -586,6 +586,16 @@ def fit_and_integrate(cases: pd.DataFrame, hazard: OpenQuakeHazard, levels_g, ra
 def _file_name(path) -> str:
     from pathlib import Path
     return Path(str(path)).name
+
+
+def _curve_name(hazard: OpenQuakeHazard) -> str:
+    """The curve as the report names it: its file name; with its folder and program for nshmp-haz, whose
+    files are all ``curves.csv`` and named by their folder (``PGA/curves.csv (USGS nshmp-haz)``)."""
+    from pathlib import Path
+    if hazard.annual_rates is None:
+        return _file_name(hazard.path)
+    path = Path(str(hazard.path))
+    return f"{path.parent.name}/{path.name} ({hazard.source})"
 
 
 def export_items(curve: CurveRisk, summary: pd.DataFrame) -> list:
