@@ -228,7 +228,14 @@ def run_job(job: AssessmentJob, say: Say = lambda message: None,
     with open_runner(job.scheduler, say, tls=job.scheduler_tls) as runner:
         shared_curve = None  # stripes of ground acceleration through the building: one level's serve all
         for (_, text), out_dir in zip(levels, out_dirs):  # every level computed before any is written
-            result = pipeline.run_assessment(inventory, text, seed=job.seed, progress=say, oq_hazard=oq_hazard,
+            scale_to = oq_hazard
+            if hazard_curve is not None and not parse_level(text).has_probability:
+                # a label (DE, MCE_R) has no probability to read the curve at: its motions stay the workbook's
+                # (or the code spectrum's), and the curve gives the annual rates only, as in assess batch
+                scale_to = None
+                say(f"level {text} is a label, not a probability: its motions are kept, and the hazard curve "
+                    f"{job.oq_hazard.name} gives the annual rates of failure only")
+            result = pipeline.run_assessment(inventory, text, seed=job.seed, progress=say, oq_hazard=scale_to,
                                              derive_floors_roof=job.derive_floors, calibration=calibration,
                                              runner=runner, hazard_curve=hazard_curve,
                                              allow_records_outside=job.allow_records_outside,

@@ -338,3 +338,34 @@ def test_a_portfolio_row_naming_an_nshmp_curve_gets_the_rates_of_the_openquake_o
     assert table.at["usgs", "hazard_curve"] == "curves.csv"
     assert table.at["usgs", "annual_rate_beyond_clearance_units_total"] == \
         table.at["oq", "annual_rate_beyond_clearance_units_total"]
+
+
+def _label_workbook(folder: Path, level: str) -> Path:
+    from workbooks import job_sheets, write_workbook
+
+    sheets = job_sheets()
+    sheets["hazard"][0]["level"] = level
+    folder.mkdir(parents=True, exist_ok=True)
+    return write_workbook(folder / "wb.xlsx", sheets)
+
+
+def test_a_level_named_by_a_label_keeps_its_motions_and_the_curve_gives_the_rates(tmp_path):
+    """DE (a code level, no probability): nothing to read the curve at, so the motions stay the workbook's
+    (PTA 0.5 g, as without a curve) and the curve gives the annual rates; a map, which only scales, is refused."""
+    import pandas as pd
+
+    book = _label_workbook(tmp_path / "site", "DE")
+    curve = write_nshmp(tmp_path / "hazout", LEVELS_G, RATES)
+    done = commands.run(book, "--hazard", "DE", "--oq-hazard", curve, "--out", tmp_path / "out", "--format", "xlsx",
+                        cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    assert "level DE is a label, not a probability: its motions are kept" in done.stdout + done.stderr
+    motions = pd.read_csv(tmp_path / "out" / "motions.csv")
+    assert set(motions["pta_g"].round(12)) == {0.5}
+    summary = pd.read_csv(tmp_path / "out" / "summary.csv")
+    assert summary["annual_rate_beyond_clearance"].notna().any() or summary["annual_rate_overturn"].notna().any()
+    hazard_map = Path(__file__).parent / "data" / "openquake" / "case_18-hazard_map-mean.csv"
+    done = commands.run(book, "--hazard", "DE", "--oq-hazard", hazard_map, "--oq-site", "0", "--out",
+                        tmp_path / "map", "--format", "xlsx", cwd=tmp_path)
+    commands.assert_refused(done, "the level 'DE' is a label with no probability")
+    assert not (tmp_path / "map").exists()
