@@ -245,9 +245,11 @@ def test_a_file_of_neither_format_names_both(tmp_path):
     assert SECRET not in str(problem) and "root:" not in str(problem)
 
 
-def test_a_folder_is_no_file(tmp_path):
+def test_a_folder_or_a_missing_file_is_refused(tmp_path):
     (problem,) = _refusal(tmp_path)
-    assert "does not exist" in problem.message
+    assert "is not a file" in problem.message
+    (problem,) = _refusal(tmp_path / "PGA" / "curves.csv")
+    assert "does not exist" in problem.message and "--oq-hazard" in problem.fix
 
 
 # ------------------------------------------------------------------ through the command

@@ -111,7 +111,8 @@ def bounded_text(path, max_bytes: int = MAX_HAZARD_FILE_BYTES, option: str = "--
     """
     path = Path(path)
     if not path.is_file():
-        raise _fail(path, "the hazard file does not exist.", f"check the path given to {option}.")
+        what = ("is not a file (a folder or a device)" if path.exists() else "does not exist")
+        raise _fail(path, f"the hazard file {what}.", f"check the path given to {option}.")
     with path.open("rb") as stream:
         data = stream.read(max_bytes + 1)
     if len(data) > max_bytes:
