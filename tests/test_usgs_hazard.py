@@ -16,7 +16,7 @@ import pytest
 
 from assess.errors import InputError
 from assess.hazard.levels import HazardLevel
-from assess.hazard.openquake import pga_at_level, read_openquake_hazard
+from assess.hazard.openquake import pga_at_level
 from assess.hazard.risk_integral import curve_annual_rates, openquake_failure_rate
 from assess.hazard.usgs import (MAX_HAZARD_FILE_BYTES, SOURCE, bounded_text, imt_of_path, is_nshmp_header,
                                 read_hazard_curve_file, read_nshmp_curve)
