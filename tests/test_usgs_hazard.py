@@ -245,6 +245,17 @@ def test_a_file_of_neither_format_names_both(tmp_path):
     assert SECRET not in str(problem) and "root:" not in str(problem)
 
 
+@pytest.mark.parametrize("text", ["name,lon,lat,0.1,0.2\n" + "x" * 200_000 + ",1,2,0.1,0.01\n",
+                                  "a" * 200_000 + "\n1,2\n",
+                                  "#,,\"kind='mean', investigation_time=1.0\"\nlon,lat,poe-0.1\n" + "y" * 200_000])
+def test_a_field_beyond_the_csv_limit_is_refused_not_a_crash(tmp_path, text):
+    path = tmp_path / "PGA" / "curves.csv"
+    path.parent.mkdir()
+    path.write_text(text)
+    (problem,) = _refusal(path)
+    assert "field larger than field limit" in problem.message and "x" * 50 not in str(problem)
+
+
 def test_a_folder_or_a_missing_file_is_refused(tmp_path):
     (problem,) = _refusal(tmp_path)
     assert "is not a file" in problem.message

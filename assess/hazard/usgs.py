@@ -149,11 +149,14 @@ def read_hazard_curve_file(path, site=None) -> OpenQuakeHazard:
         neither format is told what both look like.
     """
     text = bounded_text(path)
-    _, header = _first_line(text)
-    if is_nshmp_header(header):
-        return read_nshmp_curve(path, site=site, text=text)
     try:
+        _, header = _first_line(text)
+        if is_nshmp_header(header):
+            return read_nshmp_curve(path, site=site, text=text)
         return read_openquake_hazard(path, site=site)
+    except csv.Error as error:  # a field over the csv module's limit (128 KiB), a broken quote: no hazard file
+        raise _fail(path, f"the file is not a CSV a hazard curve is written in ({error}).",
+                    "give the hazard curve as OpenQuake or nshmp-haz exported it.") from None
     except InputError as error:
         raise InputError([replace(p, fix=f"{p.fix} Or give a USGS nshmp-haz curve (hazout/PGA/curves.csv: header "
                                   "'name,lon,lat,<PGA levels>', annual rates).")
