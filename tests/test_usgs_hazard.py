@@ -232,7 +232,7 @@ def test_a_file_too_large_is_refused_unread(tmp_path):
     with path.open("wb") as stream:  # sparse: no disk written
         stream.truncate(MAX_HAZARD_FILE_BYTES + 1)
     (problem,) = _refusal(path)
-    assert "larger than 32 MiB" in problem.message and "it is not read" in problem.message
+    assert "larger than 32 MiB" in problem.message and "read no further" in problem.message
     with pytest.raises(InputError):
         bounded_text(_edited(tmp_path / "small"), max_bytes=10)
 

@@ -117,7 +117,7 @@ def bounded_text(path, max_bytes: int = MAX_HAZARD_FILE_BYTES, option: str = "--
         data = stream.read(max_bytes + 1)
     if len(data) > max_bytes:
         raise _fail(path, f"the hazard file is larger than {max_bytes // 2**20} MiB, far more than a site's "
-                    "curve (a few hundred bytes a site); it is not read.",
+                    "curve (a few hundred bytes a site): it is read no further.",
                     "give the curve of the facility's site: the header line and the site's row (or rerun the "
                     "hazard for that site only).")
     return data.decode("utf-8-sig", errors="replace")
