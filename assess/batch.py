@@ -51,7 +51,7 @@ from assess.assessment.inputs import check_inputs
 from assess.batch_report import building_row, changes_between, portfolio_html
 from assess.errors import InputError, Problem, raise_if_any
 from assess.hazard.motions import select_level
-from assess.hazard.openquake import read_openquake_hazard
+from assess.hazard.usgs import read_hazard_curve_file
 from assess.hazard.records import check_record_location
 from assess.inventory import read_workbook, schema, xlsx
 from assess.inventory.schema import Column, SheetSpec
@@ -201,7 +201,7 @@ def _portfolio_file(row, column: str, headers: dict, folder: Path, allow_outside
     """The file a cell names, relative to the portfolio's folder; None after reporting it at the cell."""
     text = str(row.values[column])
     header = headers.get(column)
-    what = "workbook" if column == "workbook" else "OpenQuake hazard curve"
+    what = "workbook" if column == "workbook" else "hazard curve"
     if any(not c.isprintable() for c in text):
         report.at(row.number, header, f"the {what} path holds control characters.",
                   f"write the {what}'s file name on one line.")
@@ -306,7 +306,7 @@ def prepare_buildings(buildings: list[Building], *, level: str | None = None, oq
         """The curve at ``path``, read once; its problems raised once, for the first building naming it."""
         if path not in curves:
             try:
-                curves[path] = read_openquake_hazard(path)
+                curves[path] = read_hazard_curve_file(path)
             except InputError:
                 curves[path] = None
                 raise

@@ -130,12 +130,14 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--seed", metavar="N", type=_whole_number(0), default=0,
                         help="seed of every random draw; the same inputs and seed give the same numbers (default 0)")
     parser.add_argument("--oq-hazard", metavar="CSV", type=Path,
-                        help="OpenQuake hazard-curve or hazard-map CSV for the site: the level's motions "
-                             "are scaled so that their ground motions match its PGA at LEVEL; a curve also "
-                             "gives each item's fragilities (fragility/) and annual rates of failure")
+                        help="the site's PGA hazard: an OpenQuake hazard-curve or hazard-map CSV, or a USGS "
+                             "nshmp-haz curve (hazout/PGA/curves.csv, annual rates), told apart by the header: the "
+                             "level's motions are scaled so that their ground motions match its PGA at LEVEL; a "
+                             "curve also gives each item's fragilities (fragility/) and annual rates of failure")
     parser.add_argument("--oq-site", metavar="SITE",
-                        help="which site of a multi-site OpenQuake file: a row number (0 = first), a "
-                             "custom_site_id, or lon,lat in degrees (e.g. --oq-site -122.5,38.1)")
+                        help="which site of a multi-site hazard file: a row number (0 = first), an OpenQuake "
+                             "custom_site_id or nshmp-haz site name, or lon,lat in degrees (e.g. --oq-site "
+                             "-122.5,38.1)")
     parser.add_argument("--derive-floors", metavar="ROOF_FLOOR", type=_whole_number(1),
                         help="floors without a motion take the ground motions amplified by 1 + 2z/h "
                              "(ASCE 7-16 eq. 13.3-1), z/h = floor / ROOF_FLOOR; such items are flagged "
@@ -266,7 +268,8 @@ def build_batch_parser() -> argparse.ArgumentParser:
                         help="level of the buildings whose row gives none (default: the one level of each "
                              "workbook); 2in50, 2%%/50yr and 2475yr are the same level")
     parser.add_argument("--oq-hazard", metavar="CSV", type=Path,
-                        help="OpenQuake hazard curve for the buildings whose row gives no oq_hazard: the "
+                        help="hazard curve (OpenQuake, or USGS nshmp-haz's PGA/curves.csv) for the buildings "
+                             "whose row gives no oq_hazard: the "
                              "items' fragilities are integrated over it into annual rates (unlike the main "
                              "command's --oq-hazard, it does not rescale the level's motions)")
     parser.add_argument("--scheduler", metavar="ADDRESS",

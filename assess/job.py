@@ -26,7 +26,7 @@ from assess.calibration.apply import read_calibration
 from assess.comparison import compare_summaries, read_previous_summary
 from assess.errors import InputError, Problem
 from assess.hazard.levels import parse_level
-from assess.hazard.openquake import read_openquake_hazard
+from assess.hazard.usgs import read_hazard_curve_file
 from assess.inventory import read_workbook
 from assess.mechanics.runner import LocalRunner
 from assess.folders import check_output_folder
@@ -107,8 +107,8 @@ def level_out_dir(out: Path | None, workbook: Path, level_name: str, several: bo
 
 
 def oq_site(text: str | None):
-    """``--oq-site`` as :func:`~assess.hazard.openquake.read_openquake_hazard` takes it: None, a row
-    index, (lon, lat) or an id."""
+    """``--oq-site`` as :func:`~assess.hazard.usgs.read_hazard_curve_file` takes it: None, a row
+    index, (lon, lat) or an id (an OpenQuake custom_site_id, an nshmp-haz site name)."""
     if text is None:
         return None
     if text.strip().isdigit():
@@ -213,7 +213,12 @@ def run_job(job: AssessmentJob, say: Say = lambda message: None,
     check_inputs(inventory, job.allow_records_outside)
     oq_hazard = None
     if job.oq_hazard is not None:
-        oq_hazard = read_openquake_hazard(job.oq_hazard, site=oq_site(job.oq_site))
+        oq_hazard = read_hazard_curve_file(job.oq_hazard, site=oq_site(job.oq_site))
+        if oq_hazard.annual_rates is not None:  # not OpenQuake's: say which format was read, and its notes
+            say(f"{job.oq_hazard.name}: a {oq_hazard.source} hazard curve of annual rates, site "
+                f"{oq_hazard.site.label()}")
+            for note in oq_hazard.notes:
+                say(f"note: {note}")
         if oq_hazard.kind != "curve":
             say(f"{job.oq_hazard.name} is a hazard map: the motions are scaled to it; annual rates need a "
                 "hazard curve")
@@ -223,7 +228,14 @@ def run_job(job: AssessmentJob, say: Say = lambda message: None,
     with open_runner(job.scheduler, say, tls=job.scheduler_tls) as runner:
         shared_curve = None  # stripes of ground acceleration through the building: one level's serve all
         for (_, text), out_dir in zip(levels, out_dirs):  # every level computed before any is written
-            result = pipeline.run_assessment(inventory, text, seed=job.seed, progress=say, oq_hazard=oq_hazard,
+            scale_to = oq_hazard
+            if hazard_curve is not None and not parse_level(text).has_probability:
+                # a label (DE, MCE_R) has no probability to read the curve at: its motions stay the workbook's
+                # (or the code spectrum's), and the curve gives the annual rates only, as in assess batch
+                scale_to = None
+                say(f"level {text} is a label, not a probability: its motions are kept, and the hazard curve "
+                    f"{job.oq_hazard.name} gives the annual rates of failure only")
+            result = pipeline.run_assessment(inventory, text, seed=job.seed, progress=say, oq_hazard=scale_to,
                                              derive_floors_roof=job.derive_floors, calibration=calibration,
                                              runner=runner, hazard_curve=hazard_curve,
                                              allow_records_outside=job.allow_records_outside,

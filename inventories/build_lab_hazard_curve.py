@@ -17,6 +17,12 @@ time of 1 year, P = 1 − e^(−λ) (Poisson), at 20 levels from 0.005 to 3 g.
 For a real building, export the site's curve from an OpenQuake run
 (``oq export hazard_curves``) and give that file instead.
 
+The same curve is also written in the layout of a USGS nshmp-haz hazard curve,
+``inventories/lab-hazard-usgs/PGA/curves.csv`` (header ``name,lon,lat`` and
+the levels; one row of annual rates λ, ``%.8e``, as nshmp-haz writes them), for
+a US user's run; a real one is the ``hazout/PGA/curves.csv`` of an nshmp-haz
+run for the site.
+
 Vamvatsikos, D. (2013). Derivation of new SAC/FEMA performance evaluation
 solutions with second-order hazard approximation. Earthquake Eng. Struct.
 Dyn. 42(8):1171-1188. doi:10.1002/eqe.2265
@@ -51,8 +57,18 @@ def annual_rate(level_g, ln_k0, k1, k2=K2):
     return np.exp(ln_k0 - k1 * x - k2 * x * x)
 
 
-def main(path=Path(__file__).with_name("lab-hazard-curve.csv")):
+def write_nshmp(path, rates, site_name="Lab (illustrative)"):
+    """The curve in nshmp-haz's layout: the levels as the OpenQuake file writes them (7 decimals), annual rates."""
+    header = ["name", "lon", "lat"] + [repr(float(f"{level:.7f}")) for level in LEVELS_G]
+    row = [site_name, f"{SITE[0]:.5f}", f"{SITE[1]:.5f}"] + [f"{rate:.8e}" for rate in rates]
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(",".join(header) + "\n" + ",".join(row) + "\n", encoding="utf-8")
+
+
+def main(path=Path(__file__).with_name("lab-hazard-curve.csv"),
+         usgs_path=Path(__file__).with_name("lab-hazard-usgs") / "PGA" / "curves.csv"):
     ln_k0, k1 = curve_constants()
+    write_nshmp(usgs_path, annual_rate(LEVELS_G, ln_k0, k1))
     poes = -np.expm1(-annual_rate(LEVELS_G, ln_k0, k1))
     header = ["lon", "lat", "depth"] + [f"poe-{level:.7f}" for level in LEVELS_G]
     comment = ("#" + "," * (len(header) - 1) + "\"generated_by='assess inventories/build_lab_hazard_curve.py "
@@ -60,7 +76,7 @@ def main(path=Path(__file__).with_name("lab-hazard-curve.csv")):
                "investigation_time=1.0, imt='PGA'\"")
     row = [f"{SITE[0]:.5f}", f"{SITE[1]:.5f}", f"{SITE[2]:.5f}"] + [f"{p:.6E}" for p in poes]
     path.write_text("\n".join([comment, ",".join(header), ",".join(row)]) + "\n", encoding="utf-8")
-    print(f"wrote {path}: k0 = {math.exp(ln_k0):.4g}, k1 = {k1:.4f}, k2 = {K2}")
+    print(f"wrote {path} and {usgs_path}: k0 = {math.exp(ln_k0):.4g}, k1 = {k1:.4f}, k2 = {K2}")
 
 
 if __name__ == "__main__":

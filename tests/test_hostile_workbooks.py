@@ -25,7 +25,7 @@ from workbooks import (RECORD_FILE, good_sheets, replace_member_streamed, rewrit
 
 ROOT = Path(__file__).resolve().parents[1]
 KM2010 = ROOT / "inventories" / "km2010-prototypes.xlsx"
-CURVE = ROOT / "tests" / "data" / "openquake" / "case_14-hazard_curve-rlz-000_PGA.csv"
+HAZARD_MAP = ROOT / "tests" / "data" / "openquake" / "case_18-hazard_map-mean.csv"
 #: Longest stderr a refusal may print: a few located problems, never a file's content.
 MESSAGE_MAX_CHARS = 6000
 
@@ -76,9 +76,11 @@ def test_label_level_runs_the_main_job_matched_without_case(tmp_path):
     assert "DE" in (tmp_path / "de" / "report.html").read_text()
 
 
-def test_oq_hazard_at_a_label_level_is_refused_naming_the_level(tmp_path):
+def test_an_oq_hazard_map_at_a_label_level_is_refused_naming_the_level(tmp_path):
+    """A map only scales motions, at a probability a label lacks. (A curve at a label keeps the level's
+    motions and gives the annual rates: tests/test_usgs_hazard.py.)"""
     path = workbook(tmp_path, label_sheets())
-    done = run(path, "--hazard", "MCE_R", "--oq-hazard", CURVE, "--oq-site", "0",
+    done = run(path, "--hazard", "MCE_R", "--oq-hazard", HAZARD_MAP, "--oq-site", "0",
                "--out", tmp_path / "out", cwd=tmp_path)
     assert_refused(done, "'MCE_R' is a label", "--oq-hazard", "sheet 'hazard'", "2in50",
                    places=["inventory.xlsx, sheet 'hazard', column 'level'"])

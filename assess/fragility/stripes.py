@@ -66,7 +66,7 @@ from scipy import stats
 from assess.fragility.agreement import AT_LEVEL_COLUMNS, level_comparison_sentence
 from assess.fragility.msa import FITTED, FragilityFit, fit_lognormal_fragilities
 from assess.hazard.openquake import OpenQuakeHazard
-from assess.hazard.risk_integral import annual_rates_of_curve, openquake_failure_rate, probability_in_years
+from assess.hazard.risk_integral import curve_annual_rates, openquake_failure_rate, probability_in_years
 from assess.mechanics.gateway import Cases
 
 #: Number of stripes of floor acceleration.
@@ -134,7 +134,7 @@ class CurveRisk:
 
 def curve_rates_per_yr(hazard: OpenQuakeHazard) -> tuple[np.ndarray, np.ndarray]:
     """The curve's levels [g] and annual rates [1/yr] at its site, levels with a finite, non-zero rate only."""
-    rates = annual_rates_of_curve(hazard.poes[hazard.site_index], hazard.investigation_time_yr)
+    rates = curve_annual_rates(hazard)
     usable = np.isfinite(rates) & (rates > 0.0)
     return np.asarray(hazard.levels_g, dtype=float)[usable], rates[usable]
 
@@ -491,9 +491,9 @@ def checked_curve(hazard: OpenQuakeHazard) -> tuple[np.ndarray, np.ndarray]:
     if levels_g.size < 2 or not rates_per_yr[0] > rates_per_yr[-1]:
         from assess.errors import InputError, Problem
         raise InputError([Problem(file=_file_name(hazard.path), message=(
-            "the hazard curve has fewer than two levels with a probability of exceedance between 0 and 1, "
-            "or does not fall with the level: there is no curve to integrate the fragilities over."),
-            fix="export the site's mean PGA hazard curve from OpenQuake with levels spanning 0.005 to 3 g.")])
+            "the hazard curve has fewer than two levels with a finite, non-zero rate of exceedance (a probability "
+            "between 0 and 1), or does not fall with the level: there is no curve to integrate the fragilities over."),
+            fix=f"export the site's mean PGA hazard curve from {hazard.source} with levels spanning 0.005 to 3 g.")])
     return levels_g, rates_per_yr
 
 
@@ -577,7 +577,7 @@ def fit_and_integrate(cases: pd.DataFrame, hazard: OpenQuakeHazard, levels_g, ra
             row.update(rates)
         row["curve_note"] = note_prefix + "; ".join(notes)
         rows.append(row)
-    name = f"{_file_name(hazard.path)}, site {hazard.site.label()}"
+    name = f"{_curve_name(hazard)}, site {hazard.site.label()}"
     return CurveRisk(table=pd.DataFrame(rows)[["id"] + FIT_COLUMNS], fits=fits, stripes=stripes,
                      floors=floors, curve=name, runs=len(runs), notes=curve_notes, fit_p=fit_p,
                      intensity=intensity)
@@ -586,6 +586,16 @@ def fit_and_integrate(cases: pd.DataFrame, hazard: OpenQuakeHazard, levels_g, ra
 def _file_name(path) -> str:
     from pathlib import Path
     return Path(str(path)).name
+
+
+def _curve_name(hazard: OpenQuakeHazard) -> str:
+    """The curve as the report names it: its file name; with its folder and program for nshmp-haz, whose
+    files are all ``curves.csv`` and named by their folder (``PGA/curves.csv (USGS nshmp-haz)``)."""
+    from pathlib import Path
+    if hazard.annual_rates is None:
+        return _file_name(hazard.path)
+    path = Path(str(hazard.path))
+    return f"{path.parent.name}/{path.name} ({hazard.source})"
 
 
 def export_items(curve: CurveRisk, summary: pd.DataFrame) -> list:

@@ -82,13 +82,15 @@ def motions_by_item(equipment: pd.DataFrame, level_motions: pd.DataFrame, level_
 
 
 def scale_to_pga(level_motions: pd.DataFrame, pga_g: float, workbook_name: str,
-                 source: str) -> tuple[pd.DataFrame, float, str]:
+                 source: str, program: str = "OpenQuake") -> tuple[pd.DataFrame, float, str]:
     """Scale every motion of a level so that its ground motions match a hazard PGA.
 
     The factor is PGA / (geometric mean of the PTA of the level's ground-floor
     motions, floor 0 or ``all``); it multiplies every motion of the level —
     PTA, vp and the record scale — so the suite keeps its spread and each
     floor its amplification over the ground (a linear building). Tp is kept.
+    ``source`` names the hazard file, ``program`` what wrote it (``OpenQuake``,
+    ``USGS nshmp-haz``), for the note.
 
     Returns ``(scaled motions, factor, a sentence for the report)``; raises
     :class:`~assess.errors.InputError` when the level has no ground motion.
@@ -116,7 +118,7 @@ def scale_to_pga(level_motions: pd.DataFrame, pga_g: float, workbook_name: str,
     raise_if_any(_records_past_plausible(scaled, factor, pga_g, workbook_name, source))
     note = (f"Motions scaled by {factor:.3f} so that the geometric mean PTA of the level's "
             f"{len(ground_pta)} ground motion{'s' if len(ground_pta) != 1 else ''} "
-            f"({reference_g:.3f} g in the workbook) equals the PGA {pga_g:.3f} g of the OpenQuake "
+            f"({reference_g:.3f} g in the workbook) equals the PGA {pga_g:.3f} g of the {program} "
             f"hazard in {source} at this level; floor motions by the same factor.")
     return scaled, factor, note
 

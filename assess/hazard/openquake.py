@@ -130,6 +130,14 @@ class OpenQuakeHazard:
         The comment line's ``key=value`` pairs, unquoted.
     notes : tuple of str
         What was ignored or assumed (other IMTs, realization instead of mean).
+    annual_rates : ndarray or None
+        Curve: annual rates of exceedance [1/yr], shape (sites, levels), where
+        the file gives rates rather than probabilities (a USGS nshmp-haz curve,
+        :mod:`assess.hazard.usgs`); ``poes`` then holds their one-year Poisson
+        probabilities. None for an OpenQuake file.
+    source : str
+        The program that wrote the file, as a user reads it: ``OpenQuake`` or
+        ``USGS nshmp-haz``.
     """
 
     path: str
@@ -145,6 +153,8 @@ class OpenQuakeHazard:
     map_values_g: np.ndarray | None = None
     metadata: dict[str, str] = field(default_factory=dict)
     notes: tuple[str, ...] = ()
+    annual_rates: np.ndarray | None = None
+    source: str = "OpenQuake"
 
     @property
     def site(self) -> Site:
@@ -614,22 +624,25 @@ def pga_at_level(hazard: OpenQuakeHazard, level: HazardLevel) -> float:
     poe = poe_in_investigation_time(level, t_inv)
     what = (f"{level.description}, i.e. a probability of {poe:.4g} in the file's "
             f"{t_inv:g}-year investigation time")
+    rerun = "rerun OpenQuake with {} PGA levels in intensity_measure_types_and_levels"
+    if hazard.annual_rates is not None:  # a file of annual rates, read as one-year probabilities
+        what = (f"{level.description}, i.e. an annual rate of exceedance of {level.annual_rate:.4g} (a "
+                f"probability of {poe:.4g} in one year)")
+        rerun = f"rerun {hazard.source} with {{}} PGA levels (hazard.customImls of its calculation config)"
     if hazard.kind == "curve":
         levels, curve = hazard.levels_g, hazard.poes[hazard.site_index]
         positive = np.flatnonzero(curve > 0.0)
         if poe > curve[0]:
             raise _fail(hazard.path, f"site {site.label()}: {what}, lies below the curve's lowest "
                         f"PGA level {levels[0]:g} g, which is exceeded with probability only "
-                        f"{curve[0]:.4g}.", "rerun OpenQuake with lower PGA levels in "
-                        "intensity_measure_types_and_levels, or choose a rarer level.",
+                        f"{curve[0]:.4g}.", f"{rerun.format('lower')}, or choose a rarer level.",
                         line=site.line)
         if positive.size == 0 or poe < curve[positive[-1]]:
             top = (f"its highest level with a non-zero probability is {levels[positive[-1]]:g} g "
                    f"({curve[positive[-1]]:.4g})" if positive.size else "all its probabilities "
                    "are zero")
             raise _fail(hazard.path, f"site {site.label()}: {what}, lies above the curve's range: "
-                        f"{top}.", "rerun OpenQuake with higher PGA levels in "
-                        "intensity_measure_types_and_levels, or choose a more frequent level.",
+                        f"{top}.", f"{rerun.format('higher')}, or choose a more frequent level.",
                         line=site.line)
         return loglog_interpolate_level(levels, curve, poe)
 

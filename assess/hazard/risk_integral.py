@@ -18,7 +18,9 @@ The curve
 An OpenQuake curve gives probabilities of exceedance in its investigation time
 at a list of PGA levels (:mod:`assess.hazard.openquake`); they become annual
 rates by the Poisson relation of that module
-(:func:`~assess.hazard.openquake.annual_rate_of_poe`). Levels with a
+(:func:`~assess.hazard.openquake.annual_rate_of_poe`). A USGS nshmp-haz curve
+gives the annual rates themselves (:mod:`assess.hazard.usgs`), used as they
+are (:func:`curve_annual_rates`). Levels with a
 probability of 1 (an infinite rate) are left out at the bottom and levels with
 a probability of 0 at the top: the curve used runs from the first level with a
 finite rate to the last with a non-zero one.
@@ -173,6 +175,18 @@ def annual_rates_of_curve(poes, investigation_time_yr):
                          for p in poes.ravel()]).reshape(poes.shape)
 
 
+def curve_annual_rates(hazard: OpenQuakeHazard) -> np.ndarray:
+    """Annual rates of exceedance [1/yr] of a curve's levels at its chosen site.
+
+    The file's own rates where it gives them (a USGS nshmp-haz curve), else its
+    probabilities turned into rates (:func:`annual_rates_of_curve`): one
+    meaning for both, so a curve gives the same rates whichever program wrote it.
+    """
+    if hazard.annual_rates is not None:
+        return np.array(hazard.annual_rates[hazard.site_index], dtype=float)
+    return annual_rates_of_curve(hazard.poes[hazard.site_index], hazard.investigation_time_yr)
+
+
 def segment_failure_rate(level_lo_g, level_hi_g, anchor_level_g, anchor_rate, slope_k,
                          median_g, beta) -> float:
     """∫ Φ(ln(a/θ)/β) |dλ| over one power-law segment of a hazard curve [1/yr].
@@ -303,13 +317,14 @@ def lognormal_failure_rate(levels_g, annual_rates, median_g, beta, tails=EXTRAPO
 
 def openquake_failure_rate(hazard: OpenQuakeHazard, median_g, beta, pfa_per_pga=1.0,
                            tails=EXTRAPOLATE) -> FailureRate:
-    """λ_f over the PGA hazard curve of an OpenQuake file, at its chosen site.
+    """λ_f over the PGA hazard curve of an OpenQuake or USGS nshmp-haz file, at its chosen site.
 
     Parameters
     ----------
     hazard : OpenQuakeHazard
-        A curve read by :func:`~assess.hazard.openquake.read_openquake_hazard`
-        (not a map: a map has no curve to integrate).
+        A curve read by :func:`~assess.hazard.usgs.read_hazard_curve_file`
+        (not a map: a map has no curve to integrate); its annual rates are
+        :func:`curve_annual_rates`.
     median_g, beta : float
         The fragility in the floor's peak acceleration: θ [g], β [-].
     pfa_per_pga : float
@@ -321,8 +336,7 @@ def openquake_failure_rate(hazard: OpenQuakeHazard, median_g, beta, pfa_per_pga=
         raise ValueError("a hazard map has no curve to integrate: give the hazard curve")
     if not pfa_per_pga > 0.0:
         raise ValueError("pfa_per_pga must be > 0")
-    poes = hazard.poes[hazard.site_index]
-    rates = annual_rates_of_curve(poes, hazard.investigation_time_yr)
+    rates = curve_annual_rates(hazard)
     return lognormal_failure_rate(hazard.levels_g, rates, median_g / pfa_per_pga, beta,
                                   tails=tails)
 
