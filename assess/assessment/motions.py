@@ -33,6 +33,8 @@ from assess.hazard.pulse_identification import identify_pulse
 from assess.hazard.record_pairs import item_axes_pair
 from assess.hazard.records import MIN_DURATION_S, Record, pulse_record, read_record
 from assess.hazard.synthesis import synthesize_motion
+from assess.site.target import level_target
+from assess.site.uhs import parse_site_choice
 
 Progress = Callable[[str], None]
 #: Pulse simulated for a motion given by PTA and Tp without a pulse type.
@@ -131,6 +133,21 @@ def level_motions(inventory, level_text: str, progress: Progress, oq_hazard=None
     # one key per motion row: a motion named on several floors is a different motion on each
     motions = motions.reset_index(drop=True).assign(motion_key=lambda m: np.arange(len(m)))
     return LevelMotions(level, level_label, motions, notes, records, site, modes)
+
+
+def check_level(inventory, level_text: str) -> None:
+    """Refuse, before anything runs, a level the workbook cannot give motions for: one the hazard sheet
+    does not name (without a site sheet), or, with a site sheet and no ground motion for the level in
+    the hazard sheet, one the site sheet gives no target spectrum for
+    (:func:`assess.site.target.level_target`). Raises :class:`~assess.errors.InputError`."""
+    workbook_name = inventory.path.name
+    level, motions = _level_rows(inventory, level_text, workbook_name)
+    if inventory.site is not None and not _has_ground_motions(motions):
+        site = inventory.site
+        level_target(level, design=site_and_building.design_spectrum_of(site, workbook_name),
+                     uhs_path=site.uhs_path or None,
+                     oq_site=parse_site_choice(site.oq_site) if site.oq_site else None,
+                     workbook=workbook_name, sheet=site.sheet)
 
 
 def _level_rows(inventory, level_text: str, workbook_name: str) -> tuple[HazardLevel, pd.DataFrame]:
