@@ -140,7 +140,8 @@ class AssessmentResult:
     def work_orders(self) -> pd.DataFrame:
         """The actions grouped by floor, room and action (work_orders.csv, :func:`assess.actions.work_orders`)."""
         from assess.actions import work_orders
-        return work_orders(self.summary)
+        from assess.quantity_text import floor_numbering_of
+        return work_orders(self.summary, floor_numbering_of(self.settings))
 
     def risk_counts(self) -> dict[str, int]:
         """Number of items (rows, not quantity) in each risk class."""

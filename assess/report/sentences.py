@@ -13,7 +13,7 @@ import math
 import pandas as pd
 
 from assess.fragility import friction_range, planar
-from assess.quantity_text import percent_text, rounded_length
+from assess.quantity_text import floor_text, floors_text, percent_text, rounded_length  # noqa: F401 (floor labels)
 from assess.result import RISK_CLASSES, AssessmentResult
 
 DASH = "–"
@@ -71,21 +71,6 @@ def format_length(value_cm, system="si", rounding: str = "nearest") -> str:
     if number is None:
         return DASH
     return f"{rounded_length(number, system, rounding):d}".replace("-", "−")
-
-
-def floor_text(value, numbering: str = "ground_0") -> str:
-    """A floor number of the workbook (0 = the ground floor) as the report labels it: as it is, or with
-    ``numbering`` ``'ground_1'`` (US) counted from 1 at the ground floor, floors below ground unchanged
-    (-1 is the first basement, B1, in both).
-
-    >>> floor_text(0), floor_text(0, "ground_1"), floor_text(3, "ground_1"), floor_text(-1, "ground_1")
-    ('0', '1', '4', '−1')
-    """
-    number = finite(value)
-    if number is None or number != int(number):
-        return integer_text(value)
-    shown = int(number) + 1 if numbering == "ground_1" and number >= 0 else int(number)
-    return f"{shown:d}".replace("-", "−")
 
 
 def format_percent(value) -> str:
