@@ -213,8 +213,36 @@ def flag_groups(flags) -> list[dict]:
 
 
 def method_notes(summary: pd.DataFrame) -> list[str]:
-    """The method section's paragraphs on sliding in the plane and on μ ranges, where they apply."""
-    return [note for note in (planar.method_text(summary), friction_range.method_text(summary)) if note]
+    """The method section's paragraphs on sliding in the plane, on μ ranges and on default μ ranges, where
+    they apply."""
+    return [note for note in (planar.method_text(summary), friction_range.method_text(summary),
+                              default_mu_text(summary)) if note]
+
+
+def default_mu_text(summary: pd.DataFrame) -> str:
+    """Which items the workbook gave no μ and what range each took instead, and why (``mu_source``), in a
+    paragraph; "" when every freestanding item has its own μ.
+
+    >>> rows = pd.DataFrame({"id": ["A", "B", "C"], "mu_source": ["workbook", "default, no base given (0.2-0.6)",
+    ...                      "default, no base given (0.2-0.6)"], "mu_low": [None, 0.2, 0.2], "mu_high": [None, 0.6, 0.6]})
+    >>> default_mu_text(rows)
+    'No μ in the workbook for 2 items: each was assessed over a range of μ instead (a triangular distribution with its mode, the μ shown, at the middle; the risk at either end is in the table). B, C: 0.2–0.6, default, no base given (0.2-0.6). Measured values for the item on its floor narrow it (mu in the equipment sheet).'
+    """
+    if "mu_source" not in summary:
+        return ""
+    sources = summary["mu_source"].fillna("").astype(str)
+    chosen = summary[(sources != "") & (sources != "workbook")]
+    if chosen.empty:
+        return ""
+    groups = []
+    for source, rows in chosen.groupby(chosen["mu_source"].astype(str), sort=False):
+        low, high = float(rows["mu_low"].iloc[0]), float(rows["mu_high"].iloc[0])
+        groups.append(f"{', '.join(str(i) for i in rows['id'])}: {low:g}–{high:g}, {source}.")
+    count = len(chosen)
+    return (f"No μ in the workbook for {count} item{'s' if count != 1 else ''}: "
+            f"{'each was' if count != 1 else 'it was'} assessed over a range of μ instead (a triangular "
+            "distribution with its mode, the μ shown, at the middle; the risk at either end is in the table). "
+            + " ".join(groups) + " Measured values for the item on its floor narrow it (mu in the equipment sheet).")
 
 
 def changes(comparison) -> dict | None:
