@@ -230,12 +230,12 @@ def default_mu_text(summary: pd.DataFrame) -> str:
     """
     if "mu_source" not in summary:
         return ""
-    sources = summary["mu_source"].fillna("").astype(str)
+    sources = summary["mu_source"].map(lambda value: value if isinstance(value, str) else "")
     chosen = summary[(sources != "") & (sources != "workbook")]
     if chosen.empty:
         return ""
     groups = []
-    for source, rows in chosen.groupby(chosen["mu_source"].astype(str), sort=False):
+    for source, rows in chosen.groupby(sources[chosen.index], sort=False):
         low, high = float(rows["mu_low"].iloc[0]), float(rows["mu_high"].iloc[0])
         groups.append(f"{', '.join(str(i) for i in rows['id'])}: {low:g}–{high:g}, {source}.")
     count = len(chosen)
