@@ -127,8 +127,8 @@ def level_motions(inventory, level_text: str, progress: Progress, oq_hazard=None
                                                                   derive_floors_roof, numbering))
         elif (freestanding["floor"] > 0).any():
             building_notes.append("The building sheet gives no floor its motion: every floor with freestanding "
-                                  "items has its own rows in the hazard sheet at this level (a structural "
-                                  "engineer's floor motions govern).")
+                                  "items has its own rows in the hazard sheet at this level, or rows for all "
+                                  "floors (a structural engineer's floor motions govern).")
         roof = site_and_building.roof_note(freestanding, inventory.building, numbering)
         building_notes += [roof] if roof else []
         for note in building_notes:
