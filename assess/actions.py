@@ -28,7 +28,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from assess.quantity_text import length_text, percent_text, system_of
+from assess.quantity_text import floor_text, length_text, percent_text, system_of
 
 #: The action kinds, in the order a facility takes them (``action_kind`` of summary.csv).
 ACTION_KINDS = ("anchor", "tether", "lower_contents", "restrain", "lock_casters", "room", "relocate", "none",
@@ -280,13 +280,15 @@ def lowered_rows(equipment: pd.DataFrame, rows: dict, uplift: dict, settings: di
 # ---------------------------------------------------------------- work orders
 
 #: Columns of work_orders.csv (docs/outputs.md).
-WORK_ORDER_COLUMNS = ["floor", "room", "action", "items", "count"]
+WORK_ORDER_COLUMNS = ["floor", "floor_label", "room", "action", "items", "count"]
 
 
-def work_orders(summary: pd.DataFrame) -> pd.DataFrame:
-    """One row per floor, room and action (:data:`WORK_ORDER_COLUMNS`): ``items`` the ids (in id order),
-    ``count`` the units (``quantity`` summed); items that need no action and anchored items are left out
-    (and a row without a known action kind). Ordered by floor, room, then :data:`ACTION_KINDS`."""
+def work_orders(summary: pd.DataFrame, numbering: str = "ground_0") -> pd.DataFrame:
+    """One row per floor, room and action (:data:`WORK_ORDER_COLUMNS`): ``floor`` the workbook's number,
+    ``floor_label`` as the report labels it (``numbering``: :func:`assess.quantity_text.floor_text`),
+    ``items`` the ids (in id order), ``count`` the units (``quantity`` summed); items that need no action
+    and anchored items are left out (and a row without a known action kind). Ordered by floor, room, then
+    :data:`ACTION_KINDS`."""
     kinds = summary["action_kind"] if "action_kind" in summary else pd.Series("", index=summary.index)
     acts = summary[kinds.isin([k for k in ACTION_KINDS if k not in ("none", "anchored")])]
     if not len(acts):
@@ -298,6 +300,7 @@ def work_orders(summary: pd.DataFrame) -> pd.DataFrame:
     table = table.rename(columns={"action_kind": "action"})
     table["floor"] = table["floor"].astype(int)
     table["count"] = table["count"].astype(int)
+    table["floor_label"] = [floor_text(f, numbering) for f in table["floor"]]
     return table[WORK_ORDER_COLUMNS].reset_index(drop=True)
 
 

@@ -48,9 +48,9 @@ import pandas as pd
 import assess
 from assess import output, pipeline, report
 from assess.assessment.inputs import check_inputs
+from assess.assessment.motions import check_level
 from assess.batch_report import building_row, changes_between, portfolio_html
 from assess.errors import InputError, Problem, raise_if_any
-from assess.hazard.motions import select_level
 from assess.hazard.usgs import read_hazard_curve_file
 from assess.hazard.records import check_record_location
 from assess.inventory import read_workbook, schema, xlsx
@@ -292,8 +292,11 @@ def prepare_buildings(buildings: list[Building], *, level: str | None = None, oq
     """Read every building's workbook and hazard curve and choose its level, before anything runs.
 
     A building's level is its row's ``level``, else ``level`` (``--hazard``),
-    else the one level its workbook defines (a workbook with several needs one
-    of the other two). A building's curve is its row's ``oq_hazard``, else
+    else the one level its hazard sheet defines (a workbook with several, or
+    with a site sheet and none, needs one of the other two). A workbook with a
+    ``site`` sheet (and a ``building`` sheet) has its ground suite and floor
+    motions made as ``assess WORKBOOK`` makes them (:mod:`assess.assessment.floors`);
+    a level its site sheet gives no target spectrum for is refused here. A building's curve is its row's ``oq_hazard``, else
     ``oq_hazard`` (``--oq-hazard``: a path, read once for all). What the main command
     refuses in a hazard sheet is refused here too (:func:`assess.assessment.inputs.hazard_problems`:
     records outside the workbook's folder unless ``allow_records_outside``, a vp of 0). Every problem of
@@ -331,14 +334,11 @@ def prepare_buildings(buildings: list[Building], *, level: str | None = None, oq
             if chosen is None:
                 levels = list(dict.fromkeys(inventory.hazard["level_label"]))
                 if len(levels) != 1:
-                    raise InputError([building.problem(
-                        f"the building '{building.name}' has no level, and its workbook "
-                        f"{building.workbook.name} defines {len(levels)} ("
-                        + ", ".join(f"'{schema.clip(v, 40)}'" for v in levels[:10]) + ").",
+                    raise InputError([building.problem(_no_level_message(building, inventory, levels),
                         "give the level in the portfolio's 'level' column, or run with --hazard LEVEL.", "level")])
                 chosen = str(levels[0])
-            try:
-                select_level(inventory.hazard, chosen, building.workbook.name)
+            try:  # a site sheet gives any level it has a target spectrum for (as the main command)
+                check_level(inventory, chosen)
             except InputError as error:  # said at the building's row, where the level was chosen
                 raise InputError([building.problem(
                     f"building '{building.name}': {p.message}", p.fix or "",
@@ -358,6 +358,17 @@ def prepare_buildings(buildings: list[Building], *, level: str | None = None, oq
         prepared.append(PreparedBuilding(building, inventory, chosen, curve, allow_records_outside))
     raise_if_any(problems)
     return prepared
+
+
+def _no_level_message(building: Building, inventory, levels: list) -> str:
+    """Why a building whose row and ``--hazard`` give no level has none."""
+    named = ", ".join(f"'{schema.clip(v, 40)}'" for v in levels[:10])
+    text = f"the building '{building.name}' has no level, and its workbook {building.workbook.name} "
+    if inventory.site is None:
+        return text + f"defines {len(levels)} ({named})."
+    return text + ("has a site sheet, which makes the ground motions of any level it has a target spectrum "
+                   "for (DE, MCE_R; a probability such as 2% in 50 years with a 'uhs' file)"
+                   + (f", besides the hazard sheet's {len(levels)} ({named})." if levels else "."))
 
 
 # ---------------------------------------------------------------- the output folder

@@ -22,7 +22,7 @@ from assess.anchorage import AnchorageSite, anchorage_site, item_anchorage
 from assess.fragility.friction_range import mu_dependence_sentence
 from assess.fragility.regression import RegressionConstants
 from assess.mechanics.modes import ROCK, SLIDE_ROCK
-from assess.quantity_text import length_text, system_of
+from assess.quantity_text import floor_numbering_of, floor_text, length_text, system_of
 from assess.result import Flag
 from assess.risk_classes import (
     ROCKING_HARM_SEVERITY, SLIDING_SEVERITY, Chances, classify_risk, deciding_chance, performance_objective,
@@ -75,7 +75,8 @@ def decide(equipment: pd.DataFrame, governing: dict, uplift: dict, cases: pd.Dat
             continue
         row = {"consequence": item_consequence(item), "clearance_cm": item.clearance_m * 100.0,
                "cg_height_cm": item.cg_height_m * 100.0, **governing[item.id]}
-        found = item_flags(item, cases[cases["id"] == item.id], constants, system_of(settings))
+        found = item_flags(item, cases[cases["id"] == item.id], constants, system_of(settings),
+                           floor_numbering_of(settings))
         flags.extend(found)
         decided["flags"] = tuple(flag.code for flag in found)
         decided.update(decide_item(item, row, uplift[item.id], settings, site, (lowered or {}).get(item.id)))
@@ -175,7 +176,8 @@ def priorities(summary: pd.DataFrame) -> pd.Series:
     return ranks
 
 
-def item_flags(item, item_cases: pd.DataFrame, constants: RegressionConstants, system: str = "si") -> list[Flag]:
+def item_flags(item, item_cases: pd.DataFrame, constants: RegressionConstants, system: str = "si",
+               numbering: str = "ground_0") -> list[Flag]:
     """The caveats of one freestanding item's result, from its cases (every motion and direction)."""
     flags = []
     uplift = item_cases[item_cases["mode"].isin(UPLIFT_MODES)]
@@ -197,7 +199,7 @@ def item_flags(item, item_cases: pd.DataFrame, constants: RegressionConstants, s
             f"demand does not use them for those motions.")))
     if "derived" in item_cases and item_cases["derived"].any():
         flags.append(Flag(item.id, "derived_floor_motion", (
-            f"floor {item.floor} has no motion in the workbook: it was assessed under the ground motions "
+            f"floor {floor_text(item.floor, numbering)} has no motion in the workbook: it was assessed under the ground motions "
             f"amplified by ASCE 7-16 eq. 13.3-1 (--derive-floors), an envelope rule, not a floor "
             f"response analysis.")))
     if not np.isclose(item.cg_height_m, item.height_m / 2.0):

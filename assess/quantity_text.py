@@ -141,3 +141,43 @@ def percent_text(probability) -> str:
     if number > 0.995:
         return ">99%"
     return f"{100 * number:.0f}%"
+
+
+#: How the report labels floors (settings ``floor_numbering``, docs/workbook.md).
+FLOOR_NUMBERINGS = ("ground_0", "ground_1")
+
+
+def floor_numbering_of(settings) -> str:
+    """``'ground_0'`` or ``'ground_1'`` from a settings mapping (its ``floor_numbering``); ``'ground_0'`` by default."""
+    numbering = str((settings or {}).get("floor_numbering") or "ground_0").strip().lower()
+    return numbering if numbering in FLOOR_NUMBERINGS else "ground_0"
+
+
+def floor_text(value, numbering: str = "ground_0") -> str:
+    """A floor number of the workbook (0 = the ground floor) as the report labels it: as it is, or with
+    ``numbering`` ``'ground_1'`` (US) counted from 1 at the ground floor, floors below ground unchanged
+    (-1 is the first basement, B1, in both). The one formatter of a floor label: motion names, notes,
+    work orders, sentences and figures all use it.
+
+    >>> floor_text(0), floor_text(0, "ground_1"), floor_text(3, "ground_1"), floor_text(-1, "ground_1")
+    ('0', '1', '4', '−1')
+    """
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        return "–" if value is None or str(value) in ("", "nan", "<NA>") else str(value)
+    if not math.isfinite(number):
+        return "–"
+    if number != int(number):
+        return f"{number:g}"
+    shown = int(number) + 1 if numbering == "ground_1" and number >= 0 else int(number)
+    return f"{shown:d}".replace("-", "−")
+
+
+def floors_text(floors, numbering: str = "ground_0") -> str:
+    """Floor numbers of the workbook as a list of labels (:func:`floor_text`), in ascending order.
+
+    >>> floors_text([3, 1, 4], "ground_1"), floors_text([2])
+    ('2, 4, 5', '2')
+    """
+    return ", ".join(floor_text(f, numbering) for f in sorted(int(f) for f in floors))

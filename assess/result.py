@@ -24,7 +24,7 @@ SUMMARY_COLUMNS = [
     "anchor_shear_omega_kip", "anchor_tension_omega_kn", "anchor_tension_omega_kip", "anchor_basis", "what_if",
     "p_overturn_after", "p_beyond_clearance_after",
     "demand_planar", "mu_low", "mu_high", "risk_mu_low", "risk_mu_high", "p_beyond_clearance_mu_low",
-    "p_beyond_clearance_mu_high", "mu_range_note",
+    "p_beyond_clearance_mu_high", "mu_range_note", "mu_source",
     "p_rocking_harm", "p_rocking_harm_low", "p_rocking_harm_high", "performance_objective", "risk_reason",
     "regression_applies", "regression_note",
 ] + COST_COLUMNS  # what failures cost and actions buy (assess/costs.py); empty where no value is given
@@ -140,7 +140,8 @@ class AssessmentResult:
     def work_orders(self) -> pd.DataFrame:
         """The actions grouped by floor, room and action (work_orders.csv, :func:`assess.actions.work_orders`)."""
         from assess.actions import work_orders
-        return work_orders(self.summary)
+        from assess.quantity_text import floor_numbering_of
+        return work_orders(self.summary, floor_numbering_of(self.settings))
 
     def risk_counts(self) -> dict[str, int]:
         """Number of items (rows, not quantity) in each risk class."""

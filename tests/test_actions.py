@@ -112,9 +112,12 @@ def test_work_orders_group_the_actions_by_floor_and_room():
         "room": ["1-10", "1-10", "0-01", "1-10", "1-20", "2-01"], "quantity": [2, 1, 3, 1, 1, 1],
         "action_kind": ["anchor", "anchor", "tether", "room", "anchor", "none"]})
     orders = actions.work_orders(summary)
-    assert list(orders.columns) == ["floor", "room", "action", "items", "count"]
-    assert orders.values.tolist() == [[0, "0-01", "tether", "C", 3], [1, "1-10", "anchor", "A, B", 3],
-                                      [1, "1-10", "room", "D", 1], [1, "1-20", "anchor", "E", 1]]
+    assert list(orders.columns) == ["floor", "floor_label", "room", "action", "items", "count"]
+    assert orders.values.tolist() == [[0, "0", "0-01", "tether", "C", 3], [1, "1", "1-10", "anchor", "A, B", 3],
+                                      [1, "1", "1-10", "room", "D", 1], [1, "1", "1-20", "anchor", "E", 1]]
+    # under ground_1 (the US) the label counts the ground floor 1; the workbook's number stays
+    us = actions.work_orders(summary, "ground_1")
+    assert list(zip(us["floor"], us["floor_label"])) == [(0, "1"), (1, "2"), (1, "2"), (1, "2")]
     # every unit that needs an action is in exactly one order
     needs = summary[~summary["action_kind"].isin(["none", "anchored"])]
     assert orders["count"].sum() == needs["quantity"].sum()

@@ -436,3 +436,52 @@ def test_one_second_process_draws_every_buildings_pdf_appendix(tmp_path, monkeyp
     assert cli.main([str(portfolio.parent / "alpha.xlsx"), "--hazard", LEVEL, "--out", str(alone),
                      "--format", "pdf", "--quiet"]) == 0
     assert (out / "alpha" / "report.pdf").read_bytes() == (alone / "report.pdf").read_bytes()
+
+
+# ---------------------------------------------------------------- buildings with site and building sheets
+
+#: A site sheet and a 2-storey building, no hazard sheet: the ground suite and the floors' motions are made.
+SITE_SHEET = [["key", "value"], ["sds_g", 1.0], ["sd1_g", 0.6], ["suite_size", 3], ["risk_category", "IV"]]
+BUILDING_SHEET = [["key", "value"], ["storeys", 2], ["storey_height_m", 4.0], ["period_s", 0.3]]
+
+
+def _site_building(folder: Path, name: str = "clinic") -> Path:
+    equipment = [{"id": i, "name": f"item {i}", "floor": floor, "height_cm": h, "width_cm": w, "depth_cm": d,
+                  "mass_kg": 200, "mu": mu, "clearance_cm": c}
+                 for i, floor, (_, h, w, d, mu, c) in zip(("C-0", "C-2"), (0, 2), ITEMS["alpha"])]
+    folder.mkdir(parents=True, exist_ok=True)
+    return write_workbook(folder / f"{name}.xlsx", {"equipment": equipment, "site": SITE_SHEET,
+                                                     "building": BUILDING_SHEET})
+
+
+def test_a_building_with_site_and_building_sheets_gives_what_the_main_command_gives(tmp_path):
+    """The portfolio's building folder holds the same numbers as ``assess WORKBOOK --hazard DE --seed 3``:
+    the same ground suite (ground_motions.csv), floor motions (floors.csv, motions.csv) and results."""
+    site = tmp_path / "site"
+    workbook = _site_building(site)
+    portfolio = write_workbook(site / "portfolio.xlsx", {"buildings": [
+        {"building": "clinic", "workbook": workbook.name, "level": "DE"}]})
+    out, alone = tmp_path / "out", tmp_path / "alone"
+    assert _batch(portfolio, "--out", out, "--seed", 3) == 0
+    assert cli.main([str(workbook), "--hazard", "DE", "--out", str(alone), "--seed", "3", "--format", "xlsx",
+                     "--quiet"]) == 0
+    for name in ("summary.csv", "motions.csv", "ground_motions.csv", "floors.csv", "work_orders.csv"):
+        assert (out / "clinic" / name).read_bytes() == (alone / name).read_bytes(), name
+    floors = pd.read_csv(out / "clinic" / "floors.csv")
+    assert sorted(set(floors["floor"])) == [0, 2]  # the ground suite and the floor it passed through the building
+    motions = pd.read_csv(out / "clinic" / "motions.csv")
+    assert len(set(motions.loc[motions["id"] == "C-2", "motion"])) == 3  # one per ground motion of the suite
+
+
+def test_a_site_workbook_without_a_level_is_refused_at_the_row_and_a_level_the_site_cannot_give_too(
+        tmp_path, capsys):
+    site = tmp_path / "site"
+    workbook = _site_building(site)
+    portfolio = write_workbook(site / "portfolio.xlsx", {"buildings": [
+        ["building", "workbook", "level"], ["clinic", workbook.name, None], ["annex", workbook.name, "2in50"]]})
+    out = tmp_path / "out"
+    assert _batch(portfolio, "--out", out) == 2
+    err = capsys.readouterr().err
+    assert "row 2, column 'level'" in err and "has a site sheet" in err and "--hazard" in err
+    assert "row 3, column 'level'" in err and "'uhs'" in err  # 2in50 needs the site's OpenQuake spectrum
+    assert "Traceback" not in err and not out.exists()

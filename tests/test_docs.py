@@ -67,6 +67,12 @@ def test_every_summary_column_is_documented():
             "docs/outputs.md, summary.csv")
 
 
+def test_every_work_orders_column_is_documented():
+    from assess.actions import WORK_ORDER_COLUMNS
+    compare(table_names(section("outputs.md", "`work_orders.csv`")), WORK_ORDER_COLUMNS,
+            "docs/outputs.md, work_orders.csv")
+
+
 def test_every_motions_column_is_documented():
     compare(table_names(section("outputs.md", "`motions.csv`")), MOTION_COLUMNS, "docs/outputs.md, motions.csv")
 

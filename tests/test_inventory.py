@@ -42,7 +42,7 @@ def test_good_workbook_reads_to_documented_si_columns(make_workbook):
     assert list(equipment.columns) == [
         "id", "name", "room", "floor", "height_m", "width_m", "depth_m", "mass_kg", "mu",
         "mu_static", "clearance_m", "cg_height_m", "anchored", "casters", "quantity", "consequence", "component_type", "ip",
-        "mu_low", "mu_high", "value", "mitigation_cost", "row"]
+        "mu_low", "mu_high", "value", "mitigation_cost", "base", "floor_finish", "mu_source", "row"]
     assert list(equipment["id"]) == ["INC-1", "FRZ-2", "BSC-3"]
     assert list(equipment["row"]) == [2, 3, 5]  # blank row 4 skipped
     first = equipment.iloc[0]
@@ -164,10 +164,10 @@ def test_missing_sheet_lists_the_sheets_the_file_has(make_workbook):
 
 def test_every_missing_required_column_is_reported(make_workbook):
     sheets = good_sheets()
-    drop_column(sheets["equipment"], "mu")
+    drop_column(sheets["equipment"], "mu")  # optional: a default range (test_default_mu.py)
     drop_column(sheets["equipment"], "mass_lb")
     problems = problems_of(make_workbook(sheets))
-    assert sorted(p.column for p in problems) == ["mass_kg", "mu"]
+    assert sorted(p.column for p in problems) == ["mass_kg"]
     for problem in problems:
         assert_mentions(problem, "sheet 'equipment'", "row 1", "required column")
     mass = next(p for p in problems if p.column == "mass_kg")
@@ -315,7 +315,7 @@ def test_partly_filled_row_reports_each_missing_required_cell(make_workbook):
     sheets = good_sheets()
     sheets["equipment"][2] = {"name": "a trolley"}  # row 4 no longer blank
     problems = problems_of(make_workbook(sheets))
-    assert {p.cell for p in problems} == {"A4", "D4", "E4", "F4", "G4", "H4", "I4", "K4"}
+    assert {p.cell for p in problems} == {"A4", "D4", "E4", "F4", "G4", "H4", "K4"}  # I4, mu: optional
     assert_mentions(problems[0], "sheet 'equipment'", "cell A4", "id is empty")
 
 

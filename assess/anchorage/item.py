@@ -109,12 +109,12 @@ def anchorage_site(site=None, building=None, settings=None) -> AnchorageSite:
     if building is not None:
         storeys = float(building.storeys)
         period_s = float(approximate_period(building.height_m, building.system))
-        notes.append(f"z/h = floor / {building.storeys} storeys; T_a = {period_s:.3f} s (eq. 12.8-7, "
+        notes.append(f"z/h = storeys from the ground floor to the item's / {building.storeys} storeys; T_a = {period_s:.3f} s (eq. 12.8-7, "
                      f"{building.system}, h_n {building.height_m:.1f} m)")
     else:
         roof = float(settings.get("roof_floor", 0.0) or 0.0)
         storeys = roof if roof > 0.0 else math.nan
-        notes.append(f"z/h = floor / roof_floor {roof:g}" if roof > 0.0 else "z/h = 1 (no building sheet or "
+        notes.append(f"z/h = the workbook's floor / roof_floor {roof:g}" if roof > 0.0 else "z/h = 1 (no building sheet or "
                      "roof_floor: the roof's force)")
         if edition == "ASCE 7-22":
             notes.append("H_f = 1 + 2.5 z/h (eq. 13.3-5: no building period)")

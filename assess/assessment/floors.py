@@ -26,6 +26,7 @@ from assess.errors import InputError, Problem
 from assess.hazard.levels import HazardLevel
 from assess.hazard.records import Record
 from assess.inventory.site_building import BuildingSheet, SiteSheet
+from assess.quantity_text import floor_text, floors_text
 from assess.site.asce7 import DesignSpectrum, from_design_values, from_mapped_values
 from assess.site.suite import GroundSuite, ground_suite
 from assess.site.target import level_target
@@ -158,10 +159,12 @@ def site_note(site: SiteSuite, sheet: SiteSheet) -> str:
             f"{suite.min_mean_ratio:.0%} of the target there; ground_motions.csv and spectrum.csv).")
 
 
-def building_note(modes: BuildingModes, building: BuildingSheet, floors, derive_floors_roof) -> str:
-    """Where the upper floors' motions come from, in a sentence for the report."""
+def building_note(modes: BuildingModes, building: BuildingSheet, floors, derive_floors_roof,
+                  numbering: str = "ground_0") -> str:
+    """Where the upper floors' motions come from, in a sentence for the report (floors labelled by
+    ``numbering``: :func:`assess.quantity_text.floor_text`)."""
     source = "given" if building.period_s is not None else "ASCE 7 Table 12.8-2's estimate"
-    text = (f"Floors {', '.join(str(f) for f in floors)}: each ground motion through the building's elastic modes "
+    text = (f"Floor{'s' if len(floors) > 1 else ''} {floors_text(floors, numbering)}: each ground motion through the building's elastic modes "
             f"({building.storeys} storeys, {building.system}, T1 {modes.periods_s[0]:.2f} s ({source}), "
             f"{building.damping:.0%} damping, {modes.n_modes} modes): the floor's absolute acceleration in time "
             "(floors.csv). The building is taken as elastic: a building that yields has lower peak floor "
@@ -170,3 +173,24 @@ def building_note(modes: BuildingModes, building: BuildingSheet, floors, derive_
     if derive_floors_roof is not None:
         text += " --derive-floors gives way to the building sheet."
     return text
+
+
+def roof_note(freestanding: pd.DataFrame, building: BuildingSheet, numbering: str = "ground_0") -> str | None:
+    """That the items on floor ``storeys`` stand on the roof, in a sentence for the report; None when none does.
+
+    The workbook counts the ground floor 0 whatever ``floor_numbering`` says, so floor ``storeys`` is the
+    roof (docs/workbook.md, sheet building); the report labels it by ``numbering``.
+
+    >>> from assess.inventory.site_building import BuildingSheet
+    >>> items = pd.DataFrame({"id": ["P-1", "G-1"], "floor": [5, 0]})
+    >>> roof_note(items, BuildingSheet(storeys=5, height_m=20.0), "ground_1")
+    "Floor 6 is the building's roof (5 storeys above the ground floor; the workbook's floor 5): P-1 stands on it, under the roof's motion."
+    """
+    on_roof = freestanding.loc[freestanding["floor"] == building.storeys, "id"]
+    if on_roof.empty:
+        return None
+    shown = ", ".join(str(i) for i in on_roof[:10]) + (f" and {len(on_roof) - 10} more" if len(on_roof) > 10 else "")
+    return (f"Floor {floor_text(building.storeys, numbering)} is the building's roof ({building.storeys} storeys "
+            f"above the ground floor; the workbook's floor {building.storeys}): {shown} "
+            f"{'stands' if len(on_roof) == 1 else 'stand'} on it, under the "
+            "roof's motion.")

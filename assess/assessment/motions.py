@@ -33,6 +33,9 @@ from assess.hazard.pulse_identification import identify_pulse
 from assess.hazard.record_pairs import item_axes_pair
 from assess.hazard.records import MIN_DURATION_S, Record, pulse_record, read_record
 from assess.hazard.synthesis import synthesize_motion
+from assess.quantity_text import floor_numbering_of, floor_text, floors_text
+from assess.site.target import level_target
+from assess.site.uhs import parse_site_choice
 
 Progress = Callable[[str], None]
 #: ``pulse_source`` of a motion with no pulse to identify (synthetic, or through the building): its Tp and vp are
@@ -60,6 +63,8 @@ class LevelMotions:
     site: site_and_building.SiteSuite | None = None
     #: The building's modes, where a building sheet passes the ground motions to floors without motions.
     building: object | None = None
+    #: How floors are labelled in motion names and notes (settings ``floor_numbering``).
+    numbering: str = "ground_0"
 
 
 @dataclass
@@ -88,6 +93,7 @@ def level_motions(inventory, level_text: str, progress: Progress, oq_hazard=None
     gives way to it.
     """
     workbook_name = inventory.path.name
+    numbering = floor_numbering_of(inventory.settings)
     level, motions = _level_rows(inventory, level_text, workbook_name)
     level_label = str(motions["level_label"].iloc[0]) if len(motions) else (level.label or level.name)
     freestanding = inventory.equipment[~inventory.equipment["anchored"]]
@@ -118,23 +124,48 @@ def level_motions(inventory, level_text: str, progress: Progress, oq_hazard=None
     if modes is not None:
         missing = _floors_without_motions(motions, freestanding, modes.storeys)
         motions = motions.reset_index(drop=True).assign(motion_key=lambda m: np.arange(len(m)))
-        motions = _with_building_rows(motions, missing, workbook_name)
+        motions = _with_building_rows(motions, missing, workbook_name, numbering)
+        building_notes = []
         if missing:
-            note = site_and_building.building_note(modes, inventory.building, missing, derive_floors_roof)
+            building_notes.append(site_and_building.building_note(modes, inventory.building, missing,
+                                                                  derive_floors_roof, numbering))
+        elif (freestanding["floor"] > 0).any():
+            building_notes.append("The building sheet gives no floor its motion: every floor with freestanding "
+                                  "items has its own rows in the hazard sheet at this level, or rows for all "
+                                  "floors (a structural engineer's floor motions govern).")
+        roof = site_and_building.roof_note(freestanding, inventory.building, numbering)
+        building_notes += [roof] if roof else []
+        for note in building_notes:
             notes.append(note)
             progress(note)
     elif derive_floors_roof is not None:
-        motions = derive_floor_motions(motions, freestanding["floor"].unique(), derive_floors_roof, workbook_name)
+        motions = derive_floor_motions(motions, freestanding["floor"].unique(), derive_floors_roof, workbook_name,
+                                       numbering)
         if motions["derived"].any():
             floors = sorted(set(int(f) for f in motions.loc[motions["derived"], "floor"]))
-            note = (f"Floors {floors} have no motion in the workbook: their motions are the ground motions "
-                    f"amplified by 1 + 2z/h (ASCE 7-16 eq. 13.3-1, roof = floor {derive_floors_roof}), "
-                    f"with the ground's pulse period.")
+            note = (f"Floors {floors_text(floors, numbering)} have no motion in the workbook: their motions are "
+                    "the ground motions amplified by 1 + 2z/h (ASCE 7-16 eq. 13.3-1, roof = floor "
+                    f"{floor_text(derive_floors_roof, numbering)}), with the ground's pulse period.")
             notes.append(note)
             progress(note)
     # one key per motion row: a motion named on several floors is a different motion on each
     motions = motions.reset_index(drop=True).assign(motion_key=lambda m: np.arange(len(m)))
-    return LevelMotions(level, level_label, motions, notes, records, site, modes)
+    return LevelMotions(level, level_label, motions, notes, records, site, modes, numbering)
+
+
+def check_level(inventory, level_text: str) -> None:
+    """Refuse, before anything runs, a level the workbook cannot give motions for: one the hazard sheet
+    does not name (without a site sheet), or, with a site sheet and no ground motion for the level in
+    the hazard sheet, one the site sheet gives no target spectrum for
+    (:func:`assess.site.target.level_target`). Raises :class:`~assess.errors.InputError`."""
+    workbook_name = inventory.path.name
+    level, motions = _level_rows(inventory, level_text, workbook_name)
+    if inventory.site is not None and not _has_ground_motions(motions):
+        site = inventory.site
+        level_target(level, design=site_and_building.design_spectrum_of(site, workbook_name),
+                     uhs_path=site.uhs_path or None,
+                     oq_site=parse_site_choice(site.oq_site) if site.oq_site else None,
+                     workbook=workbook_name, sheet=site.sheet)
 
 
 def _level_rows(inventory, level_text: str, workbook_name: str) -> tuple[HazardLevel, pd.DataFrame]:
@@ -193,9 +224,11 @@ def _floors_without_motions(motions: pd.DataFrame, freestanding: pd.DataFrame, s
     return sorted(f for f in set(int(f) for f in freestanding["floor"]) if 0 < f <= storeys and f not in have)
 
 
-def _with_building_rows(motions: pd.DataFrame, floors: list[int], workbook_name: str) -> pd.DataFrame:
+def _with_building_rows(motions: pd.DataFrame, floors: list[int], workbook_name: str,
+                        numbering: str = "ground_0") -> pd.DataFrame:
     """``motions`` and, for every floor in ``floors``, one row per ground motion (floor 0) whose history the
-    building gives (``from_ground``: the ground row's ``motion_key``; PTA, Tp and vp are measured later)."""
+    building gives (``from_ground``: the ground row's ``motion_key``; PTA, Tp and vp are measured later),
+    named ``<ground motion> @ floor <label>`` (the floor labelled by ``numbering``: :func:`floor_text`)."""
     motions = motions.assign(from_ground=-1)
     if not floors:
         return motions
@@ -210,7 +243,7 @@ def _with_building_rows(motions: pd.DataFrame, floors: list[int], workbook_name:
         derived = ground.assign(floor=floor, from_ground=ground["motion_key"], record_path="", record_2_path="",
                                 scale=1.0, pta_g=np.nan, tp_s=np.nan, vp_m_s=np.nan, pulse="",
                                 pulse_source=NO_PULSE)
-        derived["motion"] = [f"{name} @ floor {floor}" for name in ground["motion"]]
+        derived["motion"] = [f"{name} @ floor {floor_text(floor, numbering)}" for name in ground["motion"]]
         rows.append(derived)
     out = pd.concat([motions, *rows], ignore_index=True)
     out["floor"] = out["floor"].astype("Int64")
@@ -225,7 +258,7 @@ def simulated_motions(motions: LevelMotions, workbook_name: str, settings: dict,
     histories, kinds = _simulated_motions(motions.table, workbook_name, settings, seed, motions.records)
     pairs = _record_pairs(motions.table, histories, workbook_name, motions.notes, progress, motions.records)
     floors = None
-    if motions.building is not None and "from_ground" in motions.table:
+    if motions.building is not None and "from_ground" in motions.table and (motions.table["from_ground"] >= 0).any():
         progress("passing the ground motions through the building")
         floors = _through_building(motions, histories, kinds, pairs)
     return SimulatedMotions(histories, kinds, pairs, floors)
@@ -245,7 +278,7 @@ def _through_building(motions: LevelMotions, histories: dict, kinds: dict, pairs
             depth = site_and_building.through_building(modes, [pairs[ground_key][1]], floors)
         for index, row in rows.iterrows():
             k, floor = int(row["motion_key"]), int(row["floor"])
-            histories[k] = [(record, f"{label} @ floor {floor}, through the building")
+            histories[k] = [(record, f"{label} @ floor {floor_text(floor, motions.numbering)}, through the building")
                             for record, (_, label) in zip(width[floor], histories[ground_key])]
             kinds[k] = RECORD  # the engine under the floor's history governs (no pulse regression for it)
             if depth is not None:

@@ -18,6 +18,7 @@ import pandas as pd
 from assess.calibration.apply import case_block, theta_over_declared
 from assess.fragility.ground_stripes import ground_curve_risk, ground_sources
 from assess.fragility.planar import planar_runs
+from assess.quantity_text import floor_numbering_of
 from assess.fragility.stripes import curve_risk
 from assess.hazard.records import Record
 from assess.mechanics.block import Block
@@ -73,7 +74,8 @@ def curve(cases: pd.DataFrame, motions, level_motions: pd.DataFrame, hazard_curv
         return given
     if sources is not None:
         return ground_curve_risk(cases, motions.histories, sources, building, hazard_curve, runner, progress,
-                                 record_pairs=motions.record_pairs, level_label=level_label)
+                                 record_pairs=motions.record_pairs, level_label=level_label,
+                                 numbering=floor_numbering_of(settings))
     return curve_risk(cases, motions.histories, level_motions, hazard_curve, settings, runner, progress,
                       record_pairs=motions.record_pairs)
 

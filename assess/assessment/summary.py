@@ -27,7 +27,8 @@ def summarise(equipment: pd.DataFrame, demand, decided) -> pd.DataFrame:
     for item in equipment.itertuples(index=False):
         row = {"id": item.id, "name": item.name, "room": item.room, "floor": item.floor,
                "quantity": item.quantity, "consequence": decisions.item_consequence(item),
-               "mu": item.mu, "clearance_cm": item.clearance_m * 100.0,
+               "mu": item.mu, "mu_source": getattr(item, "mu_source", "workbook"),
+               "clearance_cm": item.clearance_m * 100.0,
                "overturn_fraction": np.nan, "theta_max_over_alpha": np.nan}
         if item.anchored:
             half_width_m = min(item.width_m, item.depth_m) / 2.0

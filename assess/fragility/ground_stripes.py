@@ -38,6 +38,7 @@ import numpy as np
 import pandas as pd
 
 from assess.building.response import floor_records
+from assess.quantity_text import floor_text
 from assess.fragility.stripes import (N_STRIPES, STRIPE_PGA_G, CurveRisk, StripeBatch, checked_curve,
                                       fit_and_integrate, stripe_levels_g)
 
@@ -151,7 +152,7 @@ def max_peak_ratio(modes, ground: list, floor: int) -> float:
 
 def ground_curve_risk(cases: pd.DataFrame, motions: dict, sources: dict, modes, hazard, runner,
                       progress=lambda message: None, record_pairs: dict | None = None,
-                      level_label: str = "") -> CurveRisk:
+                      level_label: str = "", numbering: str = "ground_0") -> CurveRisk:
     """Fragility per item and failure mode over stripes of ground acceleration through the building
     (module docstring), integrated over ``hazard``; ``sources`` from :func:`ground_sources`."""
     levels_g, rates_per_yr = checked_curve(hazard)
@@ -160,7 +161,7 @@ def ground_curve_risk(cases: pd.DataFrame, motions: dict, sources: dict, modes, 
     for floor in sorted(set(int(f) for f in cases["floor"])):
         ground = ground_histories(cases, floor, motions, sources, record_pairs)
         floors[floor] = {"pfa_per_pga": 1.0, "max_peak_ratio": max_peak_ratio(modes, ground, floor),
-                         "basis": (f"floor {floor}: stripes of ground acceleration, the ground suite of level "
+                         "basis": (f"floor {floor_text(floor, numbering)}: stripes of ground acceleration, the ground suite of level "
                                    f"{level_label} scaled and passed through the building")}
         stripes_by_floor[floor] = stripe_levels_g(1.0)
     progress(f"fragilities over the hazard curve: {N_STRIPES} stripes of ground acceleration "

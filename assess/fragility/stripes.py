@@ -66,6 +66,7 @@ from scipy import stats
 from assess.fragility.agreement import AT_LEVEL_COLUMNS, level_comparison_sentence
 from assess.fragility.msa import FITTED, FragilityFit, fit_lognormal_fragilities
 from assess.hazard.openquake import OpenQuakeHazard
+from assess.quantity_text import floor_numbering_of, floor_text
 from assess.hazard.risk_integral import curve_annual_rates, openquake_failure_rate, probability_in_years
 from assess.mechanics.gateway import Cases
 
@@ -181,16 +182,18 @@ def floor_pfa_per_pga(floor: int, suite_pta_g: dict, settings: dict) -> tuple[fl
     """
     if int(floor) == 0:
         return 1.0, "the ground floor: PFA = PGA"
+    numbering = floor_numbering_of(settings)  # the labels; z/h counts the workbook's numbers
+    label = floor_text(floor, numbering)
     if 0 in suite_pta_g and floor in suite_pta_g:
         ratio = float(np.median(suite_pta_g[floor]) / np.median(suite_pta_g[0]))
-        return ratio, (f"floor {floor}: PFA/PGA {ratio:.2f}, the median PTA of its motions over the ground "
+        return ratio, (f"floor {label}: PFA/PGA {ratio:.2f}, the median PTA of its motions over the ground "
                        "motions' at the level (the workbook's)")
     roof = float(settings.get("roof_floor", 0.0) or 0.0)
     if roof > 0.0:
         ratio = 1.0 + 2.0 * min(max(floor / roof, 0.0), 1.0)
-        return ratio, (f"floor {floor}: PFA/PGA {ratio:.2f} by ASCE 7-16 eq. 13.3-1, 1 + 2z/h with roof = floor "
-                       f"{roof:g} (no ground motion at the level to read it from)")
-    return 3.0, (f"floor {floor}: PFA/PGA 3, the roof's by ASCE 7-16 eq. 13.3-1 (an upper bound: give "
+        return ratio, (f"floor {label}: PFA/PGA {ratio:.2f} by ASCE 7-16 eq. 13.3-1, 1 + 2z/h with roof = floor "
+                       f"{floor_text(roof, numbering)} (no ground motion at the level to read it from)")
+    return 3.0, (f"floor {label}: PFA/PGA 3, the roof's by ASCE 7-16 eq. 13.3-1 (an upper bound: give "
                  "roof_floor in the settings, or the ground motions at the level)")
 
 

@@ -7,6 +7,7 @@ import pandas as pd
 from assess.errors import Problem, raise_if_any
 from assess.hazard.levels import HazardLevel, parse_level
 from assess.hazard.records import MAX_PLAUSIBLE_PGA_G
+from assess.quantity_text import floor_text
 
 
 def select_level(hazard: pd.DataFrame, level_text: str, workbook_name: str) -> tuple[HazardLevel, pd.DataFrame]:
@@ -168,13 +169,15 @@ def floor_amplification(floor, roof_floor):
     return min(1.0 + 2.0 * ratio, FLOOR_AMPLIFICATION_MAX)
 
 
-def derive_floor_motions(level_motions: pd.DataFrame, floors, roof_floor: int, workbook_name: str) -> pd.DataFrame:
+def derive_floor_motions(level_motions: pd.DataFrame, floors, roof_floor: int, workbook_name: str,
+                         numbering: str = "ground_0") -> pd.DataFrame:
     """Add motions for ``floors`` that have none, derived from the level's ground motions.
 
     Each ground motion (floor 0) is copied to the floor with its PTA, vp and
     record scale multiplied by :func:`floor_amplification` and its Tp kept
     (the floor's pulse period is taken as the ground's). The new rows carry
-    ``derived = True`` and a motion name that says so. Floors that have
+    ``derived = True`` and a motion name that says so (the floor labelled by
+    ``numbering``: :func:`assess.quantity_text.floor_text`). Floors that have
     motions are left alone; a level without ground motions is an error.
     """
     motions = level_motions.assign(derived=False)
@@ -193,7 +196,8 @@ def derive_floor_motions(level_motions: pd.DataFrame, floors, roof_floor: int, w
         factor = floor_amplification(floor, roof_floor)
         rows = ground.copy()
         rows["floor"] = floor
-        rows["motion"] = [f"{name} -> floor {floor} (derived, x{factor:.2f})" for name in ground["motion"]]
+        rows["motion"] = [f"{name} -> floor {floor_text(floor, numbering)} (derived, x{factor:.2f})"
+                          for name in ground["motion"]]
         for column in ("pta_g", "vp_m_s", "scale"):
             rows[column] = rows[column] * factor
         rows["derived"] = True

@@ -130,7 +130,8 @@ EQUIPMENT = SheetSpec("equipment", (
            low=0.02, high=6.0, positive=True),
     Column("mass", "number", required=True, dimension=MASS, spec_suffix="kg",
            low=0.1, high=50000.0, positive=True),
-    Column("mu", "number", required=True, low=0.01, high=1.5, positive=True, hint=_MU_HINT),
+    # empty: a default range from base and floor_finish (assess/inventory/friction.py); anchored items need none
+    Column("mu", "number", low=0.01, high=1.5, positive=True, hint=_MU_HINT),
     Column("mu_static", "number", low=0.01, high=1.5, positive=True, hint=_MU_HINT),
     Column("clearance", "number", required=True, dimension=LENGTH, spec_suffix="cm",
            low=0.0, high=100.0),
@@ -151,6 +152,9 @@ EQUIPMENT = SheetSpec("equipment", (
     # the range mu may take (e.g. the paper's best-fit and slow-pull values); both or neither
     Column("mu_low", "number", low=0.01, high=1.5, positive=True, hint=_MU_HINT),
     Column("mu_high", "number", low=0.01, high=1.5, positive=True, hint=_MU_HINT),
+    # what the item stands on and the floor's finish: they choose the default μ range of a row without mu
+    Column("base", "text", default="", max_chars=60),
+    Column("floor_finish", "text", default="", max_chars=60),
     # what the item's failure costs and what its recommended action costs, per unit, in the settings'
     # currency (assess/costs.py); empty: no cost for that item
     Column("value", "number", default=math.nan, low=0.0, hint=_MONEY_HINT),

@@ -329,6 +329,36 @@ def read_building(table, report) -> BuildingSheet | None:
                          rows={name: row for name, (_, row) in values.items()}, sheet=table.title)
 
 
+def check_item_floors(table, building: BuildingSheet, report) -> None:
+    """Report every item whose ``floor`` the building sheet does not have, at its cell.
+
+    The building has floors 0 (the ground floor) to ``storeys`` (the roof) and no basement: an item
+    above the roof or below the ground floor would get no motion from it. The workbook's floor numbers
+    count the ground floor 0 whatever ``floor_numbering`` says (docs/workbook.md). ``table`` is the
+    equipment sheet read against its spec, ``report`` its :class:`~assess.inventory.workbook.SheetReport`.
+    """
+    header = table.headers.get("floor")
+    has = (f"the building sheet has floors 0 (the ground floor) to {building.storeys} (the roof: storeys "
+           f"{building.storeys}) and no basement")
+    for row in table.rows:
+        floor = row.values.get("floor")
+        if not row.ok("floor") or floor is None or 0 <= int(floor) <= building.storeys:
+            continue
+        item = row.values.get("id")
+        what = f"item '{item}'" if item is not None else "the item"
+        if int(floor) > building.storeys:
+            message = (f"{what} is on floor {int(floor)}, above the roof: {has}. The workbook counts the "
+                       "ground floor 0 whatever floor_numbering says.")
+            fix = (f"write the item's floor counting the ground floor 0 (the roof is {building.storeys}; "
+                   "under floor_numbering ground_1 the report labels it one higher), or correct storeys in "
+                   "the building sheet.")
+        else:
+            message = f"{what} is on floor {int(floor)}, below the ground floor: {has}."
+            fix = ("correct the floor, counting the ground floor 0; an item in a basement moves about as the "
+                   "ground does: write floor 0 for it (and its basement in the room column).")
+        report.at(row.number, header, message, fix)
+
+
 def _code(text) -> str | None:
     """The edition named by ``text`` (``ASCE 7-22``, ``asce7-22``, ``7-16``), None when unknown."""
     compact = re.sub(r"[\s_]", "", str(text)).upper().replace("ASCE", "")
@@ -345,5 +375,5 @@ def _inside(folder: Path, relative: str) -> Path | None:
     return path if path == base or base in path.parents else None
 
 
-__all__ = ["SiteSheet", "BuildingSheet", "read_site", "read_building", "CODES", "SYSTEMS",
+__all__ = ["SiteSheet", "BuildingSheet", "read_site", "read_building", "check_item_floors", "CODES", "SYSTEMS",
            "SITE_CLASSES", "RISK_CATEGORIES"]

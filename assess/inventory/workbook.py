@@ -30,11 +30,11 @@ import pandas as pd
 
 from assess.data import default_settings
 from assess.errors import InputError, Problem
-from assess.inventory import plausibility, schema, units, xlsx
+from assess.inventory import friction, plausibility, schema, units, xlsx
 from assess.inventory.model import Inventory
 from assess.inventory.schema import (BUILDING, EQUIPMENT, HAZARD, SETTINGS, SITE, UNUSABLE, CellError,
                                      Header, SheetSpec)
-from assess.inventory.site_building import read_building, read_site
+from assess.inventory.site_building import check_item_floors, read_building, read_site
 
 
 
@@ -130,6 +130,8 @@ def read_workbook(path: str | Path) -> Inventory:
             header.suffix for header in tables["equipment"].headers.values() if header.column.dimension is units.LENGTH)
     site = read_site(tables["site"], path.parent, reports["site"]) if "site" in tables else None
     building = read_building(tables["building"], reports["building"]) if "building" in tables else None
+    if building is not None and "equipment" in tables:  # a floor the building does not have: at its cell
+        check_item_floors(tables["equipment"], building, reports["equipment"])
     if problems:
         raise InputError(problems)  # assess.errors lists the first 50 and counts the rest
     warnings = ()
@@ -293,14 +295,20 @@ def _check_equipment(table: Table, report: SheetReport) -> list[dict]:
                           "with a quantity).")
             else:
                 first_row_of[item_id] = row.number
-    return [{**{c.output: row.values.get(c.name) for c in EQUIPMENT.columns}, "row": row.number}
-            for row in table.rows]
+    return [{**{c.output: row.values.get(c.name) for c in EQUIPMENT.columns},
+             "mu_source": row.values.get("mu_source", ""), "row": row.number} for row in table.rows]
 
 
 def _check_item(row: Row, headers: dict[str, Header], report: SheetReport) -> None:
     values, raw = row.values, row.raw
+    defaulted = _default_mu(row, headers, report)
     mu, mu_static = values.get("mu"), values.get("mu_static")
-    if mu_static is None:
+    if defaulted and mu_static is not None:
+        report.at(row.number, headers["mu_static"],
+                  f"mu_static {schema.quote(raw['mu_static'])} is given without mu, so the kinetic coefficient "
+                  "it must not fall below is not known.",
+                  "give mu too (at most mu_static), or leave both empty for the default range of mu.")
+    elif mu_static is None:
         values["mu_static"] = mu
     elif row.ok("mu", "mu_static") and mu is not None and mu_static < mu:
         report.at(row.number, headers["mu_static"],
@@ -322,6 +330,45 @@ def _check_item(row: Row, headers: dict[str, Header], report: SheetReport) -> No
                   "their units, or leave the cell empty for a uniform block (half the height).")
 
 
+def _default_mu(row: Row, headers: dict[str, Header], report: SheetReport) -> bool:
+    """``mu`` for a row that leaves it empty, and ``mu_source``; True when ``mu`` was filled in here.
+
+    A freestanding item without ``mu`` takes the middle of its ``mu_low``-``mu_high`` where the row gives
+    both, else the default range of its ``base`` on its ``floor_finish``
+    (:func:`assess.inventory.friction.default_range`) as ``mu_low``, ``mu_high`` and ``mu`` at its middle;
+    an anchored item needs none. A ``base`` or ``floor_finish`` the table does not know is reported at its cell.
+    """
+    values = row.values
+    values["mu_source"] = "workbook" if values.get("mu") is not None else ""
+    base, finish = str(values.get("base") or ""), str(values.get("floor_finish") or "")
+    known = True
+    for name, text, kind, accepted in (("base", base, friction.base_kind, friction.BASES),
+                                       ("floor_finish", finish, friction.finish_kind, friction.FINISHES)):
+        if text and kind(text) is None:
+            close = schema.suggest(text.strip().lower(), list(accepted))
+            report.at(row.number, headers.get(name), f"{name} {schema.quote(text)} is not one the default "
+                      "friction table knows" + (f"; did you mean '{close}'?" if close else "."),
+                      f"write one of {', '.join(sorted(accepted))}, or leave it empty (docs/workbook.md).")
+            known = False
+    if values.get("mu") is not None or values.get("anchored") or not known \
+            or not row.ok("mu", "mu_low", "mu_high", "base", "floor_finish", "casters"):
+        return False
+    low, high = values.get("mu_low"), values.get("mu_high")
+    if low is not None and high is not None:
+        if low > high:
+            report.at(row.number, headers["mu_low"], f"mu_low {schema.quote(row.raw['mu_low'])} is above mu_high "
+                      f"{schema.quote(row.raw['mu_high'])}.", "give the range's lower end in mu_low.")
+            return False
+        values["mu"] = round(0.5 * (low + high), 6)
+        values["mu_source"] = f"the workbook's mu_low-mu_high {low:g}-{high:g}, mu at its middle"
+        return True
+    if low is not None or high is not None:
+        return False  # one end alone: reported by _check_mu_range
+    chosen = friction.default_range(base, finish, bool(values.get("casters")))
+    values.update(mu=chosen.mu, mu_low=chosen.mu_low, mu_high=chosen.mu_high, mu_source=chosen.why)
+    return True
+
+
 def _check_mu_range(row: Row, headers: dict[str, Header], report: SheetReport) -> None:
     """``mu_low`` and ``mu_high``: both or neither, and ``mu_low <= mu <= mu_high``; reported at the cell."""
     values, raw = row.values, row.raw
@@ -337,7 +384,7 @@ def _check_mu_range(row: Row, headers: dict[str, Header], report: SheetReport) -
                   f"give {other} too (e.g. the best-fit and the slow-pull values), or leave both empty.")
         return
     mu, low, high = values.get("mu"), given["mu_low"], given["mu_high"]
-    if mu is None:
+    if mu is None or values.get("mu_source") != "workbook":  # mu at the range's middle (_default_mu)
         return
     if low > mu:
         report.at(row.number, headers["mu_low"],
@@ -666,7 +713,7 @@ _EQUIPMENT_TYPES = {"id": "str", "name": "str", "room": "str", "floor": "int64",
                     "clearance_m": "float64", "cg_height_m": "float64", "anchored": "bool",
                     "casters": "bool", "quantity": "int64", "consequence": "str", "component_type": "str", "ip": "float64",
                     "mu_low": "float64", "mu_high": "float64", "value": "float64", "mitigation_cost": "float64",
-                    "row": "int64"}
+                    "base": "str", "floor_finish": "str", "mu_source": "str", "row": "int64"}
 _HAZARD_TYPES = {"level": "str", "level_label": "str", "motion": "str", "all_floors": "bool",
                  "floor": "Int64", "pta_g": "float64", "tp_s": "float64", "vp_m_s": "float64",
                  "pulse": "str", "record_path": "str", "scale": "float64", "record_2_path": "str",

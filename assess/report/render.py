@@ -26,7 +26,7 @@ import assess
 from assess.actions import work_order_sentences
 from assess.anchorage.item import anchorage_sentence
 from assess.anchorage.method import anchorage_method
-from assess.quantity_text import length_unit, length_value, system_of
+from assess.quantity_text import floor_numbering_of, length_unit, length_value, system_of
 from assess.report import FIGURE_MODULES, figures
 from assess.report.costs import costs_context
 from assess.report.curve import curve_context
@@ -442,7 +442,7 @@ def report_context(result, with_figures: bool = True) -> dict:
     summary = _sorted_summary(result.summary)
     settings = result.settings or {}
     system = system_of(settings)
-    numbering = str(settings.get("floor_numbering") or "ground_0")
+    numbering = floor_numbering_of(settings)
     rows = [_item_row(row, system, numbering) for _, row in summary.iterrows()]
     for row, anchor in zip(rows, item_anchors([r["id"] for r in rows])):
         row["anchor"] = anchor
@@ -567,8 +567,9 @@ def report_units(system: str, numbering: str) -> dict:
             "page": "letter" if us else "A4",
             "floor_note": "ground floor = 1" if ground_1 else "",
             "floor_sentence": ("Floors are labelled as in the US, the ground floor 1 (the workbook's floor 0), "
-                               "floors below ground as in the workbook (−1); motion names and notes quoting the "
-                               "workbook keep its numbers." if ground_1 else "")}
+                               "floors below ground as in the workbook (−1), in the tables, motion names, notes "
+                               "and work orders alike; the CSV and summary.xlsx files' floor columns give the "
+                               "workbook's numbers." if ground_1 else "")}
 def code_edition(result) -> str:
     """The edition of ASCE 7 the anchorage applies ('' where the result has no anchorage)."""
     return "" if result.anchorage is None else text(result.anchorage.edition)

@@ -13,7 +13,7 @@ import math
 import pandas as pd
 
 from assess.fragility import friction_range, planar
-from assess.quantity_text import percent_text, rounded_length
+from assess.quantity_text import floor_text, floors_text, percent_text, rounded_length  # noqa: F401 (floor labels)
 from assess.result import RISK_CLASSES, AssessmentResult
 
 DASH = "–"
@@ -71,21 +71,6 @@ def format_length(value_cm, system="si", rounding: str = "nearest") -> str:
     if number is None:
         return DASH
     return f"{rounded_length(number, system, rounding):d}".replace("-", "−")
-
-
-def floor_text(value, numbering: str = "ground_0") -> str:
-    """A floor number of the workbook (0 = the ground floor) as the report labels it: as it is, or with
-    ``numbering`` ``'ground_1'`` (US) counted from 1 at the ground floor, floors below ground unchanged
-    (-1 is the first basement, B1, in both).
-
-    >>> floor_text(0), floor_text(0, "ground_1"), floor_text(3, "ground_1"), floor_text(-1, "ground_1")
-    ('0', '1', '4', '−1')
-    """
-    number = finite(value)
-    if number is None or number != int(number):
-        return integer_text(value)
-    shown = int(number) + 1 if numbering == "ground_1" and number >= 0 else int(number)
-    return f"{shown:d}".replace("-", "−")
 
 
 def format_percent(value) -> str:
@@ -228,8 +213,36 @@ def flag_groups(flags) -> list[dict]:
 
 
 def method_notes(summary: pd.DataFrame) -> list[str]:
-    """The method section's paragraphs on sliding in the plane and on μ ranges, where they apply."""
-    return [note for note in (planar.method_text(summary), friction_range.method_text(summary)) if note]
+    """The method section's paragraphs on sliding in the plane, on μ ranges and on default μ ranges, where
+    they apply."""
+    return [note for note in (planar.method_text(summary), friction_range.method_text(summary),
+                              default_mu_text(summary)) if note]
+
+
+def default_mu_text(summary: pd.DataFrame) -> str:
+    """Which items the workbook gave no μ and what range each took instead, and why (``mu_source``), in a
+    paragraph; "" when every freestanding item has its own μ.
+
+    >>> rows = pd.DataFrame({"id": ["A", "B", "C"], "mu_source": ["workbook", "default, no base given (0.2-0.6)",
+    ...                      "default, no base given (0.2-0.6)"], "mu_low": [None, 0.2, 0.2], "mu_high": [None, 0.6, 0.6]})
+    >>> default_mu_text(rows)
+    'No μ in the workbook for 2 items: each was assessed over a range of μ instead (a triangular distribution with its mode, the μ shown, at the middle; the risk at either end is in the table). B, C: 0.2–0.6, default, no base given (0.2-0.6). Measured values for the item on its floor narrow it (mu in the equipment sheet).'
+    """
+    if "mu_source" not in summary:
+        return ""
+    sources = summary["mu_source"].map(lambda value: value if isinstance(value, str) else "")
+    chosen = summary[(sources != "") & (sources != "workbook")]
+    if chosen.empty:
+        return ""
+    groups = []
+    for source, rows in chosen.groupby(sources[chosen.index], sort=False):
+        low, high = float(rows["mu_low"].iloc[0]), float(rows["mu_high"].iloc[0])
+        groups.append(f"{', '.join(str(i) for i in rows['id'])}: {low:g}–{high:g}, {source}.")
+    count = len(chosen)
+    return (f"No μ in the workbook for {count} item{'s' if count != 1 else ''}: "
+            f"{'each was' if count != 1 else 'it was'} assessed over a range of μ instead (a triangular "
+            "distribution with its mode, the μ shown, at the middle; the risk at either end is in the table). "
+            + " ".join(groups) + " Measured values for the item on its floor narrow it (mu in the equipment sheet).")
 
 
 def changes(comparison) -> dict | None:
