@@ -108,13 +108,19 @@ def without_regression(row: dict) -> dict:
     """An item's row with the regression's numbers (:data:`REGRESSION_COLUMNS`) empty where the regression
     does not apply to its governing case, and ``tp_s`` empty where that motion has no clear pulse (its pulse
     carries less than :data:`~assess.fragility.suite.PULSE_SHARE_MIN` of its PTA: a best single pulse's
-    period, not the motion's).
+    period, not the motion's). Where the item does not slide from rest (IM ≤ 0: PTA ≤ μg) the regression's
+    zeros stay: no sliding and P_f = 0 (eq. 20 at IM ≤ 0), whatever the motion, not an extrapolation.
 
-    >>> without_regression({"regression_applies": False, "pulse_share": 0.02, "tp_s": 20.0, "pf_sliding": 1.0,
-    ...                     "edp_median": 0.3, "sliding_median_cm": 900.0, "sliding_p84_cm": 1400.0})["pf_sliding"]
-    nan
+    >>> row = {"regression_applies": False, "pulse_share": 0.02, "tp_s": 20.0, "im": 0.4, "pf_sliding": 1.0,
+    ...        "edp_median": 0.3, "sliding_median_cm": 900.0, "sliding_p84_cm": 1400.0}
+    >>> without_regression(row)["pf_sliding"], row["tp_s"]
+    (nan, nan)
+    >>> without_regression({"regression_applies": False, "pulse_share": 1.0, "im": -0.2, "pf_sliding": 0.0})
+    {'regression_applies': False, 'pulse_share': 1.0, 'im': -0.2, 'pf_sliding': 0.0}
     """
-    if row.get("regression_applies") is False or row.get("regression_applies") is np.False_:
+    applies = row.get("regression_applies")
+    at_rest = row.get("im") is not None and float(row["im"]) <= 0.0
+    if (applies is False or applies is np.False_) and not at_rest:
         row.update({column: np.nan for column in REGRESSION_COLUMNS})
     share = row.get("pulse_share")
     if share is not None and np.isfinite(share) and share < PULSE_SHARE_MIN:
