@@ -150,9 +150,9 @@ def what_happens(row: pd.Series) -> str:
 
 #: Page 1's groups of actions, in the order a manager takes them.
 ACTION_GROUPS = (
-    ("anchor", "Anchor", "they overturn or rock in the design earthquake; moving them away from walls does not help"),
+    ("anchor", "Anchor", "they overturn or rock in this earthquake; moving them away from walls does not help"),
     ("tether", "Tether or strap", "they stand on casters and overturn, rock, or roll farther than a room can "
-     "spare in the design earthquake"),
+     "spare in this earthquake"),
     ("lower_contents", "Move heavy contents low", "they rock or overturn as loaded, and with their heavy contents "
      "on the lowest shelves the engine finds them still"),
     ("restrain", "Restrain", "they are likely to slide past their room and need more room than a room can spare"),
