@@ -125,7 +125,9 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
                                settings, anchorage, lowered=lowered)
     decided = decisions.with_input_warnings(decided, inventory.warnings)  # sizes no equipment has
     # 7. result
-    summary = result_stage.summarise(inventory.equipment, rows, decided)
+    ground_method = "" if level.site is None else str(level.site.suite.method)
+    origins = result_stage.floor_origins(level.table, ground_method)
+    summary = result_stage.summarise(inventory.equipment, rows, decided, origins)
     summary_columns = SUMMARY_COLUMNS
     if curve is not None:
         summary = summary.merge(curve.table, on="id", how="left")
@@ -145,7 +147,9 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
         solver_runs={str(k): int(v) for k, v in ran.runs["solver"].value_counts().items()}, curve_risk=curve,
         ground_motions=None if level.site is None else level.site.suite.ground_motions,
         spectrum=None if level.site is None else level.site.suite.spectrum, floors=simulated.floors,
-        anchorage=anchorage,
+        anchorage=anchorage, ground_method=ground_method,
+        design_spectrum=None if level.site is None else level.site.design,
+        site_class=str(getattr(inventory.site, "site_class", None) or ""), floor_origins=origins,
     )
 
 

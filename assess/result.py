@@ -112,6 +112,16 @@ class AssessmentResult:
     floors : DataFrame or None
         With a ``building`` sheet: the modes used and each floor's PFA and PFA/PGA over the suite
         (``floors.csv``).
+    ground_method : str
+        How the site made the level's ground suite (:attr:`assess.site.suite.GroundSuite.method`:
+        ``records`` or ``synthetic``); "" where the level's motions are the hazard sheet's.
+    design_spectrum : DesignSpectrum or None
+        The site's ASCE 7 spectrum (:class:`assess.site.asce7.DesignSpectrum`) where the site sheet gives one;
+        ``site_class`` the site sheet's site class ("" where it gives none).
+    floor_origins : dict
+        Where each floor's time histories come from (:func:`assess.assessment.summary.floor_origins`):
+        floor (None: every floor) -> ``workbook``, ``site records``, ``site synthetic``, with
+        ``+building`` where they passed through the building.
     """
 
     workbook: Path
@@ -136,6 +146,10 @@ class AssessmentResult:
     spectrum: pd.DataFrame | None = None
     floors: pd.DataFrame | None = None
     anchorage: object | None = None
+    ground_method: str = ""
+    design_spectrum: object | None = None
+    site_class: str = ""
+    floor_origins: dict = field(default_factory=dict)
 
     def work_orders(self) -> pd.DataFrame:
         """The actions grouped by floor, room and action (work_orders.csv, :func:`assess.actions.work_orders`)."""

@@ -83,6 +83,7 @@ def item_rows(equipment: pd.DataFrame, cases: pd.DataFrame, demand: Demand,
         row["regression_note"] = regression_note(float(case["pulse_share"]), float(case["im"]),
                                                  bool(under_motion["sim_uplift"].any()), constants)
         row["regression_applies"] = row["regression_note"] == ""
+        row["pulse_share"] = float(case["pulse_share"])  # whether tp_s is a clear pulse's (the summary's tp_s)
         row.update(demand.governing.loc[item.id].to_dict())
         row["mode"] = row.pop("demand_mode") or row["mode"]
         row["overturn_fraction"] = row["p_overturn"]

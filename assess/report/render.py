@@ -35,9 +35,11 @@ from assess.report.method import floor_motion_route
 from assess.report.pdf import RefusedURLError, data_only_url_fetcher, decode_data_uri, render_pdf, split_appendix  # noqa: F401
 from assess.report.references import reference_rows
 from assess.report.sentences import (
-    DASH, action_groups, after_text, case_outcomes, changes, cm_interval_text, finite, flag_groups, floor_text, format_cm,
-    format_length, format_percent, format_significant, integer_text, interval_text, list_text, method_notes, risk_units,
-    suite_text, text, total_units, what_happens,
+    DASH, action_groups, after_text, case_outcomes, changes, class_rule_paragraph, cm_interval_text, finite,
+    flag_groups, floor_text, format_cm, format_length, format_percent, format_significant, given_by_parameters,
+    hazard_limit_text, history_phrases, integer_text, interval_text, level_text, list_text, method_notes,
+    regression_items, regression_reason, risk_units, source_definitions, suite_text, text, total_units, what_happens,
+    worst_run_text,
 )
 from assess.report.title import title_block
 
@@ -175,6 +177,7 @@ def _item_row(row: pd.Series, system: str = "si", numbering: str = "ground_0") -
         "regression_applies": isinstance(row.get("regression_applies"), (bool, np.bool_))
         and bool(row.get("regression_applies")),
         "regression_note": text(row.get("regression_note")),
+        "regression_reason": regression_reason(row.get("regression_note")),
         "suite": suite_text(row),
     }
 
@@ -219,9 +222,12 @@ WORD_LINE_PX, FONT_ASCENT_EM, FONT_DESCENT_EM, WORD_MIDDLE_PX, WORD_END_PX = 9.0
 
 
 def _item_details(rows: list[dict], summary: pd.DataFrame, runs: pd.DataFrame | None,
-                  histories: dict | None = None, system: str = "si") -> list[dict]:
+                  histories: dict | None = None, system: str = "si",
+                  run_text: Callable[[dict], str] | None = None) -> list[dict]:
     """One block per freestanding item: its numbers, and its suite drawn as a strip (every motion a line,
-    every history a dot at its sliding, overturned ones as crosses, the clearance a bar)."""
+    every history a dot at its sliding, overturned ones as crosses, the clearance a bar); its worst run's
+    motion named by ``run_text(history)`` (:func:`~assess.report.sentences.worst_run_text`; the engine's
+    description where not given)."""
     by_id = summary.set_index(summary["id"].astype(str))
     details = []
     for row in rows:
@@ -234,8 +240,10 @@ def _item_details(rows: list[dict], summary: pd.DataFrame, runs: pd.DataFrame | 
         if runs is not None and len(runs):
             strip = _suite_strip(runs[runs["id"].astype(str) == row["id"]], finite(item.get("clearance_cm")), system)
         history = (histories or {}).get(row["id"])
-        details.append({**row, "number": number, "strip": strip,
-                        "spark": _history_spark(history, system) if history else None,
+        spark = _history_spark(history, system) if history else None
+        if spark is not None and run_text is not None:
+            spark["motion"] = run_text(history)
+        details.append({**row, "number": number, "strip": strip, "spark": spark,
                         "theta": format_significant(item.get("theta_max_over_alpha"), 2),
                         "alpha": format_significant(item.get("alpha_rad"), 2)})
     return details
@@ -452,7 +460,7 @@ def report_context(result, with_figures: bool = True) -> dict:
         "version": assess.__version__,
         "facility": text(result.facility),
         "site": text(result.site),
-        "level_description": result.level.description,
+        "level_description": level_text(result),
         "level_label": text(result.level_label),
         "workbook": Path(result.workbook).name if result.workbook else "",
         "simulated": bool(result.simulated),
@@ -463,7 +471,7 @@ def report_context(result, with_figures: bool = True) -> dict:
         "total_units": total_units(summary),
         "action_groups": action_groups(rows),
         "details": _item_details(rows, summary, result.suite_runs, {str(h["id"]): h for h in result.histories},
-                                 system),
+                                 system, lambda history: worst_run_text(history, result)),
         "u": report_units(system, numbering),
         "strip_max_lines": STRIP_MAX_LINES,
         "high": [r for r in rows if r["risk"] == "high"],
@@ -477,6 +485,12 @@ def report_context(result, with_figures: bool = True) -> dict:
                        or "Konstantinidis & Makris (2010)"},
         "anchorage": anchorage_method(result.anchorage, summary),
         "class_rule": rule_text(settings) if "risk_overturn_high" in settings else "",
+        "class_paragraph": class_rule_paragraph(settings),
+        "source_definitions": source_definitions(summary),
+        "history_phrases": history_phrases(summary),
+        "given_by_parameters": given_by_parameters(result),
+        "regression_items": regression_items(summary),
+        "hazard_limit": hazard_limit_text(result),
         "figures": report_figures(result) if with_figures else None,
         "simulation": case_outcomes(result),
         "hazard_notes": list(result.hazard_notes),
@@ -525,7 +539,7 @@ class FigureDrawing:
         drawn = {
             "demand": figures.sliding_demand_figures(self.sorted_result, system=system),
             "histories": [{"svg": figures.history_figure(h, system), "id": h["id"], "name": h["name"],
-                           "motion": h["motion"], "sim_motion": h["sim_motion"], "solver": h["solver"],
+                           "motion": h["motion"], "sim_motion": worst_run_text(h, result), "solver": h["solver"],
                            "direction": h["direction"]}
                           for h in list(result.histories)[:HISTORY_FIGURES]],
         }

@@ -135,9 +135,9 @@ def what_happens(row: pd.Series) -> str:
 
 #: Page 1's groups of actions, in the order a manager takes them.
 ACTION_GROUPS = (
-    ("anchor", "Anchor", "they overturn or rock in the design earthquake; moving them away from walls does not help"),
+    ("anchor", "Anchor", "they overturn or rock in this earthquake; moving them away from walls does not help"),
     ("tether", "Tether or strap", "they stand on casters and overturn, rock, or roll farther than a room can "
-     "spare in the design earthquake"),
+     "spare in this earthquake"),
     ("lower_contents", "Move heavy contents low", "they rock or overturn as loaded, and with their heavy contents "
      "on the lowest shelves the engine finds them still"),
     ("restrain", "Restrain", "they are likely to slide past their room and need more room than a room can spare"),
@@ -280,3 +280,189 @@ def case_outcomes(result: AssessmentResult) -> dict:
             "solvers": sorted(solvers.items(), key=lambda kv: -kv[1]),
             "overturned": int(overturned.sum()), "uplift": int(uplift.sum()), "slid": int(slid.sum()),
             "rest": int(rest.sum())}
+
+
+# --------------------------------------------------------------------------- where the numbers come from
+#: What each model of an item's demand (``demand_source``, :mod:`assess.fragility.governing`) is, for the
+#: report's "How to read this"; the words of the time histories' origins are added from
+#: :data:`assess.assessment.summary.HISTORY_ORIGINS`.
+MODEL_DEFINITIONS = {
+    "regression": "the paper's formula, used only for near-fault pulses like the paper's",
+    "synthetic": "simulated under near-fault histories made to match the workbook's PTA, Tp and vp",
+    "pulse": "simulated under the motion's pulse alone",
+}
+
+
+def history_phrases(summary: pd.DataFrame) -> list[str]:
+    """Where the time histories the engine ran come from, one phrase per origin the summary's
+    ``demand_source`` names (:func:`assess.assessment.summary.origin_words`), in the order they first appear.
+
+    >>> history_phrases(pd.DataFrame({"demand_source": [("scaled records", "regression"), ("records",)]}))
+    ["records selected from the site's records folder and scaled to the site's spectrum", "the workbook's records"]
+    """
+    from assess.assessment.summary import HISTORY_ORIGINS, THROUGH_BUILDING, origin_words
+    phrases = dict(origin_words(which) for origin in HISTORY_ORIGINS for which in (origin, origin + THROUGH_BUILDING))
+    shown = []
+    for sources in summary.get("demand_source", pd.Series(dtype=object)):
+        for word in (sources if isinstance(sources, (tuple, list)) else ()):
+            if word in phrases and phrases[word] not in shown:
+                shown.append(phrases[word])
+    return shown
+
+
+def source_definitions(summary: pd.DataFrame) -> list[tuple[str, str]]:
+    """Each word of the summary's ``demand_source`` that this report shows, with what it means: the models
+    (:data:`MODEL_DEFINITIONS`) and the time histories by their origin
+    (:func:`assess.assessment.summary.origin_words`), in the order they first appear.
+
+    >>> source_definitions(pd.DataFrame({"demand_source": [("synthetic ground motions through the building",),
+    ...                                                  ("records", "regression")]}))[0][1]
+    "simulated under synthetic ground motions matched to the site's spectrum, passed through the building"
+    """
+    from assess.assessment.summary import HISTORY_ORIGINS, THROUGH_BUILDING, origin_words
+    meanings = {}
+    for origin in HISTORY_ORIGINS:
+        for which in (origin, origin + THROUGH_BUILDING):
+            word, phrase = origin_words(which)
+            meanings[word] = f"simulated under {phrase}"
+    meanings.update(MODEL_DEFINITIONS)
+    shown = []
+    for sources in summary.get("demand_source", pd.Series(dtype=object)):
+        for word in (sources if isinstance(sources, (tuple, list)) else ()):
+            if word in meanings and word not in [w for w, _ in shown]:
+                shown.append((word, meanings[word]))
+    return shown
+
+
+def history_origin_phrase(result: AssessmentResult, item_id) -> str:
+    """Where the time histories of an item's floor come from, as a phrase ("" where the item's floor's
+    motions are the workbook's own): from the result's ``floor_origins``."""
+    from assess.assessment.summary import origin_words
+    origins = result.floor_origins or {}
+    floors = result.summary.loc[result.summary["id"].astype(str) == str(item_id), "floor"]
+    floor = finite(floors.iloc[0]) if len(floors) else None
+    origin = origins.get(int(floor) if floor is not None else None, origins.get(None, ""))
+    return "" if origin in ("", "workbook") else origin_words(origin)[1]
+
+
+def worst_run_text(history: dict, result: AssessmentResult) -> str:
+    """The motion of an item's worst run as the report names it: its name and, where it is not the workbook's
+    own record, where its history comes from (the engine's own description otherwise).
+
+    >>> from types import SimpleNamespace
+    >>> r = SimpleNamespace(floor_origins={0: "site synthetic"}, summary=pd.DataFrame({"id": ["A"], "floor": [0]}))
+    >>> worst_run_text({"id": "A", "motion": "DE synthetic 5", "sim_motion": "record DE synthetic 5 x 1"}, r)
+    "DE synthetic 5, one of the synthetic ground motions matched to the site's spectrum"
+    """
+    phrase = history_origin_phrase(result, history.get("id"))
+    if not phrase:
+        return text(history.get("sim_motion")) or text(history.get("motion"))
+    return f"{text(history.get('motion'))}, one of the {phrase}"
+
+
+def level_text(result: AssessmentResult) -> str:
+    """The level the report assesses, named as the code names it where it is an ASCE 7 level of the site's
+    spectrum (from the result's ``design_spectrum``); the level's own description otherwise.
+
+    >>> from types import SimpleNamespace
+    >>> from assess.hazard.levels import parse_level
+    >>> from assess.site.asce7 import from_design_values
+    >>> r = SimpleNamespace(level=parse_level("DE"), site_class="D",
+    ...                     design_spectrum=from_design_values(1.1, 0.6, 8.0, code="ASCE 7-22"))
+    >>> level_text(r)
+    'DE: the ASCE 7-22 design earthquake, 2/3 of MCE_R (S_DS 1.1 g, S_D1 0.6 g, site class D)'
+    >>> level_text(SimpleNamespace(level=parse_level("MCE_R"), site_class="", design_spectrum=r.design_spectrum))
+    'MCE_R: the ASCE 7-22 risk-targeted maximum considered earthquake (S_MS 1.65 g, S_M1 0.9 g)'
+    """
+    from fractions import Fraction
+
+    from assess.site.asce7 import MCE_R_OVER_DESIGN
+    from assess.site.target import asce7_level
+    design, level = getattr(result, "design_spectrum", None), result.level
+    kind = asce7_level(level)
+    if design is None or kind is None:
+        return level.description
+    site_class = text(getattr(result, "site_class", "")) or text(getattr(design, "site_class", ""))
+    where = f", site class {site_class}" if site_class else ""
+    if kind == "design":
+        share = Fraction(1.0 / MCE_R_OVER_DESIGN).limit_denominator(12)
+        return (f"{level.label or level.name}: the {design.code} design earthquake, {share} of MCE_R "
+                f"(S_DS {design.sds_g:.3g} g, S_D1 {design.sd1_g:.3g} g{where})")
+    return (f"{level.label or level.name}: the {design.code} risk-targeted maximum considered earthquake "
+            f"(S_MS {design.sms_g:.3g} g, S_M1 {design.sm1_g:.3g} g{where})")
+
+
+def class_rule_paragraph(settings: dict) -> str:
+    """The method's paragraph on the risk classes: the rule that decides them
+    (:func:`assess.risk_classes.rule_text`, from the run's thresholds), the intervals, the room advised
+    (the sliding exceeded with the moderate threshold's chance) and the anchored items."""
+    from assess.data import default_settings
+    from assess.risk_classes import rule_text
+    merged = {**default_settings(), **(settings or {})}
+    moderate = 100.0 * float(merged["risk_pf_moderate"])
+    return (f"Risk class, from the governing demand. {rule_text(merged)} Where a chance's 90 % interval spans "
+            "other classes, the tables say which. The room an item is advised to have is the sliding it exceeds "
+            f"with a {moderate:g}% chance: with that room it would be low risk on sliding past it. Anchored items "
+            "are listed and not analysed.")
+
+
+def hazard_limit_text(result: AssessmentResult) -> str:
+    """The report's limit on its motions: where they come from, from the result (the site's ground suite,
+    the building's elastic model, the hazard sheet's motions and how they were changed)."""
+    parts = []
+    if result.ground_motions is not None:
+        how = {"records": "records selected from the site's records folder and scaled to",
+               "synthetic": "synthetic ground motions matched to"}.get(text(result.ground_method), "motions matched to")
+        parts.append(f"The ground motions are {how} the site's spectrum ({len(result.ground_motions)} motions)")
+    if result.floors is not None:
+        parts.append("the upper floors' motions are the ground motions through the building's elastic modes, "
+                     "which a yielding building would lower")
+    if parts:
+        return "; ".join(parts) + " (as stated at the top of this report)."
+    if result.hazard_notes:
+        return "The hazard motions are the workbook's, changed as stated at the top of this report."
+    return ("The hazard motions (peak floor acceleration and pulse period for each floor) are taken as given in "
+            "the workbook; this report does not derive them.")
+
+
+def given_by_parameters(result: AssessmentResult) -> bool:
+    """Whether any motion was given by PTA, Tp and vp (simulated under synthetic near-fault histories or its
+    pulse, not under a history of its own: ``sim_motion`` not ``record …``)."""
+    motions = result.motions
+    if "sim_motion" not in motions:
+        return False
+    described = motions["sim_motion"].astype(object).where(motions["sim_motion"].notna(), "").astype(str)
+    return bool((~described.str.startswith("record ") & (described != "")).any())
+
+
+#: The short words of why the paper's regression does not apply (the reasons of
+#: :func:`assess.fragility.governing.regression_note`), for a table's cell.
+REGRESSION_REASONS = (("no clear pulse", "no clear pulse"), ("outside", "IM outside its range"),
+                      ("uplifts", "uplifts"))
+
+
+def regression_reason(note) -> str:
+    """Why the regression does not apply, in a few words, from an item's ``regression_note`` ("" where it
+    applies).
+
+    >>> regression_reason("not applicable: pulse share 0.018 < 0.38 (no clear pulse), IM 0.12 outside 1.71-6.4")
+    'no clear pulse, IM outside its range'
+    >>> regression_reason("")
+    ''
+    """
+    note = text(note)
+    return ", ".join(short for words, short in REGRESSION_REASONS if words in note)
+
+
+def regression_items(summary: pd.DataFrame) -> dict:
+    """How many freestanding items the figures of the paper's regression mark (``shown``: those whose
+    governing case it applies to, with its Pf) of how many (``of``).
+
+    >>> nan = float("nan")
+    >>> regression_items(pd.DataFrame({"risk": ["low", "high", "anchored"], "pf_sliding": [0.2, nan, nan]}))
+    {'shown': 1, 'of': 2}
+    """
+    free = summary[summary["risk"].astype(str) != "anchored"]
+    if "pf_sliding" not in free:
+        return {"shown": 0, "of": len(free)}
+    return {"shown": int(pd.to_numeric(free["pf_sliding"], errors="coerce").notna().sum()), "of": len(free)}

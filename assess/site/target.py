@@ -18,6 +18,18 @@ from assess.site.uhs import read_target_spectrum
 _DESIGN_NAMES = {"DE": "design", "MCE_R": "MCE_R", "MCER": "MCE_R", "MCE": "MCE_R"}
 
 
+def asce7_level(level: HazardLevel) -> str | None:
+    """Which ASCE 7 spectrum a level's name names: ``"design"`` (DE), ``"MCE_R"`` (MCE_R, MCER, MCE) or None.
+
+    >>> from assess.hazard.levels import parse_level
+    >>> asce7_level(parse_level("DE")), asce7_level(parse_level("mce-r")), asce7_level(parse_level("2in50"))
+    ('design', 'MCE_R', None)
+    """
+    if level.has_probability:
+        return None
+    return _DESIGN_NAMES.get(level.name.strip().upper().replace("-", "_"))
+
+
 def level_target(level: HazardLevel, *, design: DesignSpectrum | None = None, uhs_path=None, oq_site=None,
                  workbook: str = "", sheet: str = "site") -> Callable:
     """The target spectrum of ``level``: a callable Sa [g] of period [s] (with ``max_period_s`` for a UHS).
@@ -47,14 +59,14 @@ def level_target(level: HazardLevel, *, design: DesignSpectrum | None = None, uh
     >>> round(float(target(1.0)), 6)
     0.9
     """
-    key = level.name.strip().upper().replace("-", "_") if not level.has_probability else None
-    if key in _DESIGN_NAMES:
+    kind = asce7_level(level)
+    if kind is not None:
         if design is None:
-            raise InputError([Problem(workbook, f"level '{level.name}' names the ASCE 7 {_DESIGN_NAMES[key]} "
+            raise InputError([Problem(workbook, f"level '{level.name}' names the ASCE 7 {kind} "
                                       "spectrum, but the site sheet gives neither sds_g and sd1_g nor ss_g, s1_g "
                                       "and site_class.", "add them to the site sheet (a USGS hazard lookup for "
                                       "the site gives them).", sheet=sheet)])
-        return design.design_g if _DESIGN_NAMES[key] == "design" else design.mce_r_g
+        return design.design_g if kind == "design" else design.mce_r_g
     if level.has_probability:
         if uhs_path is None:
             raise InputError([Problem(workbook, f"level '{level.name}' is a probability, which only an OpenQuake "
