@@ -63,11 +63,14 @@ def main(argv=None):
     parser.add_argument("--seeds", default="0-9")
     parser.add_argument("--suite-size", type=int, default=None, help="default: the route's own")
     parser.add_argument("--levels", default="DE,MCE_R")
+    parser.add_argument("--only", default="", help="run only the workbooks whose name holds this text")
     args = parser.parse_args(argv)
     rows = []
     with tempfile.TemporaryDirectory() as folder:
         for system, storeys, with_period in itertools.product(SYSTEMS, STOREYS, (False, True)):
             path = Path(folder) / f"{system.replace(' ', '-')}-{storeys}-{'T' if with_period else 'noT'}.xlsx"
+            if args.only not in path.stem:
+                continue
             workbook(path, system, storeys, PERIODS_S[storeys] if with_period else None, args.suite_size)
             for seed in seeds(args.seeds):
                 out = Path(folder) / f"{path.stem}-{seed}"
