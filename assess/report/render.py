@@ -461,8 +461,9 @@ def report_context(result, with_figures: bool = True) -> dict:
         "high": [r for r in rows if r["risk"] == "high"],
         "moderate": [r for r in rows if r["risk"] == "moderate"],
         "rows": rows,
-        "flag_groups": flag_groups(result.flags),
+        "flag_groups": flag_groups(result.flags, (im_min, im_max)),
         "flag_count": len(result.flags),
+        "flag_items": len({flag.item_id for flag in result.flags}),
         "regression": {"zeta": zeta, "eta": eta, "sigma": sigma, "im_min": im_min,
                        "im_max": im_max,
                        "source": text((result.regression or {}).get("source"))
