@@ -203,3 +203,28 @@ def test_the_report_says_each_cause_once_and_lists_its_items():
 def test_ims_range_spans_the_motions():
     assert ims_range(pd.Series([0.16, 0.06, 0.09])) == "0.06–0.16"
     assert ims_range([1.63]) == "1.63"
+
+
+# --------------------------------------------------------------------------- an item's strip
+def _top_px(word: dict) -> float:
+    return float(re.search(r"top: (-?[\d.]+)px", word["style"]).group(1))
+
+
+def test_a_motion_name_on_two_lines_keeps_clear_of_the_strips_title():
+    """The strip's "motion" title is one line of WORD_LINE_PX; the first motion's name, on two lines, starts
+    below it (it rose into it by half a line)."""
+    from assess.report.render import STRIP_LABEL_CHARS, WORD_LINE_PX, _suite_strip
+
+    long_name = "Gilroy Historic Building, floor 2 of the building's elastic model " * 2
+    assert len(long_name) > STRIP_LABEL_CHARS
+    runs = pd.DataFrame({"id": "X", "motion_key": ["a", "b"], "motion": [long_name, "short"],
+                         "sliding_cm": [3.0, 5.0], "overturned": [False, False]})
+    strip = _suite_strip(runs, 10.0)
+    title, first, second = strip["words"][:3]
+    assert title["lines"] == ["motion"] and len(first["lines"]) == 2
+    assert _top_px(first) >= _top_px(title) + WORD_LINE_PX
+    # each name's first line sits as far above its dots' line as a one-line name's: the same gap
+    one_line = _suite_strip(runs.iloc[[1]], 10.0)
+    assert _top_px(first) == pytest.approx(_top_px(one_line["words"][1]))
+    # and the second row's name starts below the first one's two lines
+    assert _top_px(second) >= _top_px(first) + 2 * WORD_LINE_PX
