@@ -80,8 +80,22 @@ def _cell_lines(html: str) -> list[tuple[str, list[str]]]:
 
 @pytest.fixture(scope="module")
 def long_rooms_html() -> str:
+    """The sample report with a new user's long rooms and the widest numbers the all-items table holds: 90 %
+    intervals "76%–100%" and "64%–>99%", a sliding interval "10–18 / 16–∞", a "moderate" chip, a floor
+    note under "Floor" (ground_1)."""
     result = make_result(simulated=True)
-    result.summary["room"] = list(LONG_ROOMS) + ["Store"]
+    summary = result.summary
+    summary["room"] = list(LONG_ROOMS) + ["Store"]
+    freestanding = summary.index[summary["risk"] != "anchored"]
+    summary.loc[freestanding, "demand_median_cm"] = 35.0
+    summary.loc[freestanding, "demand_p84_cm"] = 48.0
+    summary.loc[freestanding, ["demand_median_low_cm", "demand_median_high_cm"]] = [25.4, 45.7]
+    summary.loc[freestanding, ["demand_p84_low_cm", "demand_p84_high_cm"]] = [40.6, np.inf]
+    summary.loc[freestanding, ["p_beyond_clearance", "p_beyond_clearance_low", "p_beyond_clearance_high"]] = \
+        [0.91, 0.76, 1.0]
+    summary.loc[freestanding, ["p_overturn", "p_overturn_low", "p_overturn_high"]] = [0.91, 0.64, 0.996]
+    summary.loc[freestanding, "risk"] = "moderate"
+    result.settings = {**result.settings, "units": "us", "floor_numbering": "ground_1"}
     return render_html(result)
 
 
