@@ -242,3 +242,46 @@ def test_a_motion_name_on_two_lines_keeps_clear_of_the_strips_title():
     assert _top_px(first) == pytest.approx(_top_px(one_line["words"][1]))
     # and the second row's name starts below the first one's two lines
     assert _top_px(second) >= _top_px(first) + 2 * WORD_LINE_PX
+
+
+# --------------------------------------------------------------------------- the appendix's "What if"
+WHAT_IF = ("Anchored (assumed to hold), it would neither slide nor overturn: 0% for both. Giving it room does not "
+           "help: it overturns or rocks where it stands. Lowering its contents alone is not enough.")
+
+
+def _what_if_lines(html: str) -> list[list[str]]:
+    """The lines of every "What if" cell of the appendix as WeasyPrint lays it out."""
+    weasyprint = pytest.importorskip("weasyprint")
+    from weasyprint.formatting_structure import boxes
+
+    _, appendix = split_appendix(html)
+    document = weasyprint.HTML(string=appendix, url_fetcher=data_only_url_fetcher()).render()
+    cells = []
+
+    def lines_of(cell):
+        return ["".join(t.text for t in line.descendants() if isinstance(t, boxes.TextBox))
+                for line in cell.descendants() if isinstance(line, boxes.LineBox)]
+
+    def walk(box):
+        if isinstance(box, boxes.TableRowBox):
+            row = [child for child in box.children if isinstance(child, boxes.TableCellBox)]
+            if len(row) == 2 and "".join(lines_of(row[0])).strip() == "What if":
+                cells.append(lines_of(row[1]))
+            return
+        for child in getattr(box, "children", None) or ():
+            walk(child)
+
+    for page in document.pages:
+        walk(page._page_box)
+    return cells
+
+
+def test_a_what_if_cell_fills_its_line_before_it_breaks():
+    result = make_result(simulated=True)
+    result.summary["what_if"] = [WHAT_IF] * 4 + [""]
+    result.summary["action_kind"] = ["anchor"] * 4 + ["anchored"]
+    cells = _what_if_lines(render_html(result))
+    assert len(cells) == 4
+    for lines in cells:
+        assert len(lines[0].split()) >= 8, lines  # the first line holds a line's words, not its first word
+        assert " ".join(" ".join(lines).split()).startswith(WHAT_IF[:60])
