@@ -279,9 +279,11 @@ def fragility_figure(result) -> str:
         axes.set_ylim(-0.02, 1.05)
         axes.set_xlabel("Intensity measure IM = PTA/(μg) − 1 [–]")
         axes.set_ylabel("Pf = P(sliding demand > capacity c) [–]\nitems: chance past their room")
+        filled = bool(items["from_regression"].any())
         handles, labels = axes.get_legend_handles_labels()  # the range, then the 4 curves
         second_row = [(handles[0], labels[0])] + [
-            (Line2D([], [], ls="", marker="o", ms=4.5, color=RISK_COLOURS[r]), f"item, {r} risk")
+            (Line2D([], [], ls="", marker="o", ms=4.5, color=RISK_COLOURS[r],  # hollow as the dots are where
+                    markerfacecolor=RISK_COLOURS[r] if filled else "white"), f"item, {r} risk")  # none is filled
             for r in ("high", "moderate", "low")]
         ordered = []  # the legend fills column by column: curves on the first row
         for curve, other in zip(zip(handles[1:], labels[1:]), second_row):
