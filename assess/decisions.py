@@ -178,10 +178,10 @@ def priorities(summary: pd.DataFrame) -> pd.Series:
 def ims_range(ims) -> str:
     """The IMs of an item's motions as their range, "0.06–0.16" (one value alone as it is).
 
-    >>> ims_range([0.16, 0.06, 0.09]), ims_range([1.63, 1.634])
-    ('0.06–0.16', '1.63')
+    >>> ims_range([0.16, 0.06, 0.09]), ims_range([1.63, 1.634]), ims_range([-0.02, 0.53])
+    ('0.06–0.16', '1.63', '−0.02–0.53')
     """
-    low, high = f"{min(ims):.2f}", f"{max(ims):.2f}"
+    low, high = (f"{value:.2f}".replace("-", "−") for value in (min(ims), max(ims)))
     return low if low == high else f"{low}–{high}"
 
 
