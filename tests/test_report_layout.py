@@ -81,8 +81,8 @@ def _cell_lines(html: str) -> list[tuple[str, list[str]]]:
 @pytest.fixture(scope="module")
 def long_rooms_html() -> str:
     """The sample report with a new user's long rooms and the widest numbers the all-items table holds: 90 %
-    intervals "76%–100%" and "64%–>99%", a sliding interval "10–18 / 16–∞", a "moderate" chip, a floor
-    note under "Floor" (ground_1)."""
+    intervals "76%–100%" and "64%–>99%", a sliding interval "10–18 / 16–∞", a "moderate" chip and "moderate to
+    high" under it, a floor note under "Floor" (ground_1); two items high (page 1's table), two moderate."""
     result = make_result(simulated=True)
     summary = result.summary
     summary["room"] = list(LONG_ROOMS) + ["Store"]
@@ -94,7 +94,8 @@ def long_rooms_html() -> str:
     summary.loc[freestanding, ["p_beyond_clearance", "p_beyond_clearance_low", "p_beyond_clearance_high"]] = \
         [0.91, 0.76, 1.0]
     summary.loc[freestanding, ["p_overturn", "p_overturn_low", "p_overturn_high"]] = [0.91, 0.64, 0.996]
-    summary.loc[freestanding, "risk"] = "moderate"
+    summary.loc[freestanding, "risk"] = ["high", "high", "moderate", "moderate"]  # page 1's table and list too
+    summary["risk_range"] = ["moderate to high"] * 4 + [""]
     result.settings = {**result.settings, "units": "us", "floor_numbering": "ground_1"}
     return render_html(result)
 
