@@ -176,6 +176,16 @@ def priorities(summary: pd.DataFrame) -> pd.Series:
     return ranks
 
 
+def ims_range(ims) -> str:
+    """The IMs of an item's motions as their range, "0.06–0.16" (one value alone as it is).
+
+    >>> ims_range([0.16, 0.06, 0.09]), ims_range([1.63, 1.634]), ims_range([-0.02, 0.53])
+    ('0.06–0.16', '1.63', '−0.02–0.53')
+    """
+    low, high = (f"{value:.2f}".replace("-", "−") for value in (min(ims), max(ims)))
+    return low if low == high else f"{low}–{high}"
+
+
 def item_flags(item, item_cases: pd.DataFrame, constants: RegressionConstants, system: str = "si",
                numbering: str = "ground_0") -> list[Flag]:
     """The caveats of one freestanding item's result, from its cases (every motion and direction)."""
@@ -189,14 +199,16 @@ def item_flags(item, item_cases: pd.DataFrame, constants: RegressionConstants, s
             f"(simulated; peak theta/alpha {worst['sim_theta_max_over_alpha']:.2f}"
             f"{', overturned' if worst['sim_overturned'] else ''}): "
             f"mu_static = {item.mu_static:.2f} >= b/h = {worst['b_over_h']:.2f} and PTA = {worst['pta_g']:.2f} g "
-            f"> g b/h. The sliding regression assumes no uplift; the simulation answers for this item.")))
+            f"> g b/h. The sliding regression assumes no uplift; the simulation answers for this item."),
+            f"{worst['mode']}{', overturns' if worst['sim_overturned'] else ''}"))
     outside = item_cases[item_cases["im_outside_fit"]]
     if len(outside):
         ims = ", ".join(f"{im:.2f}" for im in sorted(set(outside["im"].round(2))))
         flags.append(Flag(item.id, "im_outside_fit", (
             f"IM = {ims} lies outside the range {constants.im_min:.2f}-{constants.im_max:.2f} the "
             f"regression was fitted on: its numbers shown beside are an extrapolation, and the governing "
-            f"demand does not use them for those motions.")))
+            f"demand does not use them for those motions."),
+            f"IM {ims_range(outside['im'])}"))
     if "derived" in item_cases and item_cases["derived"].any():
         flags.append(Flag(item.id, "derived_floor_motion", (
             f"floor {floor_text(item.floor, numbering)} has no motion in the workbook: it was assessed under the ground motions "
@@ -205,7 +217,7 @@ def item_flags(item, item_cases: pd.DataFrame, constants: RegressionConstants, s
     if not np.isclose(item.cg_height_m, item.height_m / 2.0):
         flags.append(Flag(item.id, "cg_not_mid_height", (
             f"centre of mass at {length_text(item.cg_height_m * 100, system)}, not mid-height: alpha and b/h use it; "
-            "p assumes the mass spread over the whole box.")))
+            "p assumes the mass spread over the whole box."), length_text(item.cg_height_m * 100, system)))
     return flags
 
 

@@ -118,6 +118,37 @@ def mass_text(value_kg: float, system="si") -> str:
     return f"{float(value_kg) / KG_PER_LB:.0f} lb"
 
 
+#: The smallest magnitude a plain number is written out to (3 decimals): a smaller one, often a float's noise
+#: about zero (a rotation of 9.6e-20 of an item that only slid), reads "< 0.001" instead of a long decimal.
+SMALLEST_SHOWN = 0.001
+
+
+def significant_text(value, digits: int = 2) -> str:
+    """``value`` to ``digits`` significant digits (0.30, 3.38, 12000), never in exponent form nor as a long
+    decimal: a magnitude below :data:`SMALLEST_SHOWN` reads "< 0.001" ("> −0.001" when negative), exact zero
+    "0"; "–" for a missing value.
+
+    >>> [significant_text(v) for v in (0.4234, 12345.0, 0.996, 0.0012, 9.6e-20, -3e-7, 0.0, float("nan"))]
+    ['0.42', '12000', '1.0', '0.0012', '< 0.001', '> −0.001', '0', '–']
+    """
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        return "–"
+    if not math.isfinite(number):
+        return "–"
+    if number == 0:
+        return "0"
+    if abs(number) < SMALLEST_SHOWN:
+        return f"< {SMALLEST_SHOWN:g}" if number > 0 else f"> −{SMALLEST_SHOWN:g}"
+    decimals = digits - 1 - math.floor(math.log10(abs(number)))
+    rounded = round(number, decimals)
+    if rounded != 0:  # rounding may carry into the next decade (0.996 -> 1.0)
+        decimals = digits - 1 - math.floor(math.log10(abs(rounded)))
+        rounded = round(number, decimals)
+    return f"{rounded:.{max(decimals, 0)}f}".replace("-", "−")
+
+
 def percent_text(probability) -> str:
     """A probability as a whole percentage, the one way every table and sentence writes a chance:
     "<1%" and ">99%" at the ends (a chance that rounds to 0 or 100 but is not), "0%" and "100%" only when

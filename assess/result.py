@@ -49,6 +49,9 @@ class Flag:
     item_id: str
     code: str  # e.g. "uplift", "im_outside_fit", "derived_floor_motion"
     message: str
+    #: What is this item's own in a few words ("46 in", "IM 0.06–0.16"), shown beside its id where the report
+    #: gathers the flags of one cause into one (:func:`assess.report.sentences.flag_groups`); "" for none.
+    detail: str = ""
 
 
 @dataclass

@@ -225,18 +225,38 @@ def _shade_fitted_range(axes, im_min: float, im_max: float, label: str | None) -
 
 
 # --------------------------------------------------------------------------- figures
+def fragility_points(result) -> pd.DataFrame:
+    """The items Fig. 2 marks: each freestanding item's ``id``, governing ``im``, ``risk`` and ``chance``, its
+    chance of sliding past its room as the tables give it (``p_beyond_clearance`` of the summary: the demand
+    over all its motions, simulated or the regression's), and ``from_regression``, whether that chance is the
+    regression's (its demand from the regression alone) rather than the simulation's.
+
+    The regression's own Pf at the governing motion (``pf_sliding``) is not drawn: for an item whose demand
+    the simulation gives it is a number no table shows (near 1 for a cart on casters far outside the fitted
+    range, whose tables say 0 %)."""
+    items = _freestanding(result)
+    chance = pd.to_numeric(items["p_beyond_clearance"], errors="coerce") if "p_beyond_clearance" in items \
+        else pd.Series(np.nan, index=items.index)
+    im = pd.to_numeric(items["im"], errors="coerce")
+    source = items["demand_source"] if "demand_source" in items else pd.Series("", index=items.index)
+    from_regression = source.map(lambda s: tuple(s) == ("regression",) if isinstance(s, (tuple, list))
+                          else str(s) == "regression")
+    points = pd.DataFrame({"id": items["id"].astype(str), "im": im, "chance": chance,
+                           "risk": items["risk"].astype(str), "from_regression": from_regression.astype(bool)})
+    return points[np.isfinite(points["im"]) & np.isfinite(points["chance"])]
+
+
 def fragility_figure(result) -> str:
     """Fragility curves as the paper's Fig. 12, with each freestanding item marked.
 
     Curves: :func:`fragility_curve` for c = 0.2, 0.4, 0.6, 0.8 against IM.
-    Points: each freestanding item's governing ``(im, pf_sliding)`` from the
-    summary, coloured by risk and labelled by id; an item's point uses its own
-    capacity c = clearance·ωp²/PTA, so it sits between the curves.
+    Points: :func:`fragility_points`, each freestanding item at its governing IM and its chance of sliding past
+    its room as the tables give it, coloured by risk and labelled by id; filled where that chance is the
+    regression's (its own capacity c = clearance·ωp²/PTA, between the paper's curves), hollow where the
+    simulation gives it.
     """
     zeta, eta, sigma, im_min, im_max = regression_constants(result)
-    items = _freestanding(result)
-    items = items[np.isfinite(items["im"].astype(float))
-                  & np.isfinite(items["pf_sliding"].astype(float))]
+    items = fragility_points(result)
     im_top = max(7.0, float(items["im"].max()) * 1.05 if len(items) else 0.0)
     im_bottom = min(0.0, float(items["im"].min()) - 0.2 if len(items) else 0.0)
     grid = np.linspace(im_bottom, im_top, 701)
@@ -249,20 +269,21 @@ def fragility_figure(result) -> str:
         for capacity, style in zip(PAPER_CAPACITIES, styles):
             axes.plot(grid, fragility_curve(grid, capacity, zeta, eta, sigma), style,
                       color="#2c3e50", lw=1.1, label=f"c = {capacity:g}")
-        for risk, group in items.groupby(items["risk"].astype(str), sort=False):
-            axes.scatter(group["im"].astype(float), group["pf_sliding"].astype(float), s=18,
-                         color=RISK_COLOURS.get(risk, "#000000"), edgecolor="white",
-                         linewidth=0.5, zorder=5)
-        _place_labels(axes, list(zip(items["im"].astype(float), items["pf_sliding"].astype(float))),
-                      list(items["id"].astype(str)),
+        for (risk, regression), group in items.groupby([items["risk"], items["from_regression"]], sort=False):
+            colour = RISK_COLOURS.get(risk, "#000000")
+            axes.scatter(group["im"], group["chance"], s=18, zorder=5, color=colour if regression else "white",
+                         edgecolor="white" if regression else colour, linewidth=0.5 if regression else 0.9)
+        _place_labels(axes, list(zip(items["im"], items["chance"])), list(items["id"]),
                       [RISK_COLOURS.get(str(r), "#000000") for r in items["risk"]])
         axes.set_xlim(im_bottom, im_top)
         axes.set_ylim(-0.02, 1.05)
         axes.set_xlabel("Intensity measure IM = PTA/(μg) − 1 [–]")
-        axes.set_ylabel("Pf = P(sliding demand > capacity c) [–]")
+        axes.set_ylabel("Pf = P(sliding demand > capacity c) [–]\nitems: chance past their room")
+        filled = bool(items["from_regression"].any())
         handles, labels = axes.get_legend_handles_labels()  # the range, then the 4 curves
         second_row = [(handles[0], labels[0])] + [
-            (Line2D([], [], ls="", marker="o", ms=4.5, color=RISK_COLOURS[r]), f"item, {r} risk")
+            (Line2D([], [], ls="", marker="o", ms=4.5, color=RISK_COLOURS[r],  # hollow as the dots are where
+                    markerfacecolor=RISK_COLOURS[r] if filled else "white"), f"item, {r} risk")  # none is filled
             for r in ("high", "moderate", "low")]
         ordered = []  # the legend fills column by column: curves on the first row
         for curve, other in zip(zip(handles[1:], labels[1:]), second_row):

@@ -364,6 +364,7 @@ def _suite_strip(runs: pd.DataFrame, clearance_cm: float | None, system: str = "
     for key, mine, name in groups:
         label = strip_label_lines(name or text(mine["motion"].iloc[0]))
         extra = (len(label) - 1) * (STRIP_FONT_PX + 1)
+        y += extra / 2.0  # a name on two lines starts as low as one on one line: never up against the title
         line_y = y + extra / 2.0
         sliding_of_run = pd.to_numeric(mine["sliding_cm"], errors="coerce").fillna(0.0).to_numpy(float) * per_cm
         xs = STRIP_LEFT + sliding_of_run * scale
@@ -372,7 +373,7 @@ def _suite_strip(runs: pd.DataFrame, clearance_cm: float | None, system: str = "
         lines.append({"y": line_y,
                       "dots": strip_dot_paths(xs[~overturned], line_y),
                       "crosses": strip_crosses_path(xs[overturned], line_y)})
-        y += STRIP_ROW + extra
+        y += STRIP_ROW + extra / 2.0
     axis_y = y - STRIP_ROW / 2.0 + 4
     height = axis_y + 12
     words += [figure_word(f"{t:g}", STRIP_LEFT + t * scale, axis_y + 11, "middle") for t in _nice_ticks(top)]
@@ -477,8 +478,9 @@ def report_context(result, with_figures: bool = True) -> dict:
         "high": [r for r in rows if r["risk"] == "high"],
         "moderate": [r for r in rows if r["risk"] == "moderate"],
         "rows": rows,
-        "flag_groups": flag_groups(result.flags),
+        "flag_groups": flag_groups(result.flags, (im_min, im_max)),
         "flag_count": len(result.flags),
+        "flag_items": len({flag.item_id for flag in result.flags}),
         "regression": {"zeta": zeta, "eta": eta, "sigma": sigma, "im_min": im_min,
                        "im_max": im_max,
                        "source": text((result.regression or {}).get("source"))

@@ -13,7 +13,7 @@ import math
 import pandas as pd
 
 from assess.fragility import friction_range, planar
-from assess.quantity_text import floor_text, floors_text, percent_text, rounded_length  # noqa: F401 (floor labels)
+from assess.quantity_text import floor_text, floors_text, percent_text, rounded_length, significant_text  # noqa: F401 (floor labels)
 from assess.result import RISK_CLASSES, AssessmentResult
 
 DASH = "–"
@@ -21,7 +21,8 @@ DASH = "–"
 #: Headings for the flag codes the pipeline is known to emit; others get their code.
 FLAG_TITLES = {
     "im_outside_fit": "Outside the range the regression was fitted on",
-    "uplift": "Uplifts and rocks",
+    "uplift": "Uplifts and rocks: the simulation answers",
+    "calibrated": "Changed by the calibration",
     "cg_not_mid_height": "Centre of mass not at mid-height",
     "derived_floor_motion": "Floor motion derived from the ground motion",
     "implausible_input": "Size or density no equipment has: check the workbook cell",
@@ -37,18 +38,9 @@ def finite(value) -> float | None:
 
 
 def format_significant(value, digits: int = 2) -> str:
-    """``value`` to ``digits`` significant digits (0.30, 3.38, 12000), never in exponent form; NaN as "–"."""
-    number = finite(value)
-    if number is None:
-        return DASH
-    if number == 0:
-        return "0"
-    decimals = digits - 1 - math.floor(math.log10(abs(number)))
-    rounded = round(number, decimals)
-    if rounded != 0:  # rounding may carry into the next decade (0.996 -> 1.0)
-        decimals = digits - 1 - math.floor(math.log10(abs(rounded)))
-        rounded = round(number, decimals)
-    return f"{rounded:.{max(decimals, 0)}f}".replace("-", "−")
+    """``value`` to ``digits`` significant digits (0.30, 3.38, 12000), never in exponent form nor as a long
+    decimal (a float's noise about zero reads "< 0.001"): :func:`assess.quantity_text.significant_text`."""
+    return significant_text(value, digits)
 
 
 def format_cm(value) -> str:
@@ -200,16 +192,57 @@ def suite_text(row: pd.Series) -> str:
     return text
 
 
-def flag_groups(flags) -> list[dict]:
-    """The result's flags grouped by code, each group titled (:data:`FLAG_TITLES`)."""
-    groups: dict[str, list[dict]] = {}
+#: The causes of a flag that concern a model's limit rather than a cell to check: the report says each once,
+#: with the items it concerns (and what is each one's own, :attr:`assess.result.Flag.detail`), not once per
+#: item. ``{im_min}`` and ``{im_max}`` are the regression's fitted range.
+FLAG_CAUSES = {
+    "uplift": "They uplift and rock in the simulation (their mode and peak θ/α are in the tables). The paper's "
+              "sliding regression assumes no uplift: the simulation answers for them.",
+    "derived_floor_motion": "Their floors have no motion in the workbook: they were assessed under the ground "
+                            "motions amplified by ASCE 7-16 eq. 13.3-1 (--derive-floors), an envelope rule, not "
+                            "a floor response analysis. Floor motions from a structural engineer would replace it.",
+    "cg_not_mid_height": "The workbook puts their centre of mass off mid-height (at the height beside each): "
+                         "α and b/h use it; the rocking frequency p assumes the mass spread over the whole box.",
+    "im_outside_fit": "At these items' IM (beside each) the paper's regression, fitted on IM {im_min}–{im_max}, "
+                      "would extrapolate: its numbers are marked n/a and their demand does not use them. A note on "
+                      "the model, nothing to act on.",
+}
+#: The order of the flag groups: a cell to check first, then what changed an item's result, then the model's
+#: limits; codes not named here follow, in the order the result gives them.
+FLAG_ORDER = ("implausible_input", "calibrated", "uplift", "derived_floor_motion", "cg_not_mid_height",
+              "im_outside_fit")
+
+
+def flag_groups(flags, im_range: tuple[float, float] = (1.71, 6.40)) -> list[dict]:
+    """The result's flags, one group per cause (code), each titled (:data:`FLAG_TITLES`) and in the order of
+    :data:`FLAG_ORDER`. A cause of :data:`FLAG_CAUSES` is said once (``cause``), with its items and what is
+    each one's own (``items``: ``id`` and ``detail``); any other (a cell to check, a calibration's change)
+    keeps each item's own message (``entries``). ``im_range`` is the regression's fitted IM range.
+
+    >>> from assess.result import Flag
+    >>> groups = flag_groups([Flag("A", "cg_not_mid_height", "…", "46 in"), Flag("B", "implausible_input", "b"),
+    ...                       Flag("C", "cg_not_mid_height", "…", "40 in")])
+    >>> [(g["code"], [i["id"] for i in g["items"]], len(g["entries"])) for g in groups]
+    [('implausible_input', ['B'], 1), ('cg_not_mid_height', ['A', 'C'], 0)]
+    """
+    by_code: dict[str, list] = {}
     for flag in flags:
-        groups.setdefault(flag.code, []).append({"item_id": flag.item_id,
-                                                 "message": flag.message})
-    return [{"code": code,
-             "title": FLAG_TITLES.get(code, code.replace("_", " ").capitalize()),
-             "entries": entries}
-            for code, entries in groups.items()]
+        by_code.setdefault(flag.code, []).append(flag)
+    rank = {code: k for k, code in enumerate(FLAG_ORDER)}
+    codes = sorted(by_code, key=lambda code: rank.get(code, len(rank)))  # stable: others as the result gives
+    groups = []
+    for code in codes:
+        members = by_code[code]
+        items = list({flag.item_id: {"id": flag.item_id, "detail": flag.detail} for flag in members}.values())
+        cause = FLAG_CAUSES.get(code)
+        groups.append({
+            "code": code,
+            "title": FLAG_TITLES.get(code, code.replace("_", " ").capitalize()),
+            "cause": cause.format(im_min=f"{im_range[0]:g}", im_max=f"{im_range[1]:g}") if cause else "",
+            "items": items,
+            "entries": [] if cause else [{"item_id": flag.item_id, "message": flag.message} for flag in members],
+        })
+    return groups
 
 
 def method_notes(summary: pd.DataFrame) -> list[str]:
