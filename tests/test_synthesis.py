@@ -346,16 +346,17 @@ def test_high_pass_oscillator_against_lsim():
     assert critically_damped_high_pass(x, dt, corner) == pytest.approx(expected, abs=1e-9)
 
 
-def test_the_stored_type_b_reading_is_the_one_worked_out_bit_for_bit():
+def test_the_stored_type_b_reading_is_the_one_worked_out():
     """assess/data/type_b_reading.json (read by every synthesis at the default γ, to spare 24 fits) is
-    what type_b_reading_table works out now; another γ is worked out, not read."""
+    what type_b_reading_table works out now, to the last bits a math library may round differently (3.5e-16
+    with numpy 2.4 here); another γ is worked out, not read."""
     from assess.hazard import near_fault_pulse
     from assess.hazard.synthesis import DEFAULT_PULSE_GAMMA
 
     near_fault_pulse._type_b_reading_table.cache_clear()
     stored = near_fault_pulse._type_b_reading_table(DEFAULT_PULSE_GAMMA)
     worked_out = near_fault_pulse.type_b_reading_table(DEFAULT_PULSE_GAMMA)
-    assert all(np.array_equal(a, b) for a, b in zip(stored, worked_out))
+    assert all(np.allclose(a, b, rtol=1e-12, atol=0) for a, b in zip(stored, worked_out))
     other = near_fault_pulse._type_b_reading_table(1.7)
     assert all(np.array_equal(a, b) for a, b in zip(other, near_fault_pulse.type_b_reading_table(1.7)))
     assert not np.array_equal(other[1], stored[1])

@@ -87,9 +87,11 @@ def motion_sources(cases: pd.DataFrame, simulated_as: dict, constants: Regressio
 
 
 def add_pulse_share(cases: pd.DataFrame) -> pd.DataFrame:
-    """``pulse_share`` = 2π|vp|/(Tp·PTA·g) of each case's motion (1 where vp is not given: the motion is its pulse)."""
+    """``pulse_share`` = 2π|vp|/(Tp·PTA·g) of each case's motion (1 where vp is not given: the motion is its pulse;
+    0 where neither Tp is: a synthetic or floor motion, which has no pulse)."""
     share = pulse_acceleration_share(cases["pta_g"], cases["tp_s"], cases["vp_m_s"])
-    return cases.assign(pulse_share=np.where(np.isfinite(cases["vp_m_s"]), share, 1.0))
+    no_vp = np.where(np.isfinite(cases["tp_s"]), 1.0, 0.0)
+    return cases.assign(pulse_share=np.where(np.isfinite(cases["vp_m_s"]), share, no_vp))
 
 
 def governing_demand(cases: pd.DataFrame, runs: pd.DataFrame, constants: RegressionConstants,
