@@ -215,3 +215,14 @@ def test_compiled_spectrum_loop_is_the_recursion_bit_for_bit():
         expected = (2.0 * np.pi / periods) ** 2 * peak
         got = pseudo_acceleration_spectrum(accel, 0.01, periods, free_vibration_s=0.0)
         assert got.tobytes() == expected.tobytes()
+
+
+def test_records_far_too_weak_for_the_target_are_refused_not_scaled_by_1e30(candidates):
+    """Hostile-input campaign: records peaking at 3e-31 g were scaled by 6.7e30 by the common factor of
+    ASCE 7-22 §16.2.3.2 and the run ended exit 0. Each factor is bounded (0.25-4); a common factor beyond the
+    upper bound means the records are not of this hazard: refused, saying so."""
+    weak = [m.scaled(1e-30) for m in candidates]
+    with pytest.raises(ValueError, match="common factor"):
+        suite.select_and_scale(weak, DE.design_g, BUILDING_AND_ITEMS_S, level="DE")
+    selected = suite.select_and_scale(candidates, DE.design_g, BUILDING_AND_ITEMS_S, level="DE")
+    assert selected.scale_factors.max() < 10  # the real records still make a suite

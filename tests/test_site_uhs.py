@@ -110,3 +110,39 @@ def test_level_names_its_target():
         level_target(parse_level("2in50"), design=design, workbook="h.xlsx")
     with pytest.raises(InputError, match="no target"):
         level_target(parse_level("SLE"), design=design, workbook="h.xlsx")
+
+
+def _curves_copy(tmp_path):
+    folder = tmp_path / "site" / "oq"
+    folder.mkdir(parents=True)
+    for path in sorted((DATA / "case_18-curves").iterdir()):
+        (folder / path.name).write_bytes(path.read_bytes())
+    return folder
+
+
+def test_a_curve_file_linked_out_of_the_export_folder_is_not_read(tmp_path):
+    """A third hostile-input campaign's finding: a sibling of the named curve file that links to a file outside
+    the folder was read, its site ids quoted in the error, its numbers taken as the target when it parsed. The
+    outside file here is a valid curve of another site, so that reading it would succeed: it must be refused
+    unread, the message naming the link and never the outside file's contents."""
+    folder = _curves_copy(tmp_path)
+    outside = tmp_path / "secret"
+    outside.mkdir()
+    sibling = folder / "hazard_curve-mean_PGA.csv"
+    target = outside / sibling.name
+    target.write_text(sibling.read_text().replace(",0.", ",0.9"))  # parsable, other numbers
+    sibling.unlink()
+    sibling.symlink_to(target)
+    with pytest.raises(InputError) as error:
+        read_target_spectrum(folder / "hazard_curve-mean_SA(0.2).csv", TEN_IN_50, site=0)
+    text = str(error.value)
+    assert sibling.name in text and "not read" in text and "0.9" not in text
+
+
+def test_a_curve_file_linked_to_proc_is_refused_not_a_traceback(tmp_path):
+    folder = _curves_copy(tmp_path)
+    sibling = folder / "hazard_curve-mean_PGA.csv"
+    sibling.unlink()
+    sibling.symlink_to("/proc/self/status")
+    with pytest.raises(InputError, match="not a plain file in the export's folder"):
+        read_target_spectrum(folder / "hazard_curve-mean_SA(0.2).csv", TEN_IN_50, site=0)

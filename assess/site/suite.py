@@ -380,6 +380,11 @@ def select_and_scale(candidates: Sequence[Motion], target: Callable, periods_s, 
     mean = (spectra[chosen] * factors[:, None]).mean(axis=0)
     ratio = mean / np.exp(log_target)
     common = max(1.0, mean_ratio_min / float(ratio.min()))
+    if common > high:  # the records, each scaled within the bounds, stay far below the target
+        raise ValueError(f"the selected records, each scaled at most {high:g} times, reach only "
+                         f"{float(ratio.min()):.2g} of the target spectrum somewhere in {lower:.3g}-{upper:.3g} s; "
+                         f"a common factor of {common:.3g} would be needed (records this weak are not of this "
+                         "site's hazard)")
     factors = factors * common
     notes = [f"{suite_size} of {len(candidates)} motions selected by least log misfit after scaling over "
              f"{lower:.3g}-{upper:.3g} s (ASCE 7-22 §16.2.3.1: 0.2 T_min to 2 T_max)"]

@@ -45,6 +45,7 @@ import numpy as np
 
 from assess.errors import InputError, Problem
 from assess.hazard.levels import HazardLevel
+from assess.hazard.records import check_record_location
 from assess.hazard.openquake import (RATE_REL_TOL, Site, _choose_site, _comment_text, export_lines,
                                      loglog_interpolate_level, parse_openquake_comment,
                                      poe_in_investigation_time)
@@ -316,6 +317,12 @@ def curve_files(path) -> list[Path]:
     for other in sorted(path.parent.iterdir()):
         m = _CURVE_NAME.match(other.name)
         if m and m.group("kind") == kind and (m.group("tail") or "") == tail:
+            # a file of the export is read only where the named one is: never through a link that leaves its
+            # folder (another file of this machine, /proc), never a FIFO or a device
+            if check_record_location(other, path.parent) is not None or not other.is_file():
+                raise _fail(other, "this curve file of the same export is not a plain file in the export's folder "
+                            "(a link out of it, or a pipe or device): it is not read.",
+                            "keep the export's curve files in one folder, as OpenQuake writes them.")
             found.append(other)
     return found or [path]
 
