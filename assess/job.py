@@ -91,10 +91,11 @@ def parse_levels(text: str) -> list[tuple[str, str]]:
             name = parse_level(part).name
         except ValueError as error:
             raise InputError([Problem(file="--hazard", message=str(error))]) from None
-        if name in seen:
-            raise InputError([Problem(file="--hazard", message=f"'{part}' is the level '{seen[name]}' again.",
+        key = name.casefold()  # one folder on a case-insensitive file system (macOS, Windows): DE and de
+        if key in seen:
+            raise InputError([Problem(file="--hazard", message=f"'{part}' is the level '{seen[key]}' again.",
                                       fix="give each level once.")])
-        seen[name] = part
+        seen[key] = part
         levels.append((name, part))
     return levels
 

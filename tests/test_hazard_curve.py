@@ -384,3 +384,13 @@ def test_the_fragility_at_the_level_beside_the_level_answer_and_which_governs(tw
     if apart:
         sentence = level_comparison_sentence({**row.to_dict(), "id": "S1"}, why=False)
         assert context["apart"] == [sentence] and "both from the simulations" in sentence
+
+
+def test_a_level_given_twice_in_other_case_is_refused():
+    """Hostile-input campaign: --hazard DE,de ran the level twice into DE/ and de/ (one folder on macOS and
+    Windows, whose file systems ignore case); DE,DE was refused. Both are the same level."""
+    from assess.errors import InputError
+    from assess.job import parse_levels
+    with pytest.raises(InputError, match="'de' is the level 'DE' again"):
+        parse_levels("DE,de")
+    assert [name for name, _ in parse_levels("DE,MCE_R")] == ["DE", "MCE_R"]

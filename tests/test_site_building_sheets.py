@@ -116,3 +116,13 @@ def test_building_needs_storeys_and_one_height(make_workbook):
     problems = _problems(make_workbook, building=[("height_m", 12), ("storey_height_m", 4)])
     messages = [p.message for p in problems if p.sheet == "building"]
     assert any("no 'storeys'" in m for m in messages) and any("both height" in m for m in messages)
+
+
+@pytest.mark.parametrize("bad", ["one point one", float("nan"), float("inf"), 0])
+def test_an_invalid_sds_is_named_once_not_called_missing(make_workbook, bad):
+    """Hostile-input campaign: an invalid sds_g (text, NaN, inf, 0) was followed by "the site sheet gives sd1_g
+    without sds_g", though the row exists. Its own cell says what is wrong; nothing is called missing."""
+    problems = _problems(make_workbook, site=[("sds_g", bad), ("sd1_g", 0.6)])
+    site = [p for p in problems if p.sheet == "site"]
+    assert _located(problems, "site", "B2"), [str(p) for p in problems]
+    assert not any("without" in p.message or "gives no hazard" in p.message for p in site), [str(p) for p in site]

@@ -178,8 +178,10 @@ def _accepted(known: dict[str, Column]) -> list[str]:
     return [f"{n}_g" if n in _G_KEYS else column.header() for n, column in known.items()]
 
 
-def _key_values(table, known: dict[str, Column], sheet: str, report) -> dict[str, tuple[object, int]]:
-    """The sheet's keys, each parsed by its column, in canonical units: name -> (value, row)."""
+def _key_values(table, known: dict[str, Column], sheet: str, report,
+                invalid: set | None = None) -> dict[str, tuple[object, int]]:
+    """The sheet's keys, each parsed by its column, in canonical units: name -> (value, row). The names of
+    rows whose value is reported as wrong are added to ``invalid``, so that no later check calls them missing."""
     key_header, value_header = table.headers.get("key"), table.headers.get("value")
     found: dict[str, tuple[object, int]] = {}
     for row in table.rows:
@@ -202,11 +204,15 @@ def _key_values(table, known: dict[str, Column], sheet: str, report) -> dict[str
         column = known[name]
         if schema.is_empty(raw):
             report.at(row.number, value_header, f"'{key}' has no value.", "type it, or delete the row.")
+            if invalid is not None:
+                invalid.add(name)
             continue
         try:
             value = schema.parse_cell(raw, column, suffix, f"the {sheet}")
         except CellError as error:
             report.at(row.number, value_header, f"'{key}': {error.message}", error.fix)
+            if invalid is not None:
+                invalid.add(name)
             continue
         found[name] = (value, row.number)
     return found
@@ -219,7 +225,8 @@ def read_site(table, folder: Path, report) -> SiteSheet | None:
     (:class:`assess.inventory.workbook.SheetReport`).
     """
     before = len(report.problems)
-    values = _key_values(table, _SITE_KEYS, "site", report)
+    invalid: set = set()
+    values = _key_values(table, _SITE_KEYS, "site", report, invalid)
     value_header = table.headers.get("value")
 
     def at(name, message, fix):
@@ -249,7 +256,9 @@ def read_site(table, folder: Path, report) -> SiteSheet | None:
            f"{', '.join(RISK_CATEGORIES)}.", "write I, II, III or IV (ASCE 7 Table 1.5-1: a hospital is IV).")
     design = [k for k in ("sds", "sd1") if k in out]
     mapped = [k for k in ("ss", "s1") if k in out]
-    if design and mapped:
+    if invalid & {"sds", "sd1", "ss", "s1", "site_class"}:
+        pass  # a hazard value is given but wrong: its own cell says so; nothing is missing
+    elif design and mapped:
         report.at(values[mapped[0]][1], table.headers.get("key"), "the site sheet gives both design "
                   f"values ({', '.join(design)}) and mapped values ({', '.join(mapped)}).",
                   "keep one set: sds_g and sd1_g (from a hazard lookup), or ss_g, s1_g and site_class.")
@@ -263,7 +272,7 @@ def read_site(table, folder: Path, report) -> SiteSheet | None:
                   f"{', '.join(mapped)} without {', '.join(missing)}.",
                   "add the missing rows: ss_g, s1_g and site_class go together (the site class sets the "
                   "site coefficients).")
-    if not design and not mapped and "uhs" not in out:
+    if not design and not mapped and "uhs" not in out and not invalid & {"sds", "sd1", "ss", "s1", "uhs"}:
         report(f"the site sheet gives no hazard: neither sds_g and sd1_g, nor ss_g, s1_g and "
                "site_class, nor a uniform-hazard spectrum (uhs).",
                "add the site's design values (sds_g, sd1_g) from a hazard lookup, or delete the sheet.",
