@@ -146,3 +146,17 @@ def test_a_curve_file_linked_to_proc_is_refused_not_a_traceback(tmp_path):
     sibling.symlink_to("/proc/self/status")
     with pytest.raises(InputError, match="not a plain file in the export's folder"):
         read_target_spectrum(folder / "hazard_curve-mean_SA(0.2).csv", TEN_IN_50, site=0)
+
+
+def test_a_uhs_column_with_a_probability_above_one_is_refused_at_its_column(tmp_path):
+    """Hostile-input campaign: a column '1.5~SA(0.2)' was accepted with a numpy warning on stderr."""
+    source = (DATA / "constructed-hazard_uhs-mean_1.csv").read_text().splitlines()
+    header = source[1].split(",")
+    column = next(i for i, name in enumerate(header) if "~SA(" in name)
+    header[column] = "1.5~" + header[column].split("~", 1)[1]
+    path = tmp_path / "hazard_uhs-mean_1.csv"
+    path.write_text("\n".join([source[0], ",".join(header)] + source[2:]) + "\n")
+    with pytest.raises(InputError) as error:
+        read_target_spectrum(path, parse_level("2in50"), site="HOSP")
+    problem = error.value.problems[0]
+    assert "not between 0 and 1" in problem.message and problem.column == f"{column + 1}"

@@ -277,6 +277,11 @@ def read_target_spectrum(path, level: HazardLevel, site=None) -> UniformHazardSp
     if not columns:
         raise _fail(path, "no column is a spectral value (<poe>~PGA, <poe>~SA(T), or PGA-<poe>, SA(T)-<poe>).",
                     line=header_line)
+    for i, match in columns:
+        if not 0.0 < float(match.group("poe")) < 1.0:
+            raise _fail(path, f"column {i + 1}'s probability of exceedance ({float(match.group('poe')):g}) is not "
+                        "between 0 and 1.", "export the spectra again from OpenQuake (poes in job.ini are "
+                        "probabilities in the investigation time).", line=header_line, column=i + 1)
     sites, values = _sites_and_values(path, header, rows, [i for i, _ in columns])
     index = _choose_site(path, sites, site)
     by_period: dict[float, list[tuple[float, float]]] = {}
