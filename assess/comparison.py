@@ -9,6 +9,8 @@ overturning share).
 from __future__ import annotations
 
 import math
+import re
+import stat
 from pathlib import Path
 
 import pandas as pd
@@ -28,18 +30,50 @@ COMPARISON_COLUMNS = ["id", "name", "risk_before", "risk_after", "change", "why"
     f"{column}_{when}" for column, _, _ in COMPARED for when in ("before", "after")]
 
 
+#: The largest previous summary read [bytes] and its most rows: a summary of this tool is about 1 kB an item,
+#: and a portfolio's building has at most tens of thousands of items.
+MAX_PREVIOUS_BYTES = 64 * 1024 * 1024
+MAX_PREVIOUS_ROWS = 100_000
+_FIX = "give the summary.csv of an earlier assess run."
+
+
 def read_previous_summary(path) -> pd.DataFrame:
-    """A previous run's ``summary.csv``; it must have ``id`` and ``risk`` columns."""
+    """A previous run's ``summary.csv``; it must have ``id`` and ``risk`` columns, a known class in every row.
+
+    Only a regular file is opened (a pipe would block the run and a device never end), of at most
+    :data:`MAX_PREVIOUS_BYTES` and :data:`MAX_PREVIOUS_ROWS` rows; a file that is not such a table is refused
+    by line, never quoting its contents.
+    """
     path = Path(path)
     try:
-        table = pd.read_csv(path, dtype={"id": str})
+        status = path.stat()
+    except OSError:
+        raise InputError([Problem(file=str(path), message="the previous summary does not exist.", fix=_FIX)]) from None
+    if not stat.S_ISREG(status.st_mode):
+        raise InputError([Problem(file=str(path), message="the previous summary is not a regular file (a folder, "
+                                  "a pipe or a device): it is not read.", fix=_FIX)])
+    if status.st_size > MAX_PREVIOUS_BYTES:
+        raise InputError([Problem(file=str(path), message=f"the previous summary is larger than "
+                                  f"{MAX_PREVIOUS_BYTES // 2**20} MB: it is not read.", fix=_FIX)])
+    try:
+        table = pd.read_csv(path, dtype={"id": str}, nrows=MAX_PREVIOUS_ROWS + 1)
     except (OSError, ValueError, pd.errors.ParserError) as error:
-        raise InputError([Problem(file=str(path), message=f"the previous summary cannot be read: {error}",
-                                  fix="give the summary.csv of an earlier assess run.")]) from None
+        line = re.search(r"line (\d+)", str(error))
+        where = f" (line {line.group(1)})" if line else ""
+        raise InputError([Problem(file=str(path), message=f"the previous summary is not a CSV table{where}.",
+                                  fix=_FIX)]) from None
+    if len(table) > MAX_PREVIOUS_ROWS:
+        raise InputError([Problem(file=str(path), message=f"the previous summary has more than "
+                                  f"{MAX_PREVIOUS_ROWS:,} rows.", fix=_FIX)])
     missing = [c for c in ("id", "risk") if c not in table]
     if missing:
         raise InputError([Problem(file=str(path), message=f"the previous summary has no {missing} column(s).",
-                                  fix="give the summary.csv of an earlier assess run.")])
+                                  fix=_FIX)])
+    unknown = ~table["risk"].isin(list(RISK_ORDER))
+    if unknown.any():
+        row = int(unknown.to_numpy().argmax()) + 2  # the header is line 1
+        raise InputError([Problem(file=str(path), message=f"line {row}: the risk class is not one of "
+                                  f"{', '.join(RISK_ORDER)}.", fix=_FIX, row=row, column="risk")])
     return table
 
 

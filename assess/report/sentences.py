@@ -278,15 +278,20 @@ def default_mu_text(summary: pd.DataFrame) -> str:
             + " ".join(groups) + " Measured values for the item on its floor narrow it (mu in the equipment sheet).")
 
 
+#: Most rows of the report's table of changes (comparison.csv holds them all): a previous summary of another
+#: building would otherwise lay out every item it had as "removed".
+MAX_CHANGE_ROWS = 200
+
+
 def changes(comparison) -> dict | None:
     """The rows of a comparison with a previous run whose risk class changed, for the report."""
     if comparison is None:
         return None
     changed = comparison[comparison["change"] != "same"]
-    return {"total": len(comparison), "same": int((comparison["change"] == "same").sum()),
+    return {"total": len(comparison), "same": int((comparison["change"] == "same").sum()), "changed": len(changed),
             "rows": [{"id": text(r["id"]), "name": text(r["name"]), "before": text(r["risk_before"]) or DASH,
                       "after": text(r["risk_after"]) or DASH, "change": text(r["change"]),
-                      "why": text(r["why"]) or DASH} for _, r in changed.iterrows()]}
+                      "why": text(r["why"]) or DASH} for _, r in changed.head(MAX_CHANGE_ROWS).iterrows()]}
 
 
 def case_outcomes(result: AssessmentResult) -> dict:
