@@ -392,7 +392,7 @@ def test_unknown_settings_key_suggests_the_closest(make_workbook):
 
 @pytest.mark.parametrize("key, value, expected", [
     ("zeta", "abc", "setting 'zeta': 'abc' is not a number"),
-    ("sigma", -0.4, "setting 'sigma' is '-0.4'; it lies between 0.01 and 2"),
+    ("sigma", -0.4, "setting 'sigma' is -0.4, outside 0.01 to 2; it lies between them"),
     ("risk_pf_high", 1.5, "setting 'risk_pf_high' is '1.5'; a probability threshold lies"),
     ("risk_pf_high", 0.15, "risk_pf_moderate '0.2' must be less than risk_pf_high '0.15'"),
     ("im_max", 1.0, "im_min '1.71' must be less than im_max '1'"),

@@ -89,6 +89,17 @@ def test_a_date_cell_is_read_as_its_date_and_a_number_as_text(tmp_path):
     assert inventory.settings["prepared_by"] == "A. Engineer" and inventory.settings["checked_by"] == ""
 
 
+@pytest.mark.parametrize("day_zero", [datetime.datetime(1899, 12, 30), datetime.time(0, 0)])
+def test_a_date_cell_holding_excels_day_zero_is_refused_at_its_cell(tmp_path, day_zero):
+    """Hostile-input campaign: a report_date of 1899-12-30 (a date cell holding 0) printed "00:00:00"."""
+    from assess.errors import InputError
+    sheets = job_sheets()
+    sheets["settings"] += [{"key": "report_date", "value": day_zero}]
+    with pytest.raises(InputError) as error:
+        read_workbook(write_workbook(tmp_path / "w.xlsx", sheets))
+    assert any("no date" in p.message and p.sheet == "settings" for p in error.value.problems)
+
+
 # --------------------------------------------------------------------------- axes
 def _is_number(text: str) -> bool:
     try:

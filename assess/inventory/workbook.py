@@ -624,6 +624,11 @@ def _setting_value(key: str, row: Row, default: object, header: Header, report: 
     """The value of one settings row (float for numeric keys), or None after reporting."""
     raw = row.values["value"]
     if not isinstance(default, (int, float)) or isinstance(default, bool):
+        if isinstance(raw, datetime.time) or (isinstance(raw, datetime.datetime) and raw.date() <= EXCEL_DAY_ZERO):
+            # a time of day, or Excel's day 0 (1899-12-30/31): a date cell holding 0, not a date anyone meant
+            report.at(row.number, header, f"setting '{key}' is a date cell holding no date (Excel's day 0 or a "
+                      "time of day).", "type the date (e.g. 2026-11-28), or text.")
+            return None
         text = "" if schema.is_empty(raw) else schema.parse_text(_date_text(raw), SETTINGS.column("value"))
         if len(text) > SETTING_TEXT_MAX_CHARS:
             report.at(row.number, header, f"setting '{key}' is {len(text):,} characters long "
@@ -641,6 +646,11 @@ def _setting_value(key: str, row: Row, default: object, header: Header, report: 
         report.at(row.number, header, f"setting '{key}': {error.message}",
                   f"type a plain number, or delete the row to use the default {default}.")
         return None
+
+
+#: The last day a date cell holding 0 (or a fraction of a day) shows: Excel's 1900 date system counts from
+#: 1899-12-30 (openpyxl reads 0 as that day, or as a time of day).
+EXCEL_DAY_ZERO = datetime.date(1899, 12, 31)
 
 
 def _date_text(value):
@@ -663,8 +673,8 @@ def _check_settings(merged: dict, user: dict, header: Header | None, report: She
     for key, (low, high, why) in SETTING_BOUNDS.items():
         if key in user and not low <= merged[key] <= high:
             bad.add(key)
-            report.at(user[key][1], header, f"setting '{key}' is {schema.quote(merged[key])}; "
-                      f"it lies between {low:g} and {high:g}: {why}.",
+            report.at(user[key][1], header, f"setting '{key}' is {merged[key]:g}, outside {low:g} to {high:g}; "
+                      f"it lies between them: {why}.",
                       f"correct it, or delete the row to use the default {defaults[key]:g}"
                       + (" (Konstantinidis & Makris 2010)." if key in _REGRESSION_SETTINGS else "."))
     for key in _PROBABILITY_SETTINGS:
