@@ -55,7 +55,7 @@ from assess.hazard.usgs import read_hazard_curve_file
 from assess.hazard.records import check_record_location
 from assess.inventory import read_workbook, schema, xlsx
 from assess.inventory.schema import Column, SheetSpec
-from assess.inventory.workbook import SheetReport, open_book, read_table, sheet_cells
+from assess.inventory.workbook import SheetReport, open_book, read_table, same_name_sheets, sheet_cells
 from assess.folders import (OUTPUT_NAMES, existing_folder, folder_mode, machine_refusal, refuse_foreign_files,
                             refuse_open_office_files, swap_folder, write_files)
 from assess.tables import csv_text, restore_text
@@ -133,8 +133,14 @@ def read_portfolio(path, *, allow_outside: bool = False) -> list[Building]:
     problems: list[Problem] = []
     report = SheetReport(given, None, problems)
     with open_book(path, report) as book:
-        by_lower = {title.strip().lower(): title for title in book.sheetnames}
-        title = by_lower.get(BUILDINGS.name)
+        same = same_name_sheets(book.sheetnames, BUILDINGS.name)
+        if len(same) > 1:
+            shown = " and ".join("'" + schema.clip(t, 40) + "'" for t in same[:4])
+            report(f"the sheets {shown} all name the {BUILDINGS.name} sheet (sheet names are matched ignoring "
+                   "case and spaces around them), so which one holds the table is not clear.",
+                   f"keep one sheet named '{BUILDINGS.name}': delete or rename the others.")
+            raise InputError(problems)
+        title = same[0] if same else None
         if title is None or not book.is_table(title):
             have = ", ".join(f"'{schema.clip(t, 40)}'" for t in book.sheetnames[:20])
             report(f"the portfolio has no sheet '{BUILDINGS.name}'; it has the sheets {have}.",

@@ -82,3 +82,30 @@ def test_a_fifo_named_like_a_workbook_does_not_hang(tmp_path):
     # the main command and a sheet portfolio that names it: refused too, not waiting for a writer
     assert_refused(run(folder / "bad.xlsx", "--hazard", "2in50", cwd=tmp_path, timeout=60), "bad.xlsx",
                    "not a regular file")
+
+
+def test_a_portfolio_with_two_buildings_sheets_is_refused(tmp_path):
+    """Second hostile-input campaign: sheets 'buildings' and 'BUILDINGS' ran (exit 0) on one of them; which
+    one holds the portfolio is not clear, as for a workbook's sheets. (openpyxl itself renames a second
+    'BUILDINGS' to 'BUILDINGS1', so the file is written with it and renamed in its workbook part.)"""
+    import zipfile
+    from openpyxl import Workbook
+    from assess.batch import read_portfolio
+    from assess.errors import InputError
+    book = Workbook()
+    book.active.title = "buildings"
+    book.create_sheet("XUILDINGS")
+    for sheet in book.worksheets:
+        sheet.append(["building", "workbook"])
+        sheet.append(["lab", "lab.xlsx"])
+    book.save(tmp_path / "written.xlsx")
+    with zipfile.ZipFile(tmp_path / "written.xlsx") as source, \
+            zipfile.ZipFile(tmp_path / "portfolio.xlsx", "w", zipfile.ZIP_DEFLATED) as target:
+        for part in source.infolist():
+            data = source.read(part.filename)
+            if part.filename == "xl/workbook.xml":
+                data = data.replace(b'name="XUILDINGS"', b'name="BUILDINGS"')
+            target.writestr(part, data)
+    with pytest.raises(InputError) as error:
+        read_portfolio(tmp_path / "portfolio.xlsx")
+    assert "'buildings' and 'BUILDINGS'" in error.value.problems[0].message
