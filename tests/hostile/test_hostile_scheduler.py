@@ -280,7 +280,11 @@ def test_tls_scheduler_from_dask_configuration(tls_cluster, certificates):
                           "distributed.comm.tls.client.cert": str(certificates / "node.pem"),
                           "distributed.comm.tls.client.key": str(certificates / "node.key")}):
         runner = DaskRunner.connect(tls_cluster.scheduler_address)
-    runner.close()
+    try:  # the certificates came from Dask's configuration alone: the client works on the TLS scheduler
+        assert runner.client.scheduler_info()["address"] == tls_cluster.scheduler_address
+        assert runner.client.submit(sum, [1, 2, 3]).result(timeout=30) == 6
+    finally:
+        runner.close()
 
 
 def test_tls_scheduler_refuses_without_or_with_wrong_certificates(tls_cluster, certificates):
