@@ -9,7 +9,7 @@ import pandas as pd
 from assess.costs import COST_COLUMNS
 from assess.hazard.levels import HazardLevel
 
-#: Columns of ``summary.csv`` in order, each documented in docs/outputs.md (tests/test_docs.py).
+#: Columns of ``summary.csv`` in order, each documented in docs/outputs.md (tests/project/test_docs.py).
 SUMMARY_COLUMNS = [
     "id", "name", "room", "floor", "quantity", "alpha_rad", "p_rad_s", "b_over_h",
     "governing_direction", "mu", "mode", "governing_motion", "pta_g", "tp_s", "im",
@@ -29,7 +29,7 @@ SUMMARY_COLUMNS = [
     "regression_applies", "regression_note",
 ] + COST_COLUMNS  # what failures cost and actions buy (assess/costs.py); empty where no value is given
 
-#: Columns of ``motions.csv`` in order, each documented in docs/outputs.md (tests/test_docs.py).
+#: Columns of ``motions.csv`` in order, each documented in docs/outputs.md (tests/project/test_docs.py).
 MOTION_COLUMNS = [
     "id", "motion", "direction", "pta_g", "tp_s", "im", "edp_median", "sliding_median_cm",
     "pf_sliding", "sim_sliding_max_cm", "sim_theta_max_over_alpha", "sim_overturned",

@@ -20,7 +20,7 @@ range slides farther than both ends (the ends then do not bracket the range),
 and, for ``may uplift``,
 how many change mode, how many overturn at some μ and not at a larger one
 (or the reverse). Not a test: numbers for the docs (the test of the claim is
-tests/test_friction_range.py).
+tests/fragility/test_friction_range.py).
 """
 from __future__ import annotations
 

@@ -16,7 +16,7 @@ import pytest
 
 from assess.report.pdf import ELSEWHERE, pdf_process, render_pdf, split_appendix
 from tests.commands import LAB, child_env
-from tests.test_report import html, result  # noqa: F401, F811 (test_report's fixtures: its sample result and report)
+from tests.report.test_report import html, result  # noqa: F401, F811 (test_report's fixtures: its sample result and report)
 
 pypdf = pytest.importorskip("pypdf")
 

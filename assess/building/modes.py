@@ -72,7 +72,7 @@ ALPHA_BY_SYSTEM = {
 #: Not the default here: that rule is for base shear and storey forces. A floor's acceleration
 #: carries the higher modes, which are not rigid under earthquake ground motion (a 12-storey shear
 #: building's 4th to 12th modes have periods of 0.09 to 0.25 s): with the 3 modes that reach 90 % of
-#: its mass, floor 1's history was 32 % (RMS) off OpenSees' (tests/test_building_opensees.py). Every
+#: its mass, floor 1's history was 32 % (RMS) off OpenSees' (tests/verification/test_building_opensees.py). Every
 #: mode is kept by default; one per storey costs little (11 motions x 12 floors: 40 ms).
 DEFAULT_MASS_FRACTION = 0.9
 #: Modal damping ratio by default.

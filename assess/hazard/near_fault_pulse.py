@@ -266,7 +266,7 @@ _READING_PHASES = 24
 
 
 #: The file of :func:`type_b_reading_table` at the synthesis' default γ 2.3 (``python -m
-#: assess.hazard.near_fault_pulse`` writes it; tests/test_synthesis.py recomputes it): the 24 fits take
+#: assess.hazard.near_fault_pulse`` writes it; tests/verification/test_synthesis.py recomputes it): the 24 fits take
 #: about 0.25 s, which every run that synthesises motions would spend again.
 READING_TABLE_FILE = "type_b_reading.json"
 

@@ -35,7 +35,7 @@ the records this tool reads are mostly processed already (PEER records, floor
 motions computed by a structural analysis, synthetic pulses), so the filter
 here need only remove drift, and near-fault pulses must survive it. At
 0.02 Hz a Type-B pulse keeps its peak velocity within 1 % and a Type-A pulse
-within 11 % for Tp up to 5 s (``tests/test_processing.py``); at 0.05 Hz a
+within 11 % for Tp up to 5 s (``tests/verification/test_processing.py``); at 0.05 Hz a
 Type-A pulse of Tp = 5 s would lose a quarter of it. A Type-A pulse has a
 permanent displacement (fling) that no high-pass filter keeps: for synthetic
 pulses use ``method="none"``. A raw record with a baseline shift inside it

@@ -43,7 +43,7 @@ the cells it parses, pads every row up to a stray cell at row 1,048,576, turns
 a formula without a cached value into an empty cell and raises half-way
 through on a damaged cell, so it cannot give what this module promises. The
 dependency is pinned to the tested openpyxl 3.1 (``openpyxl>=3.1,<3.2``) and
-``tests/test_xlsx_openpyxl.py`` fails, naming what is missing, when a version
+``tests/inventory/test_xlsx_openpyxl.py`` fails, naming what is missing, when a version
 lacks any of these names.
 """
 from __future__ import annotations

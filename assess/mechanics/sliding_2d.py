@@ -51,7 +51,7 @@ When the floor motion stays on one line (one component, or both proportional)
 the velocity never turns and the kernel is the one-way exact kernel, step for
 step: agreement to round-off (4e-15 on pyslammer's 18 records) with
 :func:`assess.mechanics.sliding.sliding_response`. In the plane the error comes
-from holding the direction in a substep; measured (tests/test_sliding_2d.py)
+from holding the direction in a substep; measured (tests/verification/test_sliding_2d.py)
 with the default 1 ms substep: the steady circle of a circular floor motion
 within 4e-5 of its closed form; on 18 pairs of real records × 3 μ, peaks within
 1.5e-3 (median 5e-5) of a run with 16 times finer substeps, and within 1.5e-3 of

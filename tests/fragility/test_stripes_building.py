@@ -1,0 +1,202 @@
+"""Stripes of ground acceleration through the building (assess/fragility/ground_stripes.py).
+
+With a site and a building, the hazard curve's stripes scale the level's ground suite to PGAs fixed in
+advance (0.05 to 2 g), pass each scaled ground history through the building to the items' floors and
+fit each item's fragility in PGA. Checked here against what the code under test does not compute: the
+floor histories the engine is handed against the building's modes applied here to the PGA-scaled ground
+histories (built from the building sheet's numbers directly), the stripes against 0.05-2 g spaced in ln
+PGA, the exported demand against pelicun's library name, and the rates of two levels of different
+amplitude against each other (one rate per item), a curve update against a runner that counts.
+"""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from assess.building import building_modes
+from assess.building.response import floor_records
+from assess.cache import CachingRunner
+from assess.assessment.motions import level_motions
+from assess.fragility.stripes import fragility_files
+from assess.hazard.openquake import read_openquake_hazard
+from assess.hazard.records import Record
+from assess.inventory import read_workbook
+from assess.mechanics.gateway import PEAKS, LocalRunner, RunnerBase
+from assess.pipeline import run_assessment
+from tests.assessment.test_floor_motions import BUILDING, EQUIPMENT, SITE
+from workbooks import write_workbook
+
+REPO = Path(__file__).resolve().parents[2]
+CURVE = REPO / "inventories" / "lab-hazard-curve.csv"
+
+
+def _uhs_text() -> str:
+    """A uniform-hazard spectrum in OpenQuake 3.26's layout (tests/data/openquake/constructed-hazard_uhs-mean_1.csv)
+    out to 5 s, of a smooth code-like shape (SA/PGA rising to 2.5 at 0.2-0.3 s, then falling about as 1/T),
+    PGA 0.3 g at 10 % in 50 years and 0.75 g at 1 %."""
+    shape = {0.0: 1.0, 0.05: 1.6, 0.1: 2.1, 0.2: 2.5, 0.3: 2.5, 0.5: 2.2, 0.75: 1.6, 1.0: 1.2, 1.5: 0.8,
+             2.0: 0.6, 3.0: 0.4, 4.0: 0.3, 5.0: 0.24}
+    names = ["PGA" if t == 0.0 else f"SA({t})" for t in shape]
+    header = ["custom_site_id", "lon", "lat"] + [f"{poe}~{n}" for poe in (0.1, 0.01) for n in names]
+    values = [f"{pga * ratio:.6E}" for pga in (0.3, 0.75) for ratio in shape.values()]
+    meta = "\"generated_by='OpenQuake engine 3.26.0', kind='mean', investigation_time=50.0\""
+    return "\n".join(["#" + "," * (len(header) - 1) + meta, ",".join(header),
+                      ",".join(["LAB", "-122.30000", "37.90000"] + values)]) + "\n"
+
+
+#: The stripes' PGAs, from the documented rule: 10 values from 0.05 to 2 g evenly in ln PGA.
+STRIPES_G = np.exp(np.linspace(np.log(0.05), np.log(2.0), 10))
+PREFIX = "fragility in PGA (ground), through the building"
+
+
+class Recording(RunnerBase):
+    """A runner that keeps every batch it is handed and counts the ``peaks`` cases."""
+
+    def __init__(self):
+        self.inner, self.batches, self.peaks = LocalRunner(), [], 0
+        self.cases_simulated, self.runs_simulated = 0, {}
+
+    def run(self, cases, *, progress=None):
+        self.batches.append(cases)
+        if cases.kind == PEAKS:
+            self.peaks += len(cases)
+        self._count(cases, len(cases))
+        return self.inner.run(cases, progress=progress)
+
+
+def _sheets(site=SITE):
+    return {"equipment": [dict(item) for item in EQUIPMENT], "site": site, "building": BUILDING}
+
+
+@pytest.fixture(scope="module")
+def de_run(tmp_path_factory):
+    """Level DE of the hospital of tests/assessment/test_floor_motions.py, with the lab's curve, through a cache."""
+    folder = tmp_path_factory.mktemp("stripes")
+    path = write_workbook(folder / "h.xlsx", _sheets())
+    recording = Recording()
+    runner = CachingRunner(recording, folder / "cache")
+    result = run_assessment(read_workbook(path), "DE", seed=3, hazard_curve=read_openquake_hazard(CURVE),
+                            runner=runner)
+    return path, folder, recording, result
+
+
+def test_the_stripes_floor_histories_are_the_pga_scaled_ground_suite_through_the_building(de_run):
+    path, _, recording, result = de_run
+    level = level_motions(read_workbook(path), "DE", lambda m: None, seed=3)
+    ground = [level.records[key] for key in level.table.loc[level.table["floor"] == 0, "record_path"]]
+    assert len(ground) == 3
+    # the building sheet's numbers: 2 storeys of 4 m, T1 0.3 s, 5 % damping (docs/workbook.md defaults)
+    modes = building_modes(2, 4.0, system="other", period_s=0.3, damping=0.05)
+    expected = {0: [], 1: [], 2: []}
+    for x in STRIPES_G:
+        scaled = [Record(g.accel_g * (x / np.max(np.abs(g.accel_g))), g.dt_s, g.name) for g in ground]
+        through = floor_records(modes, scaled, floors=[1, 2])
+        expected[0] += [s.accel_g for s in scaled]
+        expected[1] += [r.accel_g for r in through[1]]
+        expected[2] += [r.accel_g for r in through[2]]
+    # the first batch of stripes: the one after the level's own runs (18 cases); every item under its floor
+    stripes = [b for b in recording.batches if b.kind == PEAKS][1]
+    assert len(stripes) == 3 * 2 * 10 * 3  # items x directions x stripes x ground motions
+    height_of = {round(item["height_cm"] / 100.0, 6): item["floor"] for item in EQUIPMENT}
+    used = {0: [], 1: [], 2: []}
+    for block, k in zip(stripes.blocks, stripes.record_index):
+        used[height_of[round(block.height_m, 6)]].append(stripes.records_g[int(k)])
+    for floor in (0, 1, 2):
+        want = expected[floor]
+        assert len(used[floor]) == 2 * len(want)  # both base directions under the same history
+        for got in used[floor]:
+            errors = [np.max(np.abs(got - w)) / np.max(np.abs(w)) for w in want if w.size == got.size]
+            assert min(errors) < 1e-12, floor
+        for w in want:  # and every expected history is run
+            assert any(g.size == w.size and np.max(np.abs(g - w)) <= 1e-12 * np.max(np.abs(w)) for g in used[floor])
+
+
+def test_the_fragility_is_in_pga_and_exported_as_pelicuns_peak_ground_acceleration(de_run):
+    _, _, _, result = de_run
+    curve = result.curve_risk
+    assert curve.intensity == "PGA"
+    table = curve.table.set_index("id")
+    assert (table["pfa_per_pga"] == 1.0).all()
+    assert all(note.startswith(PREFIX + ", from the stripes of level DE's suite") for note in table["curve_note"])
+    for item_id in ("G-1", "M-1", "R-2"):  # the ten stripes are the PGAs themselves, whatever the floor
+        levels = np.sort(curve.stripes.query("id == @item_id")["pfa_g"].unique())
+        assert all(np.isclose(levels, x, rtol=1e-12).any() for x in STRIPES_G), item_id
+    files = fragility_files(curve, result.summary)
+    csv = pd.read_csv(pd.io.common.BytesIO(files["fragility/fragility.csv"]))
+    assert set(csv["Demand-Type"]) == {"Peak Ground Acceleration"}  # the DLML's name of PGA
+    meta = json.loads(files["fragility/fragility.json"])
+    comments = [meta[c]["Comments"] for c in meta if c != "_GeneralInformation"]
+    assert comments and all("Fragility in PGA (ground), through the building" in c for c in comments)
+    assert files["fragility/stripes.csv"].startswith(b"id,mode,pga_g,")
+
+
+def _updated_curve(folder: Path) -> Path:
+    """The lab curve with every probability 20 % higher (a hazard model update)."""
+    lines = CURVE.read_text().splitlines()
+    values = lines[2].split(",")
+    lines[2] = ",".join(values[:3] + [f"{min(1.0, float(v) * 1.2):.6E}" for v in values[3:]])
+    path = folder / "updated-curve.csv"
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+
+def what_if_runs(result) -> int:
+    """The runs of the actions' what-if (assess.actions): every case of an item that rocks or overturns
+    (centre of mass above lower_contents_cg_fraction of its height) again, under each of its histories."""
+    motions, summary = result.motions, result.summary.set_index("id")
+    rocks = set(motions.loc[motions["sim_uplift"].astype(bool), "id"]) | set(summary.index[summary["p_overturn"] > 0])
+    return int(motions.loc[motions["id"].isin(rocks), "sim_realizations"].sum())
+
+def test_a_curve_update_reintegrates_without_simulating(de_run):
+    path, folder, first, result = de_run
+    # the level's cases, the stripes and the actions' what-if: all simulated once
+    assert first.peaks == 18 + result.curve_risk.runs + what_if_runs(result)
+    again = CachingRunner(Recording(), folder / "cache")  # a new process reads the cache
+    updated = run_assessment(read_workbook(path), "DE", seed=3,
+                             hazard_curve=read_openquake_hazard(_updated_curve(folder)), runner=again)
+    assert again.inner.peaks == 0 and again.cases_simulated == 0
+    before, after = result.curve_risk.table.set_index("id"), updated.curve_risk.table.set_index("id")
+    for item_id, fit in result.curve_risk.fits.items():
+        again_fit = updated.curve_risk.fits[item_id]
+        assert (again_fit.status, again_fit.median_g, again_fit.beta) == (fit.status, fit.median_g, fit.beta)
+    fitted = before["annual_rate_beyond_clearance"].notna()
+    assert fitted.any() and (after.loc[fitted, "annual_rate_beyond_clearance"]
+                             > before.loc[fitted, "annual_rate_beyond_clearance"]).all()
+
+
+@pytest.fixture(scope="module")
+def two_levels(tmp_path_factory):
+    """``--hazard 2in50,10in50 --oq-hazard`` the lab curve, the ground suites from the site's uniform-hazard
+    spectrum, through the job (every level computed before any is written)."""
+    from assess import job as job_module
+
+    folder = tmp_path_factory.mktemp("levels")
+    site = [["key", "value"], ["uhs", "oq/uhs.csv"], ["oq_site", "LAB"], ["suite_size", 3]]
+    path = write_workbook(folder / "h.xlsx", _sheets(site), files={"oq/uhs.csv": _uhs_text()})
+    recording = Recording()
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(job_module, "engine_runner", lambda scheduler, tls=None: recording)
+        outputs = list(job_module.run_job(job_module.AssessmentJob(
+            workbook=path, hazard="2in50,10in50", out=folder / "out", formats=(), oq_hazard=CURVE, seed=3)))
+    return [o.result for o in outputs], recording
+
+
+def test_two_levels_give_one_annual_rate_per_item(two_levels):
+    (first, second), recording = two_levels
+    ground = [r.ground_motions.set_index("motion")["pga_g"].to_numpy() for r in (first, second)]
+    assert np.median(ground[0]) > 1.5 * np.median(ground[1])  # suites of different amplitude
+    columns = ["annual_rate_beyond_clearance", "annual_rate_overturn", "p50yr_beyond_clearance",
+               "p50yr_overturn", "curve_note"]
+    a, b = (r.summary.set_index("id")[columns] for r in (first, second))
+    pd.testing.assert_frame_equal(a, b)
+    assert a["annual_rate_beyond_clearance"].notna().any()
+    assert all(note.startswith(f"{PREFIX}, from the stripes of level {first.level_label}'s suite")
+               for note in a["curve_note"])
+    # the stripes ran once: the two levels' own cases (3 items x 3 motions x 2 directions each) and one set
+    assert recording.peaks == 2 * 18 + first.curve_risk.runs + what_if_runs(first) + what_if_runs(second)
+    assert second.curve_risk is first.curve_risk
