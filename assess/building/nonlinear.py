@@ -50,11 +50,18 @@ from scipy.linalg import eigh
 from .hysteresis import BILINEAR, LAWS, bilinear_trial, pinching_trial
 
 GRAVITY_M_S2 = 9.80665
-#: Longest substep [s] of the integration by default.
+#: Longest substep [s] of the integration by default, and the fewest substeps per period of the
+#: stick's shortest elastic mode (Newmark's period error is (π²/12)(Δt/T)², Chopra [1]_ §5.5:
+#: 5e-3 at 40 steps; a stiff flexural mode of 0.02 s otherwise drifts out of phase in a long record).
 DEFAULT_SUBSTEP_S = 0.001
+STEPS_PER_SHORTEST_PERIOD = 40
 #: Newton's tolerance on the norm of the displacement correction [m] and its iteration cap.
 TOLERANCE_M = 1e-12
 MAX_ITERATIONS = 50
+#: Post-yield stiffness ratio b of the storey springs by default: 3 %, within the 2-5 % of the
+#: storey pushover curves of code-designed frames (e.g. FEMA P-695 archetypes) and the usual
+#: Steel01 choice; P-Delta, where asked, lowers the storeys' net post-yield stiffness further.
+DEFAULT_HARDENING = 0.03
 
 
 @dataclass(frozen=True)
@@ -186,8 +193,10 @@ def p_delta_stiffness(floor_masses_kg, storey_heights_m):
 
     (The linearised P-Delta effect of a shear building, e.g. Chopra [1]_ §18.6.)
 
+    Two floors of 1 kg, storeys g metres high: P/h = 2 and 1 N/m, so -[[2 + 1, -1], [-1, 1]]:
+
     >>> p_delta_stiffness([1.0, 1.0], [9.80665, 9.80665]).round(6).tolist()
-    [[-1.0, 1.0], [1.0, -1.0]]
+    [[-3.0, 1.0], [1.0, -1.0]]
     """
     masses = np.asarray(floor_masses_kg, dtype=float)
     above = np.cumsum(masses[::-1])[::-1] * GRAVITY_M_S2
@@ -356,7 +365,8 @@ def yielding_response(stick: YieldingStick, ground_accel_g, dt_s, *, substep_s=D
     dt_s : float
         Record step [s].
     substep_s : float
-        Longest integration step [s]; ``substeps`` (per record step) overrides it.
+        Longest integration step [s] (shortened to 1/:data:`STEPS_PER_SHORTEST_PERIOD` of the
+        stick's shortest elastic period); ``substeps`` (per record step) overrides both.
 
     Returns
     -------
@@ -364,7 +374,8 @@ def yielding_response(stick: YieldingStick, ground_accel_g, dt_s, *, substep_s=D
     """
     ground = np.ascontiguousarray(ground_accel_g, dtype=float)
     if substeps is None:
-        substeps = substeps_for(dt_s, substep_s)
+        shortest = float(elastic_periods(stick)[-1]) / STEPS_PER_SHORTEST_PERIOD
+        substeps = substeps_for(dt_s, min(substep_s, shortest))
     if stick.law not in LAWS:
         raise ValueError(f"law must be one of {', '.join(LAWS)}, not {stick.law!r}")
     if stick.damping_stiffness not in ("tangent", "initial"):
@@ -382,3 +393,87 @@ def yielding_response(stick: YieldingStick, ground_accel_g, dt_s, *, substep_s=D
                             peak_drift_ratio=peak / np.asarray(stick.storey_heights_m, dtype=float),
                             ductility=peak / stick.yield_drift_m, unconverged_steps=int(unconverged))
 
+
+
+def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="other", period_s=None, alpha=None,
+                   storey_stiffness=None, floor_masses_kg=None, law=None, hardening=None, damping=0.05,
+                   rayleigh_modes=(1, 3), flexure="equivalent shear", p_delta=False,
+                   damping_stiffness="tangent") -> YieldingStick:
+    """The yielding stick of a building described as :func:`~assess.building.modes.building_modes` takes it.
+
+    Parameters
+    ----------
+    storeys, storey_height_m, system, period_s, alpha, storey_stiffness :
+        As :func:`~assess.building.modes.building_modes`: the elastic model whose stiffness
+        (scaled to T_1) the springs start from.
+    storey_yield_ratio : array-like, (n,)
+        Each storey's yield shear over the building's weight [-]
+        (:func:`~assess.building.design.design_strength`).
+    floor_masses_kg : array-like, optional
+        Floor masses (equal, 10⁵ kg, by default; accelerations and drifts do not depend on the scale).
+    law : str, optional
+        ``"bilinear"`` or ``"pinching"``; by default the system's
+        (:data:`~assess.building.design.LAW_BY_SYSTEM`).
+    hardening : float, optional
+        Post-yield stiffness ratio b; :data:`DEFAULT_HARDENING`.
+    damping : float
+        ζ of the Rayleigh damping at ``rayleigh_modes`` of the elastic model.
+    flexure : str
+        ``"equivalent shear"`` (default): a shear stick whose storey stiffness is the
+        elastic model's under the code's lateral forces (k_i = V_i/Δ_i, then scaled to
+        T_1): every storey yields at its own storey shear, the elastic limit is a shear
+        building with the same T_1 and drift profile under those forces (identical to the
+        elastic model for a shear building, α = ∞). ``"elastic column"``: the elastic
+        model's flexural column kept beside the springs, linear: the elastic limit is the
+        elastic model itself, but the column never yields, so a flexure-dominated
+        building (small α) then barely yields (its springs carry 2-40 % of the lower
+        storeys' shear at α = 1).
+    p_delta : bool
+        Add the gravity loads' geometric stiffness (:func:`p_delta_stiffness`); T_1 stays that without it.
+    """
+    from .design import LAW_BY_SYSTEM, vertical_distribution
+    from .modes import ALPHA_BY_SYSTEM, stiffness_matrix
+    from .period import approximate_period
+
+    n = int(storeys)
+    heights = np.broadcast_to(np.asarray(storey_height_m, dtype=float), (n,)).copy()
+    floor_heights = np.cumsum(heights)
+    masses = np.full(n, 1.0e5) if floor_masses_kg is None else np.asarray(floor_masses_kg, dtype=float)
+    alpha = ALPHA_BY_SYSTEM[system] if alpha is None else float(alpha)
+    if alpha == 0.0:
+        raise ValueError("a flexural cantilever (alpha 0) has no storey springs to yield")
+    if period_s is None:
+        period_s = approximate_period(floor_heights[-1], system)
+    relative = np.ones(n) if storey_stiffness is None else np.asarray(storey_stiffness, dtype=float)
+    full = stiffness_matrix(n, float(np.mean(heights)), alpha, relative)
+    forces = vertical_distribution(masses, floor_heights, period_s)
+    shears = np.cumsum(forces[::-1])[::-1]
+    if flexure == "equivalent shear":
+        drifts = np.diff(np.concatenate([[0.0], np.linalg.solve(full, forces)]))
+        springs = shears / drifts
+        linear = np.zeros((n, n))
+        share = np.ones(n)
+    elif flexure == "elastic column":
+        springs = relative
+        linear = full - shear_chain_matrix(relative)
+        drifts = np.diff(np.concatenate([[0.0], np.linalg.solve(full, forces)]))
+        share = springs * drifts / shears
+    else:
+        raise ValueError("flexure must be 'equivalent shear' or 'elastic column'")
+    omega2 = eigh(shear_chain_matrix(springs) + linear, np.diag(masses), eigvals_only=True)
+    scale = (2.0 * np.pi / np.sqrt(omega2[0]) / float(period_s)) ** 2
+    springs, linear = springs * scale, linear * scale
+    periods = 2.0 * np.pi / np.sqrt(omega2 * scale)
+    if p_delta:
+        linear = linear + p_delta_stiffness(masses, heights)
+    weight = masses.sum() * GRAVITY_M_S2
+    yield_force = np.asarray(storey_yield_ratio, dtype=float) * weight * share
+    if yield_force.shape != (n,) or np.any(~(yield_force > 0.0)):
+        raise ValueError("storey_yield_ratio must give one positive ratio per storey")
+    law = LAW_BY_SYSTEM[system] if law is None else law
+    return YieldingStick(floor_masses_kg=masses, storey_heights_m=heights, stiffness_n_m=springs,
+                         yield_force_n=yield_force,
+                         hardening=np.full(n, DEFAULT_HARDENING if hardening is None else float(hardening)),
+                         law=law, linear_stiffness_n_m=linear,
+                         rayleigh=rayleigh_coefficients(periods, damping, rayleigh_modes),
+                         damping_stiffness=damping_stiffness)
