@@ -189,3 +189,30 @@ def test_design_strength_seattle_hospital_and_given_yield():
     assert given.yield_base_shear_g == 0.4 and given.seismic_response_coefficient is None
     with pytest.raises(ValueError, match="S_DS"):
         design_strength("shear wall", np.ones(5), 4.5 * np.arange(1, 6), 0.6)
+
+
+@pytest.mark.parametrize("storeys, period_s, system", [(3, 0.35, "steel moment frame"), (6, 0.70, "braced frame"),
+                                                       (12, 1.40, "concrete moment frame")])
+def test_modal_damping_elastic_limit_is_todays_route(storeys, period_s, system):
+    """With ζ in every mode (the elastic route's default damping) and the frames' elastic column, a stick
+    that stays elastic gives the elastic route's own floor histories (building_modes as it is called today)."""
+    rng = np.random.default_rng(11)
+    ground = np.convolve(rng.normal(scale=0.2, size=1500), np.ones(5) / 5, mode="same")
+    stick = yielding_stick(storeys, 3.5, np.full(storeys, 100.0), system=system, period_s=period_s,
+                           damping_model="modal")
+    assert stick.rayleigh == (0.0, 0.0)
+    ours = yielding_response(stick, ground, 0.01)
+    theirs = floor_accelerations(building_modes(storeys, 3.5, system=system, period_s=period_s), ground, 0.01)
+    error = np.sqrt(np.mean((ours.floor_accel_g - theirs) ** 2, axis=1)[1:] / np.mean(theirs ** 2, axis=1)[1:])
+    assert error.max() <= 0.01, error
+
+
+def test_modal_damping_matrix_gives_the_ratio_in_every_mode():
+    from assess.building.modes import shear_stiffness_matrix
+    from assess.building.nonlinear import modal_damping_matrix
+    from scipy.linalg import eigh
+    stiffness, masses = shear_stiffness_matrix([3.0, 2.0, 1.0]), np.array([1.0, 2.0, 1.5])
+    damping = modal_damping_matrix(stiffness, masses, 0.07)
+    omega2, shapes = eigh(stiffness, np.diag(masses))
+    modal = shapes.T @ damping @ shapes  # Φᵀ C Φ = diag(2 ζ ω) for mass-normalised shapes
+    np.testing.assert_allclose(modal, np.diag(2 * 0.07 * np.sqrt(omega2)), atol=1e-12)

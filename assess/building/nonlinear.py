@@ -62,6 +62,19 @@ MAX_ITERATIONS = 50
 #: storey pushover curves of code-designed frames (e.g. FEMA P-695 archetypes) and the usual
 #: Steel01 choice; P-Delta, where asked, lowers the storeys' net post-yield stiffness further.
 DEFAULT_HARDENING = 0.03
+#: How the stick carries the elastic model's flexure, per system (:func:`yielding_stick`): frames and
+#: braced frames yield in a storey mechanism while their overall flexure (the columns' axial
+#: strains) stays elastic, so their column is kept elastic beside the yielding springs; a wall
+#: yields in flexure at its base, which a stick of storey springs can only stand in for with an
+#: equivalent shear stick.
+FLEXURE_BY_SYSTEM = {
+    "steel moment frame": "elastic column",
+    "concrete moment frame": "elastic column",
+    "eccentrically braced frame": "elastic column",
+    "braced frame": "elastic column",
+    "shear wall": "equivalent shear",
+    "other": "equivalent shear",
+}
 
 
 @dataclass(frozen=True)
@@ -90,6 +103,10 @@ class YieldingStick:
         Parameters of the pinching law.
     damping_stiffness : str
         ``"tangent"`` (at the start of each step) or ``"initial"``.
+    modal_damping_n_s_m : ndarray (n, n), optional
+        A constant damping matrix added to the Rayleigh one (:func:`modal_damping_matrix`).
+    bending_rigidity_n_m2 : float, optional
+        EI of the elastic column whose condensed stiffness is ``linear_stiffness_n_m`` (record only).
     """
 
     floor_masses_kg: np.ndarray
@@ -104,6 +121,8 @@ class YieldingStick:
     pinch_y: float = 0.4
     unloading_beta: float = 0.4
     damping_stiffness: str = "tangent"
+    modal_damping_n_s_m: np.ndarray | None = None
+    bending_rigidity_n_m2: float | None = None
 
     @property
     def storeys(self) -> int:
@@ -165,6 +184,25 @@ def rayleigh_modal_damping(periods_s, a0, a1):
     """ζ_j = a_0/(2ω_j) + a_1 ω_j/2 of each mode [-] (for the elastic modal route)."""
     omega = 2.0 * np.pi / np.asarray(periods_s, dtype=float)
     return a0 / (2.0 * omega) + a1 * omega / 2.0
+
+
+def modal_damping_matrix(stiffness_n_m, floor_masses_kg, damping=0.05):
+    """Damping matrix [N s/m] giving ζ in every mode of (K, M): C = M Φ diag(2ζω_j) Φᵀ M, ΦᵀMΦ = I.
+
+    (Chopra [1]_ §11.5; OpenSees' ``modalDamping`` builds the same from the initial
+    stiffness.) Constant: as the springs yield it keeps the initial modes' damping.
+
+    Examples
+    --------
+    One degree of freedom, k = 4 N/m, m = 1 kg (ω = 2 rad/s), 5 %: c = 2 × 0.05 × 2 = 0.2 N s/m:
+
+    >>> modal_damping_matrix([[4.0]], [1.0]).round(12).tolist()
+    [[0.2]]
+    """
+    masses = np.asarray(floor_masses_kg, dtype=float)
+    omega2, shapes = eigh(np.asarray(stiffness_n_m, dtype=float), np.diag(masses))
+    mass_shapes = masses[:, None] * shapes
+    return mass_shapes @ np.diag(2.0 * damping * np.sqrt(omega2)) @ mass_shapes.T
 
 
 def shear_chain_matrix(storey_stiffness):
@@ -240,7 +278,7 @@ def _spring_states(u, law, committed, trial, k0, fy, hardening, pinch_x, pinch_y
 
 @njit(cache=True)
 def _history(ground_g, dt_s, substeps, masses, k0, fy, hardening, law, pinch_x, pinch_y, beta,
-             k_lin, a0, a1, damping_on_initial, tolerance, max_iterations):  # pragma: no cover - compiled
+             k_lin, c_extra, a0, a1, damping_on_initial, tolerance, max_iterations):  # pragma: no cover - compiled
     n = masses.size
     n_samples = ground_g.size
     g = 9.80665
@@ -283,7 +321,7 @@ def _history(ground_g, dt_s, substeps, masses, k0, fy, hardening, law, pinch_x, 
             # damping matrix C = a0 M + a1 (K_springs + K_lin), springs at their committed (or initial) tangent
             for r in range(n):
                 for c in range(n):
-                    damping[r, c] = a1 * k_lin[r, c]
+                    damping[r, c] = a1 * k_lin[r, c] + c_extra[r, c]
                 damping[r, r] += a0 * masses[r]
             for s in range(n):
                 ks = a1 * (k0[s] if damping_on_initial else damping_tangent[s])
@@ -386,7 +424,9 @@ def yielding_response(stick: YieldingStick, ground_accel_g, dt_s, *, substep_s=D
         np.ascontiguousarray(stick.stiffness_n_m, dtype=float), np.ascontiguousarray(stick.yield_force_n, dtype=float),
         np.ascontiguousarray(np.broadcast_to(stick.hardening, (n,)), dtype=float), LAWS[stick.law],
         float(stick.pinch_x), float(stick.pinch_y), float(stick.unloading_beta),
-        np.ascontiguousarray(stick.linear_stiffness_n_m, dtype=float), float(stick.rayleigh[0]),
+        np.ascontiguousarray(stick.linear_stiffness_n_m, dtype=float),
+        np.zeros((n, n)) if stick.modal_damping_n_s_m is None
+        else np.ascontiguousarray(stick.modal_damping_n_s_m, dtype=float), float(stick.rayleigh[0]),
         float(stick.rayleigh[1]), stick.damping_stiffness == "initial", TOLERANCE_M, MAX_ITERATIONS)
     peak = np.abs(drift).max(axis=1)
     return YieldingResponse(floor_accel_g=accel, drift_m=drift,
@@ -397,8 +437,8 @@ def yielding_response(stick: YieldingStick, ground_accel_g, dt_s, *, substep_s=D
 
 def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="other", period_s=None, alpha=None,
                    storey_stiffness=None, floor_masses_kg=None, law=None, hardening=None, damping=0.05,
-                   rayleigh_modes=(1, 3), flexure="equivalent shear", p_delta=False,
-                   damping_stiffness="tangent") -> YieldingStick:
+                   rayleigh_modes=(1, 3), flexure=None, p_delta=False,
+                   damping_stiffness="tangent", damping_model="rayleigh") -> YieldingStick:
     """The yielding stick of a building described as :func:`~assess.building.modes.building_modes` takes it.
 
     Parameters
@@ -417,9 +457,14 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
     hardening : float, optional
         Post-yield stiffness ratio b; :data:`DEFAULT_HARDENING`.
     damping : float
-        ζ of the Rayleigh damping at ``rayleigh_modes`` of the elastic model.
-    flexure : str
-        ``"equivalent shear"`` (default): a shear stick whose storey stiffness is the
+        ζ of the Rayleigh damping at ``rayleigh_modes`` of the elastic model, or of every
+        mode with ``damping_model="modal"``.
+    damping_model : str
+        ``"rayleigh"`` (default: a_0 M + a_1 K_T, see the module's text) or ``"modal"``
+        (:func:`modal_damping_matrix` of the initial stiffness, ζ in every mode as the elastic
+        route takes it: then the elastic limit is the elastic route's answer itself).
+    flexure : str, optional
+        By default the system's (:data:`FLEXURE_BY_SYSTEM`). ``"equivalent shear"``: a shear stick whose storey stiffness is the
         elastic model's under the code's lateral forces (k_i = V_i/Δ_i, then scaled to
         T_1): every storey yields at its own storey shear, the elastic limit is a shear
         building with the same T_1 and drift profile under those forces (identical to the
@@ -436,6 +481,7 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
     from .period import approximate_period
 
     n = int(storeys)
+    flexure = FLEXURE_BY_SYSTEM[system] if flexure is None else flexure
     heights = np.broadcast_to(np.asarray(storey_height_m, dtype=float), (n,)).copy()
     floor_heights = np.cumsum(heights)
     masses = np.full(n, 1.0e5) if floor_masses_kg is None else np.asarray(floor_masses_kg, dtype=float)
@@ -463,6 +509,9 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
     omega2 = eigh(shear_chain_matrix(springs) + linear, np.diag(masses), eigvals_only=True)
     scale = (2.0 * np.pi / np.sqrt(omega2[0]) / float(period_s)) ** 2
     springs, linear = springs * scale, linear * scale
+    bending = None
+    if flexure == "elastic column" and np.isfinite(alpha):
+        bending = float(scale * relative[0] * np.mean(heights) * (n * np.mean(heights)) ** 2 / alpha ** 2)
     periods = 2.0 * np.pi / np.sqrt(omega2 * scale)
     if p_delta:
         linear = linear + p_delta_stiffness(masses, heights)
@@ -471,9 +520,17 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
     if yield_force.shape != (n,) or np.any(~(yield_force > 0.0)):
         raise ValueError("storey_yield_ratio must give one positive ratio per storey")
     law = LAW_BY_SYSTEM[system] if law is None else law
+    if damping_model == "rayleigh":
+        rayleigh, modal = rayleigh_coefficients(periods, damping, rayleigh_modes), None
+    elif damping_model == "modal":
+        rayleigh = (0.0, 0.0)
+        modal = modal_damping_matrix(shear_chain_matrix(springs) + linear - (p_delta_stiffness(masses, heights)
+                                                                             if p_delta else 0.0), masses, damping)
+    else:
+        raise ValueError("damping_model must be 'rayleigh' or 'modal'")
     return YieldingStick(floor_masses_kg=masses, storey_heights_m=heights, stiffness_n_m=springs,
                          yield_force_n=yield_force,
                          hardening=np.full(n, DEFAULT_HARDENING if hardening is None else float(hardening)),
                          law=law, linear_stiffness_n_m=linear,
-                         rayleigh=rayleigh_coefficients(periods, damping, rayleigh_modes),
-                         damping_stiffness=damping_stiffness)
+                         rayleigh=rayleigh, damping_stiffness=damping_stiffness, modal_damping_n_s_m=modal,
+                         bending_rigidity_n_m2=bending)

@@ -4,7 +4,8 @@ A chain of ``zeroLength`` storey springs (``-doRayleigh 1``) whose material is `
 (F_y, k_0, b; no isotropic hardening) for the bilinear law or ``Hysteretic`` (a bilinear
 backbone F_y at F_y/k_0, then slope b k_0 to 100 yield drifts; pinchX, pinchY, no damage,
 β) for the pinching law; Rayleigh damping a_0 M + a_1 K on the committed tangent
-(``rayleigh(a0, 0, 0, a1)``: betaKcomm); Newmark average acceleration with Newton
+(``rayleigh(a0, 0, 0, a1)``: betaKcomm); with the stick's EI, an elastic column
+(``elasticBeamColumn``, axially rigid) beside the springs, tied at the floors; Newmark average acceleration with Newton
 iterations (``NormDispIncr`` 1e-12) at the substep given.
 """
 from __future__ import annotations
@@ -20,15 +21,30 @@ def yielding_floor_accelerations(stick, ground_accel_g, dt_s, substeps):
     if ops is None:
         raise RuntimeError(why)
     ops.wipe()
-    ops.model("basic", "-ndm", 1, "-ndf", 1)
     n = stick.storeys
-    for i in range(n + 1):
-        ops.node(i, 0.0)
-    ops.fix(0, 1)
+    column = stick.bending_rigidity_n_m2 is not None
+    height = float(np.mean(stick.storey_heights_m))
+    if column:  # the elastic column beside the springs, as peers.opensees_shear._stick
+        ops.model("basic", "-ndm", 2, "-ndf", 3)
+        for i in range(n + 1):
+            ops.node(i, 0.0, i * height)
+        ops.fix(0, 1, 1, 1)
+        ops.geomTransf("Linear", 1)
+        for i in range(1, n + 1):
+            ops.fix(i, 0, 1, 0)
+            ops.element("elasticBeamColumn", 2000 + i, i - 1, i, 1e12, 1.0, float(stick.bending_rigidity_n_m2), 1)
+            ops.node(1000 + i, 0.0, i * height)
+            ops.fix(1000 + i, 0, 1, 1)
+            ops.equalDOF(i - 1, 1000 + i, 1)
+    else:
+        ops.model("basic", "-ndm", 1, "-ndf", 1)
+        for i in range(n + 1):
+            ops.node(i, 0.0)
+        ops.fix(0, 1)
     for i in range(1, n + 1):
         k0, fy = float(stick.stiffness_n_m[i - 1]), float(stick.yield_force_n[i - 1])
         b = float(np.broadcast_to(stick.hardening, (n,))[i - 1])
-        ops.mass(i, float(stick.floor_masses_kg[i - 1]))
+        ops.mass(i, *([float(stick.floor_masses_kg[i - 1])] + ([0.0, 0.0] if column else [])))
         if stick.law == "bilinear":
             ops.uniaxialMaterial("Steel01", i, fy, k0, b)
         else:
@@ -37,7 +53,7 @@ def yielding_floor_accelerations(stick, ground_accel_g, dt_s, substeps):
             f3 = fy + b * k0 * (d3 - dy)
             ops.uniaxialMaterial("Hysteretic", i, fy, dy, f3, d3, -fy, -dy, -f3, -d3,
                                  float(stick.pinch_x), float(stick.pinch_y), 0.0, 0.0, float(stick.unloading_beta))
-        ops.element("zeroLength", i, i - 1, i, "-mat", i, "-dir", 1, "-doRayleigh", 1)
+        ops.element("zeroLength", i, 1000 + i if column else i - 1, i, "-mat", i, "-dir", 1, "-doRayleigh", 1)
     a0, a1 = stick.rayleigh
     if stick.damping_stiffness == "initial":
         ops.rayleigh(float(a0), 0.0, float(a1), 0.0)
@@ -46,7 +62,7 @@ def yielding_floor_accelerations(stick, ground_accel_g, dt_s, substeps):
     ground = np.asarray(ground_accel_g, dtype=float)
     ops.timeSeries("Path", 1, "-dt", float(dt_s), "-values", *(ground * GRAVITY_M_S2).tolist())
     ops.pattern("UniformExcitation", 1, 1, "-accel", 1)
-    ops.constraints("Plain")
+    ops.constraints("Transformation" if column else "Plain")
     ops.numberer("Plain")
     ops.system("FullGeneral")
     ops.test("NormDispIncr", 1e-12, 50)
