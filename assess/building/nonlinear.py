@@ -47,7 +47,10 @@ import numpy as np
 from numba import njit
 from scipy.linalg import eigh
 
+from .design import LAW_BY_SYSTEM, vertical_distribution
 from .hysteresis import BILINEAR, LAWS, bilinear_trial, pinching_trial
+from .modes import ALPHA_BY_SYSTEM, stiffness_matrix
+from .period import approximate_period
 
 GRAVITY_M_S2 = 9.80665
 #: Longest substep [s] of the integration by default, and the fewest substeps per period of the
@@ -243,7 +246,7 @@ def p_delta_stiffness(floor_masses_kg, storey_heights_m):
 
 @njit(cache=True)
 def _solve(matrix, rhs, out):  # pragma: no cover - compiled
-    """out = matrix⁻¹ rhs by Gaussian elimination without pivoting (matrix SPD-dominant: M/βΔt²); overwrites matrix."""
+    """out = matrix⁻¹ rhs, Gaussian elimination without pivoting (SPD-dominant: M/βΔt²); overwrites matrix."""
     n = rhs.size
     b = rhs.copy()
     for k in range(n):
@@ -262,7 +265,8 @@ def _solve(matrix, rhs, out):  # pragma: no cover - compiled
 
 
 @njit(cache=True)
-def _spring_states(u, law, committed, trial, k0, fy, hardening, pinch_x, pinch_y, beta, force, tangent):  # pragma: no cover
+def _spring_states(u, law, committed, trial, k0, fy, hardening, pinch_x, pinch_y, beta, force,
+                   tangent):  # pragma: no cover - compiled
     """Trial force and tangent of every storey spring at floor displacements u."""
     n = u.size
     for i in range(n):
@@ -464,22 +468,18 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
         (:func:`modal_damping_matrix` of the initial stiffness, ζ in every mode as the elastic
         route takes it: then the elastic limit is the elastic route's answer itself).
     flexure : str, optional
-        By default the system's (:data:`FLEXURE_BY_SYSTEM`). ``"equivalent shear"``: a shear stick whose storey stiffness is the
-        elastic model's under the code's lateral forces (k_i = V_i/Δ_i, then scaled to
+        By default the system's (:data:`FLEXURE_BY_SYSTEM`). ``"equivalent shear"``: a shear
+        stick whose storey stiffness is the elastic model's under the code's lateral forces (k_i = V_i/Δ_i, then scaled to
         T_1): every storey yields at its own storey shear, the elastic limit is a shear
         building with the same T_1 and drift profile under those forces (identical to the
         elastic model for a shear building, α = ∞). ``"elastic column"``: the elastic
         model's flexural column kept beside the springs, linear: the elastic limit is the
         elastic model itself, but the column never yields, so a flexure-dominated
-        building (small α) then barely yields (its springs carry 2-40 % of the lower
-        storeys' shear at α = 1).
+        building (small α) then barely yields (at α = 1 its first storey's spring carries
+        2-8 % of the storey shear under the code's forces, 3 to 12 storeys).
     p_delta : bool
         Add the gravity loads' geometric stiffness (:func:`p_delta_stiffness`); T_1 stays that without it.
     """
-    from .design import LAW_BY_SYSTEM, vertical_distribution
-    from .modes import ALPHA_BY_SYSTEM, stiffness_matrix
-    from .period import approximate_period
-
     n = int(storeys)
     flexure = FLEXURE_BY_SYSTEM[system] if flexure is None else flexure
     heights = np.broadcast_to(np.asarray(storey_height_m, dtype=float), (n,)).copy()
