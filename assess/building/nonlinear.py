@@ -469,8 +469,8 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
         route takes it: then the elastic limit is the elastic route's answer itself).
     flexure : str, optional
         By default the system's (:data:`FLEXURE_BY_SYSTEM`). ``"equivalent shear"``: a shear
-        stick whose storey stiffness is the elastic model's under the code's lateral forces (k_i = V_i/Δ_i, then scaled to
-        T_1): every storey yields at its own storey shear, the elastic limit is a shear
+        stick whose storey stiffness is the elastic model's under the code's lateral forces
+        (k_i = V_i/Δ_i, then scaled to T_1): every storey yields at its own storey shear, the elastic limit is a shear
         building with the same T_1 and drift profile under those forces (identical to the
         elastic model for a shear building, α = ∞). ``"elastic column"``: the elastic
         model's flexural column kept beside the springs, linear: the elastic limit is the
