@@ -1,0 +1,250 @@
+"""Storey strengths from the building's seismic design (ASCE 7-22 §12.8, equivalent lateral force).
+
+The code sizes the building for the base shear
+
+.. math::  V = C_s W,\\qquad C_s = \\frac{S_{DS}}{R/I_e}  \\quad\\text{(Eq. 12.8-2)}
+
+bounded above by S_D1/(T R/I_e) for T ≤ T_L (Eq. 12.8-3) and S_D1 T_L/(T² R/I_e)
+beyond (Eq. 12.8-4), below by max(0.044 S_DS I_e, 0.01) (Eq. 12.8-5) and, where
+S_1 ≥ 0.6 g, 0.5 S_1/(R/I_e) (Eq. 12.8-6); T no longer than C_u T_a (§12.8.2,
+Table 12.8-1). R is Table 12.2-1's for the lateral system (:data:`SYSTEM_FACTORS`),
+I_e Table 1.5-2's for the risk category (:data:`IMPORTANCE_BY_RISK_CATEGORY`). The
+base shear is spread over the floors as F_x = C_vx V,
+
+.. math::  C_{vx} = \\frac{w_x h_x^k}{\\sum_i w_i h_i^k}  \\quad\\text{(Eqs. 12.8-11, 12.8-12)}
+
+with k = 1 for T ≤ 0.5 s, 2 for T ≥ 2.5 s, linear between; storey x carries
+V_x = Σ_{i ≥ x} F_i.
+
+A building's real strength is above its design: material strengths above nominal,
+members sized for drift or gravity, redundancy. Each storey's yield shear is taken as
+the design storey shear times an **overstrength** Ω: :data:`DEFAULT_OVERSTRENGTH`
+= 2.0, or the engineer's. Why 2: the pushover overstrength of code-designed
+archetypes in FEMA P-695 [3]_ (reinforced-concrete special moment frames, its
+chapter 9 examples) and NIST GCR 10-917-8 [4]_ (steel and concrete moment frames,
+braced frames, walls) lies mostly between about 1.5 and 3.5 with a central value
+near 2 to 2.5; Table 12.2-1's Ω_0 (2 to 3) is by the code's intent an upper bound
+for force-controlled elements, and taking it as the expected strength made a
+correctly yielding model slide equipment 1.5 times too much (issue 29's
+measurements). Where the base shear at yield is known (a pushover, an evaluation),
+``yield_base_shear_g`` replaces C_s Ω and the storeys keep the code's distribution.
+
+References
+----------
+.. [1] ASCE/SEI 7-22 (2022). Minimum Design Loads and Associated Criteria for
+   Buildings and Other Structures. Table 1.5-2; Table 12.2-1; §12.8.1.1 (Eqs.
+   12.8-2 to 12.8-6); §12.8.2 (Table 12.8-1); §12.8.3 (Eqs. 12.8-11, 12.8-12).
+.. [2] FEMA P-750 (2009). NEHRP Recommended Seismic Provisions, Part 2
+   (Commentary), §C12.1.1 on the meaning of R and Ω_0.
+.. [3] FEMA P-695 (2009). Quantification of Building Seismic Performance Factors.
+   Chapter 9 and Appendix F (archetype pushover overstrength).
+.. [4] NIST GCR 10-917-8 (2010). Evaluation of the FEMA P-695 Methodology for
+   Quantification of Building Seismic Performance Factors.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .period import SYSTEMS, approximate_period
+
+#: (R, Ω_0, row of ASCE 7-22 Table 12.2-1) per lateral system of the ``building`` sheet. The
+#: sheet does not say the detailing, so each takes the special (most ductile) row a new
+#: building in a high-seismic site would have; "other" takes the steel systems not
+#: specifically detailed for seismic resistance (H.), the lowest R, so that an unknown
+#: system is not assumed to yield early.
+SYSTEM_FACTORS = {
+    "steel moment frame": (8.0, 3.0, "C.1 steel special moment frames"),
+    "concrete moment frame": (8.0, 3.0, "C.5 special reinforced concrete moment frames"),
+    "eccentrically braced frame": (8.0, 2.0, "B.1 steel eccentrically braced frames"),
+    "braced frame": (6.0, 2.0, "B.2 special steel concentrically braced frames"),
+    "shear wall": (5.0, 2.5, "A.1 special reinforced concrete shear walls (bearing wall system)"),
+    "other": (3.0, 3.0, "H. steel systems not specifically detailed for seismic resistance"),
+}
+#: Hysteresis law of each system's storeys (:mod:`assess.building.hysteresis`).
+LAW_BY_SYSTEM = {
+    "steel moment frame": "bilinear",
+    "eccentrically braced frame": "bilinear",
+    "braced frame": "bilinear",
+    "concrete moment frame": "pinching",
+    "shear wall": "pinching",
+    "other": "pinching",
+}
+#: Seismic importance factor I_e by risk category (ASCE 7-22 Table 1.5-2).
+IMPORTANCE_BY_RISK_CATEGORY = {"I": 1.0, "II": 1.0, "III": 1.25, "IV": 1.5}
+#: Assumed ratio of the actual to the design base shear at yield (see the module's text).
+DEFAULT_OVERSTRENGTH = 2.0
+#: C_u of ASCE 7-22 Table 12.8-1 against S_D1 [g] (interpolated, constant beyond the ends).
+UPPER_LIMIT_TABLE = ((0.1, 1.7), (0.15, 1.6), (0.2, 1.5), (0.3, 1.4), (0.4, 1.4))
+
+
+def importance_factor(risk_category) -> float:
+    """I_e of ASCE 7-22 Table 1.5-2.
+
+    >>> importance_factor("IV"), importance_factor("ii")
+    (1.5, 1.0)
+    """
+    key = str(risk_category).strip().upper()
+    if key not in IMPORTANCE_BY_RISK_CATEGORY:
+        raise ValueError(f"risk category must be one of I, II, III, IV, not {risk_category!r}")
+    return IMPORTANCE_BY_RISK_CATEGORY[key]
+
+
+def upper_limit_coefficient(sd1_g) -> float:
+    """C_u of ASCE 7-22 Table 12.8-1 (linear between its rows).
+
+    >>> upper_limit_coefficient(0.6), upper_limit_coefficient(0.25)
+    (1.4, 1.45)
+    """
+    s, c = zip(*UPPER_LIMIT_TABLE)
+    return float(np.interp(float(sd1_g), s, c))
+
+
+def seismic_response_coefficient(sds_g, sd1_g, period_s, response_modification, importance=1.0, tl_s=None,
+                                 s1_g=None) -> float:
+    """C_s of ASCE 7-22 §12.8.1.1, with its upper and lower bounds [-].
+
+    .. math::  C_s = \\frac{S_{DS}}{R/I_e} \\le \\frac{S_{D1}}{T\\,R/I_e}\\ (T \\le T_L),
+               \\ \\frac{S_{D1}T_L}{T^2 R/I_e}\\ (T > T_L);\\quad
+               C_s \\ge \\max(0.044\\,S_{DS} I_e,\\ 0.01);\\quad
+               C_s \\ge \\frac{0.5\\,S_1}{R/I_e}\\ (S_1 \\ge 0.6)
+
+    Examples
+    --------
+    S_DS 1.0, S_D1 0.6, T 1.2 s, R 8, I_e 1: 1.0/8 = 0.125 capped at 0.6/(1.2·8) = 0.0625:
+
+    >>> seismic_response_coefficient(1.0, 0.6, 1.2, 8.0)
+    0.0625
+    """
+    ratio = float(response_modification) / float(importance)
+    coefficient = float(sds_g) / ratio
+    period = float(period_s)
+    if tl_s is None or period <= float(tl_s):
+        cap = float(sd1_g) / (period * ratio)
+    else:
+        cap = float(sd1_g) * float(tl_s) / (period ** 2 * ratio)
+    coefficient = min(coefficient, cap)
+    coefficient = max(coefficient, 0.044 * float(sds_g) * float(importance), 0.01)
+    if s1_g is not None and float(s1_g) >= 0.6:
+        coefficient = max(coefficient, 0.5 * float(s1_g) / ratio)
+    return coefficient
+
+
+def distribution_exponent(period_s) -> float:
+    """k of ASCE 7-22 §12.8.3: 1 for T ≤ 0.5 s, 2 for T ≥ 2.5 s, linear between.
+
+    >>> distribution_exponent(0.3), distribution_exponent(1.5), distribution_exponent(3.0)
+    (1.0, 1.5, 2.0)
+    """
+    return float(np.clip(1.0 + (float(period_s) - 0.5) / 2.0, 1.0, 2.0))
+
+
+def vertical_distribution(floor_weights, floor_heights_m, period_s):
+    """C_vx of ASCE 7-22 Eqs. 12.8-11/12.8-12 for floors 1 to the roof [-] (sums to 1).
+
+    >>> vertical_distribution([1.0, 1.0], [3.0, 6.0], 0.4).round(4).tolist()   # k = 1: 3/9, 6/9
+    [0.3333, 0.6667]
+    """
+    weights = np.asarray(floor_weights, dtype=float)
+    heights = np.asarray(floor_heights_m, dtype=float)
+    share = weights * heights ** distribution_exponent(period_s)
+    return share / share.sum()
+
+
+def storey_shear_ratios(floor_weights, floor_heights_m, period_s):
+    """V_x / V of each storey (1 = ground storey): the share of the base shear each storey carries.
+
+    >>> storey_shear_ratios([1.0, 1.0], [3.0, 6.0], 0.4).round(4).tolist()
+    [1.0, 0.6667]
+    """
+    distribution = vertical_distribution(floor_weights, floor_heights_m, period_s)
+    return np.cumsum(distribution[::-1])[::-1]
+
+
+@dataclass(frozen=True)
+class DesignStrength:
+    """The storeys' strengths and where they came from.
+
+    Attributes
+    ----------
+    yield_base_shear_g : float
+        Base shear at yield over the weight [-] (C_s Ω, or the engineer's).
+    storey_yield_ratio : ndarray, (n,)
+        Each storey's yield shear over the weight [-].
+    seismic_response_coefficient : float or None
+        C_s (None where the yield base shear was given).
+    response_modification, system_overstrength, importance, overstrength, design_period_s : float or None
+        R and Ω_0 (Table 12.2-1), I_e, the overstrength assumed, the period C_s used [s].
+    source : str
+        One sentence: where the strength came from.
+    """
+
+    yield_base_shear_g: float
+    storey_yield_ratio: np.ndarray
+    seismic_response_coefficient: float | None
+    response_modification: float | None
+    system_overstrength: float | None
+    importance: float | None
+    overstrength: float | None
+    design_period_s: float | None
+    source: str
+
+
+def design_strength(system, floor_weights, floor_heights_m, period_s, *, sds_g=None, sd1_g=None, tl_s=None,
+                    s1_g=None, risk_category="II", overstrength=None, yield_base_shear_g=None) -> DesignStrength:
+    """Each storey's yield shear over the weight, from the ELF design or from a given yield base shear.
+
+    Parameters
+    ----------
+    system : str
+        One of :data:`~assess.building.period.SYSTEMS`.
+    floor_weights : array-like, (n,)
+        Floor weights (any unit: only their ratios matter), floor 1 to the roof.
+    floor_heights_m : array-like, (n,)
+        Heights of floors 1 to the roof above the base [m].
+    period_s : float
+        The building's T_1 [s]; the design uses min(T_1, C_u T_a).
+    sds_g, sd1_g, tl_s, s1_g : float
+        The site's design values (needed unless ``yield_base_shear_g`` is given).
+    risk_category : str
+        I to IV (sets I_e).
+    overstrength : float, optional
+        Actual over design base shear; :data:`DEFAULT_OVERSTRENGTH` by default.
+    yield_base_shear_g : float, optional
+        The base shear at yield over the weight, where known; replaces the design.
+
+    Examples
+    --------
+    A 4-storey steel moment frame, 4 m storeys, T_1 0.6 s, S_DS 1.0, S_D1 0.6, RC II:
+    T_a = 0.0724·16^0.8 = 0.66 s, C_s = min(1/8, 0.6/(0.6·8)) = 0.125, yield at 2 × 0.125 = 0.25:
+
+    >>> s = design_strength("steel moment frame", [1, 1, 1, 1], [4, 8, 12, 16], 0.6, sds_g=1.0, sd1_g=0.6)
+    >>> round(s.seismic_response_coefficient, 4), round(s.yield_base_shear_g, 4)
+    (0.125, 0.25)
+    """
+    if system not in SYSTEM_FACTORS:
+        raise ValueError(f"system must be one of {', '.join(SYSTEMS)}, not {system!r}")
+    heights = np.asarray(floor_heights_m, dtype=float)
+    ratios = storey_shear_ratios(floor_weights, heights, period_s)
+    r_factor, omega0, row = SYSTEM_FACTORS[system]
+    if yield_base_shear_g is not None:
+        value = float(yield_base_shear_g)
+        if not value > 0.0:
+            raise ValueError("yield_base_shear_g must be positive")
+        return DesignStrength(value, value * ratios, None, None, None, None, None, None,
+                              f"base shear at yield {value:g} W as given, spread over the storeys as ASCE 7-22 "
+                              f"§12.8.3 does")
+    if sds_g is None or sd1_g is None:
+        raise ValueError("the design strength needs S_DS and S_D1 (or give yield_base_shear_g)")
+    importance = importance_factor(risk_category)
+    overstrength = DEFAULT_OVERSTRENGTH if overstrength is None else float(overstrength)
+    if not overstrength >= 1.0:
+        raise ValueError("overstrength must be at least 1")
+    approximate = float(approximate_period(heights[-1], system))
+    design_period = min(float(period_s), upper_limit_coefficient(sd1_g) * approximate)
+    cs = seismic_response_coefficient(sds_g, sd1_g, design_period, r_factor, importance, tl_s, s1_g)
+    value = cs * overstrength
+    return DesignStrength(value, value * ratios, cs, r_factor, omega0, importance, overstrength, design_period,
+                          f"ASCE 7-22 §12.8 design ({row}: R {r_factor:g}; I_e {importance:g}; "
+                          f"C_s {cs:.3g} at T {design_period:.3g} s) times an assumed overstrength {overstrength:g}")

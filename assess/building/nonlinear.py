@@ -1,0 +1,536 @@
+"""A building that yields: response history of a stick of storey springs with hysteresis.
+
+The masses are lumped at the floors, one horizontal degree of freedom each; storey i
+is a spring between floors i-1 and i whose force follows a hysteresis law
+(:mod:`assess.building.hysteresis`: bilinear for steel, pinching and
+stiffness-degrading for concrete); beside the springs an elastic part K_lin (the
+flexural column of the shear-flexural model of :mod:`assess.building.modes`, and,
+where asked, the P-Delta geometric stiffness, -P_i/h_i per storey) stays linear.
+With every spring elastic, K = K_springs + K_lin is exactly the stiffness of
+:func:`~assess.building.modes.building_modes`, so that the elastic limit is the
+elastic route's model.
+
+Equation of motion, u the floors' displacements relative to the ground:
+
+.. math::  M\\ddot u + C\\dot u + f_s(u) + K_{lin}u = -M\\,1\\,\\ddot u_g(t)
+
+Damping is Rayleigh's, C = a_0 M + a_1 K_T, with ζ at two modes of the elastic
+model (:func:`rayleigh_coefficients`). K_T is the **tangent** stiffness at the start
+of each step (OpenSees' ``betaKcomm``): as the springs yield their damping force falls
+with their stiffness, whereas damping on the initial stiffness keeps a yielded
+storey's damping force growing with its velocity, spurious forces that Charney [2]_
+shows overstate damping in yielding structures. ``damping_stiffness="initial"`` gives
+the other choice.
+
+Time integration: Newmark's average-acceleration method (γ = 1/2, β = 1/4) with
+Newton iterations on the tangent stiffness at every step (Chopra [1]_ §15.3 and
+Table 15.3.3, there with modified Newton), at substeps of the record's step (≤ 1 ms
+by default: its error falls as Δt²) with the ground acceleration linear between the
+record's samples. Output: each floor's absolute acceleration, each storey's drift,
+at the record's samples.
+
+References
+----------
+.. [1] Chopra, A. K. (2012). Dynamics of Structures, 4th ed. Pearson. §11.4
+   (Rayleigh damping), §15.3 (Newmark's method for nonlinear systems).
+.. [2] Charney, F. A. (2008). Unintended consequences of modeling damping in
+   structures. J. Struct. Eng. 134(4):581-592.
+   doi:10.1061/(ASCE)0733-9445(2008)134:4(581)
+.. [3] Newmark, N. M. (1959). A method of computation for structural dynamics.
+   J. Eng. Mech. Div. ASCE 85(EM3):67-94.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numba import njit
+from scipy.linalg import eigh
+
+from .design import LAW_BY_SYSTEM, vertical_distribution
+from .hysteresis import BILINEAR, LAWS, bilinear_trial, pinching_trial
+from .modes import ALPHA_BY_SYSTEM, stiffness_matrix
+from .period import approximate_period
+
+GRAVITY_M_S2 = 9.80665
+#: Longest substep [s] of the integration by default, and the fewest substeps per period of the
+#: stick's shortest elastic mode (Newmark's period error is (π²/12)(Δt/T)², Chopra [1]_ §5.5:
+#: 5e-3 at 40 steps; a stiff flexural mode of 0.02 s otherwise drifts out of phase in a long record).
+DEFAULT_SUBSTEP_S = 0.001
+STEPS_PER_SHORTEST_PERIOD = 40
+#: Newton's tolerance on the norm of the displacement correction [m] and its iteration cap.
+TOLERANCE_M = 1e-12
+MAX_ITERATIONS = 50
+#: Post-yield stiffness ratio b of the storey springs by default: 3 %, within the 2-5 % of the
+#: storey pushover curves of code-designed frames (e.g. FEMA P-695 archetypes) and the usual
+#: Steel01 choice; P-Delta, where asked, lowers the storeys' net post-yield stiffness further.
+DEFAULT_HARDENING = 0.03
+#: How the stick carries the elastic model's flexure, per system (:func:`yielding_stick`): frames and
+#: braced frames yield in a storey mechanism while their overall flexure (the columns' axial
+#: strains) stays elastic, so their column is kept elastic beside the yielding springs; a wall
+#: yields in flexure at its base, which a stick of storey springs can only stand in for with an
+#: equivalent shear stick.
+FLEXURE_BY_SYSTEM = {
+    "steel moment frame": "elastic column",
+    "concrete moment frame": "elastic column",
+    "eccentrically braced frame": "elastic column",
+    "braced frame": "elastic column",
+    "shear wall": "equivalent shear",
+    "other": "equivalent shear",
+}
+
+
+@dataclass(frozen=True)
+class YieldingStick:
+    """The yielding building as the integrator takes it (SI units).
+
+    Attributes
+    ----------
+    floor_masses_kg : ndarray, (n,)
+        m_i, floor 1 to the roof.
+    storey_heights_m : ndarray, (n,)
+        h_i.
+    stiffness_n_m : ndarray, (n,)
+        Initial stiffness k_0 of each storey spring.
+    yield_force_n : ndarray, (n,)
+        F_y of each storey spring (its yield drift is F_y/k_0).
+    hardening : ndarray, (n,)
+        Post-yield stiffness ratio b of each spring [-].
+    law : str
+        ``"bilinear"`` or ``"pinching"`` (:mod:`assess.building.hysteresis`).
+    linear_stiffness_n_m : ndarray, (n, n)
+        K_lin, the part that stays elastic (zeros for a shear building).
+    rayleigh : (float, float)
+        a_0 [1/s], a_1 [s].
+    pinch_x, pinch_y, unloading_beta : float
+        Parameters of the pinching law.
+    damping_stiffness : str
+        ``"tangent"`` (at the start of each step) or ``"initial"``.
+    modal_damping_n_s_m : ndarray (n, n), optional
+        A constant damping matrix added to the Rayleigh one (:func:`modal_damping_matrix`).
+    bending_rigidity_n_m2 : float, optional
+        EI of the elastic column whose condensed stiffness is ``linear_stiffness_n_m`` (record only).
+    """
+
+    floor_masses_kg: np.ndarray
+    storey_heights_m: np.ndarray
+    stiffness_n_m: np.ndarray
+    yield_force_n: np.ndarray
+    hardening: np.ndarray
+    law: str
+    linear_stiffness_n_m: np.ndarray
+    rayleigh: tuple
+    pinch_x: float = 0.8
+    pinch_y: float = 0.4
+    unloading_beta: float = 0.4
+    damping_stiffness: str = "tangent"
+    modal_damping_n_s_m: np.ndarray | None = None
+    bending_rigidity_n_m2: float | None = None
+
+    @property
+    def storeys(self) -> int:
+        return self.floor_masses_kg.size
+
+    @property
+    def yield_drift_m(self) -> np.ndarray:
+        return self.yield_force_n / self.stiffness_n_m
+
+
+@dataclass(frozen=True)
+class YieldingResponse:
+    """Response history of a :class:`YieldingStick` under one ground motion.
+
+    Attributes
+    ----------
+    floor_accel_g : ndarray, (n + 1, n_samples)
+        Absolute acceleration [g] of each floor, row 0 the ground.
+    drift_m : ndarray, (n, n_samples)
+        Storey drift (floor i minus floor i-1) [m].
+    peak_drift_ratio : ndarray, (n,)
+        max |drift_i| / h_i [-].
+    ductility : ndarray, (n,)
+        max |drift_i| / (F_y,i / k_0,i) [-]: below 1, the storey stayed elastic.
+    unconverged_steps : int
+        Substeps where Newton's iterations stopped at their cap (0 expected).
+    """
+
+    floor_accel_g: np.ndarray
+    drift_m: np.ndarray
+    peak_drift_ratio: np.ndarray
+    ductility: np.ndarray
+    unconverged_steps: int
+
+
+def rayleigh_coefficients(periods_s, damping=0.05, modes=(1, 3)):
+    """(a_0, a_1) of Rayleigh damping with ratio ζ at two modes (1-based; capped at the last mode).
+
+    .. math::  a_0 = \\zeta\\frac{2\\omega_i\\omega_j}{\\omega_i + \\omega_j},\\qquad
+               a_1 = \\zeta\\frac{2}{\\omega_i + \\omega_j}
+
+    (Chopra [1]_ eq. 11.4.9 with ζ_i = ζ_j). Examples: ω 10 and 30 rad/s, 5 %:
+    a_0 = 0.05·600/40 = 0.75, a_1 = 0.1/40 = 0.0025:
+
+    >>> a0, a1 = rayleigh_coefficients(2 * np.pi / np.array([10.0, 20.0, 30.0]), 0.05)
+    >>> round(a0, 6), round(a1, 6)
+    (0.75, 0.0025)
+    """
+    omega = 2.0 * np.pi / np.asarray(periods_s, dtype=float)
+    if omega.size == 1:
+        return 0.0, 2.0 * damping / omega[0]
+    i = min(modes[0], omega.size) - 1
+    j = min(modes[1], omega.size) - 1
+    wi, wj = omega[i], omega[j]
+    return float(damping * 2.0 * wi * wj / (wi + wj)), float(damping * 2.0 / (wi + wj))
+
+
+def rayleigh_modal_damping(periods_s, a0, a1):
+    """ζ_j = a_0/(2ω_j) + a_1 ω_j/2 of each mode [-] (for the elastic modal route)."""
+    omega = 2.0 * np.pi / np.asarray(periods_s, dtype=float)
+    return a0 / (2.0 * omega) + a1 * omega / 2.0
+
+
+def modal_damping_matrix(stiffness_n_m, floor_masses_kg, damping=0.05):
+    """Damping matrix [N s/m] giving ζ in every mode of (K, M): C = M Φ diag(2ζω_j) Φᵀ M, ΦᵀMΦ = I.
+
+    (Chopra [1]_ §11.5; OpenSees' ``modalDamping`` builds the same from the initial
+    stiffness.) Constant: as the springs yield it keeps the initial modes' damping.
+
+    Examples
+    --------
+    One degree of freedom, k = 4 N/m, m = 1 kg (ω = 2 rad/s), 5 %: c = 2 × 0.05 × 2 = 0.2 N s/m:
+
+    >>> modal_damping_matrix([[4.0]], [1.0]).round(12).tolist()
+    [[0.2]]
+    """
+    masses = np.asarray(floor_masses_kg, dtype=float)
+    omega2, shapes = eigh(np.asarray(stiffness_n_m, dtype=float), np.diag(masses))
+    mass_shapes = masses[:, None] * shapes
+    return mass_shapes @ np.diag(2.0 * damping * np.sqrt(omega2)) @ mass_shapes.T
+
+
+def shear_chain_matrix(storey_stiffness):
+    """Stiffness matrix [N/m] of a chain of storey springs (floor 1 to roof)."""
+    k = np.asarray(storey_stiffness, dtype=float)
+    n = k.size
+    matrix = np.zeros((n, n))
+    for i in range(n):
+        matrix[i, i] += k[i]
+        if i > 0:
+            matrix[i - 1, i - 1] += k[i]
+            matrix[i - 1, i] -= k[i]
+            matrix[i, i - 1] -= k[i]
+    return matrix
+
+
+def elastic_periods(stick: YieldingStick) -> np.ndarray:
+    """Periods [s] of the stick with every spring at k_0."""
+    stiffness = shear_chain_matrix(stick.stiffness_n_m) + stick.linear_stiffness_n_m
+    omega2 = eigh(stiffness, np.diag(stick.floor_masses_kg), eigvals_only=True)
+    return 2.0 * np.pi / np.sqrt(omega2)
+
+
+def p_delta_stiffness(floor_masses_kg, storey_heights_m):
+    """Geometric stiffness [N/m] of the gravity loads: a storey spring of -P_i/h_i, P_i the weight above storey i.
+
+    (The linearised P-Delta effect of a shear building, e.g. Chopra [1]_ §18.6.)
+
+    Two floors of 1 kg, storeys g metres high: P/h = 2 and 1 N/m, so -[[2 + 1, -1], [-1, 1]]:
+
+    >>> p_delta_stiffness([1.0, 1.0], [9.80665, 9.80665]).round(6).tolist()
+    [[-3.0, 1.0], [1.0, -1.0]]
+    """
+    masses = np.asarray(floor_masses_kg, dtype=float)
+    above = np.cumsum(masses[::-1])[::-1] * GRAVITY_M_S2
+    return -shear_chain_matrix(above / np.asarray(storey_heights_m, dtype=float))
+
+
+@njit(cache=True)
+def _solve(matrix, rhs, out):  # pragma: no cover - compiled
+    """out = matrix⁻¹ rhs, Gaussian elimination without pivoting (SPD-dominant: M/βΔt²); overwrites matrix."""
+    n = rhs.size
+    b = rhs.copy()
+    for k in range(n):
+        pivot = matrix[k, k]
+        for i in range(k + 1, n):
+            factor = matrix[i, k] / pivot
+            if factor != 0.0:
+                for j in range(k, n):
+                    matrix[i, j] -= factor * matrix[k, j]
+                b[i] -= factor * b[k]
+    for i in range(n - 1, -1, -1):
+        total = b[i]
+        for j in range(i + 1, n):
+            total -= matrix[i, j] * out[j]
+        out[i] = total / matrix[i, i]
+
+
+@njit(cache=True)
+def _spring_states(u, law, committed, trial, k0, fy, hardening, pinch_x, pinch_y, beta, force,
+                   tangent):  # pragma: no cover - compiled
+    """Trial force and tangent of every storey spring at floor displacements u."""
+    n = u.size
+    for i in range(n):
+        drift = u[i] - (u[i - 1] if i > 0 else 0.0)
+        if law == BILINEAR:
+            f, kt = bilinear_trial(drift, committed[i, 0], committed[i, 1], k0[i], fy[i], hardening[i])
+            trial[i, 0], trial[i, 1], trial[i, 2] = drift, f, kt
+        else:
+            pinching_trial(committed[i], trial[i], drift, k0[i], fy[i], hardening[i], pinch_x, pinch_y, beta)
+        force[i] = trial[i, 1]
+        tangent[i] = trial[i, 2]
+
+
+@njit(cache=True)
+def _history(ground_g, dt_s, substeps, masses, k0, fy, hardening, law, pinch_x, pinch_y, beta,
+             k_lin, c_extra, a0, a1, damping_on_initial, tolerance, max_iterations):  # pragma: no cover - compiled
+    n = masses.size
+    n_samples = ground_g.size
+    g = 9.80665
+    h = dt_s / substeps
+    gamma = 0.5
+    beta_n = 0.25
+    c_mass = 1.0 / (beta_n * h * h)
+    c_vel = gamma / (beta_n * h)
+    committed = np.zeros((n, 8))
+    for i in range(n):
+        committed[i, 2] = k0[i]
+    trial = committed.copy()
+    force = np.zeros(n)
+    tangent = k0.copy()
+    damping_tangent = k0.copy()  # spring stiffness the damping matrix uses in this step
+    u = np.zeros(n)
+    v = np.zeros(n)
+    a = np.zeros(n)
+    for i in range(n):
+        a[i] = -ground_g[0] * g
+    u_new = np.zeros(n)
+    v_new = np.zeros(n)
+    a_new = np.zeros(n)
+    du = np.zeros(n)
+    residual = np.zeros(n)
+    damping = np.zeros((n, n))
+    matrix = np.zeros((n, n))
+    accel_out = np.empty((n + 1, n_samples))
+    drift_out = np.empty((n, n_samples))
+    accel_out[0, 0] = ground_g[0]
+    for i in range(n):
+        accel_out[i + 1, 0] = ground_g[0] + a[i] / g
+        drift_out[i, 0] = 0.0
+    unconverged = 0
+    for step in range(n_samples - 1):
+        g0 = ground_g[step]
+        g1 = ground_g[step + 1]
+        for sub in range(substeps):
+            ground = (g0 + (g1 - g0) * (sub + 1) / substeps) * g
+            # damping matrix C = a0 M + a1 (K_springs + K_lin), springs at their committed (or initial) tangent
+            for r in range(n):
+                for c in range(n):
+                    damping[r, c] = a1 * k_lin[r, c] + c_extra[r, c]
+                damping[r, r] += a0 * masses[r]
+            for s in range(n):
+                ks = a1 * (k0[s] if damping_on_initial else damping_tangent[s])
+                damping[s, s] += ks
+                if s > 0:
+                    damping[s - 1, s - 1] += ks
+                    damping[s - 1, s] -= ks
+                    damping[s, s - 1] -= ks
+            # predictor: the last step's displacement
+            for r in range(n):
+                u_new[r] = u[r]
+            converged = False
+            for iteration in range(max_iterations):
+                for r in range(n):
+                    a_new[r] = c_mass * (u_new[r] - u[r]) - v[r] / (beta_n * h) - (0.5 / beta_n - 1.0) * a[r]
+                    v_new[r] = v[r] + h * ((1.0 - gamma) * a[r] + gamma * a_new[r])
+                _spring_states(u_new, law, committed, trial, k0, fy, hardening, pinch_x, pinch_y, beta,
+                               force, tangent)
+                for r in range(n):
+                    total = -masses[r] * ground - masses[r] * a_new[r]
+                    total -= force[r] - (force[r + 1] if r + 1 < n else 0.0)
+                    for c in range(n):
+                        total -= damping[r, c] * v_new[c] + k_lin[r, c] * u_new[c]
+                    residual[r] = total
+                for r in range(n):
+                    for c in range(n):
+                        matrix[r, c] = k_lin[r, c] + c_vel * damping[r, c]
+                    matrix[r, r] += c_mass * masses[r]
+                for s in range(n):
+                    ks = tangent[s]
+                    matrix[s, s] += ks
+                    if s > 0:
+                        matrix[s - 1, s - 1] += ks
+                        matrix[s - 1, s] -= ks
+                        matrix[s, s - 1] -= ks
+                _solve(matrix, residual, du)
+                norm = 0.0
+                for r in range(n):
+                    u_new[r] += du[r]
+                    norm += du[r] * du[r]
+                if np.sqrt(norm) <= tolerance:
+                    converged = True
+                    break
+            if not converged:
+                unconverged += 1
+            # the state at the converged displacements, then commit
+            for r in range(n):
+                a_new[r] = c_mass * (u_new[r] - u[r]) - v[r] / (beta_n * h) - (0.5 / beta_n - 1.0) * a[r]
+                v_new[r] = v[r] + h * ((1.0 - gamma) * a[r] + gamma * a_new[r])
+            _spring_states(u_new, law, committed, trial, k0, fy, hardening, pinch_x, pinch_y, beta, force, tangent)
+            for r in range(n):
+                for s in range(8):
+                    committed[r, s] = trial[r, s]
+                damping_tangent[r] = tangent[r]
+                u[r] = u_new[r]
+                v[r] = v_new[r]
+                a[r] = a_new[r]
+        accel_out[0, step + 1] = g1
+        for r in range(n):
+            accel_out[r + 1, step + 1] = g1 + a[r] / g
+            drift_out[r, step + 1] = u[r] - (u[r - 1] if r > 0 else 0.0)
+    return accel_out, drift_out, unconverged
+
+
+def substeps_for(dt_s, substep_s=DEFAULT_SUBSTEP_S) -> int:
+    """Substeps per record step so that each is at most ``substep_s``."""
+    return max(1, int(np.ceil(float(dt_s) / float(substep_s) - 1e-9)))
+
+
+def yielding_response(stick: YieldingStick, ground_accel_g, dt_s, *, substep_s=DEFAULT_SUBSTEP_S,
+                      substeps=None) -> YieldingResponse:
+    """Every floor's absolute acceleration and every storey's drift under one ground motion.
+
+    Parameters
+    ----------
+    stick : YieldingStick
+    ground_accel_g : array-like
+        Ground acceleration [g], linear between samples.
+    dt_s : float
+        Record step [s].
+    substep_s : float
+        Longest integration step [s] (shortened to 1/:data:`STEPS_PER_SHORTEST_PERIOD` of the
+        stick's shortest elastic period); ``substeps`` (per record step) overrides both.
+
+    Returns
+    -------
+    YieldingResponse
+    """
+    ground = np.ascontiguousarray(ground_accel_g, dtype=float)
+    if substeps is None:
+        shortest = float(elastic_periods(stick)[-1]) / STEPS_PER_SHORTEST_PERIOD
+        substeps = substeps_for(dt_s, min(substep_s, shortest))
+    if stick.law not in LAWS:
+        raise ValueError(f"law must be one of {', '.join(LAWS)}, not {stick.law!r}")
+    if stick.damping_stiffness not in ("tangent", "initial"):
+        raise ValueError("damping_stiffness must be 'tangent' or 'initial'")
+    n = stick.storeys
+    accel, drift, unconverged = _history(
+        ground, float(dt_s), int(substeps), np.ascontiguousarray(stick.floor_masses_kg, dtype=float),
+        np.ascontiguousarray(stick.stiffness_n_m, dtype=float), np.ascontiguousarray(stick.yield_force_n, dtype=float),
+        np.ascontiguousarray(np.broadcast_to(stick.hardening, (n,)), dtype=float), LAWS[stick.law],
+        float(stick.pinch_x), float(stick.pinch_y), float(stick.unloading_beta),
+        np.ascontiguousarray(stick.linear_stiffness_n_m, dtype=float),
+        np.zeros((n, n)) if stick.modal_damping_n_s_m is None
+        else np.ascontiguousarray(stick.modal_damping_n_s_m, dtype=float), float(stick.rayleigh[0]),
+        float(stick.rayleigh[1]), stick.damping_stiffness == "initial", TOLERANCE_M, MAX_ITERATIONS)
+    peak = np.abs(drift).max(axis=1)
+    return YieldingResponse(floor_accel_g=accel, drift_m=drift,
+                            peak_drift_ratio=peak / np.asarray(stick.storey_heights_m, dtype=float),
+                            ductility=peak / stick.yield_drift_m, unconverged_steps=int(unconverged))
+
+
+
+def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="other", period_s=None, alpha=None,
+                   storey_stiffness=None, floor_masses_kg=None, law=None, hardening=None, damping=0.05,
+                   rayleigh_modes=(1, 3), flexure=None, p_delta=False,
+                   damping_stiffness="tangent", damping_model="rayleigh") -> YieldingStick:
+    """The yielding stick of a building described as :func:`~assess.building.modes.building_modes` takes it.
+
+    Parameters
+    ----------
+    storeys, storey_height_m, system, period_s, alpha, storey_stiffness :
+        As :func:`~assess.building.modes.building_modes`: the elastic model whose stiffness
+        (scaled to T_1) the springs start from.
+    storey_yield_ratio : array-like, (n,)
+        Each storey's yield shear over the building's weight [-]
+        (:func:`~assess.building.design.design_strength`).
+    floor_masses_kg : array-like, optional
+        Floor masses (equal, 10⁵ kg, by default; accelerations and drifts do not depend on the scale).
+    law : str, optional
+        ``"bilinear"`` or ``"pinching"``; by default the system's
+        (:data:`~assess.building.design.LAW_BY_SYSTEM`).
+    hardening : float, optional
+        Post-yield stiffness ratio b; :data:`DEFAULT_HARDENING`.
+    damping : float
+        ζ of the Rayleigh damping at ``rayleigh_modes`` of the elastic model, or of every
+        mode with ``damping_model="modal"``.
+    damping_model : str
+        ``"rayleigh"`` (default: a_0 M + a_1 K_T, see the module's text) or ``"modal"``
+        (:func:`modal_damping_matrix` of the initial stiffness, ζ in every mode as the elastic
+        route takes it: then the elastic limit is the elastic route's answer itself).
+    flexure : str, optional
+        By default the system's (:data:`FLEXURE_BY_SYSTEM`). ``"equivalent shear"``: a shear
+        stick whose storey stiffness is the elastic model's under the code's lateral forces
+        (k_i = V_i/Δ_i, then scaled to T_1): every storey yields at its own storey shear, the elastic limit is a shear
+        building with the same T_1 and drift profile under those forces (identical to the
+        elastic model for a shear building, α = ∞). ``"elastic column"``: the elastic
+        model's flexural column kept beside the springs, linear: the elastic limit is the
+        elastic model itself, but the column never yields, so a flexure-dominated
+        building (small α) then barely yields (at α = 1 its first storey's spring carries
+        2-8 % of the storey shear under the code's forces, 3 to 12 storeys).
+    p_delta : bool
+        Add the gravity loads' geometric stiffness (:func:`p_delta_stiffness`); T_1 stays that without it.
+    """
+    n = int(storeys)
+    flexure = FLEXURE_BY_SYSTEM[system] if flexure is None else flexure
+    heights = np.broadcast_to(np.asarray(storey_height_m, dtype=float), (n,)).copy()
+    floor_heights = np.cumsum(heights)
+    masses = np.full(n, 1.0e5) if floor_masses_kg is None else np.asarray(floor_masses_kg, dtype=float)
+    alpha = ALPHA_BY_SYSTEM[system] if alpha is None else float(alpha)
+    if alpha == 0.0:
+        raise ValueError("a flexural cantilever (alpha 0) has no storey springs to yield")
+    if period_s is None:
+        period_s = approximate_period(floor_heights[-1], system)
+    relative = np.ones(n) if storey_stiffness is None else np.asarray(storey_stiffness, dtype=float)
+    full = stiffness_matrix(n, float(np.mean(heights)), alpha, relative)
+    forces = vertical_distribution(masses, floor_heights, period_s)
+    shears = np.cumsum(forces[::-1])[::-1]
+    if flexure == "equivalent shear":
+        drifts = np.diff(np.concatenate([[0.0], np.linalg.solve(full, forces)]))
+        springs = shears / drifts
+        linear = np.zeros((n, n))
+        share = np.ones(n)
+    elif flexure == "elastic column":
+        springs = relative
+        linear = full - shear_chain_matrix(relative)
+        drifts = np.diff(np.concatenate([[0.0], np.linalg.solve(full, forces)]))
+        share = springs * drifts / shears
+    else:
+        raise ValueError("flexure must be 'equivalent shear' or 'elastic column'")
+    omega2 = eigh(shear_chain_matrix(springs) + linear, np.diag(masses), eigvals_only=True)
+    scale = (2.0 * np.pi / np.sqrt(omega2[0]) / float(period_s)) ** 2
+    springs, linear = springs * scale, linear * scale
+    bending = None
+    if flexure == "elastic column" and np.isfinite(alpha):
+        bending = float(scale * relative[0] * np.mean(heights) * (n * np.mean(heights)) ** 2 / alpha ** 2)
+    periods = 2.0 * np.pi / np.sqrt(omega2 * scale)
+    if p_delta:
+        linear = linear + p_delta_stiffness(masses, heights)
+    weight = masses.sum() * GRAVITY_M_S2
+    yield_force = np.asarray(storey_yield_ratio, dtype=float) * weight * share
+    if yield_force.shape != (n,) or np.any(~(yield_force > 0.0)):
+        raise ValueError("storey_yield_ratio must give one positive ratio per storey")
+    law = LAW_BY_SYSTEM[system] if law is None else law
+    if damping_model == "rayleigh":
+        rayleigh, modal = rayleigh_coefficients(periods, damping, rayleigh_modes), None
+    elif damping_model == "modal":
+        rayleigh = (0.0, 0.0)
+        modal = modal_damping_matrix(shear_chain_matrix(springs) + linear - (p_delta_stiffness(masses, heights)
+                                                                             if p_delta else 0.0), masses, damping)
+    else:
+        raise ValueError("damping_model must be 'rayleigh' or 'modal'")
+    return YieldingStick(floor_masses_kg=masses, storey_heights_m=heights, stiffness_n_m=springs,
+                         yield_force_n=yield_force,
+                         hardening=np.full(n, DEFAULT_HARDENING if hardening is None else float(hardening)),
+                         law=law, linear_stiffness_n_m=linear,
+                         rayleigh=rayleigh, damping_stiffness=damping_stiffness, modal_damping_n_s_m=modal,
+                         bending_rigidity_n_m2=bending)

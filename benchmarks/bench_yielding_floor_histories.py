@@ -1,0 +1,71 @@
+"""Cost of the yielding building's floor histories: 11 ground motions through a 12-storey stick, every floor.
+
+Run: python benchmarks/bench_yielding_floor_histories.py   (needs pyslammer for its records)
+
+The first 11 of pyslammer's sample records (in name order), each scaled so that its 5 % S_a(T_1) is the
+design spectrum's (S_DS 1.0 g, S_D1 0.6 g) at T_1 1.4 s, through a 12-storey stick designed by ASCE 7-22
+§12.8 (Risk Category II, overstrength 2): a steel special moment frame (bilinear springs) and a concrete
+special moment frame (pinching springs), Rayleigh 5 % on the tangent stiffness, Newmark/Newton at
+substeps of at most 1 ms. Prints the compile-or-load time, the best and worst of 3 runs, the
+median first-storey ductility, and the elastic modal route's time on the same suite for scale.
+"""
+import os
+import time
+
+import numpy as np
+import pyslammer
+
+from assess.building import building_modes, floor_records
+from assess.building.design import design_strength
+from assess.building.nonlinear import yielding_response, yielding_stick
+from assess.hazard.records import read_record
+from assess.site.asce7 import design_spectral_acceleration_g
+from assess.site.spectrum import pseudo_acceleration_spectrum
+
+STOREYS, PERIOD_S = 12, 1.4
+
+
+def suite_at_design(period_s):
+    folder = os.path.join(os.path.dirname(pyslammer.__file__), "sample_ground_motions")
+    out = []
+    target = float(design_spectral_acceleration_g(period_s, 1.0, 0.6))
+    for name in sorted(os.listdir(folder))[:11]:
+        record = read_record(os.path.join(folder, name))
+        have = float(np.atleast_1d(pseudo_acceleration_spectrum(record.accel_g, record.dt_s, [period_s]))[0])
+        out.append((np.asarray(record.accel_g) * target / have, record.dt_s))
+    return out
+
+
+def main():
+    suite = suite_at_design(PERIOD_S)
+    samples = sum(accel.size for accel, _ in suite)
+    duration = sum(accel.size * dt for accel, dt in suite)
+    heights = 3.5 * np.arange(1, STOREYS + 1)
+    for system in ("steel moment frame", "concrete moment frame"):
+        strength = design_strength(system, np.ones(STOREYS), heights, PERIOD_S, sds_g=1.0, sd1_g=0.6)
+        stick = yielding_stick(STOREYS, 3.5, strength.storey_yield_ratio, system=system, period_s=PERIOD_S)
+        start = time.perf_counter()
+        yielding_response(stick, suite[0][0][:10], suite[0][1])
+        compile_s = time.perf_counter() - start
+        times = []
+        for _ in range(3):
+            start = time.perf_counter()
+            results = [yielding_response(stick, accel, dt) for accel, dt in suite]
+            times.append(time.perf_counter() - start)
+        ductility = np.median([r.ductility[0] for r in results])
+        unconverged = sum(r.unconverged_steps for r in results)
+        print(f"{system} ({stick.law}): {len(suite)} motions ({samples} samples, {duration:.0f} s of shaking) x "
+              f"{STOREYS} storeys: best of 3 {min(times):.2f} s, worst {max(times):.2f} s "
+              f"(compile or cache load {compile_s:.1f} s); median first-storey ductility {ductility:.1f}; "
+              f"unconverged substeps {unconverged}")
+    modes = building_modes(STOREYS, 3.5, system="concrete moment frame", period_s=PERIOD_S)
+    from assess.hazard.records import Record
+    records = [Record(accel, dt, f"m{i}") for i, (accel, dt) in enumerate(suite)]
+    floor_records(modes, records[:1])
+    start = time.perf_counter()
+    floor_records(modes, records)
+    print(f"elastic modal route, same suite: {(time.perf_counter() - start) * 1000:.0f} ms")
+
+
+if __name__ == "__main__":
+    main()
