@@ -22,8 +22,8 @@ from pathlib import Path
 
 import numpy as np
 
+from assess.assessment.pipeline import run_assessment
 from assess.inventory.workbook import read_workbook
-from assess.pipeline import run_assessment
 
 MODES = ("p_overturn", "p_beyond_clearance", "p_rocking_harm")
 

@@ -15,11 +15,11 @@ import pandas as pd
 import pytest
 from scipy import integrate, stats
 
+from assess.assessment.pipeline import run_assessment
 from assess.hazard.openquake import read_openquake_hazard
 from assess.hazard.risk_integral import annual_rates_of_curve
 from assess.inventory import read_workbook
 from assess.mechanics.runner import LocalRunner
-from assess.pipeline import run_assessment
 
 import commands
 from workbooks import write_workbook

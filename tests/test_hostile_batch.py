@@ -14,8 +14,8 @@ from pathlib import Path
 
 import pytest
 
-from assess.batch import MAX_NAME_BYTES, building_name_problem
 from assess.inventory.xlsx import file_problem
+from assess.portfolio.batch import MAX_NAME_BYTES, building_name_problem
 from test_batch import ITEMS, _write_building
 from workbooks import write_workbook
 

@@ -18,22 +18,25 @@ from typing import Callable, Iterator
 
 import numba
 
-from assess import batch, output, pipeline, report
+from assess import report
+from assess.assessment import pipeline
+from assess.assessment.comparison import compare_summaries, read_previous_summary
 from assess.assessment.inputs import check_inputs
-from assess.cache import CachingRunner
+from assess.assessment.result import AssessmentResult
 from assess.calibration import read_measured, run_calibration
 from assess.calibration.apply import read_calibration
-from assess.comparison import compare_summaries, read_previous_summary
+from assess.command import output
+from assess.command.cache import CachingRunner
+from assess.command.folders import check_output_folder
 from assess.errors import InputError, Problem
 from assess.hazard.levels import parse_level
 from assess.hazard.usgs import read_hazard_curve_file
 from assess.inventory import read_workbook
 from assess.mechanics.runner import LocalRunner
-from assess.folders import check_output_folder
-from assess.report.calibration import render_calibration_html
+from assess.portfolio import batch
 from assess.quantity_text import system_of
-from assess.result import AssessmentResult
-from assess.tables import csv_text, restore_text, summary_text
+from assess.report.calibration import render_calibration_html
+from assess.report.tables import csv_text, restore_text, summary_text
 
 Say = Callable[[str], None]
 #: What the main job writes besides the CSV files: the report and summary.xlsx.
@@ -271,8 +274,8 @@ class BatchJob:
 
 
 def run_batch(job: BatchJob, say: Say = lambda message: None) -> tuple[batch.StagedPortfolio, CachingRunner, Path]:
-    """Assess every building of the portfolio (:mod:`assess.batch`), staged beside its output folder
-    (:meth:`~assess.batch.StagedPortfolio.commit` puts it in place); also returns the caching runner
+    """Assess every building of the portfolio (:mod:`assess.portfolio.batch`), staged beside its output folder
+    (:meth:`~assess.portfolio.batch.StagedPortfolio.commit` puts it in place); also returns the caching runner
     (its counts and the cache's write errors) and the output folder as given."""
     if job.hazard is not None:
         try:

@@ -4,8 +4,8 @@
 ``.xlsx`` with a sheet ``buildings`` (``building``, ``workbook``, optional
 ``oq_hazard`` and ``level``), or a folder of workbooks. It checks every
 building's input before anything runs (:func:`prepare_buildings`), then
-assesses each one with the main job (:func:`assess.pipeline.run_assessment`)
-through one :class:`~assess.cache.CachingRunner`, so that a case simulated
+assesses each one with the main job (:func:`assess.assessment.pipeline.run_assessment`)
+through one :class:`~assess.command.cache.CachingRunner`, so that a case simulated
 before (same item, same motion, same engine) is not simulated again, and
 writes (:func:`run_portfolio`, :meth:`StagedPortfolio.commit`)::
 
@@ -14,13 +14,13 @@ writes (:func:`run_portfolio`, :meth:`StagedPortfolio.commit`)::
     <out>/portfolio.html  the same, and the change report
     <out>/changes.csv     what changed since the previous run in <out>, one row per item and quantity
     <out>/previous/<building>/summary.csv   the summaries this run compared with
-    <out>/.cache/         the stored engine results (assess.cache)
+    <out>/.cache/         the stored engine results (assess.command.cache)
     <out>/.portfolio.json what each building's folder was made from (to keep it when nothing changed)
 
 A building whose inputs (workbook, records, hazard curve, level, seed,
 formats, code) are those of the previous run keeps its folder; the others
 are assessed again, their unchanged cases answered by the cache. The tables
-and the page across buildings are made in :mod:`assess.batch_report`.
+and the page across buildings are made in :mod:`assess.portfolio.report`.
 
 Everything is written into a folder beside ``<out>`` that takes its place in
 one rename once every building is done, so a run that fails or is
@@ -46,19 +46,21 @@ from typing import Callable
 import pandas as pd
 
 import assess
-from assess import output, pipeline, report
+from assess import report
+from assess.assessment import pipeline
 from assess.assessment.inputs import check_inputs
 from assess.assessment.motions import check_level
-from assess.batch_report import building_row, changes_between, portfolio_html
+from assess.command import output
+from assess.command.folders import (OUTPUT_NAMES, existing_folder, folder_mode, machine_refusal, refuse_foreign_files,
+                            refuse_open_office_files, swap_folder, write_files)
 from assess.errors import InputError, Problem, raise_if_any
-from assess.hazard.usgs import read_hazard_curve_file
 from assess.hazard.records import check_record_location
+from assess.hazard.usgs import read_hazard_curve_file
 from assess.inventory import read_workbook, schema, xlsx
 from assess.inventory.schema import Column, SheetSpec
 from assess.inventory.workbook import SheetReport, open_book, read_table, sheet_cells
-from assess.folders import (OUTPUT_NAMES, existing_folder, folder_mode, machine_refusal, refuse_foreign_files,
-                            refuse_open_office_files, swap_folder, write_files)
-from assess.tables import csv_text, restore_text
+from assess.portfolio.report import building_row, changes_between, portfolio_html
+from assess.report.tables import csv_text, restore_text
 
 #: The sheet of a portfolio workbook (docs/workbook.md).
 BUILDINGS = SheetSpec("buildings", (
@@ -378,7 +380,7 @@ def check_portfolio_folder(out_dir: Path) -> None:
 
     It may be new, or hold what a batch writes: :data:`PORTFOLIO_FILES`, the
     cache and previous summaries, and building folders holding only what the
-    main job writes (:data:`assess.folders.OUTPUT_NAMES`).
+    main job writes (:data:`assess.command.folders.OUTPUT_NAMES`).
     """
     out_dir = Path(out_dir)
     if not existing_folder(out_dir, "batch run"):
@@ -458,7 +460,7 @@ def default_out_dir(portfolio: Path) -> Path:
 def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, seed: int = 0,
                   formats: tuple[str, ...] = ("html", "pdf", "xlsx"), units: str | None = None,
                   say: Callable[[str], None] = lambda message: None) -> StagedPortfolio:
-    """Assess every building through ``runner`` (a :class:`~assess.cache.CachingRunner`), writing into a
+    """Assess every building through ``runner`` (a :class:`~assess.command.cache.CachingRunner`), writing into a
     staging folder beside ``out_dir``; returns it staged (:meth:`StagedPortfolio.commit` puts it in place).
 
     Each building's folder is what ``assess WORKBOOK --hazard LEVEL`` writes.

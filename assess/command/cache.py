@@ -70,7 +70,7 @@ MAX_PACKS = 64
 KEY_BYTES = 16
 #: Leftover temporary files (a writer killed mid-write) older than this are removed [s].
 STALE_TEMPORARY_S = 3600.0
-_MECHANICS = Path(__file__).resolve().parent / "mechanics"
+_MECHANICS = Path(__file__).resolve().parents[1] / "mechanics"
 _FLOATS = ("sliding_max_m", "sliding_residual_m", "theta_max_over_alpha")
 _BOOLS = ("uplift", "overturned")
 _TEXTS = ("mode", "solver")
