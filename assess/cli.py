@@ -16,7 +16,7 @@ from pathlib import Path
 from assess import __version__, startup
 from assess.command.folders import write_file_atomically
 from assess.command.interrupts import (Interrupt, caused_by, held_back, interrupted, reader_gone, sigint_recorded,
-                               write_uninterrupted)
+                                       write_uninterrupted)
 from assess.command.site_option import joined_oq_site
 from assess.errors import InputError, Problem, printable
 
@@ -383,9 +383,9 @@ def _calibrate(args: argparse.Namespace, say) -> int:
 
 def _batch(args: argparse.Namespace, say) -> int:
     startup.warm_up(args.scheduler, args.jobs)
-    from assess.command import job  # the core: seconds to import, not needed for --help or a wrong option
+    from assess.portfolio import batch  # the core: seconds to import, not needed for --help or a wrong option
 
-    staged, runner, out_dir = job.run_batch(job.BatchJob(
+    staged, runner, out_dir = batch.run_batch(batch.BatchJob(
         args.portfolio, out=args.out, hazard=args.hazard, oq_hazard=args.oq_hazard, scheduler=args.scheduler,
         scheduler_tls=_tls(args), formats=args.format, seed=args.seed, jobs=args.jobs, allow_files_outside=args.allow_files_outside), say)
     try:

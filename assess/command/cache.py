@@ -56,7 +56,7 @@ import numba
 import assess
 from assess.mechanics.block import MODES, BlockResponse
 from assess.mechanics.gateway import (ENGINE_SOLVERS, PEAKS, RESPONSE, CasePeaks, Cases, LocalRunner, Progress, Result,
-                                     RunnerBase)
+                                      RunnerBase)
 
 #: Bump when the pack layout changes: packs of another format are not read.
 PACK_FORMAT = 1

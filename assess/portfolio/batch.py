@@ -51,9 +51,12 @@ from assess.assessment import pipeline
 from assess.assessment.inputs import check_inputs
 from assess.assessment.motions import check_level
 from assess.command import output
+from assess.command.cache import CachingRunner
 from assess.command.folders import (OUTPUT_NAMES, existing_folder, folder_mode, machine_refusal, refuse_foreign_files,
-                            refuse_open_office_files, swap_folder, write_files)
+                                    refuse_open_office_files, swap_folder, write_files)
+from assess.command.job import JOB_FORMATS, Say, open_runner, set_threads
 from assess.errors import InputError, Problem, raise_if_any
+from assess.hazard.levels import parse_level
 from assess.hazard.records import check_record_location
 from assess.hazard.usgs import read_hazard_curve_file
 from assess.inventory import read_workbook, schema, xlsx
@@ -549,6 +552,47 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
         if machine_refusal(error, out_dir) is not None:  # a full disk, a quota: the machine's, not a bug
             raise machine_refusal(error, out_dir) from None
         raise
+
+
+# ---------------------------------------------------------------- the job of assess batch PORTFOLIO
+
+@dataclass
+class BatchJob:
+    """``assess batch PORTFOLIO`` and its options (docs/commands.md)."""
+
+    portfolio: Path
+    out: Path | None = None
+    hazard: str | None = None
+    oq_hazard: Path | None = None
+    scheduler: str | None = None
+    scheduler_tls: dict = field(default_factory=dict)
+    formats: tuple[str, ...] = JOB_FORMATS
+    seed: int = 0
+    jobs: int | None = None
+    allow_files_outside: bool = False
+
+
+def run_batch(job: BatchJob, say: Say = lambda message: None) -> tuple[StagedPortfolio, CachingRunner, Path]:
+    """Assess every building of the portfolio, staged beside its output folder (:meth:`StagedPortfolio.commit`
+    puts it in place); also returns the caching runner (its counts and the cache's write errors) and the output
+    folder as given."""
+    if job.hazard is not None:
+        try:
+            parse_level(job.hazard)
+        except ValueError as error:
+            raise InputError([Problem(file="--hazard", message=str(error))]) from None
+    set_threads(job.jobs)
+    out_dir = Path(job.out or default_out_dir(job.portfolio))
+    check_portfolio_folder(out_dir)
+    say(f"reading {job.portfolio}")
+    buildings = read_portfolio(job.portfolio, allow_outside=job.allow_files_outside)
+    prepared = prepare_buildings(buildings, level=job.hazard, oq_hazard=job.oq_hazard,
+                                 allow_records_outside=job.allow_files_outside, say=say)
+    with open_runner(job.scheduler, lambda message: None, out_dir / CACHE_FOLDER,
+                     tls=job.scheduler_tls) as runner:
+        say(f"{len(prepared)} buildings; results are reused from {out_dir / CACHE_FOLDER}")
+        staged = run_portfolio(prepared, out_dir, runner=runner, seed=job.seed, formats=job.formats, say=say)
+    return staged, runner, out_dir
 
 
 def code_version() -> str:
