@@ -173,7 +173,7 @@ def test_a_curve_update_reintegrates_without_simulating(de_run):
 def two_levels(tmp_path_factory):
     """``--hazard 2in50,10in50 --oq-hazard`` the lab curve, the ground suites from the site's uniform-hazard
     spectrum, through the job (every level computed before any is written)."""
-    from assess.command import job
+    from assess.command import job as job_module
 
     folder = tmp_path_factory.mktemp("levels")
     site = [["key", "value"], ["uhs", "oq/uhs.csv"], ["oq_site", "LAB"], ["suite_size", 3]]
