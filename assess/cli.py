@@ -14,11 +14,11 @@ import traceback
 from pathlib import Path
 
 from assess import __version__, startup
+from assess.command.folders import write_file_atomically
+from assess.command.interrupts import (Interrupt, caused_by, held_back, interrupted, reader_gone, sigint_recorded,
+                                       write_uninterrupted)
+from assess.command.site_option import joined_oq_site
 from assess.errors import InputError, Problem, printable
-from assess.folders import write_file_atomically
-from assess.site_option import joined_oq_site
-from assess.interrupts import (Interrupt, caused_by, held_back, interrupted, reader_gone, sigint_recorded,
-                               write_uninterrupted)
 
 EXIT_OK, EXIT_INTERNAL, EXIT_INPUT = 0, 1, 2
 EPILOG = ("Exit codes: 0 done; 2 the input is wrong (each problem is named); 1 internal error; "
@@ -347,7 +347,7 @@ def _warn(message: str) -> None:
 def _assess(args: argparse.Namespace, say) -> int:
     startup.warm_up(args.scheduler, args.jobs)
     with startup.pdf_process(args.format) as pdf_process:
-        from assess import job  # the core: seconds to import, not needed for --help or a wrong option
+        from assess.command import job  # the core: seconds to import, not needed for --help or a wrong option
 
         startup.core_imported()
 
@@ -368,7 +368,7 @@ def _assess(args: argparse.Namespace, say) -> int:
 
 
 def _calibrate(args: argparse.Namespace, say) -> int:
-    from assess import job  # the core: seconds to import, not needed for --help or a wrong option
+    from assess.command import job  # the core: seconds to import, not needed for --help or a wrong option
 
     result, files, out_dir = job.run_calibrate(args.workbook, args.measured, args.out, args.format,
                                                args.allow_records_outside, say)
@@ -383,9 +383,9 @@ def _calibrate(args: argparse.Namespace, say) -> int:
 
 def _batch(args: argparse.Namespace, say) -> int:
     startup.warm_up(args.scheduler, args.jobs)
-    from assess import job  # the core: seconds to import, not needed for --help or a wrong option
+    from assess.portfolio import batch  # the core: seconds to import, not needed for --help or a wrong option
 
-    staged, runner, out_dir = job.run_batch(job.BatchJob(
+    staged, runner, out_dir = batch.run_batch(batch.BatchJob(
         args.portfolio, out=args.out, hazard=args.hazard, oq_hazard=args.oq_hazard, scheduler=args.scheduler,
         scheduler_tls=_tls(args), formats=args.format, seed=args.seed, jobs=args.jobs, allow_files_outside=args.allow_files_outside), say)
     try:
@@ -404,7 +404,7 @@ def _batch(args: argparse.Namespace, say) -> int:
 
 
 def _simulate(args: argparse.Namespace, say) -> int:
-    from assess import simulation  # the engine: seconds to import, not needed for --help or a wrong option
+    from assess.assessment import simulation  # the engine: seconds to import, not needed for --help or a wrong option
 
     problems = []
     if (args.record is None) == (args.pulse is None):

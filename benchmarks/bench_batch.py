@@ -74,8 +74,8 @@ def report(step: str, seconds: float, folder: Path) -> dict:
 def cache_overhead(n_items: int = 10_000, n_records: int = 18, samples: int = 4000) -> None:
     import numpy as np
 
-    from assess.cache import CachingRunner
     from assess.mechanics.block import Block
+    from assess.command.cache import CachingRunner
     from assess.mechanics.engine import CasePeaks
 
     class Zeros:  # no engine: what is timed is the cache alone

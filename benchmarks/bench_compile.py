@@ -40,9 +40,9 @@ PROBE = textwrap.dedent("""
 
     event.register("numba:compile", Listener())
     start = time.perf_counter()
+    from assess.assessment.pipeline import run_assessment
+    from assess.command.job import open_runner
     from assess.inventory import read_workbook
-    from assess.job import open_runner
-    from assess.pipeline import run_assessment
     if sys.argv[3] == "no-warmup":
         from assess.mechanics import warmup
         warmup.start = lambda: None

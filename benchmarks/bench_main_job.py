@@ -24,8 +24,8 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=3)
     repeat = parser.parse_args().repeat
 
+    from assess.assessment.pipeline import run_assessment
     from assess.inventory import read_workbook
-    from assess.pipeline import run_assessment
     from assess.report import render_html, render_pdf
 
     t_read, inventory = best_of(repeat, lambda: read_workbook(WORKBOOK))

@@ -19,8 +19,8 @@ from pathlib import Path
 
 
 def lab_html() -> str:
+    from assess.assessment.pipeline import run_assessment
     from assess.inventory import read_workbook
-    from assess.pipeline import run_assessment
     from assess.report import render_html
 
     root = Path(__file__).resolve().parents[1]

@@ -26,8 +26,8 @@ from unittest import mock
 import numpy as np
 import pandas as pd
 
+from assess.assessment.pipeline import run_assessment
 from assess.inventory import Inventory, read_workbook
-from assess.pipeline import run_assessment
 
 LAB = Path(__file__).resolve().parent.parent / "inventories" / "lab.xlsx"
 
@@ -68,7 +68,7 @@ def main() -> None:
         inventory = Inventory(path=Path(folder) / "pairs.xlsx", equipment=lab.equipment,
                               hazard=pair_rows(Path(folder), args.pga), settings=lab.settings)
         planar = run_assessment(inventory, "pairs").summary.set_index("id")
-        with mock.patch("assess.pipeline.planar_runs", return_value=None):
+        with mock.patch("assess.assessment.pipeline.planar_runs", return_value=None):
             one_way = run_assessment(inventory, "pairs").summary.set_index("id")
     used = planar.index[planar["demand_planar"].eq(True)]
     ratio = planar.loc[used, "demand_median_cm"] / one_way.loc[used, "demand_median_cm"]

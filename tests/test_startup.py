@@ -9,8 +9,8 @@ import threading
 import pytest
 
 from assess import report, startup
-from assess.report import pdf
 from assess.mechanics import warmup
+from assess.report import pdf
 
 
 def test_the_pdf_processes_start_early_the_bodys_with_the_figures_modules(monkeypatch):

@@ -2,7 +2,7 @@
 
 The workbook reader (:func:`assess.inventory.read_workbook`) checks each
 cell; these are the rules about what a hazard sheet asks the run to do
-(docs/workbook.md, sheet hazard). :func:`assess.pipeline.run_assessment` applies
+(docs/workbook.md, sheet hazard). :func:`assess.assessment.pipeline.run_assessment` applies
 them, so a library call is held to them as the command line and ``assess batch`` are.
 """
 from __future__ import annotations

@@ -21,11 +21,11 @@ import numba
 import numpy as np
 import pandas as pd
 
+from assess.assessment import floors as site_and_building
 from assess.calibration.apply import scaled_motions
 from assess.errors import InputError, Problem
 from assess.fragility.governing import PULSE, RECORD, SYNTHETIC
 from assess.hazard.levels import HazardLevel
-from assess.assessment import floors as site_and_building
 from assess.hazard.levels import parse_level
 from assess.hazard.motions import derive_floor_motions, require_probability, scale_to_pga, select_level
 from assess.hazard.openquake import pga_at_level

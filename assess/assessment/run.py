@@ -51,7 +51,7 @@ def run_level(cases: pd.DataFrame, motions, runner, progress: Progress, calibrat
 
 
 def lowered_contents(cases: pd.DataFrame, motions, runner, progress: Progress, calibration=None) -> Runs:
-    """The what-if run of the actions (:mod:`assess.actions`): ``cases`` are those of the items whose heavy
+    """The what-if run of the actions (:mod:`assess.decision.actions`): ``cases`` are those of the items whose heavy
     contents would be moved low, with their centre of mass lowered
     (:func:`assess.assessment.cases.with_centre_of_mass_at`), simulated under the same histories as the
     level (:func:`run_level`), through the same runner."""

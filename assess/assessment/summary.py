@@ -4,7 +4,7 @@
 for its governing case (empty where the regression does not apply: :func:`without_regression`)
 and its governing demand (:mod:`assess.assessment.demand`), with the words of where its
 time histories come from (:func:`floor_origins`, :func:`with_history_origin`),
-and the decisions that follow from it (:mod:`assess.decisions`); it decides
+and the decisions that follow from it (:mod:`assess.decision.decisions`); it decides
 nothing. The columns are described in docs/outputs.md.
 """
 from __future__ import annotations
@@ -12,13 +12,13 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from assess import decisions
+from assess.assessment.motions import MEMORY
+from assess.assessment.result import MOTION_COLUMNS
 from assess.data import default_settings
+from assess.decision import decisions
 from assess.fragility.regression import RegressionConstants
 from assess.fragility.suite import PULSE_SHARE_MIN
 from assess.mechanics.geometry import frequency_parameter, slenderness
-from assess.assessment.motions import MEMORY
-from assess.result import MOTION_COLUMNS
 
 UPLIFT_MODES = decisions.UPLIFT_MODES
 #: The summary's numbers of the paper's regression for the governing case (Konstantinidis & Makris 2010,
@@ -132,7 +132,7 @@ def summarise(equipment: pd.DataFrame, demand, decided, origins: dict | None = N
     """One row per item: what it is (id, name, room, floor, quantity, consequence, μ, clearance), its
     demand row (``demand``: :class:`assess.assessment.demand.ItemDemand`; an anchored item: its geometry
     about the more slender direction; the regression's numbers only where it applies, :func:`without_regression`)
-    and its decisions (``decided``: :class:`assess.decisions.Decisions`). ``origins`` (:func:`floor_origins`)
+    and its decisions (``decided``: :class:`assess.decision.decisions.Decisions`). ``origins`` (:func:`floor_origins`)
     names each item's time histories by where its floor's come from (:func:`with_history_origin`)."""
     origins = origins or {}
     rows = []

@@ -42,11 +42,11 @@ import numpy as np
 import pandas as pd
 
 from assess.calibration.effects import EFFECTS, calibrated_block, theta_over_declared_alpha
+from assess.decision.flags import Flag
 from assess.errors import InputError, Problem
 from assess.inventory.schema import clip
 from assess.mechanics.block import Block
 from assess.quantity_text import length_unit, length_value, percent_text, system_of
-from assess.result import Flag
 
 #: Largest calibration.json read [bytes] (a real one is a few kB).
 MAX_FILE_BYTES = 5_000_000

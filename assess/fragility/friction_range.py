@@ -181,7 +181,7 @@ def at_end(cases: pd.DataFrame, runs: pd.DataFrame, end: str):
 def mu_dependence_sentence(item_id: str, mu_low: float, mu_high: float, risk: str, risk_low: str,
                            risk_high: str, why_low: str, why_high: str) -> str:
     """Whether the item's advice depends on where μ lies in its range, in one sentence from its numbers
-    (``why_low``, ``why_high``: why it is in its class at each end, :func:`assess.risk_classes.risk_reason`).
+    (``why_low``, ``why_high``: why it is in its class at each end, :func:`assess.decision.risk_classes.risk_reason`).
 
     >>> mu_dependence_sentence("INC-G-01", 0.13, 0.23, "high", "high", "low", "60% chance of sliding past its room",
     ...                        "0% chance of overturning, 0% of sliding past its room")
@@ -197,7 +197,7 @@ def mu_dependence_sentence(item_id: str, mu_low: float, mu_high: float, risk: st
 
 
 #: Columns the decisions add to the summary for an item with a range of friction
-#: (:func:`assess.decisions.mu_range_decisions`).
+#: (:func:`assess.decision.decisions.mu_range_decisions`).
 MU_RANGE_COLUMNS = ("mu_low", "mu_high", "risk_mu_low", "risk_mu_high", "p_beyond_clearance_mu_low",
                     "p_beyond_clearance_mu_high", "mu_range_note")
 

@@ -26,7 +26,7 @@ re-integrates the same outcomes: the cache answers every run) nor on the
 amplitude of the level's suite: the same ground histories give the same
 fragilities at any level, which is why the job computes them once, from its
 first level's suite, and gives every level the same rates
-(:func:`assess.job.run_job`).
+(:func:`assess.command.job.run_job`).
 
 A building is linear, so a floor history under a scaled ground history is
 the scaled floor history; the histories are still passed through the

@@ -28,7 +28,7 @@ class Inventory:
         :data:`~assess.inventory.schema.CONSEQUENCES`, ``ordinary`` when not given),
         ``mu_low``, ``mu_high`` (the range μ may take, NaN when not given; both or neither,
         ``mu_low <= mu <= mu_high``), ``value`` and ``mitigation_cost`` (per unit, in the settings'
-        ``currency``, NaN when not given; :mod:`assess.costs`), ``base`` and ``floor_finish`` (str, "" when
+        ``currency``, NaN when not given; :mod:`assess.decision.costs`), ``base`` and ``floor_finish`` (str, "" when
         not given), ``mu_source`` (str: ``workbook``, or why ``mu``, ``mu_low`` and ``mu_high`` are a default:
         :func:`assess.inventory.friction.default_range`; "" for an anchored item without ``mu``, whose ``mu``
         is NaN), ``row`` (int, the Excel row the item came from).

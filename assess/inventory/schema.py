@@ -156,7 +156,7 @@ EQUIPMENT = SheetSpec("equipment", (
     Column("base", "text", default="", max_chars=60),
     Column("floor_finish", "text", default="", max_chars=60),
     # what the item's failure costs and what its recommended action costs, per unit, in the settings'
-    # currency (assess/costs.py); empty: no cost for that item
+    # currency (assess/decision/costs.py); empty: no cost for that item
     Column("value", "number", default=math.nan, low=0.0, hint=_MONEY_HINT),
     Column("mitigation_cost", "number", default=math.nan, low=0.0, hint=_MONEY_HINT),
 ), subject="a piece of equipment")

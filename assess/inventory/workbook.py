@@ -573,7 +573,7 @@ SETTING_BOUNDS = {
                                    "as a fraction of the item's height, with its heavy contents low: above 0 and "
                                    "at most 0.5 (mid-height, a uniformly loaded item)"),
     "roof_floor": (1.0, 200.0, "roof_floor is the roof's floor number, for z/h in ASCE 7-16 eq. 13.3-1"),
-    # costs (assess/costs.py)
+    # costs (assess/decision/costs.py)
     "discount_rate": (0.0, 0.3, "discount_rate is a real rate per year as a fraction: 0.07 for 7 % "
                       "(OMB Circular A-94), 0.02 to 0.1 in practice"),
     "remaining_life_yr": (1.0, 100.0, "remaining_life_yr is the years the action protects the item"),

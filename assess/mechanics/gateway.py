@@ -25,7 +25,7 @@ solvers that calls a kernel. A *runner* has ``run(cases, progress=None)``
 returning :class:`CasePeaks` (``peaks``, ``planar``) or a list of
 :class:`~assess.mechanics.block.BlockResponse` (``response``), in case order:
 :class:`LocalRunner` (this machine's threads),
-:class:`assess.cache.CachingRunner` (results stored by the content of each
+:class:`assess.command.cache.CachingRunner` (results stored by the content of each
 case, the kind of run included) and
 :class:`assess.mechanics.distributed.DaskRunner` (a cluster). A case's result
 depends on the case alone, so it is the same, byte for byte, whichever runner

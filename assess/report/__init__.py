@@ -1,6 +1,6 @@
 """The risk report for facility managers: ``report.html`` and ``report.pdf`` (docs/outputs.md).
 
-``render_html(result)`` turns an :class:`~assess.result.AssessmentResult` into
+``render_html(result)`` turns an :class:`~assess.assessment.result.AssessmentResult` into
 one self-contained HTML document (stylesheet inlined, figures as SVG ``data:``
 URIs, workbook text escaped, no timestamp); ``render_pdf(html)`` prints it to
 PDF with WeasyPrint, refusing every URL that is not a ``data:`` URI

@@ -1,6 +1,6 @@
 """Page 1's account of costs (``templates/_costs.html.j2``): the recommended actions ranked by their
 benefit-cost ratio where the result has one, and by priority otherwise, from the cost columns of the
-summary (:mod:`assess.costs`).
+summary (:mod:`assess.decision.costs`).
 
 Every sentence is made here from the result's numbers; the template only places them. Without a
 ``value`` for any item there is nothing to show (None), and the report is as it was.
@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import pandas as pd
 
-from assess.costs import (
+from assess.decision.costs import (
     LOSS_RATIO_BEYOND_CLEARANCE, LOSS_RATIO_OVERTURN, LOSS_RATIO_ROCKING_HARM, NO_ACTION, present_value_factor,
 )
 from assess.report.sentences import DASH, finite, format_significant, text

@@ -1,6 +1,6 @@
 """Figures of the risk report, drawn with matplotlib and returned as SVG text.
 
-Every figure is a pure function of an :class:`~assess.result.AssessmentResult`
+Every figure is a pure function of an :class:`~assess.assessment.result.AssessmentResult`
 (and, for the regression figure, the paper's Table 3) returning an SVG
 document as ``str``. The same result gives byte-identical SVG: the SVG hash
 salt is fixed, the date and creator are left out of the metadata, text is

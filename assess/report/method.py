@@ -8,7 +8,7 @@ gives the equations of every route and says which this report took, from the res
 """
 from __future__ import annotations
 
-from assess.result import AssessmentResult
+from assess.assessment.result import AssessmentResult
 
 
 def floor_motion_route(result: AssessmentResult) -> dict:

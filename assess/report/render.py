@@ -23,14 +23,14 @@ import pandas as pd
 from markupsafe import Markup
 
 import assess
-from assess.actions import work_order_sentences
 from assess.anchorage.item import anchorage_sentence
 from assess.anchorage.method import anchorage_method
+from assess.decision.actions import work_order_sentences
+from assess.decision.risk_classes import rule_text
 from assess.quantity_text import floor_numbering_of, length_unit, length_value, system_of
 from assess.report import FIGURE_MODULES, figures
 from assess.report.costs import costs_context
 from assess.report.curve import curve_context
-from assess.risk_classes import rule_text
 from assess.report.method import floor_motion_route
 from assess.report.pdf import RefusedURLError, data_only_url_fetcher, decode_data_uri, render_pdf, split_appendix  # noqa: F401
 from assess.report.references import reference_rows
@@ -604,7 +604,7 @@ def render_html(result, process=None) -> str:
     of the report's appendix alone (as :func:`assess.report.pdf.split_appendix` makes it from the whole
     report) when a core is free for it: at once where it draws no figures, so that the appendix is laid out
     while this process draws them; else once this process has drawn its own, the other's nearly done
-    (:func:`assess.output.render_outputs`; :class:`assess.report.pdf.BodyAndAppendixProcesses` has a
+    (:func:`assess.command.output.render_outputs`; :class:`assess.report.pdf.BodyAndAppendixProcesses` has a
     process for the appendix, which thus never takes a core from the figures, without being given a
     lower priority that a busy machine would starve).
     """

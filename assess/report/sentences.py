@@ -2,7 +2,7 @@
 
 The templates only lay these out (:mod:`assess.report.render`). Sentences
 that the decisions make for an item (its action, what-if, demand note) are
-fields of the result (:mod:`assess.decisions`); what is here turns the result's
+fields of the result (:mod:`assess.decision.decisions`); what is here turns the result's
 fields into the report's words and counts, so that a count a page shows adds up
 in a test and is never re-derived in a template.
 """
@@ -12,9 +12,9 @@ import math
 
 import pandas as pd
 
+from assess.assessment.result import RISK_CLASSES, AssessmentResult
 from assess.fragility import friction_range, planar
 from assess.quantity_text import floor_text, floors_text, percent_text, rounded_length, significant_text  # noqa: F401 (floor labels)
-from assess.result import RISK_CLASSES, AssessmentResult
 
 DASH = "–"
 
@@ -193,7 +193,7 @@ def suite_text(row: pd.Series) -> str:
 
 
 #: The causes of a flag that concern a model's limit rather than a cell to check: the report says each once,
-#: with the items it concerns (and what is each one's own, :attr:`assess.result.Flag.detail`), not once per
+#: with the items it concerns (and what is each one's own, :attr:`assess.decision.flags.Flag.detail`), not once per
 #: item. ``{im_min}`` and ``{im_max}`` are the regression's fitted range.
 FLAG_CAUSES = {
     "uplift": "They uplift and rock in the simulation (their mode and peak θ/α are in the tables). The paper's "
@@ -219,7 +219,7 @@ def flag_groups(flags, im_range: tuple[float, float] = (1.71, 6.40)) -> list[dic
     each one's own (``items``: ``id`` and ``detail``); any other (a cell to check, a calibration's change)
     keeps each item's own message (``entries``). ``im_range`` is the regression's fitted IM range.
 
-    >>> from assess.result import Flag
+    >>> from assess.decision.flags import Flag
     >>> groups = flag_groups([Flag("A", "cg_not_mid_height", "…", "46 in"), Flag("B", "implausible_input", "b"),
     ...                       Flag("C", "cg_not_mid_height", "…", "40 in")])
     >>> [(g["code"], [i["id"] for i in g["items"]], len(g["entries"])) for g in groups]
@@ -432,10 +432,10 @@ def level_text(result: AssessmentResult) -> str:
 
 def class_rule_paragraph(settings: dict) -> str:
     """The method's paragraph on the risk classes: the rule that decides them
-    (:func:`assess.risk_classes.rule_text`, from the run's thresholds), the intervals, the room advised
+    (:func:`assess.decision.risk_classes.rule_text`, from the run's thresholds), the intervals, the room advised
     (the sliding exceeded with the moderate threshold's chance) and the anchored items."""
     from assess.data import default_settings
-    from assess.risk_classes import rule_text
+    from assess.decision.risk_classes import rule_text
     merged = {**default_settings(), **(settings or {})}
     moderate = 100.0 * float(merged["risk_pf_moderate"])
     return (f"Risk class, from the governing demand. {rule_text(merged)} Where a chance's 90 % interval spans "

@@ -4,7 +4,7 @@ The same rows and columns as ``summary.csv`` (one sheet per hazard level),
 with a frozen bold header whose names carry their units, number formats that
 show what the numbers are (percent for probabilities, one decimal for
 lengths), widths that fit, and an autofilter. Text from the workbook is made
-inert as in the CSV (:func:`assess.tables.neutralise_formulas`): a cell never
+inert as in the CSV (:func:`assess.report.tables.neutralise_formulas`): a cell never
 becomes a formula. With ``units="us"`` the lengths are also given in inches
 and the accelerations stay in g (a US engineer's unit for them), in columns
 named with their unit beside the SI ones.
@@ -20,7 +20,7 @@ import numpy as np
 import pandas as pd
 
 from assess.quantity_text import N_PER_LBF
-from assess.tables import neutralise_formulas
+from assess.report.tables import neutralise_formulas
 
 #: The date written into a workbook's document properties and zip entries: no time of day goes into a file,
 #: so the same inputs give the same bytes.

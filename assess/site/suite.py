@@ -77,7 +77,7 @@ DEFAULT_SUITE_SIZE = 11
 #: Synthetic motions in a suite: enough for an item that none of them overturns to be clearly ``low``. With n
 #: motions and no failure, the upper end of the 90 % Clopper-Pearson interval (Clopper & Pearson 1934) is
 #: 1 - 0.05^(1/n) (about 3/n, the "rule of three": Hanley & Lippman-Hand 1983); the lowest threshold a class
-#: turns on is overturning's 2.5 % (assess.risk_classes), so n >= ln 0.05 / ln 0.975 = 118.3: 120 motions put
+#: turns on is overturning's 2.5 % (assess.decision.risk_classes), so n >= ln 0.05 / ln 0.975 = 118.3: 120 motions put
 #: a 0-of-120 item's interval (0-2.5 %) inside ``low``. Eleven motions (ASCE 7's minimum for a building's
 #: own response) bound the same item only below 24 %, which spans every class. A synthetic motion costs
 #: what its matching costs (about 0.05 s), so the evidence is cheap where records are not.

@@ -1,4 +1,4 @@
-"""The cache of engine results (assess.cache): the same numbers, and a miss for every change that matters.
+"""The cache of engine results (assess.command.cache): the same numbers, and a miss for every change that matters.
 
 What was simulated is observed by the runner the cache wraps (a recording
 runner that keeps the blocks it was handed), never taken from the cache's
@@ -13,10 +13,10 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-import assess.cache as cache
-from assess.cache import CachingRunner, block_fingerprint, engine_version
+import assess.command.cache as cache
 from assess.hazard.records import pulse_record
 from assess.mechanics.block import Block
+from assess.command.cache import CachingRunner, block_fingerprint, engine_version
 from assess.mechanics.engine import BlockOnInterface, SlidingInterface, simulate_cases
 from assess.mechanics.gateway import run_cases
 from assess.mechanics.runner import LocalRunner, RunnerBase

@@ -11,11 +11,11 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from assess.assessment.pipeline import run_assessment
 from assess.building import building_modes
 from assess.building.response import floor_records
 from assess.errors import InputError
 from assess.inventory import read_workbook
-from assess.pipeline import run_assessment
 
 EQUIPMENT = [
     {"id": "G-1", "name": "incubator", "floor": 0, "height_cm": 180, "width_cm": 70, "depth_cm": 80,

@@ -14,15 +14,15 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from assess.cache import CachingRunner, case_keys
+from assess.assessment.pipeline import run_assessment
 from assess.hazard.openquake import read_openquake_hazard
 from assess.hazard.pulses import pulse_acceleration
 from assess.mechanics.block import Block
+from assess.command.cache import CachingRunner, case_keys
 from assess.mechanics.gateway import (PEAKS, PLANAR, PLANAR_KERNEL, RESPONSE, Cases, LocalRunner, RunnerBase,
                                       run_cases)
 from assess.mechanics.sliding import sliding_response
 from assess.mechanics.sliding_2d import sliding_2d_peaks_batch
-from assess.pipeline import run_assessment
 from tests.fragility.test_planar import component, pair_inventory
 
 REPO = Path(__file__).resolve().parents[2]
@@ -54,7 +54,7 @@ def pair(tmp_path_factory):
 
 
 def what_if_runs(result) -> int:
-    """The runs of the actions' what-if (assess.actions): every case of an item that rocks or overturns
+    """The runs of the actions' what-if (assess.decision.actions): every case of an item that rocks or overturns
     (centre of mass above lower_contents_cg_fraction of its height) again, under each of its histories."""
     motions, summary = result.motions, result.summary.set_index("id")
     rocks = set(motions.loc[motions["sim_uplift"].astype(bool), "id"]) | set(summary.index[summary["p_overturn"] > 0])

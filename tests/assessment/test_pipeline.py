@@ -5,12 +5,12 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from assess.assessment.pipeline import run_assessment
+from assess.assessment.result import MOTION_COLUMNS, SUMMARY_COLUMNS
+from assess.command.output import csv_text
 from assess.data import default_settings, km2010_table3
 from assess.errors import InputError
 from assess.inventory import Inventory
-from assess.output import csv_text
-from assess.pipeline import run_assessment
-from assess.result import MOTION_COLUMNS, SUMMARY_COLUMNS
 
 
 def item(item_id, floor=0, height_cm=228.6, width_cm=62.2, depth_cm=80.0, mu=0.13, mu_static=None,

@@ -11,13 +11,13 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from assess import decisions
+from assess.assessment.pipeline import run_assessment
 from assess.data import default_settings
+from assess.decision import decisions
 from assess.errors import InputError
 from assess.fragility.friction_range import mu_dependence_sentence
 from assess.fragility.regression import RegressionConstants
 from assess.inventory import Inventory
-from assess.pipeline import run_assessment
 
 
 def _item(item_id, anchored=False):

@@ -15,9 +15,9 @@ import pandas as pd
 import pytest
 
 from assess import cli
+from assess.assessment.pipeline import run_assessment
 from assess.errors import InputError
 from assess.inventory import read_workbook
-from assess.pipeline import run_assessment
 
 #: Items on the ground floor, floor 1 and the roof (floor 2) of a 2-storey building.
 EQUIPMENT = [

@@ -109,7 +109,7 @@ def test_summary_xlsx_has_the_rows_of_summary_csv(lab_run):
     header, and every text cell plain text (no formula)."""
     import openpyxl
 
-    from assess.output import restore_text
+    from assess.command.output import restore_text
 
     scratch, _ = lab_run
     out = scratch / "reports" / "lab-2in50"
@@ -358,7 +358,7 @@ def test_an_output_folder_holding_other_files_is_refused_before_running(tmp_path
 
 
 def test_a_failed_swap_puts_the_previous_folder_back(tmp_path, monkeypatch):
-    from assess import folders as output
+    from assess.command import folders as output
 
     out = tmp_path / "out"
     out.mkdir()
@@ -493,7 +493,7 @@ def test_an_interrupt_a_library_swallows_still_stops_the_run(tmp_path, monkeypat
 
 def test_an_interrupt_wrapped_in_a_system_error_exits_130(tmp_path, monkeypatch, capsys):
     """numba's threads may turn KeyboardInterrupt into 'SystemError: ... returned a result with an exception set'."""
-    import assess.pipeline
+    import assess.assessment.pipeline
 
     def wrapped(*args, **kwargs):
         try:
@@ -501,7 +501,7 @@ def test_an_interrupt_wrapped_in_a_system_error_exits_130(tmp_path, monkeypatch,
         except KeyboardInterrupt as interrupt:
             raise SystemError("<built-in function> returned a result with an exception set") from interrupt
 
-    monkeypatch.setattr(assess.pipeline, "run_assessment", wrapped)
+    monkeypatch.setattr(assess.assessment.pipeline, "run_assessment", wrapped)
     code = cli.main([str(LAB), "--hazard", "2in50", "--out", str(tmp_path / "out"), "--quiet"])
     assert code == 130 and capsys.readouterr().err.splitlines() == [INTERRUPTED]
 

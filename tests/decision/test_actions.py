@@ -14,10 +14,10 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from assess import actions
+from assess.assessment.pipeline import run_assessment
 from assess.data import default_settings
+from assess.decision import actions
 from assess.inventory import Inventory, read_workbook
-from assess.pipeline import run_assessment
 from rocking_reference import reference_rocking
 
 SETTINGS = {**default_settings(), "risk_pf_high": 0.5, "risk_pf_moderate": 0.1, "room_max_cm": 30.0}

@@ -1,4 +1,4 @@
-"""Costs (assess/costs.py): present value, benefit-cost ratio, expected loss and expected annual loss, checked
+"""Costs (assess/decision/costs.py): present value, benefit-cost ratio, expected loss and expected annual loss, checked
 against a published worked example and against hand computations; and the report/CSV without costs unchanged.
 
 Expected values are computed here by hand (a different route from the code's where one exists: the
@@ -13,13 +13,13 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from assess import costs
-from assess.costs import (
+from assess.assessment.pipeline import run_assessment
+from assess.data import default_settings
+from assess.decision import costs
+from assess.decision.costs import (
     COST_COLUMNS, after_probabilities, benefit_cost_ratio, cost_table, expected_loss_ratio, item_costs,
     present_value_factor,
 )
-from assess.data import default_settings
-from assess.pipeline import run_assessment
 from assess.report import render_html
 from assess.report.costs import costs_context, ranked
 from assess.report.render import make_environment, report_context, template_text

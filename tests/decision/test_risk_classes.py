@@ -9,15 +9,15 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from assess import decisions
+from assess.assessment.pipeline import run_assessment
 from assess.data import default_settings
+from assess.decision import decisions
+from assess.decision.risk_classes import CLASS_ORDER, Chances, classify_risk, risk_reason
 from assess.fragility.governing import governing_demand, rocking_harm
 from assess.fragility.regression import RegressionConstants
 from assess.inventory import Inventory
-from assess.pipeline import run_assessment
 from assess.quantity_text import percent_text
 from assess.report.sentences import format_percent
-from assess.risk_classes import CLASS_ORDER, Chances, classify_risk, risk_reason
 from rocking_reference import reference_rocking
 from tests.fragility.test_governing_demand import DT_S, _sine_record
 
@@ -205,7 +205,7 @@ def test_a_small_workbook_where_rocking_alone_is_never_high(tmp_path):
 
 def test_a_class_changed_by_the_rule_alone_says_so_in_the_comparison():
     """A previous summary (old rule: high because it rocked) against this run's, with the same numbers."""
-    from assess.comparison import compare_summaries
+    from assess.assessment.comparison import compare_summaries
 
     before = pd.DataFrame({"id": ["RX-0-03"], "name": ["Pharmacy refrigerator"], "risk": ["high"], "pta_g": [0.45],
                            "mode": ["slide-rock"], "p_beyond_clearance": [0.0], "p_overturn": [0.0]})

@@ -14,6 +14,7 @@ import pandas as pd
 import pytest
 from scipy import stats
 
+from assess.assessment.pipeline import run_assessment
 from assess.data import default_settings
 from assess.fragility.governing import governing_demand
 from assess.fragility.suite import (
@@ -22,7 +23,6 @@ from assess.fragility.suite import (
 )
 from assess.inventory import Inventory
 from assess.mechanics.sliding import sliding_response
-from assess.pipeline import run_assessment
 from rocking_reference import reference_rocking
 
 DT_S = 0.005

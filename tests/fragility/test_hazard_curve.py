@@ -15,11 +15,11 @@ import pandas as pd
 import pytest
 from scipy import integrate, stats
 
+from assess.assessment.pipeline import run_assessment
 from assess.hazard.openquake import read_openquake_hazard
 from assess.hazard.risk_integral import annual_rates_of_curve
 from assess.inventory import read_workbook
 from assess.mechanics.runner import LocalRunner
-from assess.pipeline import run_assessment
 
 import commands
 from workbooks import write_workbook
@@ -390,7 +390,7 @@ def test_a_level_given_twice_in_other_case_is_refused():
     """Hostile-input campaign: --hazard DE,de ran the level twice into DE/ and de/ (one folder on macOS and
     Windows, whose file systems ignore case); DE,DE was refused. Both are the same level."""
     from assess.errors import InputError
-    from assess.job import parse_levels
+    from assess.command.job import parse_levels
     with pytest.raises(InputError, match="'de' is the level 'DE' again"):
         parse_levels("DE,de")
     assert [name for name, _ in parse_levels("DE,MCE_R")] == ["DE", "MCE_R"]

@@ -7,11 +7,11 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from assess.assessment.pipeline import run_assessment
 from assess.data import default_settings
 from assess.errors import InputError
 from assess.inventory import Inventory
 from assess.mechanics.sliding import sliding_response
-from assess.pipeline import run_assessment
 from commands import location
 from tests.hostile.test_hostile_workbooks import assert_refused, run, workbook
 from workbooks import good_sheets

@@ -17,16 +17,16 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from assess.assessment.motions import level_motions
+from assess.assessment.pipeline import run_assessment
 from assess.building import building_modes
 from assess.building.response import floor_records
-from assess.cache import CachingRunner
-from assess.assessment.motions import level_motions
 from assess.fragility.stripes import fragility_files
 from assess.hazard.openquake import read_openquake_hazard
 from assess.hazard.records import Record
 from assess.inventory import read_workbook
+from assess.command.cache import CachingRunner
 from assess.mechanics.gateway import PEAKS, LocalRunner, RunnerBase
-from assess.pipeline import run_assessment
 from tests.assessment.test_floor_motions import BUILDING, EQUIPMENT, SITE
 from workbooks import write_workbook
 
@@ -146,7 +146,7 @@ def _updated_curve(folder: Path) -> Path:
 
 
 def what_if_runs(result) -> int:
-    """The runs of the actions' what-if (assess.actions): every case of an item that rocks or overturns
+    """The runs of the actions' what-if (assess.decision.actions): every case of an item that rocks or overturns
     (centre of mass above lower_contents_cg_fraction of its height) again, under each of its histories."""
     motions, summary = result.motions, result.summary.set_index("id")
     rocks = set(motions.loc[motions["sim_uplift"].astype(bool), "id"]) | set(summary.index[summary["p_overturn"] > 0])
@@ -173,7 +173,7 @@ def test_a_curve_update_reintegrates_without_simulating(de_run):
 def two_levels(tmp_path_factory):
     """``--hazard 2in50,10in50 --oq-hazard`` the lab curve, the ground suites from the site's uniform-hazard
     spectrum, through the job (every level computed before any is written)."""
-    from assess import job as job_module
+    from assess.command import job as job_module
 
     folder = tmp_path_factory.mktemp("levels")
     site = [["key", "value"], ["uhs", "oq/uhs.csv"], ["oq_site", "LAB"], ["suite_size", 3]]

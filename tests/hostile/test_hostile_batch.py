@@ -14,8 +14,8 @@ from pathlib import Path
 
 import pytest
 
-from assess.batch import MAX_NAME_BYTES, building_name_problem
 from assess.inventory.xlsx import file_problem
+from assess.portfolio.batch import MAX_NAME_BYTES, building_name_problem
 from tests.portfolio.test_batch import ITEMS, _write_building
 from workbooks import write_workbook
 
@@ -90,7 +90,7 @@ def test_a_portfolio_with_two_buildings_sheets_is_refused(tmp_path):
     'BUILDINGS' to 'BUILDINGS1', so the file is written with it and renamed in its workbook part.)"""
     import zipfile
     from openpyxl import Workbook
-    from assess.batch import read_portfolio
+    from assess.portfolio.batch import read_portfolio
     from assess.errors import InputError
     book = Workbook()
     book.active.title = "buildings"

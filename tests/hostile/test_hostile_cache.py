@@ -2,7 +2,7 @@
 
 A pack is never trusted: a row whose values the engine cannot have produced
 is a miss (the case is simulated again, the numbers are the engine's), a pack
-that would inflate past :data:`assess.cache.MAX_PACK_BYTES` is not inflated,
+that would inflate past :data:`assess.command.cache.MAX_PACK_BYTES` is not inflated,
 and only regular files are opened (a FIFO named ``*.npz`` does not hang the
 run). Memory and time are measured in a child process, with a timeout as the
 hang guard.
@@ -18,8 +18,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-import assess.cache as cache
-from assess.cache import CachingRunner
+import assess.command.cache as cache
+from assess.command.cache import CachingRunner
 from assess.mechanics.engine import simulate_cases
 from tests.assessment.test_cache import TAIL_S, Recording, _assert_identical, _batch
 
@@ -95,7 +95,7 @@ def _bomb(path: Path, inflated_bytes: int) -> None:
 _LOADER = """
 import resource, sys, time
 import numpy as np
-from assess.cache import CachingRunner
+from assess.command.cache import CachingRunner
 before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
 started = time.monotonic()
 runner = CachingRunner(None, sys.argv[1], version="v")

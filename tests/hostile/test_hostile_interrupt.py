@@ -23,7 +23,7 @@ ROOT = Path(__file__).resolve().parents[2]
 #: Runs the CLI with every report drawn right after an object whose __del__ receives Ctrl-C.
 _INTERRUPTED_WHILE_DRAWING = """
 import signal, sys
-import assess.output as output
+import assess.command.output as output
 from assess import cli
 
 class Dropped:

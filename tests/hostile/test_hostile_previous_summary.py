@@ -10,7 +10,7 @@ import threading
 import pandas as pd
 import pytest
 
-from assess import comparison
+from assess.assessment import comparison
 from assess.errors import InputError
 from assess.report.sentences import MAX_CHANGE_ROWS, changes
 

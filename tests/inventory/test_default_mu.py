@@ -15,10 +15,10 @@ import pandas as pd
 import pytest
 
 from assess import cli
+from assess.assessment.pipeline import run_assessment
 from assess.errors import InputError
 from assess.inventory import read_workbook
 from assess.inventory.friction import WIDE_RANGE, default_range
-from assess.pipeline import run_assessment
 from assess.report.sentences import default_mu_text
 
 DOCS = Path(__file__).resolve().parents[2] / "docs"

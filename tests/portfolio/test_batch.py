@@ -13,7 +13,8 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from assess import batch_report, cli
+from assess import cli
+from assess.portfolio import report as portfolio_report
 from workbooks import write_workbook
 
 #: A 4 s record: 2 s of a 1.5 Hz sine of 0.6 g, then rest (every item below slides).
@@ -77,9 +78,9 @@ def test_first_run_writes_each_building_and_counts_its_cases(first_run):
         assert row["cases_simulated"] == len(items) * DIRECTIONS and row["cases_reused"] == 0
         summary = pd.read_csv(out / row["building"] / "summary.csv")
         assert sorted(summary["id"]) == sorted(i[0] for i in items)
-        for risk in batch_report.RISKS:
+        for risk in portfolio_report.RISKS:
             assert row[f"risk_{risk}"] == int((summary["risk"] == risk).sum())
-        for kind in batch_report.ACTIONS:
+        for kind in portfolio_report.ACTIONS:
             assert row[f"action_{kind}"] == int((summary["action_kind"] == kind).sum())
         assert row["units"] == sum(2 if i[0].endswith("1") else 1 for i in items)
     changes = _csv(out / "changes.csv")
@@ -124,7 +125,7 @@ def test_an_edited_item_reruns_only_its_cases_and_the_change_report_names_it(fir
     assert table.at["beta", "cases_simulated"] == 0
     new = _csv(out / "alpha" / "summary.csv").set_index("id")
     # the change report holds exactly the differences between the two summaries, in the fields it follows
-    expected = {(i, f, old.at[i, f], new.at[i, f]) for i in new.index for f in batch_report.CHANGE_FIELDS
+    expected = {(i, f, old.at[i, f], new.at[i, f]) for i in new.index for f in portfolio_report.CHANGE_FIELDS
                 if old.at[i, f] != new.at[i, f]}
     changes = _csv(out / "changes.csv")
     got = {(r["id"], r["field"], r["old"], r["new"]) for r in changes.to_dict("records")}
@@ -248,8 +249,8 @@ def test_a_failure_leaves_the_previous_output_and_keeps_what_was_simulated(first
     before = {p: p.read_bytes() for p in out.rglob("*") if p.is_file() and ".cache" not in p.parts}
     _write_building(portfolio.parent, "alpha", [(i, h, w, d, mu + 0.01, c) for i, h, w, d, mu, c in ITEMS["alpha"]])
     _write_building(portfolio.parent, "beta", [(i, h, w, d, mu + 0.01, c) for i, h, w, d, mu, c in ITEMS["beta"]])
-    import assess.output
-    real = assess.output.render_outputs
+    import assess.command.output
+    real = assess.command.output.render_outputs
     calls = []
 
     def failing(result, *args, **kwargs):
@@ -258,13 +259,13 @@ def test_a_failure_leaves_the_previous_output_and_keeps_what_was_simulated(first
             raise RuntimeError("disk on fire")
         return real(result, *args, **kwargs)
 
-    monkeypatch.setattr(assess.output, "render_outputs", failing)
+    monkeypatch.setattr(assess.command.output, "render_outputs", failing)
     assert _batch(portfolio, "--out", out) == 1
     assert "disk on fire" in capsys.readouterr().err
     after = {p: p.read_bytes() for p in out.rglob("*") if p.is_file() and ".cache" not in p.parts}
     assert after == before
     assert not [p for p in out.parent.iterdir() if p.name.startswith(".out-")]
-    monkeypatch.setattr(assess.output, "render_outputs", real)
+    monkeypatch.setattr(assess.command.output, "render_outputs", real)
     # both buildings were simulated before beta's report failed: the cache kept their cases
     assert _batch(portfolio, "--out", out) == 0
     table = pd.read_csv(out / "portfolio.csv").set_index("building")
@@ -276,7 +277,7 @@ def test_the_hazard_curve_reaches_the_assessment_and_its_rates_the_portfolio(tmp
     """With an assessment that takes ``hazard_curve`` (the rates over the curve), each building gets its
     row's curve or --oq-hazard's, and portfolio.csv sums the units' annual rates; the curve does not scale
     the motions (``oq_hazard`` is not passed)."""
-    import assess.pipeline
+    import assess.assessment.pipeline
     site = tmp_path / "site"
     _portfolio(site)
     curves = Path(__file__).resolve().parents[1] / "data" / "openquake"
@@ -284,7 +285,7 @@ def test_the_hazard_curve_reaches_the_assessment_and_its_rates_the_portfolio(tmp
     portfolio = write_workbook(site / "portfolio.xlsx", {"buildings": [
         {"building": "alpha", "workbook": "alpha.xlsx", "level": LEVEL, "oq_hazard": "curve.csv"},
         {"building": "beta", "workbook": "beta.xlsx", "level": LEVEL}]})
-    real = assess.pipeline.run_assessment
+    real = assess.assessment.pipeline.run_assessment
     seen = {}
 
     def with_curve(inventory, level_text, seed=0, progress=lambda m: None, oq_hazard=None,
@@ -296,7 +297,7 @@ def test_the_hazard_curve_reaches_the_assessment_and_its_rates_the_portfolio(tmp
         summary = result.summary.assign(annual_rate_overturn=rate, p50yr_overturn=1 - np.exp(-50 * rate))
         return type(result)(**{**result.__dict__, "summary": summary})
 
-    monkeypatch.setattr(assess.pipeline, "run_assessment", with_curve)
+    monkeypatch.setattr(assess.assessment.pipeline, "run_assessment", with_curve)
     other = tmp_path / "other-curve.csv"
     other.write_bytes((curves / "case_13-hazard_curve-mean-PGA.csv").read_bytes())
     out = tmp_path / "out"
@@ -314,7 +315,7 @@ def test_the_hazard_curve_reaches_the_assessment_and_its_rates_the_portfolio(tmp
 def test_changes_between_follows_the_curve_columns():
     old = b"id,name,risk,priority,annual_rate_overturn\nX,fridge,low,2,1e-05\nY,rack,high,1,0.002\n"
     new = b"id,name,risk,priority,annual_rate_overturn\nX,fridge,low,2,2e-05\nZ,shelf,moderate,1,0\n"
-    table = batch_report.changes_between({"b": old}, {"b": new}, {"b": "B"})
+    table = portfolio_report.changes_between({"b": old}, {"b": new}, {"b": "B"})
     rows = {tuple(r.values()) for r in table.to_dict("records")}
     assert rows == {("B", "X", "fridge", "changed", "annual_rate_overturn", "1e-05", "2e-05"),
                     ("B", "Z", "shelf", "item added", "", "", ""),
@@ -331,8 +332,8 @@ def test_ctrl_c_exits_130_and_leaves_the_previous_output(first_run, monkeypatch,
     portfolio, out = first_run
     before = {p: p.read_bytes() for p in out.rglob("*") if p.is_file() and ".cache" not in p.parts}
     _write_building(portfolio.parent, "beta", [(i, h, w, d, mu + 0.01, c) for i, h, w, d, mu, c in ITEMS["beta"]])
-    import assess.pipeline
-    real = assess.pipeline.run_assessment
+    import assess.assessment.pipeline
+    real = assess.assessment.pipeline.run_assessment
     calls = []
 
     def interrupted(*args, **kwargs):
@@ -341,7 +342,7 @@ def test_ctrl_c_exits_130_and_leaves_the_previous_output(first_run, monkeypatch,
             raise KeyboardInterrupt
         return real(*args, **kwargs)
 
-    monkeypatch.setattr(assess.pipeline, "run_assessment", interrupted)
+    monkeypatch.setattr(assess.assessment.pipeline, "run_assessment", interrupted)
     assert _batch(portfolio, "--out", out) == 130
     assert "interrupted; nothing was written" in capsys.readouterr().err
     assert {p: p.read_bytes() for p in out.rglob("*") if p.is_file() and ".cache" not in p.parts} == before

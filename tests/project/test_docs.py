@@ -1,7 +1,7 @@
 """The reference pages in docs/ say what the code does: every column and option it has, and none it lacks.
 
 Each check compares a table of a page (the names in its first column) with what the code declares: the
-columns of summary.csv and motions.csv (``assess.result``, ``assess.fragility.stripes``), the options of
+columns of summary.csv and motions.csv (``assess.assessment.result``, ``assess.fragility.stripes``), the options of
 every command (the argparse parsers of ``assess.cli``), the workbook's columns (``assess.inventory.schema``)
 and settings (``assess/data/defaults.toml``). A name the code has and the page lacks, or the page has and the
 code no longer does, fails the test with the names.
@@ -14,10 +14,10 @@ from pathlib import Path
 import pytest
 
 from assess import cli
+from assess.assessment.result import MOTION_COLUMNS, SUMMARY_COLUMNS
 from assess.data import default_settings
 from assess.fragility.stripes import CURVE_COLUMNS
 from assess.inventory.schema import EQUIPMENT, HAZARD
-from assess.result import MOTION_COLUMNS, SUMMARY_COLUMNS
 
 DOCS = Path(__file__).resolve().parents[2] / "docs"
 _HEADING = re.compile(r"^(#+)\s+(.*?)\s*$")
@@ -68,7 +68,7 @@ def test_every_summary_column_is_documented():
 
 
 def test_every_work_orders_column_is_documented():
-    from assess.actions import WORK_ORDER_COLUMNS
+    from assess.decision.actions import WORK_ORDER_COLUMNS
     compare(table_names(section("outputs.md", "`work_orders.csv`")), WORK_ORDER_COLUMNS,
             "docs/outputs.md, work_orders.csv")
 
@@ -171,9 +171,9 @@ def test_every_key_of_simulate_json_is_documented():
     ``regression``) against the table of docs/commands.md."""
     import math
 
+    from assess.assessment.simulation import ItemSimulation
     from assess.hazard.records import pulse_record
     from assess.mechanics.block import Block, BlockResponse
-    from assess.simulation import ItemSimulation
 
     response = BlockResponse(sliding_max_m=0.1, sliding_residual_m=0.05, theta_max_over_alpha=0.0, uplift=False,
                              overturned=False, overturn_time_s=math.nan, mode_sequence=((0.0, "slide"),),

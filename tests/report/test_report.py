@@ -19,6 +19,8 @@ import pandas as pd
 import pytest
 from scipy.stats import norm
 
+from assess.assessment.result import MOTION_COLUMNS, SUMMARY_COLUMNS, AssessmentResult
+from assess.decision.flags import Flag
 from assess.hazard.levels import HazardLevel
 from assess.report import figures, render_html, render_pdf
 from assess.report.render import (
@@ -29,7 +31,6 @@ from assess.report.render import (
     format_significant,
     template_text,
 )
-from assess.result import MOTION_COLUMNS, SUMMARY_COLUMNS, AssessmentResult, Flag
 
 G = 9.80665
 ZETA, ETA, SIGMA = 0.370, 0.953, 0.445

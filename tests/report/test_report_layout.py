@@ -10,13 +10,13 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from assess.decisions import ims_range
+from assess.decision.decisions import ims_range
+from assess.decision.flags import Flag
 from assess.quantity_text import percent_text, significant_text
 from assess.report import figures, render_html
 from assess.report.pdf import data_only_url_fetcher, split_appendix
 from assess.report.render import _item_row, report_context
 from assess.report.sentences import FLAG_CAUSES, flag_groups
-from assess.result import Flag
 from tests.report.test_report import make_result
 
 #: Rooms whose longest word ("resuscitation", 13 letters) a narrow Room column broke inside ("resuscit|ation").

@@ -17,7 +17,9 @@ import pandas as pd
 import pypdf
 import pytest
 
-from assess import actions, cli, job
+from assess import cli
+from assess.command import job
+from assess.decision import actions
 from assess.errors import InputError
 from assess.inventory import read_workbook
 from assess.report import render_html

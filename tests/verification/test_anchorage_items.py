@@ -172,7 +172,7 @@ def test_the_sample_hospital_workbook():
     import sys
     from pathlib import Path
 
-    from assess.decisions import item_consequence
+    from assess.decision.decisions import item_consequence
     from assess.inventory import read_workbook
 
     folder = Path(__file__).resolve().parents[2] / "inventories"

@@ -449,9 +449,9 @@ def floors_run(tmp_path_factory):
     rectangular pulses of different lengths (thresholds apart: a lognormal is fitted), with the lab curve."""
     pytest.importorskip("pelicun.assessment", reason="pelicun is not installed (pip install -e '.[test,pelicun]' "
                         "adds it)")
+    from assess.assessment.pipeline import run_assessment
     from assess.hazard.openquake import read_openquake_hazard
     from assess.inventory import read_workbook
-    from assess.pipeline import run_assessment
     from workbooks import write_workbook
 
     tmp_path = tmp_path_factory.mktemp("floors")

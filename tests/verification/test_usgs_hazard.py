@@ -289,8 +289,8 @@ def test_an_assessment_over_an_nshmp_curve_matches_the_openquake_one_it_copies(t
     """The lab's one-year OpenQuake curve and an nshmp-haz file of its rates (-ln(1 - P), written in full):
     the level's PGA, the motions' scaling, the fragilities' annual rates, expected annual losses and
     benefit-cost ratios agree to 1e-9."""
+    from assess.assessment.pipeline import run_assessment
     from assess.inventory import read_workbook
-    from assess.pipeline import run_assessment
     from tests.fragility.test_hazard_curve import SQUAT, _rect_record
     from workbooks import write_workbook
 

@@ -3,7 +3,7 @@
 The decisions stage of the assessment (:func:`decide`, after the demand
 stage :mod:`assess.assessment.demand`): every function here is a pure
 function of an item's governing demand and the settings. The risk rule is
-:func:`assess.risk_classes.classify_risk`, fed by the demand's probabilities
+:func:`assess.decision.risk_classes.classify_risk`, fed by the demand's probabilities
 of each failure mode (``p_overturn``, ``p_beyond_clearance``, ``p_rocking_harm``)
 and the item's consequence: replacing the rule means replacing that module. What the report says about an item is
 built from these fields (:mod:`assess.report.sentences`); the columns are
@@ -16,18 +16,18 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from assess import actions
-from assess.actions import suite_share_text  # noqa: F401 (re-exported)
 from assess.anchorage import AnchorageSite, anchorage_site, item_anchorage
+from assess.decision import actions
+from assess.decision.actions import suite_share_text  # noqa: F401 (re-exported)
+from assess.decision.flags import Flag
+from assess.decision.risk_classes import (
+    ROCKING_HARM_SEVERITY, SLIDING_SEVERITY, Chances, classify_risk, deciding_chance, performance_objective,
+    risk_range, risk_reason, rocking_harm_counts,
+)
 from assess.fragility.friction_range import mu_dependence_sentence
 from assess.fragility.regression import RegressionConstants
 from assess.mechanics.modes import ROCK, SLIDE_ROCK
 from assess.quantity_text import floor_numbering_of, floor_text, length_text, system_of
-from assess.result import Flag
-from assess.risk_classes import (
-    ROCKING_HARM_SEVERITY, SLIDING_SEVERITY, Chances, classify_risk, deciding_chance, performance_objective,
-    risk_range, risk_reason, rocking_harm_counts,
-)
 
 UPLIFT_MODES = (ROCK, SLIDE_ROCK)
 
@@ -46,7 +46,7 @@ ANCHORED = {"mode": "", "risk": "anchored", "action": "None: anchored (not analy
 @dataclass
 class Decisions:
     """The decisions stage's output: per item (``by_item``: id -> the summary's decision columns, in
-    :data:`assess.result.SUMMARY_COLUMNS`) and the flags of every item, in item order."""
+    :data:`assess.assessment.result.SUMMARY_COLUMNS`) and the flags of every item, in item order."""
 
     by_item: dict
     flags: list
@@ -98,7 +98,7 @@ NO_MU_RANGE = {"mu_low": np.nan, "mu_high": np.nan, "risk_mu_low": "", "risk_mu_
 
 def mu_range_decision(end: pd.Series, risk: str, demand_note: str, consequence: str, settings: dict) -> dict:
     """For an item with a range of friction: its risk class with every run at ``mu_low`` and at
-    ``mu_high`` (:func:`~assess.risk_classes.classify_risk` of the demand at each end, ``end``: its row of
+    ``mu_high`` (:func:`~assess.decision.risk_classes.classify_risk` of the demand at each end, ``end``: its row of
     :func:`assess.fragility.friction_range.demand_at_ends`), and
     :func:`~assess.fragility.friction_range.mu_dependence_sentence` in ``mu_range_note`` and at the end
     of ``demand_note``."""
@@ -123,9 +123,9 @@ def decide_item(item, row: dict, uplift: bool, settings: dict, site: AnchorageSi
     ``consequence``, ``theta_max_over_alpha``, ``suite_motions``, ``suite_histories``) and whether it
     uplifts under any motion (``uplift``).
 
-    Returns ``risk`` (:func:`~assess.risk_classes.classify_risk`), ``risk_reason``, ``performance_objective``,
+    Returns ``risk`` (:func:`~assess.decision.risk_classes.classify_risk`), ``risk_reason``, ``performance_objective``,
     ``risk_range`` (the classes at the lower and at the upper ends of every chance's 90 % interval),
-    the action columns (:func:`assess.actions.decide_action`: ``action``, ``action_kind``, ``what_if``,
+    the action columns (:func:`assess.decision.actions.decide_action`: ``action``, ``action_kind``, ``what_if``,
     ``p_overturn_after``, ``p_beyond_clearance_after``; ``lowered``: the engine's demand with the heavy contents
     low, where it was simulated), the anchorage columns (:func:`assess.anchorage.item_anchorage` in ``site``)
     and ``priority_score``.
@@ -154,7 +154,7 @@ def priority_score(consequence: str, chances: Chances) -> float:
     """How urgent an item is: its consequence weight times the worst of its severity-weighted chances,
     overturning counting fully, sliding past its room by :data:`SLIDING_SEVERITY`, rocking that harms it
     by :data:`ROCKING_HARM_SEVERITY` (where it counts for the item's consequence,
-    :func:`~assess.risk_classes.rocking_harm_counts`).
+    :func:`~assess.decision.risk_classes.rocking_harm_counts`).
 
     >>> priority_score("hazardous", Chances(0.2, 0.0, 0.4)), priority_score("ordinary", Chances(0.0, 1.0, 1.0))
     (0.8, 0.5)

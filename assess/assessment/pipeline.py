@@ -7,14 +7,14 @@
 4. run: the engine, through the runner (:mod:`assess.assessment.run`, the only stage that simulates)
 5. demand: the regression per case and the governing demand per item (:mod:`assess.assessment.demand`)
    5b. what-if: the items that rock or overturn again with their heavy contents low
-   (:func:`assess.assessment.run.lowered_contents`, for :mod:`assess.actions`)
-6. decisions: risk class, action, priority, anchorage, what-if, flags (:mod:`assess.decisions`)
-7. result: the summary and motion tables in an :class:`~assess.result.AssessmentResult`
+   (:func:`assess.assessment.run.lowered_contents`, for :mod:`assess.decision.actions`)
+6. decisions: risk class, action, priority, anchorage, what-if, flags (:mod:`assess.decision.decisions`)
+7. result: the summary and motion tables in an :class:`~assess.assessment.result.AssessmentResult`
    (:mod:`assess.assessment.summary`)
 8. costs: expected loss, expected annual loss and the actions' benefit-cost ratios where the equipment
-   gives a ``value`` (:mod:`assess.costs`)
+   gives a ``value`` (:mod:`assess.decision.costs`)
 
-The outputs (CSV, xlsx, report) are made from the result by :mod:`assess.output`.
+The outputs (CSV, xlsx, report) are made from the result by :mod:`assess.command.output`.
 """
 from __future__ import annotations
 
@@ -23,20 +23,20 @@ from typing import Callable
 
 import pandas as pd
 
-from assess import actions, costs, decisions
 from assess.anchorage import anchorage_site
 from assess.assessment import cases as case_stage
 from assess.assessment import demand as demand_stage
 from assess.assessment import inputs, motions as motion_stage, run as run_stage, summary as result_stage
+from assess.assessment.result import SUMMARY_COLUMNS, AssessmentResult
 from assess.calibration.apply import check_applies, with_declared
+from assess.decision import actions, costs, decisions
 from assess.fragility import RegressionConstants
+from assess.fragility.agreement import fragility_at_level
 from assess.fragility.governing import suite_runs
 from assess.fragility.planar import with_planar_peaks
-from assess.fragility.agreement import fragility_at_level
 from assess.fragility.stripes import CURVE_COLUMNS
 from assess.inventory import Inventory
 from assess.mechanics.runner import LocalRunner
-from assess.result import SUMMARY_COLUMNS, AssessmentResult
 
 Progress = Callable[[str], None]
 
@@ -156,9 +156,9 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
 def _lowered_contents(equipment, case_table, rows, simulated, runner, progress, calibration, constants,
                       settings) -> dict:
     """The demand of the items that rock or overturn with their heavy contents low
-    (:func:`assess.actions.lowered_contents_items`): their cases with the centre of mass at
+    (:func:`assess.decision.actions.lowered_contents_items`): their cases with the centre of mass at
     ``lower_contents_cg_fraction`` of the height, run and reduced like the level's
-    (:func:`assess.actions.lowered_rows`); {} when no item rocks or overturns."""
+    (:func:`assess.decision.actions.lowered_rows`); {} when no item rocks or overturns."""
     ids = actions.lowered_contents_items(equipment, rows.rows, rows.uplift, settings)
     if not ids:
         return {}

@@ -3,7 +3,7 @@ reads it before importing the core).
 
 A negative longitude (``--oq-site -0.2,-0.3``) would be taken by argparse for an option, and a space
 after the comma (``--oq-site -0.2, -0.3``) splits the pair into two arguments: :func:`joined_oq_site`
-makes either one ``--oq-site=LON,LAT`` (:func:`assess.job.oq_site` then reads it).
+makes either one ``--oq-site=LON,LAT`` (:func:`assess.command.job.oq_site` then reads it).
 """
 from __future__ import annotations
 

@@ -1,7 +1,7 @@
 """Tables as the files show them: CSV text, protected from spreadsheet formulas.
 
-Used by every writer of a table (:mod:`assess.output`, :mod:`assess.report.spreadsheet`,
-:mod:`assess.batch`), so that it depends on nothing but pandas.
+Used by every writer of a table (:mod:`assess.command.output`, :mod:`assess.report.spreadsheet`,
+:mod:`assess.portfolio.batch`), so that it depends on nothing but pandas.
 """
 from __future__ import annotations
 

@@ -1,19 +1,19 @@
 """The files of a run, made in memory from its result (:func:`render_outputs`; docs/outputs.md).
 
-They are written by :func:`assess.folders.write_atomically` (all of them, or
+They are written by :func:`assess.command.folders.write_atomically` (all of them, or
 the folder as it was). Text written to CSV is protected from spreadsheet
-formulas (:func:`assess.tables.neutralise_formulas`).
+formulas (:func:`assess.report.tables.neutralise_formulas`).
 """
 from __future__ import annotations
 
 import contextlib
 
 from assess import report
+from assess.assessment.result import AssessmentResult
 from assess.fragility.stripes import fragility_files
 from assess.quantity_text import system_of
 from assess.report.spreadsheet import summary_workbook, with_us_units
-from assess.result import AssessmentResult
-from assess.tables import csv_text, neutralise_formulas, restore_text, summary_text  # noqa: F401 (re-exported)
+from assess.report.tables import csv_text, neutralise_formulas, restore_text, summary_text  # noqa: F401 (re-exported)
 
 
 def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: str | None = None,

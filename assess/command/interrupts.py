@@ -13,7 +13,7 @@ import signal
 import sys
 from pathlib import Path
 
-from assess.folders import write_atomically
+from assess.command.folders import write_atomically
 
 #: 128 + the signal's number, as a shell reports a command a signal stopped.
 EXIT_INTERRUPTED, EXIT_BROKEN_PIPE = 128 + signal.SIGINT, 128 + 13
@@ -85,7 +85,7 @@ def held_back(out_dir: Path):
 
 
 def write_uninterrupted(files: dict[str, bytes], out_dir: Path) -> list[Path]:
-    """:func:`assess.folders.write_atomically`, Ctrl-C held back until the folder is swapped in."""
+    """:func:`assess.command.folders.write_atomically`, Ctrl-C held back until the folder is swapped in."""
     with held_back(out_dir):
         return write_atomically(files, out_dir)
 

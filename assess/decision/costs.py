@@ -39,7 +39,7 @@ import math
 import numpy as np
 import pandas as pd
 
-from assess.risk_classes import ROCKING_HARM_SEVERITY, SLIDING_SEVERITY
+from assess.decision.risk_classes import ROCKING_HARM_SEVERITY, SLIDING_SEVERITY
 
 #: Share of ``value`` lost when the item overturns: all of it (``value`` is what its failure costs).
 LOSS_RATIO_OVERTURN = 1.0

@@ -6,7 +6,8 @@ from pathlib import Path
 
 import pandas as pd
 
-from assess.costs import COST_COLUMNS
+from assess.decision.costs import COST_COLUMNS
+from assess.decision.flags import Flag
 from assess.hazard.levels import HazardLevel
 
 #: Columns of ``summary.csv`` in order, each documented in docs/outputs.md (tests/project/test_docs.py).
@@ -27,7 +28,7 @@ SUMMARY_COLUMNS = [
     "p_beyond_clearance_mu_high", "mu_range_note", "mu_source",
     "p_rocking_harm", "p_rocking_harm_low", "p_rocking_harm_high", "performance_objective", "risk_reason",
     "regression_applies", "regression_note",
-] + COST_COLUMNS  # what failures cost and actions buy (assess/costs.py); empty where no value is given
+] + COST_COLUMNS  # what failures cost and actions buy (assess/decision/costs.py); empty where no value is given
 
 #: Columns of ``motions.csv`` in order, each documented in docs/outputs.md (tests/project/test_docs.py).
 MOTION_COLUMNS = [
@@ -40,18 +41,6 @@ MOTION_COLUMNS = [
 ]
 
 RISK_CLASSES = ("high", "moderate", "low", "anchored")
-
-
-@dataclass(frozen=True)
-class Flag:
-    """A caveat attached to one item's result (shown in the report and the CSVs)."""
-
-    item_id: str
-    code: str  # e.g. "uplift", "im_outside_fit", "derived_floor_motion"
-    message: str
-    #: What is this item's own in a few words ("46 in", "IM 0.06–0.16"), shown beside its id where the report
-    #: gathers the flags of one cause into one (:func:`assess.report.sentences.flag_groups`); "" for none.
-    detail: str = ""
 
 
 @dataclass
@@ -70,7 +59,7 @@ class AssessmentResult:
         ``mode``, ``overturn_fraction``, ``theta_max_over_alpha`` and
         ``sim_sliding_max_cm`` come from the time-history simulation. ``flags`` (the codes of the
         item's :attr:`flags`) and ``demand_source`` (what its governing demand comes from) are tuples;
-        the files join them into text (:func:`assess.tables.summary_text`).
+        the files join them into text (:func:`assess.report.tables.summary_text`).
     motions : DataFrame
         One row per freestanding item x motion x direction, :data:`MOTION_COLUMNS`.
         ``direction`` is 1 (along width) or 2 (along depth); ``sim_*`` from the
@@ -101,7 +90,7 @@ class AssessmentResult:
     solver_runs : dict or None
         How many runs each solver answered.
     comparison : DataFrame or None
-        Against a previous run (:func:`assess.comparison.compare_summaries`):
+        Against a previous run (:func:`assess.assessment.comparison.compare_summaries`):
         which items changed risk class and why; written as comparison.csv.
     curve_risk : CurveRisk or None
         With a hazard curve: each item's fragilities over stripes of floor acceleration and their
@@ -155,8 +144,8 @@ class AssessmentResult:
     floor_origins: dict = field(default_factory=dict)
 
     def work_orders(self) -> pd.DataFrame:
-        """The actions grouped by floor, room and action (work_orders.csv, :func:`assess.actions.work_orders`)."""
-        from assess.actions import work_orders
+        """The actions grouped by floor, room and action (work_orders.csv, :func:`assess.decision.actions.work_orders`)."""
+        from assess.decision.actions import work_orders
         from assess.quantity_text import floor_numbering_of
         return work_orders(self.summary, floor_numbering_of(self.settings))
 

@@ -1,6 +1,6 @@
 """What to do about each freestanding item, what that would change, and the work orders by floor and room.
 
-The actions part of the decisions stage (:mod:`assess.decisions` calls
+The actions part of the decisions stage (:mod:`assess.decision.decisions` calls
 :func:`decide_action` for every freestanding item). An action fits the item
 (:func:`choose_action`): an item that overturns or rocks is anchored, or
 tethered when it stands on casters (mobile by design), unless moving its

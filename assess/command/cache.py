@@ -56,7 +56,7 @@ import numba
 import assess
 from assess.mechanics.block import MODES, BlockResponse
 from assess.mechanics.gateway import (ENGINE_SOLVERS, PEAKS, RESPONSE, CasePeaks, Cases, LocalRunner, Progress, Result,
-                                     RunnerBase)
+                                      RunnerBase)
 
 #: Bump when the pack layout changes: packs of another format are not read.
 PACK_FORMAT = 1
@@ -70,7 +70,7 @@ MAX_PACKS = 64
 KEY_BYTES = 16
 #: Leftover temporary files (a writer killed mid-write) older than this are removed [s].
 STALE_TEMPORARY_S = 3600.0
-_MECHANICS = Path(__file__).resolve().parent / "mechanics"
+_MECHANICS = Path(__file__).resolve().parents[1] / "mechanics"
 _FLOATS = ("sliding_max_m", "sliding_residual_m", "theta_max_over_alpha")
 _BOOLS = ("uplift", "overturned")
 _TEXTS = ("mode", "solver")

@@ -10,7 +10,7 @@ import io
 
 import pandas as pd
 
-from assess.actions import ACTION_KINDS
+from assess.decision.actions import ACTION_KINDS
 from assess.inventory import schema
 
 #: Columns of summary.csv the change report follows, besides the hazard-curve ones.
@@ -19,7 +19,7 @@ CHANGE_FIELDS = ("risk", "action_kind", "action", "priority", "p_beyond_clearanc
 CURVE_FIELDS = ("annual_rate_beyond_clearance", "annual_rate_overturn", "p50yr_beyond_clearance", "p50yr_overturn")
 CHANGE_COLUMNS = ["building", "id", "name", "change", "field", "old", "new"]
 RISKS = ("high", "moderate", "low", "anchored")
-ACTIONS = ACTION_KINDS  # every action kind (assess.actions)
+ACTIONS = ACTION_KINDS  # every action kind (assess.decision.actions)
 
 
 def read_summary_csv(data: bytes) -> pd.DataFrame:

@@ -4,8 +4,8 @@
 ``.xlsx`` with a sheet ``buildings`` (``building``, ``workbook``, optional
 ``oq_hazard`` and ``level``), or a folder of workbooks. It checks every
 building's input before anything runs (:func:`prepare_buildings`), then
-assesses each one with the main job (:func:`assess.pipeline.run_assessment`)
-through one :class:`~assess.cache.CachingRunner`, so that a case simulated
+assesses each one with the main job (:func:`assess.assessment.pipeline.run_assessment`)
+through one :class:`~assess.command.cache.CachingRunner`, so that a case simulated
 before (same item, same motion, same engine) is not simulated again, and
 writes (:func:`run_portfolio`, :meth:`StagedPortfolio.commit`)::
 
@@ -14,13 +14,13 @@ writes (:func:`run_portfolio`, :meth:`StagedPortfolio.commit`)::
     <out>/portfolio.html  the same, and the change report
     <out>/changes.csv     what changed since the previous run in <out>, one row per item and quantity
     <out>/previous/<building>/summary.csv   the summaries this run compared with
-    <out>/.cache/         the stored engine results (assess.cache)
+    <out>/.cache/         the stored engine results (assess.command.cache)
     <out>/.portfolio.json what each building's folder was made from (to keep it when nothing changed)
 
 A building whose inputs (workbook, records, hazard curve, level, seed,
 formats, code) are those of the previous run keeps its folder; the others
 are assessed again, their unchanged cases answered by the cache. The tables
-and the page across buildings are made in :mod:`assess.batch_report`.
+and the page across buildings are made in :mod:`assess.portfolio.report`.
 
 Everything is written into a folder beside ``<out>`` that takes its place in
 one rename once every building is done, so a run that fails or is
@@ -46,19 +46,24 @@ from typing import Callable
 import pandas as pd
 
 import assess
-from assess import output, pipeline, report
+from assess import report
+from assess.assessment import pipeline
 from assess.assessment.inputs import check_inputs
 from assess.assessment.motions import check_level
-from assess.batch_report import building_row, changes_between, portfolio_html
+from assess.command import output
+from assess.command.cache import CachingRunner
+from assess.command.folders import (OUTPUT_NAMES, existing_folder, folder_mode, machine_refusal, refuse_foreign_files,
+                                    refuse_open_office_files, swap_folder, write_files)
+from assess.command.job import JOB_FORMATS, Say, open_runner, set_threads
 from assess.errors import InputError, Problem, raise_if_any
-from assess.hazard.usgs import read_hazard_curve_file
+from assess.hazard.levels import parse_level
 from assess.hazard.records import check_record_location
+from assess.hazard.usgs import read_hazard_curve_file
 from assess.inventory import read_workbook, schema, xlsx
 from assess.inventory.schema import Column, SheetSpec
 from assess.inventory.workbook import SheetReport, open_book, read_table, same_name_sheets, sheet_cells
-from assess.folders import (OUTPUT_NAMES, existing_folder, folder_mode, machine_refusal, refuse_foreign_files,
-                            refuse_open_office_files, swap_folder, write_files)
-from assess.tables import csv_text, restore_text
+from assess.portfolio.report import building_row, changes_between, portfolio_html
+from assess.report.tables import csv_text, restore_text
 
 #: The sheet of a portfolio workbook (docs/workbook.md).
 BUILDINGS = SheetSpec("buildings", (
@@ -384,7 +389,7 @@ def check_portfolio_folder(out_dir: Path) -> None:
 
     It may be new, or hold what a batch writes: :data:`PORTFOLIO_FILES`, the
     cache and previous summaries, and building folders holding only what the
-    main job writes (:data:`assess.folders.OUTPUT_NAMES`).
+    main job writes (:data:`assess.command.folders.OUTPUT_NAMES`).
     """
     out_dir = Path(out_dir)
     if not existing_folder(out_dir, "batch run"):
@@ -464,7 +469,7 @@ def default_out_dir(portfolio: Path) -> Path:
 def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, seed: int = 0,
                   formats: tuple[str, ...] = ("html", "pdf", "xlsx"), units: str | None = None,
                   say: Callable[[str], None] = lambda message: None) -> StagedPortfolio:
-    """Assess every building through ``runner`` (a :class:`~assess.cache.CachingRunner`), writing into a
+    """Assess every building through ``runner`` (a :class:`~assess.command.cache.CachingRunner`), writing into a
     staging folder beside ``out_dir``; returns it staged (:meth:`StagedPortfolio.commit` puts it in place).
 
     Each building's folder is what ``assess WORKBOOK --hazard LEVEL`` writes.
@@ -553,6 +558,47 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
         if machine_refusal(error, out_dir) is not None:  # a full disk, a quota: the machine's, not a bug
             raise machine_refusal(error, out_dir) from None
         raise
+
+
+# ---------------------------------------------------------------- the job of assess batch PORTFOLIO
+
+@dataclass
+class BatchJob:
+    """``assess batch PORTFOLIO`` and its options (docs/commands.md)."""
+
+    portfolio: Path
+    out: Path | None = None
+    hazard: str | None = None
+    oq_hazard: Path | None = None
+    scheduler: str | None = None
+    scheduler_tls: dict = field(default_factory=dict)
+    formats: tuple[str, ...] = JOB_FORMATS
+    seed: int = 0
+    jobs: int | None = None
+    allow_files_outside: bool = False
+
+
+def run_batch(job: BatchJob, say: Say = lambda message: None) -> tuple[StagedPortfolio, CachingRunner, Path]:
+    """Assess every building of the portfolio, staged beside its output folder (:meth:`StagedPortfolio.commit`
+    puts it in place); also returns the caching runner (its counts and the cache's write errors) and the output
+    folder as given."""
+    if job.hazard is not None:
+        try:
+            parse_level(job.hazard)
+        except ValueError as error:
+            raise InputError([Problem(file="--hazard", message=str(error))]) from None
+    set_threads(job.jobs)
+    out_dir = Path(job.out or default_out_dir(job.portfolio))
+    check_portfolio_folder(out_dir)
+    say(f"reading {job.portfolio}")
+    buildings = read_portfolio(job.portfolio, allow_outside=job.allow_files_outside)
+    prepared = prepare_buildings(buildings, level=job.hazard, oq_hazard=job.oq_hazard,
+                                 allow_records_outside=job.allow_files_outside, say=say)
+    with open_runner(job.scheduler, lambda message: None, out_dir / CACHE_FOLDER,
+                     tls=job.scheduler_tls) as runner:
+        say(f"{len(prepared)} buildings; results are reused from {out_dir / CACHE_FOLDER}")
+        staged = run_portfolio(prepared, out_dir, runner=runner, seed=job.seed, formats=job.formats, say=say)
+    return staged, runner, out_dir
 
 
 def code_version() -> str:

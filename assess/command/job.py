@@ -1,4 +1,5 @@
-"""The jobs the commands run: ``assess WORKBOOK``, ``assess batch`` and ``assess calibrate``.
+"""The jobs the commands run: ``assess WORKBOOK`` and ``assess calibrate`` (``assess batch``:
+:func:`assess.portfolio.batch.run_batch`).
 
 A job reads its inputs, checks them (every rule before anything runs), runs
 the engine through one runner whose life it owns (this machine's threads or a
@@ -18,22 +19,24 @@ from typing import Callable, Iterator
 
 import numba
 
-from assess import batch, output, pipeline, report
+from assess import report
+from assess.assessment import pipeline
+from assess.assessment.comparison import compare_summaries, read_previous_summary
 from assess.assessment.inputs import check_inputs
-from assess.cache import CachingRunner
+from assess.assessment.result import AssessmentResult
 from assess.calibration import read_measured, run_calibration
 from assess.calibration.apply import read_calibration
-from assess.comparison import compare_summaries, read_previous_summary
+from assess.command import output
+from assess.command.cache import CachingRunner
+from assess.command.folders import check_output_folder
 from assess.errors import InputError, Problem
 from assess.hazard.levels import parse_level
 from assess.hazard.usgs import read_hazard_curve_file
 from assess.inventory import read_workbook
 from assess.mechanics.runner import LocalRunner
-from assess.folders import check_output_folder
-from assess.report.calibration import render_calibration_html
 from assess.quantity_text import system_of
-from assess.result import AssessmentResult
-from assess.tables import csv_text, restore_text, summary_text
+from assess.report.calibration import render_calibration_html
+from assess.report.tables import csv_text, restore_text, summary_text
 
 Say = Callable[[str], None]
 #: What the main job writes besides the CSV files: the report and summary.xlsx.
@@ -251,47 +254,6 @@ def run_job(job: AssessmentJob, say: Say = lambda message: None,
         others = tuple(other for other in results if other is not result)
         files = output.render_outputs(result, job.formats, other_levels=others, pdf_process=job.pdf_process)
         yield LevelOutput(result, out_dir, files)
-
-
-# ---------------------------------------------------------------- assess batch PORTFOLIO
-
-@dataclass
-class BatchJob:
-    """``assess batch PORTFOLIO`` and its options (docs/commands.md)."""
-
-    portfolio: Path
-    out: Path | None = None
-    hazard: str | None = None
-    oq_hazard: Path | None = None
-    scheduler: str | None = None
-    scheduler_tls: dict = field(default_factory=dict)
-    formats: tuple[str, ...] = JOB_FORMATS
-    seed: int = 0
-    jobs: int | None = None
-    allow_files_outside: bool = False
-
-
-def run_batch(job: BatchJob, say: Say = lambda message: None) -> tuple[batch.StagedPortfolio, CachingRunner, Path]:
-    """Assess every building of the portfolio (:mod:`assess.batch`), staged beside its output folder
-    (:meth:`~assess.batch.StagedPortfolio.commit` puts it in place); also returns the caching runner
-    (its counts and the cache's write errors) and the output folder as given."""
-    if job.hazard is not None:
-        try:
-            parse_level(job.hazard)
-        except ValueError as error:
-            raise InputError([Problem(file="--hazard", message=str(error))]) from None
-    set_threads(job.jobs)
-    out_dir = Path(job.out or batch.default_out_dir(job.portfolio))
-    batch.check_portfolio_folder(out_dir)
-    say(f"reading {job.portfolio}")
-    buildings = batch.read_portfolio(job.portfolio, allow_outside=job.allow_files_outside)
-    prepared = batch.prepare_buildings(buildings, level=job.hazard, oq_hazard=job.oq_hazard,
-                                       allow_records_outside=job.allow_files_outside, say=say)
-    with open_runner(job.scheduler, lambda message: None, out_dir / batch.CACHE_FOLDER,
-                     tls=job.scheduler_tls) as runner:
-        say(f"{len(prepared)} buildings; results are reused from {out_dir / batch.CACHE_FOLDER}")
-        staged = batch.run_portfolio(prepared, out_dir, runner=runner, seed=job.seed, formats=job.formats, say=say)
-    return staged, runner, out_dir
 
 
 # ---------------------------------------------------------------- assess calibrate WORKBOOK --measured TESTS

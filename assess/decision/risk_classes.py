@@ -37,8 +37,8 @@ from dataclasses import dataclass
 from assess.quantity_text import percent_text
 
 #: Share of an overturning's cost that sliding past the room carries (it hits, pulls its lines, blocks):
-#: the weight of that mode in the order of action (:func:`assess.decisions.priority_score`) and in the
-#: loss (:mod:`assess.costs`). A judgement.
+#: the weight of that mode in the order of action (:func:`assess.decision.decisions.priority_score`) and in the
+#: loss (:mod:`assess.decision.costs`). A judgement.
 SLIDING_SEVERITY = 0.5
 #: Share of an overturning's cost that rocking which harms the item or its contents carries: it damages
 #: the item or what it holds where it stands, without toppling or moving it (half of sliding's share: a
