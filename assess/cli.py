@@ -346,24 +346,21 @@ def _warn(message: str) -> None:
 
 def _assess(args: argparse.Namespace, say) -> int:
     startup.warm_up(args.scheduler, args.jobs)
-    with startup.pdf_process(args.format) as pdf_process:
-        from assess.command import job  # the core: seconds to import, not needed for --help or a wrong option
+    from assess.command import job  # the core: seconds to import, not needed for --help or a wrong option
 
-        startup.core_imported()
-
-        levels = job.run_job(job.AssessmentJob(
-            args.workbook, args.hazard, out=args.out, formats=args.format, units=args.units, jobs=args.jobs,
-            seed=args.seed, oq_hazard=args.oq_hazard, oq_site=args.oq_site, derive_floors=args.derive_floors,
-            calibration=args.calibration, compare_with=args.compare_with, scheduler=args.scheduler,
-            scheduler_tls=_tls(args), allow_records_outside=args.allow_records_outside, pdf_process=pdf_process),
-            say, warn=_warn)
-        for level in levels:
-            written = write_uninterrupted(level.files, level.out_dir)
-            counts = level.result.risk_counts()
-            say(f"{level.result.level_label}: {counts['high']} high, {counts['moderate']} moderate, "
-                f"{counts['low']} low risk, {counts['anchored']} anchored")
-            for path in written:
-                print(path)
+    levels = job.run_job(job.AssessmentJob(
+        args.workbook, args.hazard, out=args.out, formats=args.format, units=args.units, jobs=args.jobs,
+        seed=args.seed, oq_hazard=args.oq_hazard, oq_site=args.oq_site, derive_floors=args.derive_floors,
+        calibration=args.calibration, compare_with=args.compare_with, scheduler=args.scheduler,
+        scheduler_tls=_tls(args), allow_records_outside=args.allow_records_outside),
+        say, warn=_warn)
+    for level in levels:
+        written = write_uninterrupted(level.files, level.out_dir)
+        counts = level.result.risk_counts()
+        say(f"{level.result.level_label}: {counts['high']} high, {counts['moderate']} moderate, "
+            f"{counts['low']} low risk, {counts['anchored']} anchored")
+        for path in written:
+            print(path)
     return EXIT_OK
 
 

@@ -1,9 +1,11 @@
 """report.pdf in two parts (assess/report/pdf.py): the body and Appendix A (item by item) laid out apart,
-on two cores where there are two, and joined into one file whose page labels, links and bytes do not depend
-on how many processes drew it."""
+the appendix in a second process where there is a second core, and joined into one file whose page labels,
+links and bytes do not depend on how many processes drew it; a second process that dies or a Ctrl-C leaves
+no half-written file and no process behind."""
 from __future__ import annotations
 
 import io
+import multiprocessing
 import os
 import re
 import signal
@@ -14,7 +16,8 @@ from pathlib import Path
 
 import pytest
 
-from assess.report.pdf import ELSEWHERE, pdf_process, render_pdf, split_appendix
+from assess.report import pdf as pdf_module
+from assess.report.pdf import ELSEWHERE, render_part, render_pdf, split_appendix
 from tests.commands import LAB, child_env
 from tests.report.test_report import html, result  # noqa: F401, F811 (test_report's fixtures: its sample result and report)
 
@@ -28,116 +31,33 @@ def pdf(html) -> bytes:
 
 def test_the_bytes_do_not_depend_on_the_processes_that_drew_them(html, pdf):
     assert render_pdf(html, processes=1) == pdf
+    assert render_pdf(html) == pdf
+    assert multiprocessing.active_children() == []  # the second process ended with the PDF
+
+
+def test_the_pdf_is_the_body_then_the_appendix_each_laid_out_alone(html, pdf):
+    """Independently of how the parts are laid out: the merged file has the body's pages, then the appendix's."""
+    body, appendix = split_appendix(html)
+    pages = [len(pypdf.PdfReader(io.BytesIO(render_part(part))).pages) for part in (body, appendix)]
+    assert len(pypdf.PdfReader(io.BytesIO(pdf)).pages) == sum(pages) and min(pages) >= 1
+
+
+def test_a_second_process_that_dies_leaves_the_appendix_to_this_one(html, pdf, monkeypatch):
+    """The second process is killed as this one starts on the body: the appendix is laid out here, the same bytes."""
+    killed = []
+    lay_out = pdf_module.render_part
+
+    def kill_then_lay_out(document, url_fetcher=None):
+        for child in multiprocessing.active_children():
+            child.kill()
+            child.join()
+            killed.append(child.exitcode)
+        return lay_out(document, url_fetcher)
+
+    monkeypatch.setattr(pdf_module, "render_part", kill_then_lay_out)
     assert render_pdf(html, processes=2) == pdf
-
-
-def test_the_appendix_is_handed_on_when_a_core_is_free_for_it(result, html, monkeypatch):
-    """render_html asks the second process for its figures, and hands on the appendix's document, the very one
-    split_appendix cuts out of the whole report, once this process has drawn its own figures (the other's
-    nearly done: the appendix never takes a core from them); to a process that draws no figures, before this
-    one draws them. Where the second process gives no figures, this one draws them too: the same report."""
-    from assess.report import FIGURE_MODULES, figures, render
-
-    events = []
-
-    class Answered:
-        def result(self):
-            return None  # as a second process that died: this one draws them
-
-    class Process:
-        def __init__(self, modules):
-            self.modules = modules
-
-        def call(self, function, jobs):
-            events.append(("call", function.__name__, tuple(jobs)))
-            return Answered()
-
-        def draw(self, document):
-            events.append(document)
-
-    drawn = figures.sliding_demand_figures
-    monkeypatch.setattr(figures, "sliding_demand_figures", lambda *a, **k: events.append("drawing") or drawn(*a, **k))
-    appendix = split_appendix(html)[1]
-    assert render.render_html(result, Process(FIGURE_MODULES)) == html
-    elsewhere = tuple(name for name in render.ELSEWHERE_FIGURES if name != "simulation" or result.simulated)
-    assert events == [("call", "draw_figures", elsewhere), "drawing", appendix]
-    events.clear()
-    assert render.render_html(result, Process(())) == html
-    assert events == [appendix, "drawing"]
-
-
-def test_the_second_process_draws_its_figures_and_the_report_is_the_same(result, html):
-    """Started with the figures' modules, the second process answers the call for its figures (not this
-    process drawing them after all), with the bytes this process would draw, and joins the PDF's parts."""
-    from assess.report import FIGURE_MODULES, render
-    from assess.report.pdf import Call
-
-    answers = []
-    result_of = Call.result
-
-    def recorded(call):
-        value = result_of(call)
-        answers.append(call.reply[0])
-        return value
-
-    with pdf_process(2, modules=FIGURE_MODULES) as process:
-        Call.result = recorded
-        try:
-            assert render.render_html(result, process) == html
-            assert render_pdf(html, process=process) == render_pdf(html, processes=1)
-        finally:
-            Call.result = result_of
-    assert answers == [True, True]  # the figures, then the merge: both done there
-
-
-def test_the_body_and_the_appendix_each_in_a_process_of_its_own_give_the_same_pdf(result, html, pdf):
-    """The assess command's processes: one draws figures then lays out the body, the other the appendix;
-    this process lays out nothing, and the report and its PDF are the same bytes."""
-    from assess.report import FIGURE_MODULES, render
-    from assess.report.pdf import body_and_appendix_processes
-
-    with body_and_appendix_processes(FIGURE_MODULES) as processes:
-        if processes is None:
-            pytest.skip("one core: no second process")
-        assert render.render_html(result, processes) == html
-        assert render_pdf(html, process=processes) == pdf
-        assert processes.body.sent == processes.appendix.sent == []  # every answer read
-
-
-def test_what_this_process_does_meanwhile_runs_once_while_the_body_is_laid_out_elsewhere(html, pdf):
-    from assess.report import FIGURE_MODULES
-    from assess.report.pdf import body_and_appendix_processes
-
-    calls = []
-    assert render_pdf(html, processes=1, meanwhile=lambda: calls.append("alone")) == pdf
-    with body_and_appendix_processes(FIGURE_MODULES) as processes:
-        if processes is None:
-            pytest.skip("one core: no second process")
-        # when it runs, the body has been sent to its process and is not laid out yet (its PDF not read)
-        meanwhile = lambda: calls.append(("elsewhere", len(processes.body.sent)))  # noqa: E731
-        assert render_pdf(html, process=processes, meanwhile=meanwhile) == pdf
-    assert calls == ["alone", ("elsewhere", 1)]
-
-
-def test_figures_a_dead_second_process_owes_are_drawn_here(result):
-    from assess.report import FIGURE_MODULES, render
-
-    with pdf_process(2, modules=FIGURE_MODULES) as process:
-        process.process.kill()
-        process.process.join()
-        assert render.FigureDrawing(result, process).drawn() == render.report_figures(result)
-
-
-def test_a_process_sent_another_appendix_first_still_draws_this_one(html, pdf):
-    """What the second process was sent early is dropped where it is not the report's appendix."""
-    _, appendix = split_appendix(html)
-    with pdf_process(2) as process:
-        process.draw(appendix.replace("Appendix A. Item by item", "Not this appendix"))
-        assert not process.drawing(appendix)
-        assert render_pdf(html, process=process) == pdf
-        process.draw(appendix)
-        assert process.drawing(appendix)
-        assert render_pdf(html, process=process) == pdf and process.sent == []
+    assert killed == [-signal.SIGKILL]
+    assert multiprocessing.active_children() == []
 
 
 def test_the_appendix_holds_every_item_block_and_the_body_none(html, result):
@@ -190,14 +110,6 @@ def test_every_link_of_the_body_lands_on_its_item_in_the_appendix(pdf, result):
         assert labels[page].startswith("A-") and item_id in _text(reader.pages[page]), (anchor, labels[page])
 
 
-def test_a_second_process_that_dies_is_an_error_not_a_wait_without_end(html):
-    with pdf_process(processes=2) as process:
-        process.process.kill()
-        with pytest.raises(RuntimeError, match="ended without it") as raised:
-            render_pdf(html, process=process)
-    assert raised.value.__context__ is None  # not a BrokenPipeError, which the commands read as stdout's reader gone
-
-
 def _descendants(pid: int) -> set[int]:
     found, todo = set(), [pid]
     while todo:
@@ -224,28 +136,33 @@ def _spawned_child(pid: int) -> bool:
 
 @pytest.mark.skipif(not Path("/proc/self/task").exists() or len(os.sched_getaffinity(0)) < 2,
                     reason="needs Linux's /proc and a second core (the second process)")
-def test_ctrl_c_as_the_second_process_starts_is_acted_on_once_it_has_started():
-    """An interrupt that comes while the second process is being started (told what to run) is held back
-    until it is, then acted on: the process is ended and the interrupt raised, and the second process
-    never prints a half-read start ("EOFError: Ran out of input")."""
+def test_ctrl_c_as_the_second_process_starts_is_acted_on_once_it_has_started_and_never_reaches_it(html):
+    """Ctrl-C that comes while the second process is being started is held back until it has started (never
+    half-told what to run), then acted on here: KeyboardInterrupt, and the second process ended. Ctrl-C that
+    reaches the second process itself (the terminal sends it to the whole group) leaves it running, silent."""
     script = """
 import multiprocessing, os, signal, sys, time
 from assess.report import pdf
 start = multiprocessing.context.SpawnProcess.start
 def interrupted_start(self):
-    os.kill(os.getpid(), signal.SIGINT)  # Ctrl-C as it starts
+    os.kill(os.getpid(), signal.SIGINT)  # Ctrl-C here, as it starts
     time.sleep(0.1)
     start(self)
-    print('started', flush=True)
+    time.sleep(0.5)  # into its imports
+    os.kill(self.pid, signal.SIGINT)  # Ctrl-C there
+    time.sleep(0.5)
+    print('started', self.is_alive(), flush=True)
 multiprocessing.context.SpawnProcess.start = interrupted_start
 try:
-    pdf.AppendixProcess()
+    pdf.render_pdf(sys.stdin.read(), processes=2)
+    print('not interrupted', flush=True)
 except KeyboardInterrupt:
-    print('interrupted', [p.name for p in multiprocessing.active_children()], flush=True)
+    print('interrupted', multiprocessing.active_children(), flush=True)
 """
-    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120, env=child_env())
-    assert done.stdout.split("\n")[:2] == ["started", "interrupted []"], (done.stdout, done.stderr)
-    assert "Error" not in done.stderr, done.stderr
+    done = subprocess.run([sys.executable, "-c", script], input=html, capture_output=True, text=True, timeout=300,
+                          env=child_env())
+    assert done.stdout.split("\n")[:2] == ["started True", "interrupted []"], (done.stdout, done.stderr)
+    assert "Traceback" not in done.stderr and "Error" not in done.stderr, done.stderr
 
 
 def test_ctrl_c_while_two_processes_draw_the_pdf_exits_130_and_leaves_no_process(tmp_path):

@@ -69,3 +69,27 @@ def cache_files(cache_dir):
         if any(name.endswith(".nbi") for name in files):
             return root
     raise AssertionError(f"no numba cache index under {cache_dir}")
+
+
+def test_an_index_older_than_the_source_counts_as_not_cached(tmp_path):
+    """numba rewrites an index whose source changed: one written before the source last changed is stale."""
+    if numba_threads() < 2:
+        pytest.skip("needs two numba threads")
+    run_python("""
+        from assess.mechanics import warmup
+        warmup.start()
+        warmup.wait()
+    """, tmp_path)
+    out = run_python("""
+        import inspect, os
+        from assess.mechanics import warmup
+        from assess.mechanics.timestepping import _cases
+        before = warmup.general_solver_cached()
+        source = os.stat(inspect.getsourcefile(_cases.py_func)).st_mtime
+        folder = _cases.stats.cache_path
+        for name in os.listdir(folder):
+            if name.startswith("timestepping._cases-") and name.endswith(".nbi"):
+                os.utime(os.path.join(folder, name), (source - 60, source - 60))
+        print(before, warmup.general_solver_cached())
+    """, tmp_path)
+    assert out.split() == ["True", "False"]

@@ -183,9 +183,6 @@ class AssessmentJob:
     scheduler: str | None = None
     scheduler_tls: dict = field(default_factory=dict)
     allow_records_outside: bool = False
-    #: the PDF's second process (:func:`assess.report.pdf_process`), started by the caller before the core's
-    #: imports, so that it has imported what it needs by the time the result is made; None: started when needed
-    pdf_process: object = None
 
 
 @dataclass
@@ -252,7 +249,7 @@ def run_job(job: AssessmentJob, say: Say = lambda message: None,
             "summary.xlsx" if f == "xlsx" else f"report.{f}" for f in job.formats]
             + (["fragility/"] if result.curve_risk is not None else [])))
         others = tuple(other for other in results if other is not result)
-        files = output.render_outputs(result, job.formats, other_levels=others, pdf_process=job.pdf_process)
+        files = output.render_outputs(result, job.formats, other_levels=others)
         yield LevelOutput(result, out_dir, files)
 
 

@@ -6,8 +6,6 @@ formulas (:func:`assess.report.tables.neutralise_formulas`).
 """
 from __future__ import annotations
 
-import contextlib
-
 from assess import report
 from assess.assessment.result import AssessmentResult
 from assess.fragility.stripes import fragility_files
@@ -17,7 +15,7 @@ from assess.report.tables import csv_text, neutralise_formulas, restore_text, su
 
 
 def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: str | None = None,
-                   other_levels: tuple[AssessmentResult, ...] = (), pdf_process=None) -> dict[str, bytes]:
+                   other_levels: tuple[AssessmentResult, ...] = ()) -> dict[str, bytes]:
     """All files of a run, by name, as bytes (nothing is written here).
 
     ``formats`` may hold ``html``, ``pdf`` (the report) and ``xlsx``
@@ -25,33 +23,15 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: st
     inches beside centimetres in US units). ``units`` (``si`` or ``us``) defaults to the result's
     settings' (``--units`` or the workbook's, :func:`assess.quantity_text.system_of`). ``other_levels``, the
     results of the other levels of the same run, add their sheets to summary.xlsx
-    after this level's. ``pdf_process``, the second process that draws the PDF's appendix
-    (:func:`assess.report.pdf_process`), is started here where not given: a caller that renders several
-    reports (``assess batch``) starts one for all of them. The ``assess`` command gives the two processes
-    it starts before making the result (:func:`assess.report.body_and_appendix_processes`): one draws some
-    of the figures then lays out the body, the other the appendix, and this one makes the tables meanwhile.
+    after this level's.
     """
-    # the PDF's second process starts first, so that it has imported WeasyPrint by the time the HTML is made,
-    # and is sent the appendix before this one draws the figures (render_html), so that it lays it out meanwhile
-    started = report.pdf_process() if "pdf" in formats and pdf_process is None else contextlib.nullcontext(pdf_process)
-    with started as pdf_process:
-        html = None
-        if "html" in formats or "pdf" in formats:
-            html = report.render_html(result, pdf_process if "pdf" in formats else None)
-        files: dict[str, bytes] = {}
-
-        def tables() -> None:
-            files.update(_tables(result, formats, units, other_levels))
-
-        pdf = None
-        if "pdf" in formats:  # the tables are made while the PDF's parts are laid out, where other processes do
-            pdf = report.render_pdf(html, process=pdf_process, meanwhile=tables)
-        else:
-            tables()
+    files = _tables(result, formats, units, other_levels)
+    if "html" in formats or "pdf" in formats:
+        html = report.render_html(result)
         if "html" in formats:
             files["report.html"] = html.encode()
-        if pdf is not None:
-            files["report.pdf"] = pdf
+        if "pdf" in formats:
+            files["report.pdf"] = report.render_pdf(html)
     return files
 
 

@@ -20,8 +20,10 @@ same either way. The second process is stopped if this one ends first.
 from __future__ import annotations
 
 import atexit
+import inspect
 import subprocess
 import sys
+from pathlib import Path
 
 import numba
 
@@ -29,17 +31,22 @@ _process: subprocess.Popen | None = None
 
 
 def general_solver_cached() -> bool:
-    """Whether the general solver's batch kernel is in numba's cache for its current source.
-
-    Reads numba's cache index (an internal of numba: anything unexpected
-    counts as cached, so that nothing is started).
+    """Whether numba's cache holds the general solver's batch kernel for its current source: its index file,
+    named as numba names it (``<module>.<function>-<first line>.py<major><minor>.nbi``) in the dispatcher's
+    cache folder (its public ``stats.cache_path``), written after the source file last changed (numba
+    rewrites an index whose source changed). A file not found counts as not cached: at worst a later run
+    then loads the kernel from the cache in a second process too.
     """
     from .timestepping import _cases
 
+    function = _cases.py_func
+    source = Path(inspect.getsourcefile(function))
+    index = Path(_cases.stats.cache_path) / (f"{source.stem}.{function.__qualname__}-{function.__code__.co_firstlineno}"
+                                             f".py{sys.version_info.major}{sys.version_info.minor}.nbi")
     try:
-        return bool(_cases._cache._cache_file._load_index())
-    except Exception:  # noqa: BLE001 — numba's internals moved: start nothing
-        return True
+        return index.stat().st_mtime >= source.stat().st_mtime
+    except OSError:
+        return False
 
 
 def start(threads: int | None = None) -> None:

@@ -46,7 +46,6 @@ from typing import Callable
 import pandas as pd
 
 import assess
-from assess import report
 from assess.assessment import pipeline
 from assess.assessment.inputs import check_inputs
 from assess.assessment.motions import check_level
@@ -489,8 +488,6 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
     out_dir.parent.mkdir(parents=True, exist_ok=True)
     staging = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}-new-", dir=out_dir.parent))
     staged = StagedPortfolio(out_dir, staging, pd.DataFrame(), pd.DataFrame())
-    stack = contextlib.ExitStack()  # the PDF's second process, started by the first report that needs it
-    pdf_process, pdf_started = None, False
     try:
         os.chmod(staging, folder_mode(out_dir))
         rows, current, manifest = [], {}, {}
@@ -518,9 +515,7 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
                 result = pipeline.run_assessment(item.inventory, item.level, seed=seed, runner=runner,
                                         hazard_curve=item.curve, allow_records_outside=item.allow_records_outside,
                                         progress=lambda message, tag=tag: say(f"{tag}: {message}"))
-                if "pdf" in formats and not pdf_started:  # one second process draws every report's appendix
-                    pdf_process, pdf_started = stack.enter_context(report.pdf_process()), True
-                files = output.render_outputs(result, formats, units=units, pdf_process=pdf_process)
+                files = output.render_outputs(result, formats, units=units)
                 write_files(staging / building.name, files)
                 simulated, reused = runner.cases_simulated - before[0], runner.cases_reused - before[1]
                 summary, level_label = result.summary, result.level_label
@@ -535,7 +530,6 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
             counts = summary["risk"].value_counts()
             say(f"{tag}: {simulated} cases simulated, {reused} reused, {time.perf_counter() - started:.1f} s; "
                 f"{counts.get('high', 0)} high, {counts.get('moderate', 0)} moderate, {counts.get('low', 0)} low risk")
-        stack.close()
         staged.summary = pd.DataFrame(rows)
         staged.changes = changes_between(
             {name: data for name, (_, data) in previous.items()},
@@ -553,7 +547,6 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
         staged.files = sorted(n for n in files if n != MANIFEST) + [f"{name}/" for name in current]
         return staged
     except BaseException as error:
-        stack.close()
         staged.discard()
         if machine_refusal(error, out_dir) is not None:  # a full disk, a quota: the machine's, not a bug
             raise machine_refusal(error, out_dir) from None

@@ -7,30 +7,21 @@ PDF with WeasyPrint, refusing every URL that is not a ``data:`` URI
 (:mod:`assess.report.pdf`).
 
 The names are imported when first used (PEP 562), so that importing
-``assess.report.pdf`` alone, as the process that draws the PDF's appendix
+``assess.report.pdf`` alone, as the process that lays out the PDF's appendix
 does, does not import pandas and matplotlib.
 """
 import importlib
-
-#: What the PDF's second process that draws figures imports as it starts (``pdf_process(modules=FIGURE_MODULES)``,
-#: :func:`body_and_appendix_processes`), so that it can draw some of the report's figures while the first one draws
-#: the others (:class:`render.FigureDrawing`), and runs (``module:function``): WeasyPrint's and matplotlib's fonts
-#: loaded as a first PDF and a first figure would load them; pypdf, which joins the PDF's parts there.
-FIGURE_MODULES = ("pypdf", "assess.report.pdf:warm_up", "assess.report.figures:warm_up")
 
 #: Each public name and the module that defines it.
 _HOMES = {
     "render_html": "assess.report.render",
     "render_pdf": "assess.report.pdf",
-    "pdf_process": "assess.report.pdf",
-    "body_and_appendix_processes": "assess.report.pdf",
     "fragility_curve": "assess.report.figures",
     "data_only_url_fetcher": "assess.report.pdf",
     "RefusedURLError": "assess.report.pdf",
 }
 
-__all__ = ["render_html", "render_pdf", "pdf_process", "body_and_appendix_processes", "fragility_curve", "data_only_url_fetcher",
-           "RefusedURLError", "FIGURE_MODULES"]
+__all__ = ["render_html", "render_pdf", "fragility_curve", "data_only_url_fetcher", "RefusedURLError"]
 
 
 def __getattr__(name: str):

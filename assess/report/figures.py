@@ -107,23 +107,6 @@ def _new_figure(height_in: float, width_in: float = FIGURE_WIDTH_IN) -> Figure:
     return figure
 
 
-def draw_figures(jobs: dict) -> dict:
-    """``name -> SVG`` of ``name -> (function, arguments)``: what a second process is sent to draw
-    (:class:`assess.report.render.FigureDrawing`)."""
-    return {name: function(*arguments) for name, (function, arguments) in jobs.items()}
-
-
-def warm_up() -> None:
-    """Load what a process's first figure loads (matplotlib's fonts in the report's style): a small figure with
-    text, drawn as SVG and dropped."""
-    with matplotlib.rc_context(_RC):
-        figure = _new_figure(1.0, 1.0)
-        axes = figure.add_subplot()
-        axes.set_title("θ/α [–]", loc="left")
-        axes.text(0.5, 0.5, "1", style="italic")
-        _to_svg(figure)
-
-
 def _to_svg(figure: Figure) -> str:
     buffer = io.StringIO()
     figure.savefig(buffer, format="svg", metadata={"Date": None, "Creator": None})

@@ -28,11 +28,11 @@ from assess.anchorage.method import anchorage_method
 from assess.decision.actions import work_order_sentences
 from assess.decision.risk_classes import rule_text
 from assess.quantity_text import floor_numbering_of, length_unit, length_value, system_of
-from assess.report import FIGURE_MODULES, figures
+from assess.report import figures
 from assess.report.costs import costs_context
 from assess.report.curve import curve_context
 from assess.report.method import floor_motion_route
-from assess.report.pdf import RefusedURLError, data_only_url_fetcher, decode_data_uri, render_pdf, split_appendix  # noqa: F401
+from assess.report.pdf import RefusedURLError, data_only_url_fetcher, decode_data_uri, render_pdf  # noqa: F401
 from assess.report.references import reference_rows
 from assess.report.sentences import (
     DASH, action_groups, after_text, case_outcomes, changes, class_rule_paragraph, cm_interval_text, finite,
@@ -510,67 +510,26 @@ def report_context(result, with_figures: bool = True) -> dict:
 
 
 def report_figures(result) -> dict:
-    """The report's figures (matplotlib, as SVG ``data:`` URIs), by the template's name for them, all drawn
-    here (:class:`FigureDrawing` shares them with a second process)."""
-    return FigureDrawing(result).drawn()
-
-
-class FigureDrawing:
-    """The report's figures as they are drawn: those of :data:`ELSEWHERE_FIGURES` asked at once of ``process``,
-    a second process (:func:`assess.report.pdf_process`) that has imported :data:`assess.report.FIGURE_MODULES`
-    (the same functions, so the same bytes; one started without them would import them first: this process
-    draws them all then), the others drawn here by :meth:`drawn`, which returns them all."""
-
-    def __init__(self, result, process=None):
-        self.result = result
-        self.system = system_of(result.settings or {})
-        self.sorted_result = _with_summary(result, _sorted_summary(result.summary))
-        self.elsewhere = {name: job for name, job in _figure_jobs(result, self.sorted_result, self.system).items()
-                          if name in ELSEWHERE_FIGURES}
-        ready = process is not None and set(FIGURE_MODULES) <= set(getattr(process, "modules", ()))
-        self.call = process.call(figures.draw_figures, self.elsewhere) if ready and self.elsewhere else None
-
-    def drawn(self, when_a_core_is_free: Callable[[], None] | None = None) -> dict:
-        """Every figure, by the template's name: this process's drawn here, the second process's collected (or
-        drawn here, where it gave none). ``when_a_core_is_free()``, where given, is run before this process
-        draws where no figure is drawn elsewhere, else once it has drawn its own (the other's nearly done)."""
-        if when_a_core_is_free is not None and self.call is None:
-            when_a_core_is_free()
-            when_a_core_is_free = None
-        result, system = self.result, self.system
-        drawn = {
-            "demand": figures.sliding_demand_figures(self.sorted_result, system=system),
-            "histories": [{"svg": figures.history_figure(h, system), "id": h["id"], "name": h["name"],
-                           "motion": h["motion"], "sim_motion": worst_run_text(h, result), "solver": h["solver"],
-                           "direction": h["direction"]}
-                          for h in list(result.histories)[:HISTORY_FIGURES]],
-        }
-        if when_a_core_is_free is not None:
-            when_a_core_is_free()
-        drawn.update((self.call.result() if self.call is not None else None) or figures.draw_figures(self.elsewhere))
-        return {
-            "demand": [_data_uri(svg) for svg in drawn["demand"]],
-            "fragility": _data_uri(drawn["fragility"]),
-            "regression": _data_uri(drawn["regression"]),
-            "simulation": _data_uri(drawn["simulation"]) if drawn.get("simulation") is not None else None,
-            "histories": [{"uri": _data_uri(history.pop("svg")), **history} for history in drawn["histories"]],
-        }
-
-
-#: The figures a second process draws while this one draws the others (about half of the time each).
-ELSEWHERE_FIGURES = ("fragility", "regression", "simulation")
-
-
-def _figure_jobs(result, sorted_result, system: str) -> dict:
-    """The figures :data:`ELSEWHERE_FIGURES` as ``name -> (function, arguments)``, their result without its
-    histories (which they do not draw, and which are most of its bytes) and its anchorage (whose classes the
-    second process would import, with pint and the building's model, to read it)."""
-    light, light_sorted = (dataclasses.replace(r, histories=(), anchorage=None) for r in (result, sorted_result))
-    jobs = {"fragility": (figures.fragility_figure, (light_sorted,)),
-            "regression": (figures.regression_figure, (light_sorted,))}
-    if result.simulated:
-        jobs["simulation"] = (figures.simulation_vs_regression_figure, (light, system))
-    return jobs
+    """The report's figures (matplotlib, as SVG ``data:`` URIs), by the template's name for them, each drawn once."""
+    system = system_of(result.settings or {})
+    sorted_result = _with_summary(result, _sorted_summary(result.summary))
+    drawn = {
+        "demand": figures.sliding_demand_figures(sorted_result, system=system),
+        "histories": [{"svg": figures.history_figure(h, system), "id": h["id"], "name": h["name"],
+                       "motion": h["motion"], "sim_motion": worst_run_text(h, result), "solver": h["solver"],
+                       "direction": h["direction"]}
+                      for h in list(result.histories)[:HISTORY_FIGURES]],
+        "fragility": figures.fragility_figure(sorted_result),
+        "regression": figures.regression_figure(sorted_result),
+        "simulation": figures.simulation_vs_regression_figure(result, system) if result.simulated else None,
+    }
+    return {
+        "demand": [_data_uri(svg) for svg in drawn["demand"]],
+        "fragility": _data_uri(drawn["fragility"]),
+        "regression": _data_uri(drawn["regression"]),
+        "simulation": _data_uri(drawn["simulation"]) if drawn["simulation"] is not None else None,
+        "histories": [{"uri": _data_uri(history.pop("svg")), **history} for history in drawn["histories"]],
+    }
 
 
 def report_units(system: str, numbering: str) -> dict:
@@ -596,21 +555,7 @@ def _with_summary(result, summary: pd.DataFrame):
     return dataclasses.replace(result, summary=summary)
 
 
-def render_html(result, process=None) -> str:
-    """The risk report of ``result`` as one self-contained HTML document.
-
-    ``process``, where given (a second process, :func:`assess.report.pdf_process`, or anything with its
-    ``draw`` and ``call``), is asked for its figures first (:class:`FigureDrawing`), then sent the document
-    of the report's appendix alone (as :func:`assess.report.pdf.split_appendix` makes it from the whole
-    report) when a core is free for it: at once where it draws no figures, so that the appendix is laid out
-    while this process draws them; else once this process has drawn its own, the other's nearly done
-    (:func:`assess.command.output.render_outputs`; :class:`assess.report.pdf.BodyAndAppendixProcesses` has a
-    process for the appendix, which thus never takes a core from the figures, without being given a
-    lower priority that a busy machine would starve).
-    """
-    drawing = FigureDrawing(result, process)
-    template = report_template()
-    context = report_context(result, with_figures=False)
-    appendix = None if process is None else split_appendix(template.render(context, appendix_only=True))[1]
-    send = None if appendix is None else functools.partial(process.draw, appendix)
-    return template.render(context, figures=drawing.drawn(when_a_core_is_free=send), appendix_only=False)
+def render_html(result) -> str:
+    """The risk report of ``result`` as one self-contained HTML document."""
+    return report_template().render(report_context(result, with_figures=False), figures=report_figures(result),
+                                    appendix_only=False)

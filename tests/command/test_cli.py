@@ -531,8 +531,8 @@ def test_a_closed_pipe_exits_quietly(tmp_path):
     (["no-such-workbook.xlsx", "--hazard", "2in50", "--quiet"], 2),
 ])
 def test_the_command_ends_at_once_after_its_exit_handlers(tmp_path, argv, code):
-    """``assess.__main__.run`` (the ``assess`` command) skips the interpreter's teardown, not what must happen
-    on leaving: the exit handlers run, after everything printed, and the exit code is main()'s."""
+    """``assess.__main__.run`` (the ``assess`` command): the exit handlers run, after everything printed, and
+    the exit code is main()'s."""
     script = ("import atexit, sys\nfrom assess.__main__ import run\n"
               "atexit.register(lambda: print('exit handler ran', flush=True))\n"
               f"sys.argv = ['assess'] + {argv!r}\nrun()\nprint('not reached')\n")

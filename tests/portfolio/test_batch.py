@@ -418,21 +418,10 @@ def test_a_missing_oq_hazard_file_is_refused_once(tmp_path, capsys):
     assert err.count("nothere.csv") == 1 and "1 problem" in err
 
 
-def test_one_second_process_draws_every_buildings_pdf_appendix(tmp_path, monkeypatch):
-    """With PDFs, the batch starts the PDF's second process once, with the first report, and every
-    building's report.pdf is the one the main command writes for its workbook alone."""
-    from assess.report import pdf
-
+def test_every_buildings_pdf_is_the_one_the_main_command_writes_for_it_alone(tmp_path):
     portfolio = _portfolio(tmp_path / "site")
     out = tmp_path / "out"
-    started, drawn = [], []
-    start, draw = pdf.AppendixProcess.__init__, pdf.AppendixProcess.draw
-    monkeypatch.setattr(pdf, "second_core", lambda: True)  # as on this project's 2-core machine
-    monkeypatch.setattr(pdf.AppendixProcess, "__init__",
-                        lambda self, *args, **kwargs: started.append(self) or start(self, *args, **kwargs))
-    monkeypatch.setattr(pdf.AppendixProcess, "draw", lambda self, html: drawn.append(self) or draw(self, html))
     assert cli.main(["batch", str(portfolio), "--out", str(out), "--format", "pdf", "--quiet"]) == 0
-    assert len(started) == 1 and drawn == started * len(ITEMS)
     alone = tmp_path / "alone"
     assert cli.main([str(portfolio.parent / "alpha.xlsx"), "--hazard", LEVEL, "--out", str(alone),
                      "--format", "pdf", "--quiet"]) == 0
