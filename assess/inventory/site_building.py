@@ -273,7 +273,7 @@ def read_site(table, folder: Path, report) -> SiteSheet | None:
                   "add the missing rows: ss_g, s1_g and site_class go together (the site class sets the "
                   "site coefficients).")
     if not design and not mapped and "uhs" not in out and not invalid & {"sds", "sd1", "ss", "s1", "uhs"}:
-        report(f"the site sheet gives no hazard: neither sds_g and sd1_g, nor ss_g, s1_g and "
+        report("the site sheet gives no hazard: neither sds_g and sd1_g, nor ss_g, s1_g and "
                "site_class, nor a uniform-hazard spectrum (uhs).",
                "add the site's design values (sds_g, sd1_g) from a hazard lookup, or delete the sheet.",
                row=1)
