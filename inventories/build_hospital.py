@@ -144,14 +144,19 @@ def uhs_text() -> str:
                       "HOSP,-121.89000,37.34000," + ",".join(f"{v:.6E}" for v in values)]) + "\n"
 
 
-def build() -> bytes:
+def site_and_building_workbook(equipment, site, building, settings, creator: str) -> bytes:
+    """A workbook of an equipment sheet and key/value site, building and settings sheets (no hazard sheet)."""
     workbook = Workbook()
-    write_sheet(workbook.active, list(EQUIPMENT[0]), EQUIPMENT)
+    write_sheet(workbook.active, list(equipment[0]), equipment)
     workbook.active.title = "equipment"
-    write_sheet(workbook.create_sheet("site"), ["key", "value"], SITE)
-    write_sheet(workbook.create_sheet("building"), ["key", "value"], BUILDING)
-    write_sheet(workbook.create_sheet("settings"), ["key", "value"], SETTINGS)
-    return deterministic_bytes(workbook, "inventories/build_hospital.py")
+    write_sheet(workbook.create_sheet("site"), ["key", "value"], site)
+    write_sheet(workbook.create_sheet("building"), ["key", "value"], building)
+    write_sheet(workbook.create_sheet("settings"), ["key", "value"], settings)
+    return deterministic_bytes(workbook, creator)
+
+
+def build() -> bytes:
+    return site_and_building_workbook(EQUIPMENT, SITE, BUILDING, SETTINGS, "inventories/build_hospital.py")
 
 
 if __name__ == "__main__":

@@ -16,9 +16,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from openpyxl import Workbook
-
-from build_lab import deterministic_bytes, write_sheet
+from build_hospital import site_and_building_workbook
 from build_pharmacy import item  # an item in inches and pounds
 
 OUT = Path(__file__).resolve().parent / "seattle-hospital.xlsx"
@@ -80,13 +78,7 @@ SETTINGS = [("facility", "Seattle shear-wall hospital (5 storeys, invented)"), (
 
 
 def build() -> bytes:
-    workbook = Workbook()
-    write_sheet(workbook.active, list(EQUIPMENT[0]), EQUIPMENT)
-    workbook.active.title = "equipment"
-    write_sheet(workbook.create_sheet("site"), ["key", "value"], SITE)
-    write_sheet(workbook.create_sheet("building"), ["key", "value"], BUILDING)
-    write_sheet(workbook.create_sheet("settings"), ["key", "value"], SETTINGS)
-    return deterministic_bytes(workbook, "inventories/build_seattle_hospital.py")
+    return site_and_building_workbook(EQUIPMENT, SITE, BUILDING, SETTINGS, "inventories/build_seattle_hospital.py")
 
 
 if __name__ == "__main__":
