@@ -26,12 +26,7 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: st
     after this level's.
     """
     files = _tables(result, formats, units, other_levels)
-    if "html" in formats or "pdf" in formats:
-        html = report.render_html(result)
-        if "html" in formats:
-            files["report.html"] = html.encode()
-        if "pdf" in formats:
-            files["report.pdf"] = report.render_pdf(html)
+    files.update(report.report_files(result, html="html" in formats, pdf="pdf" in formats))
     return files
 
 

@@ -15,13 +15,14 @@ import importlib
 #: Each public name and the module that defines it.
 _HOMES = {
     "render_html": "assess.report.render",
+    "report_files": "assess.report.render",
     "render_pdf": "assess.report.pdf",
     "fragility_curve": "assess.report.figures",
     "data_only_url_fetcher": "assess.report.pdf",
     "RefusedURLError": "assess.report.pdf",
 }
 
-__all__ = ["render_html", "render_pdf", "fragility_curve", "data_only_url_fetcher", "RefusedURLError"]
+__all__ = ["render_html", "report_files", "render_pdf", "fragility_curve", "data_only_url_fetcher", "RefusedURLError"]
 
 
 def __getattr__(name: str):
