@@ -18,9 +18,10 @@ KG_PER_LB = 0.45359237
 
 
 def system_of(settings_or_system) -> str:
-    """``'si'`` or ``'us'`` from a settings mapping (its ``units``) or a system name; ``'si'`` by default."""
-    if isinstance(settings_or_system, dict):
-        settings_or_system = settings_or_system.get("units", "si")
+    """``'si'`` or ``'us'`` from the settings (:class:`assess.inventory.settings.Settings`, its ``units``) or a
+    system name; ``'si'`` by default."""
+    if not isinstance(settings_or_system, str) and settings_or_system is not None:
+        settings_or_system = settings_or_system.units
     system = str(settings_or_system or "si").strip().lower()
     return system if system in SYSTEMS else "si"
 
@@ -179,8 +180,9 @@ FLOOR_NUMBERINGS = ("ground_0", "ground_1")
 
 
 def floor_numbering_of(settings) -> str:
-    """``'ground_0'`` or ``'ground_1'`` from a settings mapping (its ``floor_numbering``); ``'ground_0'`` by default."""
-    numbering = str((settings or {}).get("floor_numbering") or "ground_0").strip().lower()
+    """``'ground_0'`` or ``'ground_1'`` from the settings (:class:`assess.inventory.settings.Settings`, its
+    ``floor_numbering``); ``'ground_0'`` by default (no settings)."""
+    numbering = str((settings.floor_numbering if settings is not None else "") or "ground_0").strip().lower()
     return numbering if numbering in FLOOR_NUMBERINGS else "ground_0"
 
 

@@ -87,13 +87,14 @@ def _sds_from_site(site) -> tuple[float, str]:
 def anchorage_site(site=None, building=None, settings=None) -> AnchorageSite:
     """The :class:`AnchorageSite` of a workbook from its ``site`` and ``building`` sheets
     (:class:`~assess.inventory.site_building.SiteSheet`, :class:`~assess.inventory.site_building.BuildingSheet`,
-    None where absent) and its settings (``sds_g``, ``roof_floor`` where the sheets do not give them).
+    None where absent) and its settings (:class:`assess.inventory.settings.Settings`: ``sds_g``, ``roof_floor``
+    where the sheets do not give them; None: neither given).
 
-    >>> s = anchorage_site(None, None, {"sds_g": 1.0, "roof_floor": 4})
+    >>> from assess.inventory.settings import Settings
+    >>> s = anchorage_site(None, None, Settings(sds_g=1.0, roof_floor=4))
     >>> s.edition, s.risk_category, s.sds_g, s.z_over_h(2), s.period_s
     ('ASCE 7-22', 'II', 1.0, 0.5, None)
     """
-    settings = settings or {}
     notes = []
     edition = canonical_edition(site.code) if site is not None else DEFAULT_EDITION
     risk = str(site.risk_category) if site is not None else DEFAULT_RISK_CATEGORY
@@ -101,7 +102,7 @@ def anchorage_site(site=None, building=None, settings=None) -> AnchorageSite:
     notes.append(f"Risk Category {risk}" + ("" if site is not None else " (no site sheet)"))
     sds_g, source = _sds_from_site(site)
     if not math.isfinite(sds_g):
-        given = float(settings.get("sds_g", 0.0) or 0.0)
+        given = settings.sds_g if settings is not None else 0.0
         sds_g, source = (given, "the settings' sds_g") if given > 0.0 else (math.nan, "")
     if source:
         notes.append(f"S_DS {sds_g:g} g from {source}")
@@ -112,7 +113,7 @@ def anchorage_site(site=None, building=None, settings=None) -> AnchorageSite:
         notes.append(f"z/h = storeys from the ground floor to the item's / {building.storeys} storeys; T_a = {period_s:.3f} s (eq. 12.8-7, "
                      f"{building.system}, h_n {building.height_m:.1f} m)")
     else:
-        roof = float(settings.get("roof_floor", 0.0) or 0.0)
+        roof = settings.roof_floor if settings is not None else 0.0
         storeys = roof if roof > 0.0 else math.nan
         notes.append(f"z/h = the workbook's floor / roof_floor {roof:g}" if roof > 0.0 else "z/h = 1 (no building sheet or "
                      "roof_floor: the roof's force)")

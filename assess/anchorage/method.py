@@ -37,7 +37,8 @@ def anchorage_method(site: AnchorageSite | None, summary: pd.DataFrame) -> dict:
     >>> from assess.anchorage.item import anchorage_site
     >>> table = pd.DataFrame({"action_kind": ["anchor", "none"], "component_type": ["freezer", "lab"],
     ...                       "anchor_force_kn": [1.0, float("nan")]})
-    >>> m = anchorage_method(anchorage_site(None, None, {"sds_g": 1.0}), table)
+    >>> from assess.inventory.settings import Settings
+    >>> m = anchorage_method(anchorage_site(None, None, Settings(sds_g=1.0)), table)
     >>> m["edition"], [t["name"] for t in m["types"]], m["item_count"]
     ('ASCE 7-22', ['refrigeration'], 1)
     """

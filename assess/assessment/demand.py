@@ -9,7 +9,7 @@ it (:func:`assess.fragility.friction_range.demand_at_ends`).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 import pandas as pd
@@ -18,6 +18,7 @@ from assess.fragility import (
     RegressionConstants, capacity_edp, intensity_measure, median_edp, probability_of_exceedance, sliding_quantile,
 )
 from assess.fragility.friction_range import demand_at_ends
+from assess.inventory.settings import Settings
 from assess.fragility.governing import add_pulse_share, governing_demand, motion_sources, regression_note
 from assess.mechanics.modes import MODE_SEVERITY, ROCK, SLIDE, SLIDE_ROCK, initial_mode
 
@@ -43,27 +44,86 @@ class Demand:
 
 
 def item_demand(cases: pd.DataFrame, runs: pd.DataFrame, planar, simulated_as: dict,
-                constants: RegressionConstants, settings: dict) -> Demand:
+                constants: RegressionConstants, settings: Settings) -> Demand:
     """The regression per case and the governing demand per item (module docstring)."""
     cases = add_pulse_share(regression_demand(cases, constants))
     cases["demand_source"] = motion_sources(cases, simulated_as, constants)
-    room_quantile = 1.0 - float(settings["risk_pf_moderate"])
-    harm = float(settings["rocking_harm_theta_over_alpha"])
+    room_quantile = 1.0 - settings.risk_pf_moderate
+    harm = settings.rocking_harm_theta_over_alpha
     governing = governing_demand(cases, runs, constants, room_quantile=room_quantile, planar=planar,
                                  harm_theta_over_alpha=harm)
     return Demand(cases, governing, demand_at_ends(cases, runs, planar, constants, room_quantile, harm))
 
 
-@dataclass
+@dataclass(frozen=True)
+class GoverningDemand:
+    """One freestanding item's demand row: the regression's numbers for its governing case
+    (:data:`GOVERNING_CASE_COLUMNS`, eqs. 7, 11, 20 and 21 of Konstantinidis & Makris 2010), which case that is
+    and whether the regression applies to it, and the governing demand over its suite
+    (:data:`assess.fragility.governing.DEMAND_COLUMNS`, ``demand_mode`` as ``mode``). Values are as the stages
+    computed them (numpy scalars where pandas gave them); the summary's columns of the same names
+    (``docs/outputs.md``) say what each is. Lengths in cm, accelerations in g, angles in rad."""
+
+    # the governing case: its geometry and the regression's numbers (GOVERNING_CASE_COLUMNS)
+    alpha_rad: float
+    p_rad_s: float
+    b_over_h: float
+    mode: str  #: the most severe mode any run of the suite reaches (the governing demand's), else the case's
+    pta_g: float
+    tp_s: float
+    im: float
+    edp_median: float
+    sliding_median_cm: float
+    sliding_p84_cm: float
+    pf_sliding: float
+    sim_sliding_max_cm: float
+    governing_direction: int
+    governing_motion: str
+    regression_note: str  #: why the regression does not apply to the governing case ("" where it does)
+    regression_applies: bool
+    pulse_share: float  #: the share of PTA the governing motion's pulse carries (whether ``tp_s`` is a pulse's)
+    # the governing demand over the suite (assess.fragility.governing.DEMAND_COLUMNS)
+    demand_source: tuple
+    demand_median_cm: float
+    demand_p84_cm: float
+    demand_median_low_cm: float
+    demand_median_high_cm: float
+    demand_p84_low_cm: float
+    demand_p84_high_cm: float
+    demand_room_cm: float
+    p_beyond_clearance: float
+    p_beyond_clearance_low: float
+    p_beyond_clearance_high: float
+    p_overturn: float
+    p_overturn_low: float
+    p_overturn_high: float
+    suite_motions: int
+    suite_histories: int
+    theta_max_over_alpha: float
+    demand_note: str
+    demand_planar: bool
+    demand_uplift: bool
+    p_rocking_harm: float
+    p_rocking_harm_low: float
+    p_rocking_harm_high: float
+    overturn_fraction: float  #: = ``p_overturn``
+
+    def as_row(self) -> dict:
+        """The row as a dict (field: value), for the summary and for the decisions, which take rows."""
+        return {item.name: getattr(self, item.name) for item in fields(self)}
+
+
+@dataclass(frozen=True)
 class ItemDemand:
-    """Per freestanding item (by id): its demand row (``rows``: the regression's numbers for its governing
-    case, :data:`GOVERNING_CASE_COLUMNS`, ``governing_direction``, ``governing_motion``, whether the
-    regression applies to that case (``regression_applies``, ``regression_note``: why not), the governing
-    demand, ``overturn_fraction`` and ``mode``, the most severe mode over the suite) and whether it uplifts
+    """Per freestanding item (by id): its demand row (``rows``: :class:`GoverningDemand`) and whether it uplifts
     under any motion (``uplift``)."""
 
-    rows: dict
-    uplift: dict
+    rows: dict[str, GoverningDemand]
+    uplift: dict[str, bool]
+
+    def row_dicts(self) -> dict[str, dict]:
+        """Each item's row as a dict, by id (what :func:`assess.decision.decisions.decide` takes)."""
+        return {item_id: row.as_row() for item_id, row in self.rows.items()}
 
 
 def item_rows(equipment: pd.DataFrame, cases: pd.DataFrame, demand: Demand,
@@ -87,7 +147,7 @@ def item_rows(equipment: pd.DataFrame, cases: pd.DataFrame, demand: Demand,
         row.update(demand.governing.loc[item.id].to_dict())
         row["mode"] = row.pop("demand_mode") or row["mode"]
         row["overturn_fraction"] = row["p_overturn"]
-        rows[item.id] = row
+        rows[item.id] = GoverningDemand(**row)
         uplift[item.id] = bool(cases.loc[cases["id"] == item.id, "sim_uplift"].any()) or bool(
             row.get("demand_uplift", False))
     return ItemDemand(rows, uplift)

@@ -33,6 +33,7 @@ from assess.hazard.pulse_identification import identify_pulse
 from assess.hazard.record_pairs import item_axes_pair
 from assess.hazard.records import MIN_DURATION_S, Record, pulse_record, read_record
 from assess.hazard.synthesis import synthesize_motion
+from assess.inventory.settings import Settings
 from assess.quantity_text import floor_numbering_of, floor_text, floors_text
 from assess.site.target import level_target
 from assess.site.uhs import parse_site_choice
@@ -250,7 +251,7 @@ def _with_building_rows(motions: pd.DataFrame, floors: list[int], workbook_name:
     return out.drop(columns="motion_key")
 
 
-def simulated_motions(motions: LevelMotions, workbook_name: str, settings: dict, seed: int,
+def simulated_motions(motions: LevelMotions, workbook_name: str, settings: Settings, seed: int,
                       progress: Progress) -> SimulatedMotions:
     """The accelerations the engine runs for every motion of the level (:class:`SimulatedMotions`);
     notes on turning a pair of records to the items' axes are added to ``motions.notes``."""
@@ -354,7 +355,7 @@ def _measure_pulse_parameters(level_motions: pd.DataFrame, workbook_name: str,
     return motions, notes
 
 
-def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str, settings: dict, seed: int,
+def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str, settings: Settings, seed: int,
                        memory: dict | None = None) -> tuple[dict[int, list[tuple[Record, str]]], dict[int, str]]:
     """Per motion (``motion_key``): the floor accelerations the engine simulates, each with how it
     was obtained; and how each motion was simulated (``record``, ``synthetic`` or ``pulse``).
@@ -367,8 +368,8 @@ def _simulated_motions(level_motions: pd.DataFrame, workbook_name: str, settings
     ``synthetic``, or under its pulse (:data:`DEFAULT_PULSE` where the workbook
     names none) when it is ``pulse`` or vp is not given.
     """
-    synthetic = str(settings.get("simulate_motions", "synthetic")).strip().lower() == "synthetic"
-    count = int(settings.get("synthetic_realizations", 5))
+    synthetic = settings.simulate_motions.strip().lower() == "synthetic"
+    count = settings.synthetic_realizations
     motions, kinds, to_synthesize = {}, {}, {}
     for row in level_motions.itertuples(index=False):
         k = int(row.motion_key)

@@ -121,7 +121,7 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
                                 constants, settings)
     # 6. decisions
     anchorage = anchorage_site(inventory.site, inventory.building, settings)
-    decided = decisions.decide(inventory.equipment, rows.rows, rows.uplift, at_mu, demand.at_mu_ends, constants,
+    decided = decisions.decide(inventory.equipment, rows.row_dicts(), rows.uplift, at_mu, demand.at_mu_ends, constants,
                                settings, anchorage, lowered=lowered)
     decided = decisions.with_input_warnings(decided, inventory.warnings)  # sizes no equipment has
     # 7. result
@@ -138,11 +138,11 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     summary = pd.concat([summary, costs.cost_table(summary, inventory.equipment, settings, curve is not None)],
                         axis=1)
     return AssessmentResult(
-        workbook=inventory.path, facility=str(settings.get("facility", "")),
-        site=str(settings.get("site", "")), level=level.level, level_label=level.level_label,
+        workbook=inventory.path, facility=settings.facility,
+        site=settings.site, level=level.level, level_label=level.level_label,
         summary=summary[summary_columns], motions=result_stage.motion_table(with_planar_peaks(at_mu, ran.planar)),
         flags=decided.flags, regression=result_stage.regression_record(constants, settings),
-        settings=dict(settings), simulated=True, seed=seed, histories=histories, hazard_notes=level.notes,
+        settings=settings, simulated=True, seed=seed, histories=histories, hazard_notes=level.notes,
         suite_runs=suite_runs(demand.cases, ran.runs, ran.planar),
         solver_runs={str(k): int(v) for k, v in ran.runs["solver"].value_counts().items()}, curve_risk=curve,
         ground_motions=None if level.site is None else level.site.suite.ground_motions,
@@ -159,12 +159,12 @@ def _lowered_contents(equipment, case_table, rows, simulated, runner, progress, 
     (:func:`assess.decision.actions.lowered_contents_items`): their cases with the centre of mass at
     ``lower_contents_cg_fraction`` of the height, run and reduced like the level's
     (:func:`assess.decision.actions.lowered_rows`); {} when no item rocks or overturns."""
-    ids = actions.lowered_contents_items(equipment, rows.rows, rows.uplift, settings)
+    ids = actions.lowered_contents_items(equipment, rows.row_dicts(), rows.uplift, settings)
     if not ids:
         return {}
-    lowered_cases = case_stage.with_centre_of_mass_at(case_table, ids, float(settings["lower_contents_cg_fraction"]))
+    lowered_cases = case_stage.with_centre_of_mass_at(case_table, ids, settings.lower_contents_cg_fraction)
     ran = run_stage.lowered_contents(lowered_cases, simulated, runner, progress, calibration)
     demand = demand_stage.item_demand(ran.cases, ran.runs, ran.planar, simulated.kinds, constants, settings)
     nominal = ran.cases["mu_nominal"].to_numpy()
     found = demand_stage.item_rows(equipment[equipment["id"].isin(ids)], demand.cases[nominal], demand, constants)
-    return actions.lowered_rows(equipment, found.rows, found.uplift, settings)
+    return actions.lowered_rows(equipment, found.row_dicts(), found.uplift, settings)

@@ -3,12 +3,19 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import pandas as pd
 
 from assess.decision.costs import COST_COLUMNS
 from assess.decision.flags import Flag
 from assess.hazard.levels import HazardLevel
+from assess.inventory.settings import Settings
+
+if TYPE_CHECKING:  # the annotations only (the result's producers import this module)
+    from assess.anchorage.item import AnchorageSite
+    from assess.fragility.stripes import CurveRisk
+    from assess.site.asce7 import DesignSpectrum
 
 #: Columns of ``summary.csv`` in order, each documented in docs/outputs.md (tests/project/test_docs.py).
 SUMMARY_COLUMNS = [
@@ -43,6 +50,20 @@ MOTION_COLUMNS = [
 RISK_CLASSES = ("high", "moderate", "low", "anchored")
 
 
+@dataclass(frozen=True)
+class RegressionRecord:
+    """The regression's constants as used, Pi = zeta IM**eta Z, ln Z ~ N(0, sigma**2), and the IM range it was
+    fitted on (Konstantinidis & Makris 2010, eqs. 11 and 21, Table 3), and where they come from (``source``:
+    the paper, or the workbook's settings sheet; "" when not known). The defaults are the paper's."""
+
+    zeta: float = Settings().zeta
+    eta: float = Settings().eta
+    sigma: float = Settings().sigma
+    im_min: float = Settings().im_min
+    im_max: float = Settings().im_max
+    source: str = ""
+
+
 @dataclass
 class AssessmentResult:
     """Everything one ``assess WORKBOOK --hazard LEVEL`` run computed.
@@ -69,11 +90,11 @@ class AssessmentResult:
         overturn (``sim_overturn_share``; ``sim_overturned`` if at least half); ``mode`` is the simulated mode, ``mode_from_rest``
         the mode entered first by Shenton's criteria.
     flags : list[Flag]
-    regression : dict
-        ``zeta``, ``eta``, ``sigma``, ``im_min``, ``im_max`` as used, and
-        ``source`` ("Konstantinidis & Makris (2010), Table 3" or "settings").
-    settings : dict
-        The merged settings used (risk thresholds included).
+    regression : RegressionRecord
+        ``zeta``, ``eta``, ``sigma``, ``im_min``, ``im_max`` as used, and ``source`` (the paper, or the
+        workbook's settings sheet).
+    settings : Settings
+        The settings used (:class:`assess.inventory.settings.Settings`: the defaults and the workbook's).
     simulated : bool
         Whether the time-history engine ran.
     seed : int
@@ -124,8 +145,8 @@ class AssessmentResult:
     summary: pd.DataFrame
     motions: pd.DataFrame
     flags: list[Flag] = field(default_factory=list)
-    regression: dict = field(default_factory=dict)
-    settings: dict = field(default_factory=dict)
+    regression: RegressionRecord = field(default_factory=RegressionRecord)
+    settings: Settings = field(default_factory=Settings)
     simulated: bool = False
     seed: int = 0
     histories: list = field(default_factory=list)
@@ -133,13 +154,13 @@ class AssessmentResult:
     comparison: pd.DataFrame | None = None
     suite_runs: pd.DataFrame | None = None
     solver_runs: dict | None = None
-    curve_risk: object | None = None
+    curve_risk: CurveRisk | None = None
     ground_motions: pd.DataFrame | None = None
     spectrum: pd.DataFrame | None = None
     floors: pd.DataFrame | None = None
-    anchorage: object | None = None
+    anchorage: AnchorageSite | None = None
     ground_method: str = ""
-    design_spectrum: object | None = None
+    design_spectrum: DesignSpectrum | None = None
     site_class: str = ""
     floor_origins: dict = field(default_factory=dict)
 

@@ -21,6 +21,7 @@ from assess.fragility.planar import planar_runs
 from assess.quantity_text import floor_numbering_of
 from assess.fragility.stripes import curve_risk
 from assess.hazard.records import Record
+from assess.inventory.settings import Settings
 from assess.mechanics.block import Block
 from assess.mechanics.gateway import run_responses
 from assess.mechanics.modes import MODE_SEVERITY
@@ -59,7 +60,7 @@ def lowered_contents(cases: pd.DataFrame, motions, runner, progress: Progress, c
     return run_level(cases, motions, runner, progress, calibration)
 
 
-def curve(cases: pd.DataFrame, motions, level_motions: pd.DataFrame, hazard_curve, settings: dict, runner,
+def curve(cases: pd.DataFrame, motions, level_motions: pd.DataFrame, hazard_curve, settings: Settings, runner,
           progress: Progress, building=None, level_label: str = "", given=None):
     """The items' fragilities over stripes of the hazard curve, at the nominal μ: stripes of ground
     acceleration through the building where ``building`` (the level's

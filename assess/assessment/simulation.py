@@ -14,7 +14,7 @@ from typing import Optional
 
 import numpy as np
 
-from assess.data import default_settings
+from assess.inventory.settings import Settings
 from assess.fragility import RegressionConstants, intensity_measure, sliding_quantile
 from assess.hazard.records import MIN_DURATION_S, Record, pulse_record, read_record
 from assess.mechanics.block import Block, BlockResponse
@@ -138,7 +138,7 @@ def simulate_item(block: Block, motion: Record, *, pulse_period_s: Optional[floa
                               history=return_history)
     im = median_m = None
     if pulse_period_s is not None:
-        constants = constants or RegressionConstants.from_settings(default_settings())
+        constants = constants or RegressionConstants.from_settings(Settings())
         im = float(intensity_measure(motion.pta_g, block.mu))
         median_m = float(sliding_quantile(im, motion.pta_g, pulse_period_s, constants)) if im > 0 else 0.0
     return ItemSimulation(block=block, motion=motion, response=response, pulse_period_s=pulse_period_s,

@@ -13,8 +13,8 @@ import numpy as np
 import pandas as pd
 
 from assess.assessment.motions import MEMORY
-from assess.assessment.result import MOTION_COLUMNS
-from assess.data import default_settings
+from assess.assessment.result import MOTION_COLUMNS, RegressionRecord
+from assess.inventory.settings import Settings
 from assess.decision import decisions
 from assess.fragility.regression import RegressionConstants
 from assess.fragility.suite import PULSE_SHARE_MIN
@@ -129,32 +129,48 @@ def without_regression(row: dict) -> dict:
 
 
 def summarise(equipment: pd.DataFrame, demand, decided, origins: dict | None = None) -> pd.DataFrame:
-    """One row per item: what it is (id, name, room, floor, quantity, consequence, μ, clearance), its
-    demand row (``demand``: :class:`assess.assessment.demand.ItemDemand`; an anchored item: its geometry
-    about the more slender direction; the regression's numbers only where it applies, :func:`without_regression`)
-    and its decisions (``decided``: :class:`assess.decision.decisions.Decisions`). ``origins`` (:func:`floor_origins`)
-    names each item's time histories by where its floor's come from (:func:`with_history_origin`)."""
+    """One row per item, made of the pieces of the stages that own its columns (the ``stage`` of
+    ``assess/data/columns.csv``): what it is (:func:`inventory_piece`, stage ``inventory``), its demand
+    (:func:`demand_piece`, stage ``demand``, from ``demand``: :class:`assess.assessment.demand.ItemDemand`; an
+    anchored item: :func:`anchored_piece`, its geometry about the more slender direction) and its decisions
+    (``decided``: :class:`assess.decision.decisions.Decisions`, stages ``decision`` and ``anchorage``), each
+    piece after the one before (a decision may complete a demand column: ``demand_note`` with a μ range).
+    ``origins`` (:func:`floor_origins`) names each item's time histories by where its floor's come from."""
     origins = origins or {}
     rows = []
     for item in equipment.itertuples(index=False):
-        row = {"id": item.id, "name": item.name, "room": item.room, "floor": item.floor,
-               "quantity": item.quantity, "consequence": decisions.item_consequence(item),
-               "mu": item.mu, "mu_source": getattr(item, "mu_source", "workbook"),
-               "clearance_cm": item.clearance_m * 100.0,
-               "overturn_fraction": np.nan, "theta_max_over_alpha": np.nan}
         if item.anchored:
-            half_width_m = min(item.width_m, item.depth_m) / 2.0
-            row.update({"alpha_rad": float(slenderness(half_width_m, item.cg_height_m)),
-                        "p_rad_s": float(frequency_parameter(half_width_m, item.cg_height_m, item.height_m)),
-                        "b_over_h": half_width_m / item.cg_height_m,
-                        "governing_direction": 1 if item.width_m <= item.depth_m else 2})
+            measured = anchored_piece(item)
         else:
-            row.update(demand.rows[item.id])
-            row = without_regression(row)
-            row = with_history_origin(row, origins.get(int(item.floor), origins.get(None, "")))
-        row.update(decided.by_item[item.id])
-        rows.append(row)
+            measured = demand_piece(demand.rows[item.id], origins.get(int(item.floor), origins.get(None, "")))
+        rows.append({**inventory_piece(item), **measured, **decided.by_item[item.id]})
     return pd.DataFrame(rows)
+
+
+def inventory_piece(item) -> dict:
+    """The columns of an item's row that the workbook gives (stage ``inventory``), the clearance in cm."""
+    return {"id": item.id, "name": item.name, "room": item.room, "floor": item.floor, "quantity": item.quantity,
+            "consequence": decisions.item_consequence(item), "mu": item.mu,
+            "mu_source": getattr(item, "mu_source", "workbook"), "clearance_cm": item.clearance_m * 100.0}
+
+
+def anchored_piece(item) -> dict:
+    """An anchored item's demand columns (stage ``demand``): its geometry about its more slender direction, and
+    no demand (it is not analysed as freestanding)."""
+    half_width_m = min(item.width_m, item.depth_m) / 2.0
+    return {"overturn_fraction": np.nan, "theta_max_over_alpha": np.nan,
+            "alpha_rad": float(slenderness(half_width_m, item.cg_height_m)),
+            "p_rad_s": float(frequency_parameter(half_width_m, item.cg_height_m, item.height_m)),
+            "b_over_h": half_width_m / item.cg_height_m,
+            "governing_direction": 1 if item.width_m <= item.depth_m else 2}
+
+
+def demand_piece(governing, origin: str) -> dict:
+    """A freestanding item's demand columns (stage ``demand``): its governing demand
+    (:class:`assess.assessment.demand.GoverningDemand`), the regression's numbers only where it applies
+    (:func:`without_regression`), its histories named by where its floor's come from (``origin``,
+    :func:`with_history_origin`)."""
+    return with_history_origin(without_regression(governing.as_row()), origin)
 
 
 def motion_table(cases: pd.DataFrame) -> pd.DataFrame:
@@ -169,15 +185,15 @@ def motion_table(cases: pd.DataFrame) -> pd.DataFrame:
     return table[MOTION_COLUMNS].reset_index(drop=True)
 
 
-def regression_record(constants: RegressionConstants, settings: dict) -> dict:
+def regression_record(constants: RegressionConstants, settings: Settings) -> RegressionRecord:
     """The regression's constants as used, and where they come from (:attr:`AssessmentResult.regression`)."""
-    return {"zeta": constants.zeta, "eta": constants.eta, "sigma": constants.sigma,
-            "im_min": constants.im_min, "im_max": constants.im_max, "source": regression_source(settings)}
+    return RegressionRecord(constants.zeta, constants.eta, constants.sigma, constants.im_min, constants.im_max,
+                            regression_source(settings))
 
 
-def regression_source(settings: dict) -> str:
+def regression_source(settings: Settings) -> str:
     """Where the regression's constants come from, for the report."""
-    defaults = default_settings()
-    if all(float(settings[key]) == float(defaults[key]) for key in ("zeta", "eta", "sigma")):
+    defaults = Settings()
+    if (settings.zeta, settings.eta, settings.sigma) == (defaults.zeta, defaults.eta, defaults.sigma):
         return "Konstantinidis & Makris (2010), eq. 21 (Table 3 simulations)"
     return "the workbook's settings sheet"

@@ -157,7 +157,7 @@ def with_declared(calibrated, declared, calibration: AppliedCalibration):
         return replace(declared, hazard_notes=list(declared.hazard_notes) + [note])
     before = declared.summary.set_index("id")
     after = calibrated.summary.set_index("id")
-    system = system_of(calibrated.settings or {})
+    system = system_of(calibrated.settings)
     flags = list(calibrated.flags)
     codes = list(calibrated.summary["flags"])
     changed = []

@@ -136,7 +136,7 @@ def with_units(inventory, units: str | None):
     the report and the tables then write lengths and forces in it (:mod:`assess.quantity_text`)."""
     if units is None:
         return inventory
-    return replace(inventory, settings={**inventory.settings, "units": units})
+    return replace(inventory, settings=replace(inventory.settings, units=units))
 
 
 def with_comparison(result: AssessmentResult, explicit: Path | None, in_out_dir: Path, say: Say) -> AssessmentResult:
@@ -159,7 +159,7 @@ def with_comparison(result: AssessmentResult, explicit: Path | None, in_out_dir:
     previous = restore_text(previous)  # the text summary.csv protects from spreadsheet formulas
     say(f"comparing with the previous run {explicit or in_out_dir}")
     return replace(result, comparison=compare_summaries(previous, summary_text(result.summary),
-                                                        system_of(result.settings or {})))
+                                                        system_of(result.settings)))
 
 
 # ---------------------------------------------------------------- assess WORKBOOK --hazard LEVEL[,LEVEL...]

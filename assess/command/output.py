@@ -2,7 +2,8 @@
 
 They are written by :func:`assess.command.folders.write_atomically` (all of them, or
 the folder as it was). Text written to CSV is protected from spreadsheet
-formulas (:func:`assess.report.tables.neutralise_formulas`).
+formulas (:func:`assess.report.tables.neutralise_formulas`); every column of a CSV is one
+``assess/data/columns.csv`` declares, in its order (:func:`assess.report.tables.as_declared`).
 """
 from __future__ import annotations
 
@@ -11,7 +12,9 @@ from assess.assessment.result import AssessmentResult
 from assess.fragility.stripes import fragility_files
 from assess.quantity_text import system_of
 from assess.report.spreadsheet import summary_workbook, with_us_units
-from assess.report.tables import csv_text, neutralise_formulas, restore_text, summary_text  # noqa: F401 (re-exported)
+from assess.report.tables import (  # noqa: F401 (re-exported)
+    csv_text, declared_csv_text, neutralise_formulas, restore_text, summary_text,
+)
 
 
 def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: str | None = None,
@@ -33,12 +36,12 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: st
 def _tables(result: AssessmentResult, formats: tuple[str, ...], units: str | None,
             other_levels: tuple[AssessmentResult, ...]) -> dict[str, bytes]:
     """The files of a run that are tables (CSV, and summary.xlsx where ``formats`` has ``xlsx``)."""
-    units = system_of(result.settings or {}) if units is None else system_of(units)
+    units = system_of(result.settings) if units is None else system_of(units)
     summary = with_us_units(result.summary) if units == "us" else result.summary
     files = {
-        "summary.csv": csv_text(summary_text(summary)).encode(),
-        "motions.csv": csv_text(result.motions).encode(),
-        "work_orders.csv": csv_text(result.work_orders()).encode(),
+        "summary.csv": declared_csv_text("summary.csv", summary_text(summary)).encode(),
+        "motions.csv": declared_csv_text("motions.csv", result.motions).encode(),
+        "work_orders.csv": declared_csv_text("work_orders.csv", result.work_orders()).encode(),
     }
     if "xlsx" in formats:
         sheets = {result.level_label: summary_text(result.summary)}
@@ -47,9 +50,9 @@ def _tables(result: AssessmentResult, formats: tuple[str, ...], units: str | Non
     if result.curve_risk is not None:
         files.update(fragility_files(result.curve_risk, result.summary))
     if result.comparison is not None:
-        files["comparison.csv"] = csv_text(result.comparison).encode()
+        files["comparison.csv"] = declared_csv_text("comparison.csv", result.comparison).encode()
     for name, table in (("ground_motions.csv", result.ground_motions), ("spectrum.csv", result.spectrum),
                         ("floors.csv", result.floors)):
         if table is not None:
-            files[name] = csv_text(table).encode()
+            files[name] = declared_csv_text(name, table).encode()
     return files

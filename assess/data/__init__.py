@@ -1,4 +1,4 @@
-"""Packaged data: default settings and the paper's tables."""
+"""Packaged data: default settings, the paper's tables and the declared output columns."""
 from __future__ import annotations
 
 import sys
@@ -16,6 +16,21 @@ def default_settings() -> dict:
     """The default ``settings`` (regression constants, risk thresholds), a fresh dict."""
     with resources.files(__package__).joinpath("defaults.toml").open("rb") as handle:
         return tomllib.load(handle)
+
+
+def output_columns() -> pd.DataFrame:
+    """Every column of the tables a run writes (``columns.csv``), one row each, in the order the files show them.
+
+    Columns (all text): ``file`` (``summary.csv``, ``motions.csv``, ...), ``column`` (its name; ``<T>`` stands for
+    a number, as in ``sa_<T>s_g``), ``unit`` (SI, ``–`` for a pure number, ``text``, ```True`/`False```;
+    "(per report units)" where the column is converted when the file is written), ``dtype`` (``str``,
+    ``float64``, ``int64`` or ``bool``: the kind of its values, empty cells aside), ``stage`` (the stage whose
+    output it is: ``inventory``, ``demand``, ``decision``, ``anchorage``, ``costs``, ``curve``, ...), ``when``
+    (empty: always written; else when: ``us units``, ``hazard curve``, ``a site sheet``, ...) and ``meaning``
+    (as ``docs/outputs.md`` gives it; tests/project/test_docs.py checks that page against this table).
+    """
+    with resources.files(__package__).joinpath("columns.csv").open("r", encoding="utf-8") as handle:
+        return pd.read_csv(handle, dtype=str, keep_default_na=False)
 
 
 def km2010_table3() -> pd.DataFrame:

@@ -29,6 +29,7 @@ import numpy as np
 import pandas as pd
 
 from assess.quantity_text import floor_text, length_text, percent_text, system_of
+from assess.inventory.settings import Settings  # noqa: F401 (the doctests)
 
 #: The action kinds, in the order a facility takes them (``action_kind`` of summary.csv).
 ACTION_KINDS = ("anchor", "tether", "lower_contents", "restrain", "lock_casters", "room", "relocate", "none",
@@ -77,12 +78,12 @@ def room_is_realistic(row: dict, settings: dict) -> bool:
     """Whether the room the item must gain (:func:`room_to_gain_cm`) is one a room can spare: at most
     ``room_max_cm``, what an aisle can give up when the item is moved out into it.
 
-    >>> settings = {"room_max_cm": 30}
+    >>> settings = Settings(room_max_cm=30)
     >>> room_is_realistic({"demand_room_cm": 39.6, "clearance_cm": 35.6}, settings), room_is_realistic(
     ...     {"demand_room_cm": 191.0, "clearance_cm": 30.0}, settings)
     (True, False)
     """
-    return room_to_gain_cm(row) <= float(settings["room_max_cm"])
+    return room_to_gain_cm(row) <= settings.room_max_cm
 
 
 def lowering_suffices(row: dict, lowered: dict | None, settings: dict) -> bool:
@@ -93,7 +94,7 @@ def lowering_suffices(row: dict, lowered: dict | None, settings: dict) -> bool:
     if lowered is None:
         return False
     return (float(lowered["p_overturn"]) == 0.0 and not bool(lowered["uplift"])
-            and float(lowered["p_beyond_clearance"]) < float(settings["risk_pf_moderate"]))
+            and float(lowered["p_beyond_clearance"]) < settings.risk_pf_moderate)
 
 
 def choose_action(row: dict, uplift: bool, casters: bool, lowered: dict | None, settings: dict) -> str:
@@ -103,7 +104,7 @@ def choose_action(row: dict, uplift: bool, casters: bool, lowered: dict | None, 
     ``casters``: whether it stands on casters; ``lowered``: its demand with its heavy contents low
     (:func:`lowering_suffices`), or None.
 
-    >>> settings = {"risk_pf_moderate": 0.1, "room_max_cm": 30}
+    >>> settings = Settings(risk_pf_moderate=0.1, room_max_cm=30)
     >>> row = {"p_overturn": 0.0, "p_beyond_clearance": 0.6, "demand_room_cm": 191.0, "risk": "high",
     ...        "clearance_cm": 30.0}
     >>> choose_action(row, False, False, None, settings), choose_action(row, False, True, None, settings)
@@ -120,7 +121,7 @@ def choose_action(row: dict, uplift: bool, casters: bool, lowered: dict | None, 
         if lowering_suffices(row, lowered, settings):
             return "lower_contents"
         return "tether" if casters else "anchor"
-    if float(row["p_beyond_clearance"]) < float(settings["risk_pf_moderate"]) and row.get("risk") != "high":
+    if float(row["p_beyond_clearance"]) < settings.risk_pf_moderate and row.get("risk") != "high":
         return "none"
     if room_is_realistic(row, settings):
         return "lock_casters" if casters else "room"
@@ -135,13 +136,13 @@ def residual_chances(kind: str, row: dict, lowered: dict | None, settings: dict)
     chance that the sliding exceeds ``demand_room_cm``; a restraint (:data:`HELD_KINDS`): 0 and 0, assuming it holds;
     ``none``: unchanged.
 
-    >>> residual_chances("room", {"p_overturn": 0.0, "p_beyond_clearance": 0.4}, None, {"risk_pf_moderate": 0.1})
+    >>> residual_chances("room", {"p_overturn": 0.0, "p_beyond_clearance": 0.4}, None, Settings(risk_pf_moderate=0.1))
     (0.0, 0.1)
     """
     if kind == "lower_contents":
         return float(lowered["p_overturn"]), float(lowered["p_beyond_clearance"])
     if kind in ("room", "lock_casters"):
-        return float(row["p_overturn"]), min(float(settings["risk_pf_moderate"]), float(row["p_beyond_clearance"]))
+        return float(row["p_overturn"]), min(settings.risk_pf_moderate, float(row["p_beyond_clearance"]))
     if kind in HELD_KINDS:
         return 0.0, 0.0
     return float(row["p_overturn"]), float(row["p_beyond_clearance"])
@@ -167,7 +168,7 @@ def _why(row: dict, uplift: bool, system: str, settings: dict) -> str:
 
 def _more_than_spare(row: dict, system: str, settings: dict) -> str:
     return (f"{length_text(room_to_gain_cm(row), system, 'up')} more, beyond the "
-            f"{length_text(settings['room_max_cm'], system)} a room can spare")
+            f"{length_text(settings.room_max_cm, system)} a room can spare")
 
 
 def _room_numbers(row: dict, system: str) -> str:
@@ -232,7 +233,7 @@ def what_if_sentence(kind: str, row: dict, lowered: dict | None, settings: dict)
                   "are not, tether it." if kind == "lock_casters" else "")
         return (f"Given {length_text(row['demand_room_cm'], system, 'up')} of room (it has "
                 f"{length_text(row['clearance_cm'], system, 'down')}), its chance of sliding past it would be "
-                f"{percent_text(float(settings['risk_pf_moderate']))}: low risk.{locked}")
+                f"{percent_text(settings.risk_pf_moderate)}: low risk.{locked}")
     return ""
 
 
@@ -254,7 +255,7 @@ def lowered_contents_items(equipment: pd.DataFrame, rows: dict, uplift: dict, se
     """The items whose heavy contents the what-if moves low: freestanding items that overturn or rock
     (``rows``: id -> governing demand; ``uplift``: id -> whether it rocks) and whose centre of mass is
     above ``lower_contents_cg_fraction`` of their height (by more than 1 cm), in item order."""
-    fraction = float(settings["lower_contents_cg_fraction"])
+    fraction = settings.lower_contents_cg_fraction
     chosen = []
     for item in equipment[~equipment["anchored"]].itertuples(index=False):
         if item.id not in rows:
@@ -269,7 +270,7 @@ def lowered_rows(equipment: pd.DataFrame, rows: dict, uplift: dict, settings: di
     """id -> what :func:`decide_action` reads of the lowered-contents run (``rows``/``uplift`` of that run,
     :class:`assess.assessment.demand.ItemDemand`): ``p_overturn``, ``p_beyond_clearance``, ``uplift``,
     ``theta_max_over_alpha``, ``cg_fraction`` and ``cg_height_cm``."""
-    fraction = float(settings["lower_contents_cg_fraction"])
+    fraction = settings.lower_contents_cg_fraction
     heights = equipment.set_index("id")["height_m"]
     return {item_id: {"p_overturn": float(row["p_overturn"]), "p_beyond_clearance": float(row["p_beyond_clearance"]),
                       "uplift": bool(uplift[item_id]), "theta_max_over_alpha": float(row["theta_max_over_alpha"]),

@@ -40,6 +40,7 @@ import numpy as np
 import pandas as pd
 
 from assess.decision.risk_classes import ROCKING_HARM_SEVERITY, SLIDING_SEVERITY
+from assess.inventory.settings import Settings
 
 #: Share of ``value`` lost when the item overturns: all of it (``value`` is what its failure costs).
 LOSS_RATIO_OVERTURN = 1.0
@@ -145,7 +146,7 @@ def _number(row, column: str) -> float:
         return math.nan
 
 
-def after_probabilities(row, settings: dict) -> tuple[float, float, float] | None:
+def after_probabilities(row, settings: Settings) -> tuple[float, float, float] | None:
     """The item's (p_overturn, p_beyond_clearance, p_rocking_harm) if its recommended action is taken, or
     None where nothing says what the action leaves.
 
@@ -167,18 +168,18 @@ def after_probabilities(row, settings: dict) -> tuple[float, float, float] | Non
     if kind in HOLDING_ACTIONS:
         return 0.0, 0.0, 0.0
     if kind == "room":
-        return (_number(row, "p_overturn"), float(settings["risk_pf_moderate"]),
+        return (_number(row, "p_overturn"), settings.risk_pf_moderate,
                 p_rock if math.isnan(p_rock_after) else p_rock_after)
     return None
 
 
-def mitigation_cost_of(row, settings: dict) -> float:
+def mitigation_cost_of(row, settings: Settings) -> float:
     """What the item's recommended action costs per unit: its ``mitigation_cost``, else the setting
     ``mitigation_cost_<action_kind>`` where that is given (> 0); NaN otherwise."""
     given = _number(row, "mitigation_cost")
     if not math.isnan(given):
         return given
-    default = float(settings.get(f"mitigation_cost_{row.get('action_kind')}", 0.0) or 0.0)
+    default = settings.mitigation_cost(str(row.get('action_kind')))
     return default if default > 0.0 else math.nan
 
 
@@ -196,7 +197,7 @@ def _annual_rate(row, mode: str) -> tuple[float, str]:
     return math.nan, ""
 
 
-def item_costs(row, settings: dict, has_curve: bool) -> dict:
+def item_costs(row, settings: Settings, has_curve: bool) -> dict:
     """The cost columns (:data:`COST_COLUMNS`) of one item's summary ``row`` (a dict or Series).
 
     * ``expected_loss``: value x :func:`expected_loss_ratio` of the level's probabilities;
@@ -257,15 +258,15 @@ def item_costs(row, settings: dict, has_curve: bool) -> dict:
             notes.append(f"annual loss after '{kind}' scaled by the share of the level's loss it leaves")
         if not math.isnan(out["expected_annual_loss_after"]) and not math.isnan(cost) and cost > 0.0:
             out["benefit_cost_ratio"] = benefit_cost_ratio(eal - out["expected_annual_loss_after"], cost,
-                                                           float(settings["discount_rate"]),
-                                                           float(settings["remaining_life_yr"]))
+                                                           settings.discount_rate,
+                                                           settings.remaining_life_yr)
     else:
         notes.append("no benefit-cost ratio without a hazard curve (--oq-hazard): the level is one earthquake, "
                      "not how often it happens")
     return {**out, "cost_note": "; ".join(notes)}
 
 
-def cost_table(summary: pd.DataFrame, equipment: pd.DataFrame, settings: dict, has_curve: bool) -> pd.DataFrame:
+def cost_table(summary: pd.DataFrame, equipment: pd.DataFrame, settings: Settings, has_curve: bool) -> pd.DataFrame:
     """:data:`COST_COLUMNS` for every item of ``summary`` (by ``id``, in its order), from the equipment's
     ``value`` and ``mitigation_cost``. Where no item has a value, every column is empty (NaN, "")."""
     given = equipment.set_index("id")[["value", "mitigation_cost"]] if "value" in equipment else None

@@ -35,6 +35,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from assess.quantity_text import percent_text
+from assess.inventory.settings import Settings
 
 #: Share of an overturning's cost that sliding past the room carries (it hits, pulls its lines, blocks):
 #: the weight of that mode in the order of action (:func:`assess.decision.decisions.priority_score`) and in the
@@ -94,49 +95,49 @@ def _class_from(probability: float, moderate: float, high: float | None) -> str:
     return "moderate" if probability >= moderate else "low"
 
 
-def mode_classes(chances: Chances, consequence: str, settings: dict) -> dict[str, str]:
+def mode_classes(chances: Chances, consequence: str, settings: Settings) -> dict[str, str]:
     """The class each failure mode gives on its own (``overturn``, ``beyond_clearance``, ``rocking_harm``).
 
-    >>> s = {"risk_overturn_high": 0.1, "risk_overturn_moderate": 0.025, "risk_pf_high": 0.5,
-    ...      "risk_pf_moderate": 0.1, "risk_rocking_moderate": 0.1}
+    >>> s = Settings(risk_overturn_high=0.1, risk_overturn_moderate=0.025, risk_pf_high=0.5,
+    ...              risk_pf_moderate=0.1, risk_rocking_moderate=0.1)
     >>> mode_classes(Chances(0.05, 0.6, 1.0), "critical", s)
     {'overturn': 'moderate', 'beyond_clearance': 'high', 'rocking_harm': 'moderate'}
     """
-    harm = (_class_from(chances.rocking_harm, float(settings["risk_rocking_moderate"]), None)
+    harm = (_class_from(chances.rocking_harm, settings.risk_rocking_moderate, None)
             if rocking_harm_counts(consequence) else "low")
     return {
-        "overturn": _class_from(chances.overturn, float(settings["risk_overturn_moderate"]),
-                                float(settings["risk_overturn_high"])),
-        "beyond_clearance": _class_from(chances.beyond_clearance, float(settings["risk_pf_moderate"]),
-                                        float(settings["risk_pf_high"])),
+        "overturn": _class_from(chances.overturn, settings.risk_overturn_moderate,
+                                settings.risk_overturn_high),
+        "beyond_clearance": _class_from(chances.beyond_clearance, settings.risk_pf_moderate,
+                                        settings.risk_pf_high),
         "rocking_harm": harm,
     }
 
 
-def classify_risk(chances: Chances, consequence: str, settings: dict) -> str:
+def classify_risk(chances: Chances, consequence: str, settings: Settings) -> str:
     """The item's risk class: the worst of its failure modes' classes (:func:`mode_classes`).
 
     The pharmacy's two-door refrigerator (critical) that slides 1-2 cm, never passes its room nor
     overturns and rocks to 0.05 of its tipping angle is low; shelving that overturns in 87 % of runs is high:
 
-    >>> s = {"risk_overturn_high": 0.1, "risk_overturn_moderate": 0.025, "risk_pf_high": 0.5,
-    ...      "risk_pf_moderate": 0.1, "risk_rocking_moderate": 0.1}
+    >>> s = Settings(risk_overturn_high=0.1, risk_overturn_moderate=0.025, risk_pf_high=0.5,
+    ...              risk_pf_moderate=0.1, risk_rocking_moderate=0.1)
     >>> classify_risk(Chances(0.0, 0.0, 0.0), "critical", s), classify_risk(Chances(0.87, 0.0, 0.1), "life-safety", s)
     ('low', 'high')
     """
     return max(mode_classes(chances, consequence, settings).values(), key=CLASS_ORDER.index)
 
 
-def _threshold_text(mode: str, risk: str, settings: dict) -> str:
+def _threshold_text(mode: str, risk: str, settings: Settings) -> str:
     key = {"overturn": "risk_overturn", "beyond_clearance": "risk_pf", "rocking_harm": "risk_rocking"}[mode]
-    return f"{100.0 * float(settings[f'{key}_{risk}']):g}%"  # a threshold as given: 2.5%, not rounded
+    return f"{100.0 * getattr(settings, f'{key}_{risk}'):g}%"  # a threshold as given: 2.5%, not rounded
 
 
-def risk_reason(chances: Chances, consequence: str, settings: dict) -> str:
+def risk_reason(chances: Chances, consequence: str, settings: Settings) -> str:
     """Why the item is in its class, in one sentence from its chances and the thresholds.
 
-    >>> s = {"risk_overturn_high": 0.1, "risk_overturn_moderate": 0.025, "risk_pf_high": 0.5,
-    ...      "risk_pf_moderate": 0.1, "risk_rocking_moderate": 0.1}
+    >>> s = Settings(risk_overturn_high=0.1, risk_overturn_moderate=0.025, risk_pf_high=0.5,
+    ...              risk_pf_moderate=0.1, risk_rocking_moderate=0.1)
     >>> risk_reason(Chances(0.39, 0.0, 0.2), "hazardous", s)
     'high: 39% chance of overturning (high from 10%)'
     >>> risk_reason(Chances(0.0, 0.03, 0.6), "ordinary", s)
@@ -161,12 +162,12 @@ def risk_reason(chances: Chances, consequence: str, settings: dict) -> str:
     return text
 
 
-def deciding_chance(chances: Chances, consequence: str, settings: dict) -> str:
+def deciding_chance(chances: Chances, consequence: str, settings: Settings) -> str:
     """The one chance that decides the class, in a few words: the largest of those at the item's class
     (for a low item, the largest chance that counts for it).
 
-    >>> s = {"risk_overturn_high": 0.1, "risk_overturn_moderate": 0.025, "risk_pf_high": 0.5,
-    ...      "risk_pf_moderate": 0.1, "risk_rocking_moderate": 0.1}
+    >>> s = Settings(risk_overturn_high=0.1, risk_overturn_moderate=0.025, risk_pf_high=0.5,
+    ...              risk_pf_moderate=0.1, risk_rocking_moderate=0.1)
     >>> deciding_chance(Chances(0.0, 0.69, 0.0), "critical", s), deciding_chance(Chances(0.0, 0.004, 0.0), "critical", s)
     ('69% chance of sliding past its room', '<1% chance of sliding past its room')
     """
@@ -194,21 +195,21 @@ def risk_range(risk: str, classes: set) -> str:
     return f"{spanned[0]} to {spanned[-1]}"
 
 
-def rule_text(settings: dict) -> str:
+def rule_text(settings: Settings) -> str:
     """The class rule with the run's thresholds, in one sentence for the report's method.
 
-    >>> s = {"risk_overturn_high": 0.1, "risk_overturn_moderate": 0.025, "risk_pf_high": 0.5,
-    ...      "risk_pf_moderate": 0.1, "risk_rocking_moderate": 0.1, "rocking_harm_theta_over_alpha": 0.5}
+    >>> s = Settings(risk_overturn_high=0.1, risk_overturn_moderate=0.025, risk_pf_high=0.5,
+    ...              risk_pf_moderate=0.1, risk_rocking_moderate=0.1, rocking_harm_theta_over_alpha=0.5)
     >>> rule_text(s)[:96]
     'Each failure mode gives a class and the item takes the worst: overturning moderate from 2.5%, hi'
     """
     def pct(key):
-        return f"{100.0 * float(settings[key]):g}%"
+        return f"{100.0 * getattr(settings, key):g}%"
     return (f"Each failure mode gives a class and the item takes the worst: overturning moderate from "
             f"{pct('risk_overturn_moderate')}, high from {pct('risk_overturn_high')} (ASCE 7-16 Table C1.3.1(b): "
             f"collapse given MCE_R shaking, Risk Category IV and I-II); sliding past the clearance moderate from "
             f"{pct('risk_pf_moderate')}, high from {pct('risk_pf_high')}; rocking that harms the item or its "
-            f"contents (a peak rotation of {float(settings['rocking_harm_theta_over_alpha']):g} of its tipping "
+            f"contents (a peak rotation of {settings.rocking_harm_theta_over_alpha:g} of its tipping "
             f"angle or more without overturning) moderate from {pct('risk_rocking_moderate')} and never high, "
             "counted for every consequence but ordinary (ASCE 41-17 nonstructural performance levels: "
             "operational for critical items, position retention for hazardous and valuable ones, life safety "

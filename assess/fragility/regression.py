@@ -34,6 +34,7 @@ import pandas as pd
 from scipy import stats
 
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
+from assess.inventory.settings import Settings
 
 
 @dataclass(frozen=True)
@@ -47,9 +48,9 @@ class RegressionConstants:
     im_max: float
 
     @classmethod
-    def from_settings(cls, settings: dict) -> "RegressionConstants":
+    def from_settings(cls, settings: Settings) -> "RegressionConstants":
         """Constants from merged settings (defaults: the paper's eq. 21, Table 3)."""
-        return cls(*(float(settings[key]) for key in ("zeta", "eta", "sigma", "im_min", "im_max")))
+        return cls(settings.zeta, settings.eta, settings.sigma, settings.im_min, settings.im_max)
 
 
 @dataclass(frozen=True)

@@ -66,6 +66,7 @@ from scipy import stats
 from assess.fragility.agreement import AT_LEVEL_COLUMNS, level_comparison_sentence
 from assess.fragility.msa import FITTED, FragilityFit, fit_lognormal_fragilities
 from assess.hazard.openquake import OpenQuakeHazard
+from assess.inventory.settings import Settings
 from assess.quantity_text import floor_numbering_of, floor_text
 from assess.hazard.risk_integral import curve_annual_rates, openquake_failure_rate, probability_in_years
 from assess.mechanics.gateway import Cases
@@ -164,7 +165,7 @@ def stripe_levels_g(pfa_per_pga: float, n_stripes: int = N_STRIPES, pga_g=STRIPE
     return np.exp(np.linspace(math.log(low), math.log(high), n_stripes))
 
 
-def floor_pfa_per_pga(floor: int, suite_pta_g: dict, settings: dict) -> tuple[float, str]:
+def floor_pfa_per_pga(floor: int, suite_pta_g: dict, settings: Settings) -> tuple[float, str]:
     """The floor's peak floor acceleration per peak ground acceleration, and where it comes from.
 
     The ground floor's is 1. Another floor's is the median PTA of its suite
@@ -175,9 +176,9 @@ def floor_pfa_per_pga(floor: int, suite_pta_g: dict, settings: dict) -> tuple[fl
 
     ``suite_pta_g`` maps floor -> the PTAs [g] of its suite's motions.
 
-    >>> floor_pfa_per_pga(2, {0: [0.5, 0.7], 2: [0.9]}, {})[0]
+    >>> floor_pfa_per_pga(2, {0: [0.5, 0.7], 2: [0.9]}, Settings())[0]
     1.5
-    >>> floor_pfa_per_pga(2, {2: [0.9]}, {"roof_floor": 4})[0]
+    >>> floor_pfa_per_pga(2, {2: [0.9]}, Settings(roof_floor=4))[0]
     2.0
     """
     if int(floor) == 0:
@@ -188,7 +189,7 @@ def floor_pfa_per_pga(floor: int, suite_pta_g: dict, settings: dict) -> tuple[fl
         ratio = float(np.median(suite_pta_g[floor]) / np.median(suite_pta_g[0]))
         return ratio, (f"floor {label}: PFA/PGA {ratio:.2f}, the median PTA of its motions over the ground "
                        "motions' at the level (the workbook's)")
-    roof = float(settings.get("roof_floor", 0.0) or 0.0)
+    roof = settings.roof_floor
     if roof > 0.0:
         ratio = 1.0 + 2.0 * min(max(floor / roof, 0.0), 1.0)
         return ratio, (f"floor {label}: PFA/PGA {ratio:.2f} by ASCE 7-16 eq. 13.3-1, 1 + 2z/h with roof = floor "
@@ -501,7 +502,7 @@ def checked_curve(hazard: OpenQuakeHazard) -> tuple[np.ndarray, np.ndarray]:
 
 
 def curve_risk(cases: pd.DataFrame, motions: dict, level_motions: pd.DataFrame, hazard: OpenQuakeHazard,
-               settings: dict, runner, progress=lambda message: None, record_pairs: dict | None = None) -> CurveRisk:
+               settings: Settings, runner, progress=lambda message: None, record_pairs: dict | None = None) -> CurveRisk:
     """Fragility per item and failure mode over stripes, integrated over ``hazard`` (module docstring)."""
     levels_g, rates_per_yr = checked_curve(hazard)
     suite_pta_g = {int(f): group["pta_g"].to_numpy(dtype=float)

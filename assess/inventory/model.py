@@ -6,6 +6,7 @@ from pathlib import Path
 
 import pandas as pd
 
+from assess.inventory.settings import Settings
 from assess.inventory.site_building import BuildingSheet, SiteSheet
 
 
@@ -45,10 +46,9 @@ class Inventory:
         component, along the items' depth, absolute path, "" when none), ``azimuth_deg`` (the angle
         from the items' width axis to ``record``'s axis, towards their depth axis; 0 when not given,
         see :mod:`assess.hazard.record_pairs`), ``row`` (int).
-    settings : dict
-        The packaged defaults (``assess.data.default_settings()``) updated
-        with the user's ``settings`` sheet, values converted to float where
-        numeric.
+    settings : Settings
+        The packaged defaults (``assess/data/defaults.toml``) updated with the user's ``settings`` sheet,
+        each value checked and of its field's type (:class:`assess.inventory.settings.Settings`).
     site : SiteSheet or None
         The ``site`` sheet (:mod:`assess.inventory.site_building`), None when the workbook has none.
     building : BuildingSheet or None
@@ -61,7 +61,7 @@ class Inventory:
     path: Path
     equipment: pd.DataFrame
     hazard: pd.DataFrame
-    settings: dict = field(default_factory=dict)
+    settings: Settings = field(default_factory=Settings)
     site: SiteSheet | None = None
     building: BuildingSheet | None = None
     warnings: tuple = ()

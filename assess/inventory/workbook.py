@@ -29,6 +29,7 @@ from pathlib import Path
 import pandas as pd
 
 from assess.data import default_settings
+from assess.inventory.settings import Settings
 from assess.errors import InputError, Problem
 from assess.inventory import friction, plausibility, schema, units, xlsx
 from assess.inventory.model import Inventory
@@ -139,7 +140,7 @@ def read_workbook(path: str | Path) -> Inventory:
         warnings = tuple(plausibility.equipment_warnings(tables["equipment"].rows, tables["equipment"].headers,
                                                          given, sheets["equipment"]))
     return Inventory(path=path, equipment=_frame(equipment, _EQUIPMENT_TYPES),
-                     hazard=_frame(hazard, _HAZARD_TYPES), settings=settings, site=site, building=building,
+                     hazard=_frame(hazard, _HAZARD_TYPES), settings=Settings.from_mapping(settings), site=site, building=building,
                      warnings=warnings)
 
 

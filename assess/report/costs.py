@@ -13,6 +13,7 @@ from assess.decision.costs import (
     LOSS_RATIO_BEYOND_CLEARANCE, LOSS_RATIO_OVERTURN, LOSS_RATIO_ROCKING_HARM, NO_ACTION, present_value_factor,
 )
 from assess.report.sentences import DASH, finite, format_significant, text
+from assess.inventory.settings import Settings
 
 #: What each kind of action is called in the table.
 ACTION_WORDS = {"anchor": "anchor", "tether": "tether", "lock_casters": "lock casters", "restrain": "restrain",
@@ -64,8 +65,8 @@ def costs_context(result, anchors: dict | None = None) -> dict | None:
     summary = result.summary
     if "value" not in summary or not pd.to_numeric(summary["value"], errors="coerce").notna().any():
         return None
-    settings = result.settings or {}
-    currency = str(settings.get("currency") or "")
+    settings = result.settings
+    currency = settings.currency
     has_curve = getattr(result, "curve_risk", None) is not None
     rows = []
     for rank, (_, row) in enumerate(ranked(summary).iterrows(), start=1):
@@ -94,7 +95,7 @@ def _total(summary: pd.DataFrame, column: str, where=None) -> float:
     return float(values[where].sum() if where is not None else values.sum())
 
 
-def lead_sentence(summary: pd.DataFrame, settings: dict, has_curve: bool) -> str:
+def lead_sentence(summary: pd.DataFrame, settings: Settings, has_curve: bool) -> str:
     """Page 1's sentence on costs, counting every unit.
 
     >>> table = pd.DataFrame({"quantity": [1, 2], "expected_loss": [100.0, 50.0], "expected_loss_after": [0.0, 50.0],
@@ -106,7 +107,7 @@ def lead_sentence(summary: pd.DataFrame, settings: dict, has_curve: bool) -> str
     recommended actions, which cost USD 40 where a cost is given). No benefit-cost ratio: this level is one
     earthquake, not how often it happens; give a hazard curve (--oq-hazard) for one.'
     """
-    currency = str(settings.get("currency") or "")
+    currency = settings.currency
     valued = pd.to_numeric(summary["expected_loss"], errors="coerce").notna()  # a value, and analysed
     units = int(pd.to_numeric(summary.loc[valued, "quantity"], errors="coerce").sum())
     loss, after = _total(summary, "expected_loss", valued), _total(summary, "expected_loss_after", valued)
@@ -130,7 +131,7 @@ def lead_sentence(summary: pd.DataFrame, settings: dict, has_curve: bool) -> str
             f"and avoid {money_text(avoided, currency)} of expected loss a year.")
 
 
-def basis_sentence(settings: dict, has_curve: bool, own_after: bool = False) -> str:
+def basis_sentence(settings: Settings, has_curve: bool, own_after: bool = False) -> str:
     """How the amounts are computed, in one paragraph (the loss model, and the discounting with a curve);
     ``own_after``: the summary gives each action's probabilities after it (``p_overturn_after``).
 
@@ -147,7 +148,7 @@ def basis_sentence(settings: dict, has_curve: bool, own_after: bool = False) -> 
     if not has_curve:
         return text_ + (" Loss avoided per 1 spent: the expected loss the action avoids if this earthquake "
                         "happens once, over its cost.")
-    rate, years = float(settings["discount_rate"]), float(settings["remaining_life_yr"])
+    rate, years = settings.discount_rate, settings.remaining_life_yr
     return text_ + (f" Annual loss: the same shares weighed by the yearly rates of overturning and of sliding "
                     f"past the room over the hazard curve. Benefit / cost: the annual loss avoided, over "
                     f"{years:g} years at {100 * rate:g} % a year (present value factor "

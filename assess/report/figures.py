@@ -145,10 +145,8 @@ def lean_svg(svg: str) -> str:
 
 def regression_constants(result) -> tuple[float, float, float, float, float]:
     """``(zeta, eta, sigma, im_min, im_max)`` of ``result.regression``, the paper's by default."""
-    regression = result.regression or {}
-    return (float(regression.get("zeta", 0.370)), float(regression.get("eta", 0.953)),
-            float(regression.get("sigma", 0.445)), float(regression.get("im_min", 1.71)),
-            float(regression.get("im_max", 6.40)))
+    regression = result.regression  # a RegressionRecord: the paper's constants unless the run's differ
+    return regression.zeta, regression.eta, regression.sigma, regression.im_min, regression.im_max
 
 
 def _freestanding(result) -> pd.DataFrame:

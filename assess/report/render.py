@@ -450,7 +450,7 @@ def report_context(result, with_figures: bool = True) -> dict:
     """Everything the template shows, formatted (pure: no clock, no I/O); its ``figures``
     (:func:`report_figures`, the slow part) None where ``with_figures`` is false."""
     summary = _sorted_summary(result.summary)
-    settings = result.settings or {}
+    settings = result.settings
     system = system_of(settings)
     numbering = floor_numbering_of(settings)
     rows = [_item_row(row, system, numbering) for _, row in summary.iterrows()]
@@ -484,10 +484,10 @@ def report_context(result, with_figures: bool = True) -> dict:
         "flag_items": len({flag.item_id for flag in result.flags}),
         "regression": {"zeta": zeta, "eta": eta, "sigma": sigma, "im_min": im_min,
                        "im_max": im_max,
-                       "source": text((result.regression or {}).get("source"))
+                       "source": text(result.regression.source)
                        or "Konstantinidis & Makris (2010)"},
         "anchorage": anchorage_method(result.anchorage, summary),
-        "class_rule": rule_text(settings) if "risk_overturn_high" in settings else "",
+        "class_rule": rule_text(settings),
         "class_paragraph": class_rule_paragraph(settings),
         "source_definitions": source_definitions(summary),
         "history_phrases": history_phrases(summary),
@@ -512,7 +512,7 @@ def report_context(result, with_figures: bool = True) -> dict:
 
 def report_figures(result) -> dict:
     """The report's figures (matplotlib, as SVG ``data:`` URIs), by the template's name for them, each drawn once."""
-    system = system_of(result.settings or {})
+    system = system_of(result.settings)
     sorted_result = _with_summary(result, _sorted_summary(result.summary))
     drawn = {
         "demand": figures.sliding_demand_figures(sorted_result, system=system),

@@ -14,6 +14,7 @@ import pandas as pd
 
 from assess.assessment.result import RISK_CLASSES, AssessmentResult
 from assess.fragility import friction_range, planar
+from assess.inventory.settings import Settings
 from assess.quantity_text import floor_text, floors_text, percent_text, rounded_length, significant_text  # noqa: F401 (floor labels)
 
 DASH = "–"
@@ -430,15 +431,13 @@ def level_text(result: AssessmentResult) -> str:
             f"(S_MS {design.sms_g:.3g} g, S_M1 {design.sm1_g:.3g} g{where})")
 
 
-def class_rule_paragraph(settings: dict) -> str:
+def class_rule_paragraph(settings: Settings) -> str:
     """The method's paragraph on the risk classes: the rule that decides them
     (:func:`assess.decision.risk_classes.rule_text`, from the run's thresholds), the intervals, the room advised
     (the sliding exceeded with the moderate threshold's chance) and the anchored items."""
-    from assess.data import default_settings
     from assess.decision.risk_classes import rule_text
-    merged = {**default_settings(), **(settings or {})}
-    moderate = 100.0 * float(merged["risk_pf_moderate"])
-    return (f"Risk class, from the governing demand. {rule_text(merged)} Where a chance's 90 % interval spans "
+    moderate = 100.0 * settings.risk_pf_moderate
+    return (f"Risk class, from the governing demand. {rule_text(settings)} Where a chance's 90 % interval spans "
             "other classes, the tables say which. The room an item is advised to have is the sliding it exceeds "
             f"with a {moderate:g}% chance: with that room it would be low risk on sliding past it. Anchored items "
             "are listed and not analysed.")

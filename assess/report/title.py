@@ -8,6 +8,7 @@ report.
 """
 from __future__ import annotations
 
+from assess.inventory.settings import Settings
 from assess.report.sentences import text
 
 #: The settings of the title block, in the order the block shows them, with their labels.
@@ -19,17 +20,17 @@ TITLE_SETTINGS = (
 )
 
 
-def title_block(settings: dict, code_edition: str = "") -> dict:
+def title_block(settings: Settings, code_edition: str = "") -> dict:
     """The title block of the report: ``signatures`` (label, value) for the settings given, in
     :data:`TITLE_SETTINGS`'s order, ``code`` the code edition ('' when none applies), ``running`` the short
     text the page header repeats ("rev. B · 2026-11-26"; '' when neither is given).
 
-    >>> title_block({"prepared_by": "A. Engineer", "revision": "B", "checked_by": " "})["signatures"]
+    >>> title_block(Settings(prepared_by="A. Engineer", revision="B", checked_by=" "))["signatures"]
     [('Prepared by', 'A. Engineer'), ('Revision', 'B')]
-    >>> title_block({})
+    >>> title_block(Settings())
     {'signatures': [], 'code': '', 'running': ''}
     """
-    given = {key: text(settings.get(key)).strip() for key, _ in TITLE_SETTINGS}
+    given = {key: text(getattr(settings, key)).strip() for key, _ in TITLE_SETTINGS}
     signatures = [(label, given[key]) for key, label in TITLE_SETTINGS if given[key]]
     running = " · ".join(part for part in (f"rev. {given['revision']}" if given["revision"] else "",
                                            given["report_date"]) if part)

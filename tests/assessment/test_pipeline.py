@@ -8,7 +8,8 @@ import pytest
 from assess.assessment.pipeline import run_assessment
 from assess.assessment.result import MOTION_COLUMNS, SUMMARY_COLUMNS
 from assess.command.output import csv_text
-from assess.data import default_settings, km2010_table3
+from assess.data import km2010_table3
+from assess.inventory.settings import Settings
 from assess.errors import InputError
 from assess.inventory import Inventory
 
@@ -33,7 +34,7 @@ def inventory(items, motions, **settings):
     hazard = pd.DataFrame(motions)
     hazard["floor"] = hazard["floor"].astype("Int64")
     return Inventory(path=Path("test.xlsx"), equipment=pd.DataFrame(items), hazard=hazard,
-                     settings={**default_settings(), **settings})
+                     settings=Settings(**settings))
 
 
 TABLE3_GROUND = [motion("Los Gatos 0.54", 0.54, 2.10), motion("Corralitos 0.84", 0.84, 0.60, vp_cm_s=-61),
@@ -145,7 +146,7 @@ def test_custom_regression_constants_are_used_and_reported():
     result = run_assessment(inv, "2in50")
     row = result.motions.iloc[0]
     assert row["edp_median"] == pytest.approx(0.5 * row["im"])
-    assert result.regression["source"] == "the workbook's settings sheet"
+    assert result.regression.source == "the workbook's settings sheet"
 
 
 def test_same_input_gives_identical_csv():

@@ -7,12 +7,13 @@ number the pipeline produced.
 """
 from pathlib import Path
 
+import dataclasses
 import numpy as np
 import pandas as pd
 import pytest
 
 from assess.assessment.pipeline import run_assessment
-from assess.data import default_settings
+from assess.inventory.settings import Settings
 from assess.decision import decisions
 from assess.errors import InputError
 from assess.fragility.friction_range import mu_dependence_sentence
@@ -41,7 +42,7 @@ def test_a_library_call_is_held_to_the_hazard_sheets_rules(tmp_path):
     hazard = pd.DataFrame([_motion(str(outside), row=2), _motion(vp_m_s=0.0, row=3)])
     hazard["floor"] = hazard["floor"].astype("Int64")
     inventory = Inventory(path=tmp_path / "site" / "lab.xlsx", equipment=pd.DataFrame([_item("A")]), hazard=hazard,
-                          settings=default_settings())
+                          settings=Settings())
     with pytest.raises(InputError) as refused:
         run_assessment(inventory, "2in50")
     located = [(p.sheet, p.row, p.column) for p in refused.value.problems]
@@ -66,7 +67,7 @@ def test_decisions_follow_the_thresholds_and_rank_the_items():
                  "TIPS": _demand_row(0.0, p_overturn=1 / 3)}
     uplift = {"LOW": False, "MID": False, "HIGH": False, "TIPS": True}
     cases = pd.DataFrame({"id": ["LOW"], "mode": ["slide"], "im_outside_fit": [False]})
-    settings = {**default_settings(), "risk_pf_high": 0.5, "risk_pf_moderate": 0.1}
+    settings = Settings(risk_pf_high=0.5, risk_pf_moderate=0.1)
     constants = RegressionConstants.from_settings(settings)
     decided = decisions.decide(equipment, governing, uplift, cases, pd.DataFrame(), constants, settings)
     by_item = decided.by_item
@@ -78,7 +79,7 @@ def test_decisions_follow_the_thresholds_and_rank_the_items():
     # with no room to spare: restrain
     assert by_item["TIPS"]["action"] == "Anchor it to the floor or wall: it overturns under 1 of its 3 motions"
     tight = decisions.decide(equipment, governing, uplift, cases, pd.DataFrame(), constants,
-                             {**settings, "room_max_cm": 11.0}).by_item
+                             dataclasses.replace(settings, room_max_cm=11.0)).by_item
     assert [tight[i]["action_kind"] for i in ("MID", "HIGH")] == ["restrain", "restrain"]
     assert tight["MID"]["action"].startswith(
         "Restrain it (edge stops, bumpers or straps): it needs 42 cm to be low risk and has 30 cm (20% chance of "
@@ -93,7 +94,7 @@ def test_an_item_whose_class_changes_over_its_mu_range_says_so():
                      "p_rocking_harm_low": 0.0, "demand_uplift_low": False, "p_beyond_clearance_high": 0.0,
                      "p_overturn_high": 0.0, "p_rocking_harm_high": 0.0, "demand_uplift_high": False},
                     name="INC-G-01")
-    settings = default_settings()
+    settings = Settings()
     decided = decisions.mu_range_decision(end, "high", "From 3 motions.", "critical", settings)
     assert (decided["risk_mu_low"], decided["risk_mu_high"]) == ("high", "low")
     sentence = mu_dependence_sentence("INC-G-01", 0.13, 0.23, "high", "high", "low",

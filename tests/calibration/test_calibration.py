@@ -19,7 +19,7 @@ from assess.calibration import EFFECTS, build_cases, read_measured, run_calibrat
 from assess.calibration.effects import available_effects
 from assess.calibration.fit import predict_cases, select_effect
 from assess.calibration.measured import test_motion
-from assess.data import default_settings
+from assess.inventory.settings import Settings
 from assess.errors import InputError
 from assess.inventory import Inventory
 
@@ -49,7 +49,7 @@ def make_inventory():
     hazard = pd.DataFrame(motions)
     hazard["floor"] = hazard["floor"].astype("Int64")
     return Inventory(path=Path("WORKBOOK.xlsx"), equipment=pd.DataFrame(ITEMS), hazard=hazard,
-                     settings=default_settings())
+                     settings=Settings())
 
 
 @pytest.fixture(scope="module")

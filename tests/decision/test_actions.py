@@ -10,17 +10,18 @@ to overturn by the independent Housner ODE of tests/rocking_reference.py.
 """
 from pathlib import Path
 
+import dataclasses
 import numpy as np
 import pandas as pd
 import pytest
 
 from assess.assessment.pipeline import run_assessment
-from assess.data import default_settings
+from assess.inventory.settings import Settings
 from assess.decision import actions
 from assess.inventory import Inventory, read_workbook
 from rocking_reference import reference_rocking
 
-SETTINGS = {**default_settings(), "risk_pf_high": 0.5, "risk_pf_moderate": 0.1, "room_max_cm": 30.0}
+SETTINGS = Settings(risk_pf_high=0.5, risk_pf_moderate=0.1, room_max_cm=30.0)
 DT_S = 0.005
 
 
@@ -49,7 +50,7 @@ def test_an_item_on_casters_is_tethered_or_its_casters_locked_never_bolted_down(
     rolls = actions.decide_action(Item(casters=True), _row(p_beyond=0.6, room_cm=39.1), False, None, SETTINGS)
     assert rolls["action_kind"] == "lock_casters"
     assert rolls["action"].startswith("Lock or chock its casters and keep 40 cm clear around it")
-    assert rolls["p_beyond_clearance_after"] == SETTINGS["risk_pf_moderate"] and "tether it" in rolls["what_if"]
+    assert rolls["p_beyond_clearance_after"] == SETTINGS.risk_pf_moderate and "tether it" in rolls["what_if"]
     assert all("Anchor" not in d["action"] for d in (decided, rolls))
 
 
@@ -66,9 +67,9 @@ def test_room_is_asked_only_where_a_room_can_spare_it():
                                  SETTINGS)["action_kind"] == "restrain"
     # the setting moves the line: with 200 cm to spare the far item gets room
     assert actions.decide_action(Item(), _row(p_beyond=0.6, room_cm=190.3), False, None,
-                                 {**SETTINGS, "room_max_cm": 200.0})["action_kind"] == "room"
+                                 dataclasses.replace(SETTINGS, room_max_cm=200.0))["action_kind"] == "room"
     # in US units the room is in inches (191 cm = 75.2 in, rounded up)
-    us = actions.decide_action(Item(), _row(p_beyond=0.6, room_cm=190.3), False, None, {**SETTINGS, "units": "us"})
+    us = actions.decide_action(Item(), _row(p_beyond=0.6, room_cm=190.3), False, None, dataclasses.replace(SETTINGS, units="us"))
     assert "it needs 75 in" in us["action"] and "12 in a room can spare" in us["action"]
     assert "has 3 in" in us["action"]  # 10 cm = 3.9 in, rounded down
 
@@ -167,7 +168,7 @@ def test_lowering_the_centre_of_mass_stops_a_slender_block_overturning_under_a_p
                             "floor": 0, "pta_g": np.nan, "tp_s": tp_s, "vp_m_s": 0.5, "pulse": "",
                             "record_path": str(path), "scale": 1.0, "row": 2}])
     hazard["floor"] = hazard["floor"].astype("Int64")
-    settings = {**default_settings(), "lower_contents_cg_fraction": fraction}
+    settings = Settings(lower_contents_cg_fraction=fraction)
     inventory = Inventory(path=tmp_path / "one.xlsx", equipment=pd.DataFrame([item]), hazard=hazard,
                           settings=settings)
     row = run_assessment(inventory, "2in50").summary.set_index("id").loc["TALL"]

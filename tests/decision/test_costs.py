@@ -14,7 +14,7 @@ import pandas as pd
 import pytest
 
 from assess.assessment.pipeline import run_assessment
-from assess.data import default_settings
+from assess.inventory.settings import Settings
 from assess.decision import costs
 from assess.decision.costs import (
     COST_COLUMNS, after_probabilities, benefit_cost_ratio, cost_table, expected_loss_ratio, item_costs,
@@ -27,7 +27,7 @@ from assess.report.render import make_environment, report_context, template_text
 from tests.assessment.test_pipeline import inventory, item, motion
 from tests.report.test_report import make_result
 
-SETTINGS = {**default_settings(), "discount_rate": 0.07, "remaining_life_yr": 15.0}
+SETTINGS = Settings(discount_rate=0.07, remaining_life_yr=15.0)
 
 
 def discount_sum(rate: float, years: int) -> float:
@@ -82,7 +82,7 @@ def test_overturning_dominates_a_smaller_chance_of_sliding_and_a_missing_mode_co
 
 
 def test_room_leaves_the_moderate_threshold_and_unknown_actions_leave_no_ratio():
-    settings = {**SETTINGS, "risk_pf_moderate": 0.1}
+    settings = dataclasses.replace(SETTINGS, risk_pf_moderate=0.1)
     row = {"value": 1_000.0, "p_overturn": 0.0, "p_beyond_clearance": 0.6, "action_kind": "room",
            "mitigation_cost": 100.0}
     out = item_costs(row, settings, False)
@@ -103,7 +103,7 @@ def test_the_actions_own_probabilities_after_are_used_where_the_summary_has_them
 
 def test_the_mitigation_cost_comes_from_the_item_else_the_setting_else_none():
     row = {"value": 1_000.0, "p_overturn": 0.2, "p_beyond_clearance": 0.0, "action_kind": "anchor"}
-    with_setting = {**SETTINGS, "mitigation_cost_anchor": 400.0}
+    with_setting = dataclasses.replace(SETTINGS, mitigation_cost_anchor=400.0)
     assert item_costs(row, with_setting, False)["mitigation_cost"] == 400.0
     assert item_costs({**row, "mitigation_cost": 250.0}, with_setting, False)["mitigation_cost"] == 250.0
     none = item_costs(row, SETTINGS, False)
@@ -219,8 +219,8 @@ def test_value_and_mitigation_cost_are_read_per_item(make_workbook):
     assert equipment.loc["INC-1", "value"] == 12_000.0 and math.isnan(equipment.loc["INC-1", "mitigation_cost"])
     assert math.isnan(equipment.loc["FRZ-2", "value"]) and equipment.loc["FRZ-2", "mitigation_cost"] == 350.5
     assert math.isnan(equipment.loc["BSC-3", "value"])
-    assert (inventory.settings["currency"], inventory.settings["discount_rate"],
-            inventory.settings["mitigation_cost_anchor"]) == ("EUR", 0.03, 900.0)
+    assert (inventory.settings.currency, inventory.settings.discount_rate,
+            inventory.settings.mitigation_cost_anchor) == ("EUR", 0.03, 900.0)
 
 
 @pytest.mark.parametrize("column, text", [("value", "$12,000"), ("value", -5), ("mitigation_cost", -1)])

@@ -5,12 +5,13 @@ end-to-end check takes its expected rotations from the independent Housner ODE o
 tests/rocking_reference.py, not from the pipeline.
 """
 
+import dataclasses
 import numpy as np
 import pandas as pd
 import pytest
 
 from assess.assessment.pipeline import run_assessment
-from assess.data import default_settings
+from assess.inventory.settings import Settings
 from assess.decision import decisions
 from assess.decision.risk_classes import CLASS_ORDER, Chances, classify_risk, risk_reason
 from assess.fragility.governing import governing_demand, rocking_harm
@@ -21,16 +22,16 @@ from assess.report.sentences import format_percent
 from rocking_reference import reference_rocking
 from tests.fragility.test_governing_demand import DT_S, _sine_record
 
-SETTINGS = default_settings()
+SETTINGS = Settings()
 CONSEQUENCES = ("life-safety", "hazardous", "critical", "valuable", "ordinary")
 
 
 def test_the_documented_defaults():
     """docs/workbook.md: overturning 2.5 % / 10 % (ASCE 7-16 Table C1.3.1(b)), sliding 10 % / 50 %, rocking
     harm 10 % from half the tipping angle."""
-    assert (SETTINGS["risk_overturn_moderate"], SETTINGS["risk_overturn_high"]) == (0.025, 0.10)
-    assert (SETTINGS["risk_pf_moderate"], SETTINGS["risk_pf_high"]) == (0.1, 0.5)
-    assert (SETTINGS["risk_rocking_moderate"], SETTINGS["rocking_harm_theta_over_alpha"]) == (0.1, 0.5)
+    assert (SETTINGS.risk_overturn_moderate, SETTINGS.risk_overturn_high) == (0.025, 0.10)
+    assert (SETTINGS.risk_pf_moderate, SETTINGS.risk_pf_high) == (0.1, 0.5)
+    assert (SETTINGS.risk_rocking_moderate, SETTINGS.rocking_harm_theta_over_alpha) == (0.1, 0.5)
 
 
 def test_the_pharmacy_refrigerator_that_barely_rocks_is_low_not_high():
@@ -79,7 +80,7 @@ def test_sliding_past_the_room_keeps_its_thresholds(p_beyond, expected):
 
 def test_the_worst_mode_wins_and_the_thresholds_are_settings():
     assert classify_risk(Chances(0.03, 0.6, 0.5), "hazardous", SETTINGS) == "high"  # sliding
-    strict = {**SETTINGS, "risk_overturn_high": 0.02, "risk_overturn_moderate": 0.01}
+    strict = dataclasses.replace(SETTINGS, risk_overturn_high=0.02, risk_overturn_moderate=0.01)
     assert classify_risk(Chances(0.03, 0.0, 0.0), "ordinary", strict) == "high"
 
 
@@ -92,7 +93,7 @@ def _decided(row_chances, consequence="critical"):
         row.update({name: value, f"{name}_low": low, f"{name}_high": high})
     item = pd.DataFrame([{"id": "X", "floor": 0, "mass_kg": 100.0, "width_m": 0.6, "depth_m": 0.6,
                           "cg_height_m": 0.9, "consequence": consequence}]).iloc[0]
-    return decisions.decide_item(item, row, True, {**SETTINGS, "sds_g": 0.0})
+    return decisions.decide_item(item, row, True, dataclasses.replace(SETTINGS, sds_g=0.0))
 
 
 def test_the_risk_range_spans_the_classes_of_every_chances_interval():
@@ -187,7 +188,7 @@ def test_a_small_workbook_where_rocking_alone_is_never_high(tmp_path):
     hazard = pd.DataFrame(motions)
     hazard["floor"] = hazard["floor"].astype("Int64")
     inventory = Inventory(path=tmp_path / "rocking.xlsx", equipment=pd.DataFrame(items), hazard=hazard,
-                          settings=default_settings())
+                          settings=Settings())
     summary = run_assessment(inventory, "2in50").summary.set_index("id")
     for item_id, floor in (("CRIT", 0), ("ORD", 0), ("FRIDGE", 1)):
         row = summary.loc[item_id]

@@ -8,7 +8,7 @@ import pytest
 from scipy import integrate, stats
 
 from assess.assessment.pipeline import run_assessment
-from assess.data import default_settings
+from assess.inventory.settings import Settings
 from assess.fragility.friction_range import friction_nodes, items_whose_class_changes
 from assess.inventory import Inventory
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2 as G
@@ -104,7 +104,7 @@ def rect_inventory(folder, mu_range, clearance_cm=60.0, mu=0.25):
                             "record_2_path": "", "azimuth_deg": 0.0}])
     hazard["floor"] = hazard["floor"].astype("Int64")
     return Inventory(path=Path(folder) / "test.xlsx", equipment=pd.DataFrame([item]), hazard=hazard,
-                     settings=default_settings())
+                     settings=Settings())
 
 
 def test_every_run_at_each_mu_node_is_newmarks_closed_form_and_the_probability_weighs_the_nodes(tmp_path):

@@ -7,6 +7,7 @@ tests/rocking_reference.py for overturning, numpy's Hazen quantiles, scipy's
 exact binomial interval, and the sliding under pyslammer's real records for
 the regression's domain.
 """
+import dataclasses
 from pathlib import Path
 
 import numpy as np
@@ -15,7 +16,7 @@ import pytest
 from scipy import stats
 
 from assess.assessment.pipeline import run_assessment
-from assess.data import default_settings
+from assess.inventory.settings import Settings
 from assess.fragility.governing import governing_demand
 from assess.fragility.suite import (
     PULSE_SHARE_MIN, binomial_interval, effective_count, pulse_acceleration_share, regression_applies,
@@ -54,7 +55,7 @@ def _inventory(folder, items, motions):
     hazard = pd.DataFrame(motions)
     hazard["floor"] = hazard["floor"].astype("Int64")
     return Inventory(path=folder / "suite.xlsx", equipment=pd.DataFrame(items), hazard=hazard,
-                     settings=default_settings())
+                     settings=Settings())
 
 
 @pytest.fixture(scope="module")
@@ -145,7 +146,7 @@ def test_a_regression_governed_suite_has_the_regressions_median_and_p84():
                          "overturned": [False, False], "theta_max_over_alpha": [0.0, 0.0]})
     from assess.fragility import RegressionConstants
 
-    constants = RegressionConstants.from_settings(default_settings())
+    constants = RegressionConstants.from_settings(Settings())
     row = governing_demand(cases, runs, constants).loc["A"]
     omega = 2 * np.pi / 2.1
     median_cm = 0.370 * (0.54 / 0.13 - 1) ** 0.953 * 0.54 * 9.80665 / omega ** 2 * 100  # eq. 21
@@ -162,7 +163,7 @@ def test_regression_domain_holds_for_pulse_like_records_and_not_for_records_with
     95 % band (median × e^(±1.96σ), a factor 2.39); where it does not, the regression overshoots by more
     than a factor 4 (measured: predicted/actual 0.59-2.02 and 61-209)."""
     pyslammer = pytest.importorskip("pyslammer")
-    from assess.data import default_settings as defaults
+    from assess.inventory.settings import Settings as defaults
     from assess.fragility import RegressionConstants, intensity_measure, sliding_quantile
     from assess.hazard.pulse_identification import identify_pulse
 
@@ -276,7 +277,8 @@ def test_every_item_is_in_one_action_group_and_no_advice_contradicts_its_numbers
              _item("RACK", 200.0, 40.0, 60.0, 0.6, 20.0), _item("BOX", 60.0, 80.0, 80.0, 0.9, 10.0),
              {**_item("ANCH", 200.0, 40.0, 60.0, 0.6, 20.0), "anchored": True}]
     inventory = _inventory(tmp_path, items, motions)
-    inventory.settings.update(simulate_motions="pulse", sds_g=1.0, roof_floor=4.0)
+    inventory = dataclasses.replace(inventory, settings=dataclasses.replace(inventory.settings, simulate_motions="pulse",
+                                                                           sds_g=1.0, roof_floor=4.0))
     result = run_assessment(inventory, "2in50")
     summary = result.summary.set_index("id")
     groups = _action_groups(report_context(result)["rows"])

@@ -8,7 +8,7 @@ import pandas as pd
 import pytest
 
 from assess.assessment.pipeline import run_assessment
-from assess.data import default_settings
+from assess.inventory.settings import Settings
 from assess.errors import InputError
 from assess.inventory import Inventory
 from assess.mechanics.sliding import sliding_response
@@ -52,7 +52,7 @@ def pair_inventory(folder: Path, first, second, azimuth_deg=0.0, second_dt_s=DT_
                             "azimuth_deg": azimuth_deg}])
     hazard["floor"] = hazard["floor"].astype("Int64")
     return Inventory(path=folder / "test.xlsx", equipment=pd.DataFrame(items()), hazard=hazard,
-                     settings=default_settings())
+                     settings=Settings())
 
 
 def test_a_pair_along_one_line_gives_the_one_way_answer_under_the_resultant(tmp_path):

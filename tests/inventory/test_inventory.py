@@ -7,6 +7,7 @@ import zipfile
 import pytest
 
 from assess.data import default_settings
+from assess.inventory.settings import Settings
 from assess.errors import InputError, Problem
 from assess.inventory import read_workbook
 from workbooks import (BILLION_LAUGHS, RECORD_FILE, add_cached_value, drop_column, good_sheets,
@@ -87,9 +88,9 @@ def test_good_workbook_reads_to_documented_si_columns(make_workbook):
     assert math.isnan(hazard["pta_g"].iloc[2]) and math.isnan(hazard["tp_s"].iloc[2])
 
     settings = inventory.settings
-    assert settings["facility"] == "Bio lab" and settings["site"] == "Berkeley"
-    assert settings["zeta"] == 0.4 and settings["risk_pf_moderate"] == 0.2
-    assert settings["eta"] == 0.953 and settings["sigma"] == 0.445
+    assert settings.facility == "Bio lab" and settings.site == "Berkeley"
+    assert settings.zeta == 0.4 and settings.risk_pf_moderate == 0.2
+    assert settings.eta == 0.953 and settings.sigma == 0.445
     assert default_settings()["zeta"] == 0.370  # the packaged defaults are untouched
 
 
@@ -100,7 +101,7 @@ def test_settings_sheet_is_optional_and_sheet_names_ignore_case(make_workbook):
     inventory = read_workbook(make_workbook(sheets))
     assert len(inventory.equipment) == 3
     # the defaults, with the units resolved from the headers (lengths in in, cm and mm: SI)
-    assert inventory.settings == {**default_settings(), "units": "si"}
+    assert inventory.settings == Settings(units="si")
 
 
 def test_formula_with_cached_value_is_read(make_workbook):

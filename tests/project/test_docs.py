@@ -1,7 +1,8 @@
 """The reference pages in docs/ say what the code does: every column and option it has, and none it lacks.
 
 Each check compares a table of a page (the names in its first column) with what the code declares: the
-columns of summary.csv and motions.csv (``assess.assessment.result``, ``assess.fragility.stripes``), the options of
+columns of every CSV a run writes (``assess/data/columns.csv``, the table the writers read, with each column's
+unit and meaning; and the code's own lists of columns against it), the options of
 every command (the argparse parsers of ``assess.cli``), the workbook's columns (``assess.inventory.schema``)
 and settings (``assess/data/defaults.toml``). A name the code has and the page lacks, or the page has and the
 code no longer does, fails the test with the names.
@@ -15,7 +16,7 @@ import pytest
 
 from assess import cli
 from assess.assessment.result import MOTION_COLUMNS, SUMMARY_COLUMNS
-from assess.data import default_settings
+from assess.data import default_settings, output_columns
 from assess.fragility.stripes import CURVE_COLUMNS
 from assess.inventory.schema import EQUIPMENT, HAZARD
 
@@ -62,19 +63,95 @@ def test_table_names_reads_the_first_cell_only():
     assert table_names(text) == ["a_cm", "b", "--out", "--units"]
 
 
-def test_every_summary_column_is_documented():
-    compare(table_names(section("outputs.md", "`summary.csv`")), SUMMARY_COLUMNS + CURVE_COLUMNS,
-            "docs/outputs.md, summary.csv")
+#: Each file of assess/data/columns.csv, the heading of docs/outputs.md that documents it, and which of the
+#: heading's tables (several files under one heading: one table each, in the same order).
+OUTPUT_TABLES = {
+    "summary.csv": ("`summary.csv`", None),
+    "motions.csv": ("`motions.csv`", None),
+    "work_orders.csv": ("`work_orders.csv`", None),
+    "comparison.csv": ("`comparison.csv`", None),
+    "ground_motions.csv": ("With a `site` sheet: `ground_motions.csv` and `spectrum.csv`", 0),
+    "spectrum.csv": ("With a `site` sheet: `ground_motions.csv` and `spectrum.csv`", 1),
+    "floors.csv": ("With a `building` sheet: `floors.csv`", None),
+}
 
 
-def test_every_work_orders_column_is_documented():
+def table_rows(text: str) -> list[dict]:
+    """The rows of the markdown tables of ``text``, in order: each a dict of header -> cell (a cell's own "|" is
+    written "\\|"), with ``table``, the index of its table in ``text``."""
+    rows, header, table = [], None, -1
+    for line in text.splitlines() + [""]:
+        if not line.startswith("|"):
+            header = None
+            continue
+        cells = [cell.strip() for cell in re.split(r"(?<!\\)\|", line)[1:-1]]
+        if header is None:
+            header, table = cells, table + 1
+        elif not re.match(r"^-+$", cells[0]):
+            rows.append({**dict(zip(header, cells)), "table": table})
+    return rows
+
+
+def documented_columns(file: str) -> dict[str, tuple[str, str]]:
+    """``column -> (unit, meaning)`` as docs/outputs.md gives them for ``file``; a row naming several columns
+    gives each its unit (one for all, or one each: ``m, –``) and the row's meaning."""
+    heading, which = OUTPUT_TABLES[file]
+    documented = {}
+    for row in table_rows(section("outputs.md", heading)):
+        if which is not None and row["table"] != which:
+            continue
+        names = [name.split()[0] for name in re.findall(r"`([^`]+)`", row["column"])]
+        units = [unit.strip() for unit in row["unit"].split(",")]
+        units = units if len(units) == len(names) else [row["unit"]] * len(names)
+        documented.update({name: (unit, row["meaning"]) for name, unit in zip(names, units)})
+    return documented
+
+
+def test_table_rows_splits_tables_and_escaped_bars():
+    text = "| column | unit |\n|---|---|\n| `a` | \\|x\\| |\n\nprose\n\n| column | unit |\n|---|---|\n| `b` | cm |\n"
+    assert table_rows(text) == [{"column": "`a`", "unit": "\\|x\\|", "table": 0},
+                                {"column": "`b`", "unit": "cm", "table": 1}]
+
+
+@pytest.mark.parametrize("file", list(OUTPUT_TABLES))
+def test_every_declared_column_is_documented_with_its_unit_and_meaning(file):
+    """docs/outputs.md against assess/data/columns.csv, the table the writers read: the same columns (those
+    converted at write time into the report's units are described once, in prose), the same unit and meaning."""
+    declared = output_columns()
+    declared = declared[(declared["file"] == file) & (declared["stage"] != "report units")]
+    documented = documented_columns(file)
+    compare(list(documented), list(declared["column"]), f"docs/outputs.md, {file}")
+    for row in declared.itertuples(index=False):
+        assert documented[row.column] == (row.unit, row.meaning), (
+            f"docs/outputs.md, {file}, {row.column}: the page says {documented[row.column]}, "
+            f"assess/data/columns.csv says {(row.unit, row.meaning)}")
+
+
+def test_the_declared_columns_are_the_code_s_columns_in_its_order():
+    """The columns the stages make, in the order the code selects them, are the table's, in its order."""
+    from assess.assessment.comparison import COMPARISON_COLUMNS
     from assess.decision.actions import WORK_ORDER_COLUMNS
-    compare(table_names(section("outputs.md", "`work_orders.csv`")), WORK_ORDER_COLUMNS,
-            "docs/outputs.md, work_orders.csv")
+
+    declared = output_columns()
+    declared = declared[declared["stage"] != "report units"]
+    for file, columns in (("summary.csv", SUMMARY_COLUMNS + CURVE_COLUMNS), ("motions.csv", MOTION_COLUMNS),
+                          ("work_orders.csv", WORK_ORDER_COLUMNS), ("comparison.csv", COMPARISON_COLUMNS)):
+        assert list(declared.loc[declared["file"] == file, "column"]) == list(columns), file
+    curve = declared[(declared["file"] == "summary.csv") & (declared["when"] == "hazard curve")]
+    assert list(curve["column"]) == list(CURVE_COLUMNS)
 
 
-def test_every_motions_column_is_documented():
-    compare(table_names(section("outputs.md", "`motions.csv`")), MOTION_COLUMNS, "docs/outputs.md, motions.csv")
+def test_the_us_columns_follow_their_si_column():
+    """A column converted into US units at write time stands right after the SI column it converts, with the
+    unit of its name (``_in``, ``_kip``, ``_kip_ft``) and "per report units"."""
+    declared = output_columns()
+    summary = declared[declared["file"] == "summary.csv"].reset_index(drop=True)
+    us = summary[summary["stage"] == "report units"]
+    assert len(us) >= 10
+    for index, row in us.iterrows():
+        before = summary.loc[index - 1, "column"]
+        assert row.column == before[:-len("_cm")] + "_in" and row.unit == "in (per report units)", row.column
+        assert f"`{before}` in inches" in row.meaning
 
 
 PARSERS = {

@@ -19,9 +19,10 @@ import pandas as pd
 import pytest
 from scipy.stats import norm
 
-from assess.assessment.result import MOTION_COLUMNS, SUMMARY_COLUMNS, AssessmentResult
+from assess.assessment.result import MOTION_COLUMNS, SUMMARY_COLUMNS, AssessmentResult, RegressionRecord
 from assess.decision.flags import Flag
 from assess.hazard.levels import HazardLevel
+from assess.inventory.settings import Settings
 from assess.report import figures, render_html, render_pdf
 from assess.report.render import (
     RefusedURLError,
@@ -114,9 +115,8 @@ def make_result(simulated: bool = False) -> AssessmentResult:
                  "the sliding estimate is extrapolated."),
             Flag("K-02", "not_simulated", "Overturning not simulated."),
         ],
-        regression={"zeta": ZETA, "eta": ETA, "sigma": SIGMA, "im_min": 1.71, "im_max": 6.40,
-                    "source": "Konstantinidis & Makris (2010), Table 3"},
-        settings={"risk_pf_high": 0.5, "risk_pf_moderate": 0.1},
+        regression=RegressionRecord(ZETA, ETA, SIGMA, 1.71, 6.40, "Konstantinidis & Makris (2010), Table 3"),
+        settings=Settings(risk_pf_high=0.5, risk_pf_moderate=0.1),
         simulated=simulated,
         seed=1,
     )

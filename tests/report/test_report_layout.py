@@ -3,6 +3,8 @@ never broken inside nor laid past their cell, Fig. 2 drawing the number its tabl
 once per cause with the items they concern (templates/report.css, assess/report/)."""
 from __future__ import annotations
 
+import dataclasses
+
 import re
 
 import matplotlib.axes
@@ -96,7 +98,7 @@ def long_rooms_html() -> str:
     summary.loc[freestanding, ["p_overturn", "p_overturn_low", "p_overturn_high"]] = [0.91, 0.64, 0.996]
     summary.loc[freestanding, "risk"] = ["high", "high", "moderate", "moderate"]  # page 1's table and list too
     summary["risk_range"] = ["moderate to high"] * 4 + [""]
-    result.settings = {**result.settings, "units": "us", "floor_numbering": "ground_1"}
+    result.settings = dataclasses.replace(result.settings, units="us", floor_numbering="ground_1")
     return render_html(result)
 
 

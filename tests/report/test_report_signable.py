@@ -32,7 +32,7 @@ SIGNED = {"prepared_by": "A. Engineer, PE", "checked_by": "B. Checker, SE", "rep
 
 
 def _signed(result, **settings):
-    return dataclasses.replace(result, settings={**result.settings, **settings},
+    return dataclasses.replace(result, settings=dataclasses.replace(result.settings, **settings),
                                anchorage=ANCHORAGE_7_22)
 
 
@@ -84,9 +84,9 @@ def test_a_date_cell_is_read_as_its_date_and_a_number_as_text(tmp_path):
     sheets["settings"] += [{"key": "report_date", "value": datetime.datetime(2026, 11, 26)},
                            {"key": "revision", "value": 2}, {"key": "prepared_by", "value": "A. Engineer"}]
     inventory = read_workbook(write_workbook(tmp_path / "w.xlsx", sheets))
-    assert inventory.settings["report_date"] == "2026-11-26"
-    assert inventory.settings["revision"] == "2"
-    assert inventory.settings["prepared_by"] == "A. Engineer" and inventory.settings["checked_by"] == ""
+    assert inventory.settings.report_date == "2026-11-26"
+    assert inventory.settings.revision == "2"
+    assert inventory.settings.prepared_by == "A. Engineer" and inventory.settings.checked_by == ""
 
 
 @pytest.mark.parametrize("day_zero", [datetime.datetime(1899, 12, 30), datetime.time(0, 0)])

@@ -20,6 +20,7 @@ import pytest
 from assess import cli
 from assess.command import job
 from assess.decision import actions
+from assess.inventory.settings import Settings
 from assess.errors import InputError
 from assess.inventory import read_workbook
 from assess.report import render_html
@@ -110,12 +111,12 @@ def test_the_room_an_item_has_reads_alike_in_its_advice_and_its_table():
     """Clearance 20 cm = 7.87 in: the advice says it has 7 in, and so does the table (not 8)."""
     row = {"p_overturn": 0.0, "risk": "moderate", "demand_room_cm": 54.2, "clearance_cm": 20.0,
            "p_beyond_clearance": 0.3, "theta_max_over_alpha": 0.0, "suite_motions": 3}
-    us = actions.action_sentence("room", row, False, None, {"units": "us"})
-    si = actions.action_sentence("room", row, False, None, {"units": "si"})
+    us = actions.action_sentence("room", row, False, None, Settings(units="us"))
+    si = actions.action_sentence("room", row, False, None, Settings(units="si"))
     assert "needs 22 in" in us and "has 7 in" in us  # 54.2 / 2.54 = 21.3 up; 20 / 2.54 = 7.87 down
     assert "needs 55 cm" in si and "has 20 cm" in si
     result = make_result()
-    result = dataclasses.replace(result, settings={**result.settings, "units": "us"})
+    result = dataclasses.replace(result, settings=dataclasses.replace(result.settings, units="us"))
     html = render_html(result)
     # F-01 has 20 cm of clearance: its room in the item's detail
     detail = html[html.index('id="item-F-01"'):]
@@ -128,7 +129,7 @@ def test_floor_labels_under_us_floor_numbering():
     assert [floor_text(f, "ground_1") for f in (0, 1, 5, -1)] == ["1", "2", "6", "−1"]
     assert [floor_text(f) for f in (0, 1, -1)] == ["0", "1", "−1"]
     result = make_result()  # F-01 on floor 2, A-03 on floor 0, R-04 on floor 1
-    us = render_html(dataclasses.replace(result, settings={**result.settings, "floor_numbering": "ground_1"}))
+    us = render_html(dataclasses.replace(result, settings=dataclasses.replace(result.settings, floor_numbering="ground_1")))
     si = render_html(result)
     assert "ground floor = 1" in us and "ground floor = 1" not in si
     assert "the ground floor 1 (the workbook&#39;s floor 0)" in us
@@ -147,7 +148,7 @@ def test_floor_numbering_does_not_change_how_the_workbook_is_read(make_workbook)
     plain = read_workbook(make_workbook(sheets, name="plain.xlsx"))
     sheets["settings"].append({"key": "floor_numbering", "value": "ground_1"})
     us = read_workbook(make_workbook(sheets, name="us.xlsx"))
-    assert us.settings["floor_numbering"] == "ground_1" and plain.settings["floor_numbering"] == "ground_0"
+    assert us.settings.floor_numbering == "ground_1" and plain.settings.floor_numbering == "ground_0"
     assert us.equipment["floor"].tolist() == plain.equipment["floor"].tolist()
 
 
@@ -162,11 +163,11 @@ def test_a_wrong_units_or_floor_numbering_setting_is_refused_at_its_cell(make_wo
 
 
 def test_units_follow_the_workbook_headers_unless_set(make_workbook):
-    assert read_workbook(make_workbook(_inch_sheets(), name="in.xlsx")).settings["units"] == "us"
-    assert read_workbook(make_workbook(job_sheets(), name="mixed.xlsx")).settings["units"] == "si"
+    assert read_workbook(make_workbook(_inch_sheets(), name="in.xlsx")).settings.units == "us"
+    assert read_workbook(make_workbook(job_sheets(), name="mixed.xlsx")).settings.units == "si"
     sheets = _inch_sheets()
     sheets["settings"].append({"key": "units", "value": "SI"})
-    assert read_workbook(make_workbook(sheets, name="set.xlsx")).settings["units"] == "si"
+    assert read_workbook(make_workbook(sheets, name="set.xlsx")).settings.units == "si"
 
 
 # --------------------------------------------------------------------------- refusals
@@ -221,5 +222,5 @@ def test_work_orders_label_floors_as_the_report_does():
         return re.findall(r"<h3>Floor ([^<]+) <span", section)
 
     assert headings(render_html(result)) == ["0", "1", "2"]
-    us = dataclasses.replace(result, settings={**result.settings, "floor_numbering": "ground_1"})
+    us = dataclasses.replace(result, settings=dataclasses.replace(result.settings, floor_numbering="ground_1"))
     assert headings(render_html(us)) == ["1", "2", "3"]

@@ -22,6 +22,7 @@ from types import SimpleNamespace
 import pytest
 
 from assess.anchorage import anchorage_site, item_anchorage
+from assess.inventory.settings import Settings
 from assess.inventory.site_building import BuildingSheet, SiteSheet
 
 G = 9.80665
@@ -30,7 +31,7 @@ BUILDING = BuildingSheet(storeys=4, height_m=16.0, system="steel moment frame")
 
 
 def _site(code):
-    return anchorage_site(SiteSheet(code=code, sds_g=1.2, risk_category="IV"), BUILDING, {})
+    return anchorage_site(SiteSheet(code=code, sds_g=1.2, risk_category="IV"), BUILDING, Settings())
 
 
 def _item(floor, mass_kg, width_m, depth_m, cg_height_m, component_type=None, ip=math.nan):
@@ -149,14 +150,14 @@ def test_no_force_without_action_or_sds():
     item = _item(1, 300.0, 0.7, 0.8, 0.9, "freezer")
     none = item_anchorage(item, "critical", "none", _site("ASCE 7-22"))
     assert math.isnan(none["anchor_force_kn"]) and none["ip"] == 1.5 and none["component_type"] == "refrigeration"
-    no_sds = item_anchorage(item, "critical", "anchor", anchorage_site(SiteSheet(risk_category="IV"), BUILDING, {}))
+    no_sds = item_anchorage(item, "critical", "anchor", anchorage_site(SiteSheet(risk_category="IV"), BUILDING, Settings()))
     assert math.isnan(no_sds["anchor_force_kn"]) and "add sds_g" in no_sds["anchor_basis"]
 
 
 def test_settings_alone_as_before_the_site_sheet():
     """Without site and building sheets: ASCE 7-22, Risk Category II, S_DS and roof_floor from the settings,
     H_f = 1 + 2.5 z/h (eq. 13.3-5). A critical item is then I_p 1.0 (not Risk Category IV)."""
-    site = anchorage_site(None, None, {"sds_g": 1.0, "roof_floor": 4})
+    site = anchorage_site(None, None, Settings(sds_g=1.0, roof_floor=4))
     item = _item(2, 100.0, 0.5, 0.5, 0.5)
     out = item_anchorage(item, "critical", "anchor", site)
     # 0.4·1.0·1.0·980.665·((1 + 2.5·0.5)/1.3)·(1.0/1.5) = 392.266·1.730769·0.666667 = 452.61 N

@@ -13,7 +13,8 @@ import pandas as pd
 import pytest
 from scipy import stats
 
-from assess.data import default_settings, km2010_table3
+from assess.data import km2010_table3
+from assess.inventory.settings import Settings
 from assess.fragility import (
     RegressionConstants, engineering_demand, fit_regression, intensity_measure,
     probability_of_exceedance, sliding_quantile,
@@ -117,7 +118,7 @@ def test_table3_regression_gives_back_eq21():
 
 
 def test_packaged_defaults_are_eq21():
-    constants = RegressionConstants.from_settings(default_settings())
+    constants = RegressionConstants.from_settings(Settings())
     assert (constants.zeta, constants.eta, constants.sigma) == (0.370, 0.953, 0.445)
     assert (constants.im_min, constants.im_max) == (TABLE3["im"].min(), TABLE3["im"].max())
 
