@@ -29,10 +29,10 @@ from pathlib import Path
 import pandas as pd
 
 from assess.data import default_settings
-from assess.inventory.settings import Settings
 from assess.errors import InputError, Problem
 from assess.inventory import friction, plausibility, schema, units, xlsx
 from assess.inventory.model import Inventory
+from assess.inventory.settings import Settings
 from assess.inventory.schema import (BUILDING, EQUIPMENT, HAZARD, SETTINGS, SITE, UNUSABLE, CellError,
                                      Header, SheetSpec)
 from assess.inventory.site_building import check_item_floors, read_building, read_site
@@ -140,8 +140,8 @@ def read_workbook(path: str | Path) -> Inventory:
         warnings = tuple(plausibility.equipment_warnings(tables["equipment"].rows, tables["equipment"].headers,
                                                          given, sheets["equipment"]))
     return Inventory(path=path, equipment=_frame(equipment, _EQUIPMENT_TYPES),
-                     hazard=_frame(hazard, _HAZARD_TYPES), settings=Settings.from_mapping(settings), site=site, building=building,
-                     warnings=warnings)
+                     hazard=_frame(hazard, _HAZARD_TYPES), settings=Settings.from_mapping(settings), site=site,
+                     building=building, warnings=warnings)
 
 
 # ---------------------------------------------------------------- the file

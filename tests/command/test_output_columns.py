@@ -65,7 +65,8 @@ def check_file(path, file: str) -> list[str]:
         assert matches, f"{file}: {column} is not declared in assess/data/columns.csv"
         positions.append(matches[0])
         dtype = declared.loc[matches[0], "dtype"]
-        assert _read_back_matches(dtype, written[column]), f"{file}: {column} is declared {dtype}, read {written[column].dtype}"
+        assert _read_back_matches(dtype, written[column]), (
+            f"{file}: {column} is declared {dtype}, read {written[column].dtype}")
     assert positions == sorted(positions), f"{file}: the columns are not in the declared order"
     always = declared[(declared["when"] == "") & (declared["stage"] != "report units")]
     assert set(always["column"]) <= set(written.columns), f"{file}: a column written always is missing"
