@@ -1,7 +1,7 @@
 """Equipment demand on the floors of yielding buildings: the tool's yielding route against OpenSees buildings.
 
 Run: python benchmarks/bench_yielding_equipment.py [--levels DE,MCE_R] [--buildings smf4,smf8,wall6]
-     [--motions 11] [--overstrengths 1.5,2,3]      (needs openseespy and pyslammer; about N minutes)
+     [--motions 11] [--overstrengths 1.5,2,3]      (needs openseespy and pyslammer; about 2 minutes)
 
 The truth: three yielding OpenSeesPy buildings of our own (tests/peers/opensees_buildings.py: steel
 special moment frames of 4 and 8 storeys, a pinching concrete shear wall of 6 storeys; tapering storey
