@@ -158,3 +158,20 @@ def test_an_elastic_building_has_no_building_section(make_workbook):
     html = render_html(result)
     assert "The building: what its storeys did" not in html
     assert "through the building&#39;s elastic modes" in html or "through the building's elastic modes" in html
+
+
+def test_p_delta_adds_the_gravity_loads_geometric_stiffness():
+    """``p_delta: yes``: the stick's linear part gains -P_i/h_i per storey, P_i the weight above storey i
+    (two floors of equal mass m, storeys of 4 m: -(2 m g + m g)/4 on floor 1, -m g/4 on the roof), and
+    nothing else changes."""
+    from assess.assessment.floors import building_model_of
+    from assess.inventory.site_building import BuildingSheet, SiteSheet
+    site = SiteSheet(sds_g=1.0, sd1_g=0.6)
+    plain = building_model_of(BuildingSheet(storeys=2, height_m=8.0, period_s=0.3), site)
+    with_p_delta = building_model_of(BuildingSheet(storeys=2, height_m=8.0, period_s=0.3, p_delta=True), site)
+    weight = plain.stick.floor_masses_kg[0] * 9.80665
+    expected = -np.array([[2 * weight / 4 + weight / 4, -weight / 4], [-weight / 4, weight / 4]])
+    np.testing.assert_allclose(with_p_delta.stick.linear_stiffness_n_m - plain.stick.linear_stiffness_n_m, expected,
+                               rtol=1e-12)
+    np.testing.assert_array_equal(with_p_delta.stick.yield_force_n, plain.stick.yield_force_n)
+    assert with_p_delta.p_delta and not plain.p_delta
