@@ -9,7 +9,14 @@ stiffness profile) with each storey's strength from ``yield_base_shear_g`` or th
 overstrength (:func:`~assess.building.design.design_strength`). A ground motion under which no storey
 yields (every storey's ductility below 1) gives the elastic route's floor histories themselves
 (:func:`~assess.building.response.floor_records`): a building strong enough to stay elastic is
-assessed exactly as the elastic route assesses it.
+assessed exactly as the elastic route assesses it. The two models are not the same building at the
+threshold, though: for frames (the stick keeps the elastic model's flexural column) the stick's
+elastic limit is within 2-25 % RMS of the modal route's histories (Rayleigh against modal damping;
+roof PFA 0.98-1.10 times), but a wall's or ``other``'s stick is an equivalent shear stick (a storey
+spring cannot yield in flexure), whose elastic limit differs from the shear-flexural modes (α = 1) by
+150-185 % RMS with a roof PFA 1.25-1.65 times the modal one (3 to 12 storeys,
+``benchmarks/yielding_elastic_limit.py``): a motion that only just yields such a building gets floor
+motions noticeably different from one that just does not.
 
 What the storeys did under each motion (peak drift ratio, ductility) goes to ``floors.csv``
 (:func:`storey_table`); a drift ratio beyond :data:`DRIFT_LIMIT_BY_SYSTEM` is beyond what the stick
@@ -22,7 +29,8 @@ its floors' motions are no longer the model's. The building's own collapse is no
 A stick's history depends only on the stick and the ground history, so the same ground history gives
 the same floor histories bit for bit: the equipment cases simulated under them are found in the case
 cache (:mod:`assess.command.cache`) on the next run, a curve update included. Within a run, the
-stick's answers are kept for the last :data:`MEMORY_SIZE` ground histories (:func:`yielding_histories`).
+stick's answers are kept up to :data:`MEMORY_BYTES` (:func:`stick_history`), so that the floors table
+and the stripes' onset do not simulate a ground history twice.
 
 References
 ----------
@@ -57,8 +65,8 @@ DRIFT_LIMIT_BY_SYSTEM = {
     "shear wall": 0.02,
     "other": 0.02,
 }
-#: Ground histories whose stick answers a run keeps (each holds every floor's history).
-MEMORY_SIZE = 48
+#: Bytes of stick answers (every floor's history per ground history) a run keeps, most recent first.
+MEMORY_BYTES = 256 * 2 ** 20
 
 
 @dataclass(frozen=True)
@@ -170,11 +178,18 @@ class StickHistory:
 
 
 _MEMORY: "OrderedDict[tuple, StickHistory]" = OrderedDict()
+_MEMORY_USED = [0]  # bytes of the histories in _MEMORY
+
+
+def forget() -> None:
+    """Empty the memory of :func:`stick_history` (tests)."""
+    _MEMORY.clear()
+    _MEMORY_USED[0] = 0
 
 
 def stick_history(building: YieldingBuilding, ground_accel_g, dt_s: float) -> StickHistory:
     """One ground history through ``building`` (module text: the elastic route's histories where no storey
-    yields), kept for the next :data:`MEMORY_SIZE` calls."""
+    yields), kept in memory up to :data:`MEMORY_BYTES` of the most recent."""
     ground = np.ascontiguousarray(ground_accel_g, dtype=float)
     key = (building.key, float(dt_s), ground.size, hashlib.blake2b(ground.tobytes(), digest_size=16).digest())
     if key in _MEMORY:
@@ -188,8 +203,10 @@ def stick_history(building: YieldingBuilding, ground_accel_g, dt_s: float) -> St
         accel = np.vstack([history[k][0].accel_g for k in range(building.storeys + 1)])
     out = StickHistory(accel, response.peak_drift_ratio, response.ductility, elastic)
     _MEMORY[key] = out
-    while len(_MEMORY) > MEMORY_SIZE:
-        _MEMORY.popitem(last=False)
+    _MEMORY_USED[0] += accel.nbytes
+    while _MEMORY_USED[0] > MEMORY_BYTES and len(_MEMORY) > 1:
+        _, dropped = _MEMORY.popitem(last=False)
+        _MEMORY_USED[0] -= dropped.floor_accel_g.nbytes
     return out
 
 

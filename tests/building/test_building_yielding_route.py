@@ -53,7 +53,7 @@ def _elastic_expected(ground):
 def test_elastic_or_strong_enough_gives_todays_elastic_floor_motions_byte_for_byte(make_workbook, rows):
     """``response: elastic``, or a yield base shear above the demand (3 W: no storey yields), gives the floor
     histories of the elastic modes built here from the sheet's numbers, to the last bit."""
-    yielding_module._MEMORY.clear()
+    yielding_module.forget()
     histories, ground, level, simulated = _floor_histories(make_workbook(_sheets(*rows), record=False))
     expected = _elastic_expected(ground)
     for m, motion in enumerate(ground):
@@ -71,7 +71,7 @@ def test_a_yielding_building_gives_the_sticks_floor_motions(make_workbook):
     C_s = min(1.0/(3/1.5), 0.6/(0.3 · 3/1.5)) = 0.5, times the overstrength 1.2 given here = 0.6 W; with
     k = 1 (T ≤ 0.5 s), C_v = (4, 8)/12, so storey 2 carries 2/3 of it. Under a motion that yields a storey
     the floors' histories are the stick's response itself."""
-    yielding_module._MEMORY.clear()
+    yielding_module.forget()
     path = make_workbook(_sheets(("response", "yielding"), ("overstrength", 1.2)), record=False)
     histories, ground, level, simulated = _floor_histories(path)
     ratios = np.array([0.6, 0.6 * 2.0 / 3.0])
@@ -112,9 +112,9 @@ def test_the_same_ground_history_gives_the_same_floor_history_bit_for_bit():
     t = np.arange(0.0, 12.0, 0.01)
     from assess.hazard.records import Record
     ground = [Record(0.6 * np.sin(2 * np.pi * t / 0.7) * np.exp(-((t - 4.0) / 2.0) ** 2), 0.01, "g")]
-    yielding_module._MEMORY.clear()
+    yielding_module.forget()
     first = yielding_module.building_floor_records(building, ground)
-    yielding_module._MEMORY.clear()
+    yielding_module.forget()
     again = yielding_module.building_floor_records(building, ground)
     remembered = yielding_module.building_floor_records(building, ground)
     for k in range(5):
