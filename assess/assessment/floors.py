@@ -65,7 +65,8 @@ def building_modes_of(building: BuildingSheet) -> BuildingModes:
                           period_s=building.period_s, damping=building.damping)
 
 
-def building_model_of(building: BuildingSheet, site: SiteSheet | None, modes: BuildingModes | None = None):
+def building_model_of(building: BuildingSheet, site: SiteSheet | None, modes: BuildingModes | None = None,
+                      workbook_name: str = ""):
     """How the floor route models the building: its elastic modes, or, where the sheet's response is
     ``yielding`` (:meth:`~assess.inventory.site_building.BuildingSheet.response_with`), its yielding stick
     (:func:`assess.building.yielding.yielding_building`) with the site's design values and risk category."""
@@ -74,7 +75,7 @@ def building_model_of(building: BuildingSheet, site: SiteSheet | None, modes: Bu
         return modes
     design = {}
     if building.yield_base_shear_g is None:  # the code's design (the workbook check made sure the site gives it)
-        spectrum = design_spectrum_of(site, "")
+        spectrum = design_spectrum_of(site, workbook_name)
         design = dict(sds_g=spectrum.sds_g, sd1_g=spectrum.sd1_g, tl_s=site.tl_s, s1_g=site.s1_g,
                       risk_category=site.risk_category)
     elif site is not None:

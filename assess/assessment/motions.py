@@ -99,7 +99,7 @@ def level_motions(inventory, level_text: str, progress: Progress, oq_hazard=None
     level_label = str(motions["level_label"].iloc[0]) if len(motions) else (level.label or level.name)
     freestanding = inventory.equipment[~inventory.equipment["anchored"]]
     modes = site_and_building.building_modes_of(inventory.building) if inventory.building is not None else None
-    building = (site_and_building.building_model_of(inventory.building, inventory.site, modes)
+    building = (site_and_building.building_model_of(inventory.building, inventory.site, modes, workbook_name)
                 if modes is not None else None)  # its elastic modes or its yielding stick
     records, site, notes = {}, None, []
     if inventory.site is not None and not _has_ground_motions(motions):

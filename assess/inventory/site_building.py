@@ -421,9 +421,10 @@ def check_building_strength(table, building: BuildingSheet, site: SiteSheet | No
         return
     if site is not None and site.has_design_values:
         return
-    report.at(building.rows["response"], table.headers.get("value"), "response is yielding but nothing gives the storeys' "
-              "strength: the building sheet has no yield_base_shear_g and the site sheet no design values "
-              "(sds_g and sd1_g, or ss_g, s1_g and site_class) for the code's design.",
+    report.at(building.rows["response"], table.headers.get("value"),
+              "response is yielding but nothing gives the storeys' strength: the building sheet has no "
+              "yield_base_shear_g and the site sheet no design values (sds_g and sd1_g, or ss_g, s1_g and "
+              "site_class) for the code's design.",
               "add yield_base_shear_g (the base shear at yield over the weight, from a pushover or an "
               "evaluation), or the site's design values to the site sheet, or write elastic in response.")
 

@@ -11,8 +11,6 @@ from __future__ import annotations
 
 import math
 
-import pandas as pd
-
 from assess.quantity_text import floor_numbering_of, floor_text
 
 #: Sentence closing the section, whatever the drifts.

@@ -11,7 +11,6 @@ documented columns of docs/outputs.md against the file; the report's words again
 from __future__ import annotations
 
 import numpy as np
-import pandas as pd
 import pytest
 
 from assess.assessment.motions import level_motions, simulated_motions
@@ -29,7 +28,8 @@ BUILDING = [["key", "value"], ["storeys", 2], ["storey_height_m", 4.0], ["period
 
 
 def _sheets(*rows):
-    return {"equipment": [dict(item) for item in EQUIPMENT], "site": SITE, "building": BUILDING + [list(r) for r in rows]}
+    return {"equipment": [dict(item) for item in EQUIPMENT], "site": SITE,
+            "building": BUILDING + [list(r) for r in rows]}
 
 
 def _floor_histories(path):
@@ -147,7 +147,7 @@ def test_the_report_warns_beyond_the_trusted_drift_and_says_collapse_is_not_asse
     html = render_html(weak)
     assert "The building: what its storeys did" in html
     assert "Beyond what the model can be trusted for" in html and "FEMA 356" in html
-    assert "The building&#39;s own collapse is not assessed" in html or "The building's own collapse is not assessed" in html
+    assert any(f"The building{quote}s own collapse is not assessed" in html for quote in ("&#39;", "'"))
     assert "a model of the building that yields" in html
 
 

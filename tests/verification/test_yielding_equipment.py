@@ -53,8 +53,8 @@ def measured(tmp_path_factory):
                   "elastic": [["response", "elastic"]]}
         routes.update({f"design x {o:g}": [["response", "yielding"], ["overstrength", o]] for o in OVERSTRENGTHS})
         results = {route: assess(workbook(folder, truth, suite, "DE", rows), "DE") for route, rows in routes.items()}
-        out[name] = {"truth": truth, "numbers": {route: compare(result, reference) for route, result in results.items()},
-                     "floors": results["given"][0].floors.set_index("floor")}
+        numbers = {route: compare(result, reference) for route, result in results.items()}
+        out[name] = {"truth": truth, "numbers": numbers, "floors": results["given"][0].floors.set_index("floor")}
     return out
 
 
