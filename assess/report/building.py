@@ -53,7 +53,8 @@ def building_context(result) -> dict | None:
         ``lead`` (a sentence), ``rows`` (per storey: ``storey``, ``floors`` (the floors it joins, labelled as
         the report labels floors), ``yield_ratio``, ``drift`` and ``drift_range``, ``ductility`` and
         ``ductility_range``, ``beyond`` (motions beyond the limit), ``pfa_over_pga``, ``hf``), ``warning``
-        (a sentence, or "" when no storey passed the limit) and ``collapse`` (:data:`COLLAPSE_NOT_ASSESSED`).
+        (a sentence, or "" when no storey passed the limit), ``notice`` (the same in one sentence for the
+        report's first page, or "") and ``collapse`` (:data:`COLLAPSE_NOT_ASSESSED`).
     """
     floors = getattr(result, "floors", None)
     if floors is None or "response" not in floors or not (floors["response"] == "yielding").any():
@@ -88,7 +89,7 @@ def building_context(result) -> dict | None:
             + " Each storey's peak drift (over its height) and ductility (peak drift over the drift at which it "
             "yields) are the median over the motions, with their range; PFA/PGA is the floor's, beside ASCE 7-22 "
             "§13.3.1's H_f as a check (not a target).")
-    warning = ""
+    warning = notice = ""
     if beyond:
         worst = max(beyond.values())
         warning = (f"Beyond what the model can be trusted for: the drift of {_storeys_text(sorted(beyond))} passed "
@@ -98,7 +99,10 @@ def building_context(result) -> dict | None:
                    "every cycle, which the model's storeys do not, so the floor motions under those ground motions, "
                    "and the items' results under them, are outside what the model stands for. Have a structural "
                    "engineer look at the building first.")
-    return {"lead": lead, "rows": rows, "warning": warning, "collapse": COLLAPSE_NOT_ASSESSED,
+        notice = (f"The building's model passed the storey drift it is trusted to ({_percent(limit)}, "
+                  f"{_storeys_text(sorted(beyond))}) under up to {worst} of the {motions} motions: the floor motions "
+                  "under those, and the items' results under them, are outside what it stands for.")
+    return {"lead": lead, "rows": rows, "warning": warning, "notice": notice, "collapse": COLLAPSE_NOT_ASSESSED,
             "limit": _percent(limit) if not math.isnan(limit) else ""}
 
 

@@ -147,6 +147,8 @@ def test_the_report_warns_beyond_the_trusted_drift_and_says_collapse_is_not_asse
     html = render_html(weak)
     assert "The building: what its storeys did" in html
     assert "Beyond what the model can be trusted for" in html and "FEMA 356" in html
+    first_page = html[:html.index("Act first")]  # and said on the first page, before the items
+    assert "passed the storey drift it is trusted to" in first_page
     assert any(f"The building{quote}s own collapse is not assessed" in html for quote in ("&#39;", "'"))
     assert "a model of the building that yields" in html
 
