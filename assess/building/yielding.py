@@ -41,10 +41,13 @@ References
 from __future__ import annotations
 
 import hashlib
+import threading
 from collections import OrderedDict
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from typing import Optional, Sequence
 
+import numba
 import numpy as np
 import pandas as pd
 
@@ -179,12 +182,14 @@ class StickHistory:
 
 _MEMORY: "OrderedDict[tuple, StickHistory]" = OrderedDict()
 _MEMORY_USED = [0]  # bytes of the histories in _MEMORY
+_MEMORY_LOCK = threading.Lock()
 
 
 def forget() -> None:
     """Empty the memory of :func:`stick_history` (tests)."""
-    _MEMORY.clear()
-    _MEMORY_USED[0] = 0
+    with _MEMORY_LOCK:
+        _MEMORY.clear()
+        _MEMORY_USED[0] = 0
 
 
 def stick_history(building: YieldingBuilding, ground_accel_g, dt_s: float) -> StickHistory:
@@ -192,21 +197,24 @@ def stick_history(building: YieldingBuilding, ground_accel_g, dt_s: float) -> St
     yields), kept in memory up to :data:`MEMORY_BYTES` of the most recent."""
     ground = np.ascontiguousarray(ground_accel_g, dtype=float)
     key = (building.key, float(dt_s), ground.size, hashlib.blake2b(ground.tobytes(), digest_size=16).digest())
-    if key in _MEMORY:
-        _MEMORY.move_to_end(key)
-        return _MEMORY[key]
-    response = yielding_response(building.stick, ground, dt_s)
+    with _MEMORY_LOCK:
+        if key in _MEMORY:
+            _MEMORY.move_to_end(key)
+            return _MEMORY[key]
+    response = yielding_response(building.stick, ground, dt_s)  # the compiled kernel releases the GIL
     elastic = bool(np.all(response.ductility < 1.0))
     accel = response.floor_accel_g
     if elastic:
         history = floor_records(building.modes, [Record(ground, dt_s, "")])
         accel = np.vstack([history[k][0].accel_g for k in range(building.storeys + 1)])
     out = StickHistory(accel, response.peak_drift_ratio, response.ductility, elastic)
-    _MEMORY[key] = out
-    _MEMORY_USED[0] += accel.nbytes
-    while _MEMORY_USED[0] > MEMORY_BYTES and len(_MEMORY) > 1:
-        _, dropped = _MEMORY.popitem(last=False)
-        _MEMORY_USED[0] -= dropped.floor_accel_g.nbytes
+    with _MEMORY_LOCK:
+        if key not in _MEMORY:
+            _MEMORY[key] = out
+            _MEMORY_USED[0] += accel.nbytes
+        while _MEMORY_USED[0] > MEMORY_BYTES and len(_MEMORY) > 1:
+            _, dropped = _MEMORY.popitem(last=False)
+            _MEMORY_USED[0] -= dropped.floor_accel_g.nbytes
     return out
 
 
@@ -218,11 +226,12 @@ def yielding_histories(building: YieldingBuilding, ground_motions: Sequence[Reco
     if any(not 0 <= k <= building.storeys for k in wanted):
         raise ValueError(f"floors must lie between 0 and {building.storeys}")
     out = {k: [] for k in wanted}
-    histories = []
-    for motion in ground_motions:
-        ground = np.ascontiguousarray(motion.accel_g, dtype=float)
-        history = stick_history(building, ground, motion.dt_s)
-        histories.append(history)
+    grounds = [np.ascontiguousarray(motion.accel_g, dtype=float) for motion in ground_motions]
+    # each motion on its own thread (the kernel releases the GIL): what changes is when, not what
+    with ThreadPoolExecutor(max(1, min(numba.get_num_threads(), len(grounds)))) as pool:
+        histories = list(pool.map(lambda m: stick_history(building, grounds[m], ground_motions[m].dt_s),
+                                  range(len(grounds))))
+    for motion, ground, history in zip(ground_motions, grounds, histories):
         for k in wanted:
             accel = ground.copy() if k == 0 else history.floor_accel_g[k].copy()
             out[k].append(Record(accel, motion.dt_s, motion.name if k == 0 else f"{motion.name} @ floor {k}"))
