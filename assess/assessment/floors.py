@@ -5,8 +5,9 @@ suite from the site: the level's target spectrum (``DE``, ``MCE_R``: ASCE 7; a p
 site's OpenQuake uniform-hazard spectrum) and records selected and scaled to it from the site's
 ``records`` folder, or spectrum-compatible synthetic motions (:mod:`assess.site`). With a
 ``building`` sheet, every floor that has no ``hazard`` rows at the level gets its motions by passing
-each ground motion through the building's elastic modes (:mod:`assess.building`): the floor's
-absolute acceleration in time. A floor with its own ``hazard`` rows keeps them: a structural
+each ground motion through the building (:mod:`assess.building`): its elastic modes, or, with
+``response: yielding``, a stick of yielding storey springs (:mod:`assess.building.yielding`); the
+floor's absolute acceleration in time. A floor with its own ``hazard`` rows keeps them: a structural
 engineer's floor motions govern. The sheets are described in docs/workbook.md.
 
 The functions here build those motions; :mod:`assess.assessment.motions` places them among the
@@ -22,6 +23,8 @@ import pandas as pd
 from assess.building import BuildingModes, building_modes
 from assess.building.floors import floors_table
 from assess.building.response import floor_records
+from assess.building.yielding import (YieldingBuilding, building_floor_records, storey_table, yielding_building,
+                                      yielding_histories)
 from assess.errors import InputError, Problem
 from assess.hazard.levels import HazardLevel
 from assess.hazard.records import Record
@@ -60,6 +63,25 @@ def building_modes_of(building: BuildingSheet) -> BuildingModes:
     """The building sheet's modes (:func:`assess.building.building_modes`), every mode kept."""
     return building_modes(building.storeys, building.height_m / building.storeys, system=building.system,
                           period_s=building.period_s, damping=building.damping)
+
+
+def building_model_of(building: BuildingSheet, site: SiteSheet | None, modes: BuildingModes | None = None,
+                      workbook_name: str = ""):
+    """How the floor route models the building: its elastic modes, or, where the sheet's response is
+    ``yielding`` (:meth:`~assess.inventory.site_building.BuildingSheet.response_with`), its yielding stick
+    (:func:`assess.building.yielding.yielding_building`) with the site's design values and risk category."""
+    modes = building_modes_of(building) if modes is None else modes
+    if building.response_with(site) != "yielding":
+        return modes
+    design = {}
+    if building.yield_base_shear_g is None:  # the code's design (the workbook check made sure the site gives it)
+        spectrum = design_spectrum_of(site, workbook_name)
+        design = dict(sds_g=spectrum.sds_g, sd1_g=spectrum.sd1_g, tl_s=site.tl_s, s1_g=site.s1_g,
+                      risk_category=site.risk_category)
+    elif site is not None:
+        design = dict(risk_category=site.risk_category)
+    return yielding_building(modes, building.system, damping=building.damping, overstrength=building.overstrength,
+                             yield_base_shear_g=building.yield_base_shear_g, p_delta=building.p_delta, **design)
 
 
 def design_spectrum_of(site: SiteSheet, workbook_name: str) -> DesignSpectrum | None:
@@ -133,15 +155,23 @@ def site_suite(site: SiteSheet, level: HazardLevel, modes: BuildingModes | None,
     return SiteSuite(suite, design, periods)
 
 
-def through_building(modes: BuildingModes, histories: list[Record], floors) -> dict[int, list[Record]]:
-    """Each history (a ground motion's) through the building: ``{floor: [history per ground history]}``."""
-    return floor_records(modes, histories, floors=sorted(int(f) for f in floors))
+def through_building(building, histories: list[Record], floors) -> dict[int, list[Record]]:
+    """Each history (a ground motion's) through the building (its elastic modes or its yielding stick,
+    :func:`building_model_of`): ``{floor: [history per ground history]}``."""
+    return building_floor_records(building, histories, floors=sorted(int(f) for f in floors))
 
 
-def floors_csv(modes: BuildingModes, ground: list[Record], floors, level_label: str) -> pd.DataFrame:
-    """``floors.csv`` of a level: the modes used and PFA, PFA/PGA per floor over the ground suite."""
+def floors_csv(building, ground: list[Record], floors, level_label: str) -> pd.DataFrame:
+    """``floors.csv`` of a level: the modes used and PFA, PFA/PGA per floor over the ground suite; a yielding
+    building has a row for every floor, with what each storey did
+    (:func:`assess.building.yielding.storey_table`)."""
+    if isinstance(building, YieldingBuilding):
+        wanted = list(range(building.storeys + 1))
+        records, histories = yielding_histories(building, ground, floors=wanted)
+        table = floors_table(building.modes, records, level=level_label)
+        return pd.concat([table, storey_table(building, histories, wanted)], axis=1)
     wanted = sorted({0, *(int(f) for f in floors)})
-    return floors_table(modes, floor_records(modes, ground, floors=wanted), level=level_label)
+    return floors_table(building, floor_records(building, ground, floors=wanted), level=level_label)
 
 
 def site_note(site: SiteSuite, sheet: SiteSheet) -> str:
@@ -159,17 +189,28 @@ def site_note(site: SiteSuite, sheet: SiteSheet) -> str:
             f"{suite.min_mean_ratio:.0%} of the target there; ground_motions.csv and spectrum.csv).")
 
 
-def building_note(modes: BuildingModes, building: BuildingSheet, floors, derive_floors_roof,
-                  numbering: str = "ground_0") -> str:
+def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, numbering: str = "ground_0") -> str:
     """Where the upper floors' motions come from, in a sentence for the report (floors labelled by
-    ``numbering``: :func:`assess.quantity_text.floor_text`)."""
-    source = "given" if building.period_s is not None else "ASCE 7 Table 12.8-2's estimate"
-    text = (f"Floor{'s' if len(floors) > 1 else ''} {floors_text(floors, numbering)}: each ground motion through the building's elastic modes "
-            f"({building.storeys} storeys, {building.system}, T1 {modes.periods_s[0]:.2f} s ({source}), "
-            f"{building.damping:.0%} damping, {modes.n_modes} modes): the floor's absolute acceleration in time "
-            "(floors.csv). The building is taken as elastic: a building that yields has lower peak floor "
-            "accelerations than these, at longer periods; floor motions a structural engineer gives in the hazard "
-            "sheet govern.")
+    ``numbering``: :func:`assess.quantity_text.floor_text`); ``building`` as :func:`building_model_of` gives it."""
+    modes = building.modes if isinstance(building, YieldingBuilding) else building
+    source = "given" if sheet.period_s is not None else "ASCE 7 Table 12.8-2's estimate"
+    which = f"Floor{'s' if len(floors) > 1 else ''} {floors_text(floors, numbering)}"
+    if isinstance(building, YieldingBuilding):
+        strength = building.strength
+        text = (f"{which}: each ground motion through the building, modelled as yielding ({sheet.storeys} storeys, "
+                f"{sheet.system}, T1 {modes.periods_s[0]:.2f} s ({source}), {sheet.damping:.0%} Rayleigh damping; "
+                f"{building.stick.law} storey springs"
+                + (", with P-Delta" if building.p_delta else "") + "): the floor's absolute acceleration in time "
+                f"(floors.csv). Its storeys yield at a base shear of {strength.yield_base_shear_g:.3g} W: "
+                f"{strength.source}. Under a motion that yields no storey the floors' motions are the elastic "
+                "modes' ones. The building's own collapse is not assessed.")
+    else:
+        text = (f"{which}: each ground motion through the building's elastic modes "
+                f"({sheet.storeys} storeys, {sheet.system}, T1 {modes.periods_s[0]:.2f} s ({source}), "
+                f"{sheet.damping:.0%} damping, {modes.n_modes} modes): the floor's absolute acceleration in time "
+                "(floors.csv). The building is taken as elastic: a building that yields has lower peak floor "
+                "accelerations than these, at longer periods; floor motions a structural engineer gives in the "
+                "hazard sheet govern.")
     if derive_floors_roof is not None:
         text += " --derive-floors gives way to the building sheet."
     return text

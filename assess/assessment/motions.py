@@ -62,7 +62,8 @@ class LevelMotions:
     records: dict[str, Record] = field(default_factory=dict)
     #: The level's ground suite from the site sheet (``ground_motions.csv``, ``spectrum.csv``), or None.
     site: site_and_building.SiteSuite | None = None
-    #: The building's modes, where a building sheet passes the ground motions to floors without motions.
+    #: The building, where a building sheet passes the ground motions to floors without motions: its elastic
+    #: modes or its yielding stick (:func:`assess.assessment.floors.building_model_of`).
     building: object | None = None
     #: How floors are labelled in motion names and notes (settings ``floor_numbering``).
     numbering: str = "ground_0"
@@ -99,6 +100,8 @@ def level_motions(inventory, level_text: str, progress: Progress, oq_hazard=None
     level_label = str(motions["level_label"].iloc[0]) if len(motions) else (level.label or level.name)
     freestanding = inventory.equipment[~inventory.equipment["anchored"]]
     modes = site_and_building.building_modes_of(inventory.building) if inventory.building is not None else None
+    building = (site_and_building.building_model_of(inventory.building, inventory.site, modes, workbook_name)
+                if modes is not None else None)  # its elastic modes or its yielding stick
     records, site, notes = {}, None, []
     if inventory.site is not None and not _has_ground_motions(motions):
         progress(f"making the ground suite of level {level_label} from the site sheet")
@@ -128,7 +131,7 @@ def level_motions(inventory, level_text: str, progress: Progress, oq_hazard=None
         motions = _with_building_rows(motions, missing, workbook_name, numbering)
         building_notes = []
         if missing:
-            building_notes.append(site_and_building.building_note(modes, inventory.building, missing,
+            building_notes.append(site_and_building.building_note(building, inventory.building, missing,
                                                                   derive_floors_roof, numbering))
         elif (freestanding["floor"] > 0).any():
             building_notes.append("The building sheet gives no floor its motion: every floor with freestanding "
@@ -151,7 +154,7 @@ def level_motions(inventory, level_text: str, progress: Progress, oq_hazard=None
             progress(note)
     # one key per motion row: a motion named on several floors is a different motion on each
     motions = motions.reset_index(drop=True).assign(motion_key=lambda m: np.arange(len(m)))
-    return LevelMotions(level, level_label, motions, notes, records, site, modes, numbering)
+    return LevelMotions(level, level_label, motions, notes, records, site, building, numbering)
 
 
 def check_level(inventory, level_text: str) -> None:

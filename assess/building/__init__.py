@@ -5,15 +5,16 @@ A ``building`` sheet (storeys, height, lateral system, T_1 where known, damping)
 through :func:`~assess.building.response.floor_records` to every floor's absolute
 acceleration history; :func:`~assess.building.floors.floors_table` is ``floors.csv``.
 
-The building is taken as **linear elastic**: its floors' accelerations are those of
-its elastic modes at the damping given. A building that yields (cracks, hinges,
-braces buckling) lengthens its periods and caps its storey forces, so that its
-upper floors' peak accelerations are then lower than the elastic ones, and their
-frequency content shifts to longer periods; the elastic answer is, for PFA,
-generally on the high side under the strong shaking of MCE-level motions, and
-close for a building that stays elastic (design-level motions on a stiff or
-strong building). A structural engineer's floor motions, where given in the
-``hazard`` sheet, govern.
+The building is taken as **linear elastic** there: its floors' accelerations are
+those of its elastic modes at the damping given. A building that yields (cracks,
+hinges, braces buckling) lengthens its periods and caps its storey forces, so
+that its upper floors' peak accelerations are then lower than the elastic ones,
+and their frequency content shifts to longer periods. The building sheet's
+``response: yielding`` (the default where the storeys' strength is known) takes
+the floors' histories from a stick of yielding storey springs instead
+(:mod:`assess.building.yielding`, on :mod:`assess.building.nonlinear`,
+:mod:`assess.building.hysteresis` and :mod:`assess.building.design`). A
+structural engineer's floor motions, where given in the ``hazard`` sheet, govern.
 """
 from .floors import floors_table, height_factor
 from .modes import ALPHA_BY_SYSTEM, BuildingModes, building_modes

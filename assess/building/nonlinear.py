@@ -280,7 +280,7 @@ def _spring_states(u, law, committed, trial, k0, fy, hardening, pinch_x, pinch_y
         tangent[i] = trial[i, 2]
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)  # released so that a suite's motions run on threads (assess.building.yielding)
 def _history(ground_g, dt_s, substeps, masses, k0, fy, hardening, law, pinch_x, pinch_y, beta,
              k_lin, c_extra, a0, a1, damping_on_initial, tolerance, max_iterations):  # pragma: no cover - compiled
     n = masses.size

@@ -1,8 +1,9 @@
 """Stripes of ground acceleration through the building: one fragility in PGA per item, whatever the level.
 
 Where a building sheet gives the floors' motions (each floor's history is a
-ground history of the level's suite through the building's elastic modes,
-:mod:`assess.building.response`), the stripes of the hazard curve
+ground history of the level's suite through the building: its elastic modes,
+:mod:`assess.building.response`, or its yielding stick,
+:mod:`assess.building.yielding`), the stripes of the hazard curve
 (:mod:`assess.fragility.stripes`) are stripes of *ground* acceleration:
 
 1. every ground history of the suite is scaled to a PGA x_j, for the
@@ -11,7 +12,8 @@ ground history of the level's suite through the building's elastic modes,
    (a pair of records by one factor that brings the larger peak to x_j, as at
    the floor);
 2. the scaled ground histories pass through the building
-   (:func:`assess.building.response.floor_records`, the level's modes) to the
+   (:func:`assess.building.yielding.building_floor_records`: the level's elastic
+   modes or yielding stick) to the
    floors the items stand on; the items of a floor run under its histories,
    the ground floor's under the scaled ground histories (the engine, both base
    directions, as for the floor stripes);
@@ -28,16 +30,20 @@ fragilities at any level, which is why the job computes them once, from its
 first level's suite, and gives every level the same rates
 (:func:`assess.command.job.run_job`).
 
-A building is linear, so a floor history under a scaled ground history is
-the scaled floor history; the histories are still passed through the
-building at each stripe, as documented, and equal the scaled ones to rounding.
+An elastic building is linear, so a floor history under a scaled ground
+history is the scaled floor history; the histories are still passed through
+the building at each stripe, as documented, and equal the scaled ones to
+rounding. A yielding building (``response: yielding``,
+:mod:`assess.building.yielding`) is not: each stripe's scaled ground
+histories pass through its nonlinear stick, so that a stronger stripe yields
+its storeys more and its floors' motions are not the scaled weaker ones.
 """
 from __future__ import annotations
 
 import numpy as np
 import pandas as pd
 
-from assess.building.response import floor_records
+from assess.building.yielding import YieldingBuilding, building_floor_records
 from assess.quantity_text import floor_text
 from assess.fragility.stripes import (N_STRIPES, STRIPE_PGA_G, CurveRisk, StripeBatch, checked_curve,
                                       fit_and_integrate, stripe_levels_g)
@@ -85,16 +91,16 @@ def ground_histories(cases: pd.DataFrame, floor: int, motions: dict, sources: di
 def stripe_histories(modes, ground: list, pga_g: float, floors) -> dict[int, list]:
     """Per floor of ``floors``: ``(width, depth)`` histories under each ground history of ``ground`` scaled
     to PGA ``pga_g`` [g] (a pair by one factor: its larger peak at ``pga_g``) and passed through the
-    building (:func:`assess.building.response.floor_records`); floor 0 gets the scaled ground histories."""
+    building (:func:`assess.building.yielding.building_floor_records`); floor 0 gets the scaled ground histories."""
     scaled = []
     for first, second in ground:
         factor = pga_g / max(float(np.max(np.abs(first.accel_g))), float(np.max(np.abs(second.accel_g))))
         scaled.append((first.scaled(factor), second.scaled(factor) if second is not first else None))
     wanted = sorted(set(int(f) for f in floors))
     upper = [f for f in wanted if f > 0]
-    width = floor_records(modes, [w for w, _ in scaled], floors=upper) if upper else {}
+    width = building_floor_records(modes, [w for w, _ in scaled], floors=upper) if upper else {}
     paired = [k for k, (_, d) in enumerate(scaled) if d is not None]
-    depth = floor_records(modes, [scaled[k][1] for k in paired], floors=upper) if upper and paired else {}
+    depth = building_floor_records(modes, [scaled[k][1] for k in paired], floors=upper) if upper and paired else {}
     out = {}
     for floor in wanted:
         histories = []
@@ -145,9 +151,18 @@ def ground_stripe_runs(cases: pd.DataFrame, motions: dict, sources: dict, modes,
 
 def max_peak_ratio(modes, ground: list, floor: int) -> float:
     """The largest peak of the floor's histories over the peak of their ground history (a pair: its larger
-    component) [-]; 1 at the ground for a single record. A linear building: the same at every stripe."""
-    through = stripe_histories(modes, ground, 1.0, [floor])[floor]
-    return max(max(float(np.max(np.abs(w.accel_g))), float(np.max(np.abs(d.accel_g)))) for w, d in through)
+    component) [-]; 1 at the ground for a single record. A linear building: the same at every stripe. A
+    yielding building (:class:`~assess.building.yielding.YieldingBuilding`): the larger of its elastic
+    modes' ratio (what it does under a stripe too weak to yield it) and its ratio at 1 g (yielding lowers
+    it, so the elastic one is the larger in practice)."""
+    def ratio(building, pga_g):
+        through = stripe_histories(building, ground, pga_g, [floor])[floor]
+        return max(max(float(np.max(np.abs(w.accel_g))), float(np.max(np.abs(d.accel_g)))) / pga_g
+                   for w, d in through)
+
+    if isinstance(modes, YieldingBuilding):
+        return max(ratio(modes.modes, 1.0), ratio(modes, 1.0))
+    return ratio(modes, 1.0)
 
 
 def ground_curve_risk(cases: pd.DataFrame, motions: dict, sources: dict, modes, hazard, runner,

@@ -33,6 +33,14 @@ DEFAULT_RISK_CATEGORY = "II"
 MIN_SUITE_SIZE, MAX_SUITE_SIZE = 3, 500
 DEFAULT_DAMPING = 0.05
 MAX_STOREYS = 200
+#: How the building answers its ground motions (``response`` of the building sheet): its elastic modes, or a
+#: stick of yielding storey springs (:mod:`assess.building.yielding`). Without the key: yielding where the
+#: storeys' strength is known (the site sheet's design values, or ``yield_base_shear_g``), elastic otherwise.
+RESPONSES = ("elastic", "yielding")
+#: Bounds of the building sheet's ``yield_base_shear_g`` (base shear at yield over the weight) and ``overstrength``.
+YIELD_BASE_SHEAR_RANGE_G = (0.01, 3.0)
+OVERSTRENGTH_RANGE = (1.0, 6.0)
+_YES, _NO = ("yes", "y", "true", "1"), ("no", "n", "false", "0")
 
 _ROMAN = {"1": "I", "2": "II", "3": "III", "4": "IV"}
 
@@ -109,6 +117,15 @@ class BuildingSheet:
         The fundamental period T1 where known [s]; None: the code's estimate.
     damping : float
         Modal damping ratio [-].
+    response : str or None
+        ``elastic`` or ``yielding`` as the sheet says; None where it does not (:meth:`response_with`).
+    yield_base_shear_g : float or None
+        Base shear at yield over the weight [-] (a pushover, an evaluation), where known.
+    overstrength : float or None
+        Actual over design base shear, where the engineer sets it (else the default of
+        :mod:`assess.building.design`).
+    p_delta : bool
+        Whether the yielding stick carries the gravity loads' P-Delta stiffness.
     rows : dict
         The sheet row of each key given.
     sheet : str
@@ -120,12 +137,30 @@ class BuildingSheet:
     system: str = "other"
     period_s: float | None = None
     damping: float = DEFAULT_DAMPING
+    response: str | None = None
+    yield_base_shear_g: float | None = None
+    overstrength: float | None = None
+    p_delta: bool = False
     rows: dict = field(default_factory=dict, compare=False)
     sheet: str = "building"
 
     @property
     def roof_floor(self) -> int:
         return self.storeys
+
+    def response_with(self, site: "SiteSheet | None") -> str:
+        """``elastic`` or ``yielding``: the sheet's ``response``, else yielding where the storeys' strength is
+        known (``yield_base_shear_g``, or the site sheet's design values for the code's design), else elastic.
+
+        >>> BuildingSheet(storeys=3, height_m=10.0).response_with(None)
+        'elastic'
+        >>> BuildingSheet(storeys=3, height_m=10.0).response_with(SiteSheet(sds_g=1.0, sd1_g=0.6))
+        'yielding'
+        """
+        if self.response is not None:
+            return self.response
+        known = self.yield_base_shear_g is not None or (site is not None and site.has_design_values)
+        return "yielding" if known else "elastic"
 
 
 # ---------------------------------------------------------------- reading
@@ -146,7 +181,7 @@ _SITE_KEYS = {
     "suite_size": Column("suite_size", "integer", low=MIN_SUITE_SIZE, high=MAX_SUITE_SIZE),
 }
 #: Keys written with their only unit, g (``sds_g``), besides the bare name.
-_G_KEYS = ("sds", "sd1", "ss", "s1")
+_G_KEYS = ("sds", "sd1", "ss", "s1", "yield_base_shear")
 _BUILDING_KEYS = {
     "storeys": Column("storeys", "integer", low=1, high=MAX_STOREYS),
     "height": Column("height", "number", dimension=LENGTH, spec_suffix="m", low=2.0, high=1000.0,
@@ -157,6 +192,12 @@ _BUILDING_KEYS = {
     "period": Column("period", "number", dimension=PERIOD, spec_suffix="s", low=0.02, high=15.0,
                      positive=True),
     "damping": Column("damping", "number", low=0.0, high=0.3),
+    "response": Column("response", "text", max_chars=20),
+    "yield_base_shear": Column("yield_base_shear", "number", low=YIELD_BASE_SHEAR_RANGE_G[0],
+                               high=YIELD_BASE_SHEAR_RANGE_G[1], positive=True),
+    "overstrength": Column("overstrength", "number", low=OVERSTRENGTH_RANGE[0], high=OVERSTRENGTH_RANGE[1],
+                           positive=True),
+    "p_delta": Column("p_delta", "text", max_chars=10),
 }
 
 
@@ -323,6 +364,34 @@ def read_building(table, report) -> BuildingSheet | None:
         report.at(values["system"][1], value_header, f"system {schema.quote(out['system'])} is not one of "
                   "the lateral systems" + (f"; did you mean '{close}'?" if close else "."),
                   f"write one of {', '.join(SYSTEMS)} (ASCE 7 Table 12.8-2).")
+    response = None
+    if "response" in out:
+        response = str(out["response"]).strip().lower()
+        if response not in RESPONSES:
+            close = schema.suggest(response, list(RESPONSES))
+            report.at(values["response"][1], value_header, f"response {schema.quote(out['response'])} is not "
+                      + " or ".join(RESPONSES) + (f"; did you mean '{close}'?" if close else "."),
+                      "write yielding (a stick of storey springs that yield) or elastic (the building's elastic "
+                      "modes), or delete the row.")
+    p_delta = False
+    if "p_delta" in out:
+        word = str(out["p_delta"]).strip().lower()
+        if word not in _YES + _NO:
+            report.at(values["p_delta"][1], value_header, f"p_delta {schema.quote(out['p_delta'])} is not "
+                      "yes or no.", "write yes (the gravity loads' P-Delta effect on the yielding storeys) or no.")
+        p_delta = word in _YES
+    if response == "elastic":
+        for key in ("yield_base_shear", "overstrength", "p_delta"):
+            if key in out:
+                name = "yield_base_shear_g" if key == "yield_base_shear" else key
+                report.at(values[key][1], key_header, f"{name} is given but response is elastic: the elastic "
+                          "modes have no strength, so it would be ignored.",
+                          f"delete the {name} row, or write yielding in response (row {values['response'][1]}).")
+    if "yield_base_shear" in out and "overstrength" in out:
+        report.at(values["overstrength"][1], key_header, "the building sheet gives both yield_base_shear_g and "
+                  "overstrength: the overstrength multiplies the code's design strength, which a given base "
+                  "shear at yield replaces.", "keep yield_base_shear_g (from a pushover or an evaluation) or "
+                  "overstrength, not both.")
     if len(report.problems) > before:
         return None
     storeys = int(out["storeys"])
@@ -335,7 +404,29 @@ def read_building(table, report) -> BuildingSheet | None:
         return None
     return BuildingSheet(storeys=storeys, height_m=float(height_m), system=system,
                          period_s=out.get("period"), damping=float(out.get("damping", DEFAULT_DAMPING)),
+                         response=response, yield_base_shear_g=out.get("yield_base_shear"),
+                         overstrength=out.get("overstrength"), p_delta=p_delta,
                          rows={name: row for name, (_, row) in values.items()}, sheet=table.title)
+
+
+def check_building_strength(table, building: BuildingSheet, site: SiteSheet | None, report) -> None:
+    """Report ``response: yielding`` where nothing gives the storeys' strength, at the response cell.
+
+    The yielding stick's strength is ``yield_base_shear_g``, else the code's design from the site sheet's
+    design values (S_DS, S_D1 or S_S, S_1 and the site class); a site given only by a uniform-hazard
+    spectrum, or no site sheet, gives no design. ``table`` is the building sheet as read, ``report`` its
+    :class:`~assess.inventory.workbook.SheetReport`.
+    """
+    if building.response != "yielding" or building.yield_base_shear_g is not None:
+        return
+    if site is not None and site.has_design_values:
+        return
+    report.at(building.rows["response"], table.headers.get("value"),
+              "response is yielding but nothing gives the storeys' strength: the building sheet has no "
+              "yield_base_shear_g and the site sheet no design values (sds_g and sd1_g, or ss_g, s1_g and "
+              "site_class) for the code's design.",
+              "add yield_base_shear_g (the base shear at yield over the weight, from a pushover or an "
+              "evaluation), or the site's design values to the site sheet, or write elastic in response.")
 
 
 def check_item_floors(table, building: BuildingSheet, report) -> None:
@@ -384,5 +475,6 @@ def _inside(folder: Path, relative: str) -> Path | None:
     return path if path == base or base in path.parents else None
 
 
-__all__ = ["SiteSheet", "BuildingSheet", "read_site", "read_building", "check_item_floors", "CODES", "SYSTEMS",
+__all__ = ["SiteSheet", "BuildingSheet", "read_site", "read_building", "check_building_strength",
+           "check_item_floors", "CODES", "SYSTEMS", "RESPONSES",
            "SITE_CLASSES", "RISK_CATEGORIES"]

@@ -35,7 +35,7 @@ from assess.inventory.model import Inventory
 from assess.inventory.settings import Settings
 from assess.inventory.schema import (BUILDING, EQUIPMENT, HAZARD, SETTINGS, SITE, UNUSABLE, CellError,
                                      Header, SheetSpec)
-from assess.inventory.site_building import check_item_floors, read_building, read_site
+from assess.inventory.site_building import check_building_strength, check_item_floors, read_building, read_site
 
 
 
@@ -131,6 +131,8 @@ def read_workbook(path: str | Path) -> Inventory:
             header.suffix for header in tables["equipment"].headers.values() if header.column.dimension is units.LENGTH)
     site = read_site(tables["site"], path.parent, reports["site"]) if "site" in tables else None
     building = read_building(tables["building"], reports["building"]) if "building" in tables else None
+    if building is not None and (site is not None or "site" not in tables):  # a site sheet in error says so itself
+        check_building_strength(tables["building"], building, site, reports["building"])
     if building is not None and "equipment" in tables:  # a floor the building does not have: at its cell
         check_item_floors(tables["equipment"], building, reports["equipment"])
     if problems:

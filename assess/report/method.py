@@ -15,10 +15,12 @@ def floor_motion_route(result: AssessmentResult) -> dict:
     """Which routes gave this report's floor motions: ``given`` (the hazard sheet's floor motions, unless a
     site sheet gives the level), ``derived`` (``--derive-floors``: floors without one derived from the
     ground's), ``site`` (a site sheet's ground suite) and ``building`` (that suite through the building's
-    modes to the upper floors); and ``ground``, how the site made its ground suite (``records`` or ``synthetic``,
+    modes to the upper floors), ``yielding`` (through its yielding stick instead); and ``ground``, how the site made its ground suite (``records`` or ``synthetic``,
     the result's ``ground_method``; "" without one)."""
     site = result.ground_motions is not None
     building = result.floors is not None
+    yielding = building and "response" in result.floors  # floors.csv of a yielding building says so
     derived = any(flag.code == "derived_floor_motion" for flag in result.flags)
-    return {"site": site, "building": building, "derived": derived, "given": not (site or building),
+    return {"site": site, "building": building, "yielding": bool(yielding), "derived": derived,
+            "given": not (site or building),
             "ground": str(getattr(result, "ground_method", "") or "") if site else ""}

@@ -76,6 +76,19 @@ REFERENCES = (
     Reference("Chopra", "2012",
               "Chopra, A. K. (2012). Dynamics of Structures: Theory and Applications to Earthquake Engineering, "
               "4th ed. Pearson, Upper Saddle River, NJ."),
+    Reference("Newmark", "1959",
+              "Newmark, N. M. (1959). A method of computation for structural dynamics. Journal of the Engineering "
+              "Mechanics Division, ASCE 85(EM3):67–94."),
+    Reference("Clough & Johnston", "1966",
+              "Clough, R. W., Johnston, S. B. (1966). Effect of stiffness degradation on earthquake ductility "
+              "requirements. Proceedings of the 2nd Japan Earthquake Engineering Symposium, Tokyo, 227–232."),
+    Reference("Takeda", "1970",
+              "Takeda, T., Sozen, M. A., Nielsen, N. N. (1970). Reinforced concrete response to simulated "
+              "earthquakes. Journal of the Structural Division, ASCE 96(ST12):2557–2573."),
+    Reference("FEMA 356", "",
+              "FEMA 356 (2000). Prestandard and Commentary for the Seismic Rehabilitation of Buildings. Federal "
+              "Emergency Management Agency, Washington, DC. Table C1-3: structural performance levels and damage "
+              "(drift of vertical elements)."),
     Reference("Baker", "2015",
               "Baker, J. W. (2015). Efficient analytical fragility function fitting using dynamic structural "
               "analysis. Earthquake Spectra 31(1):579–599.", "10.1193/021113EQS025M"),

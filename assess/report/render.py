@@ -29,6 +29,7 @@ from assess.decision.actions import work_order_sentences
 from assess.decision.risk_classes import rule_text
 from assess.quantity_text import floor_numbering_of, length_unit, length_value, system_of
 from assess.report import figures
+from assess.report.building import building_context
 from assess.report.costs import costs_context
 from assess.report.curve import curve_context
 from assess.report.method import floor_motion_route
@@ -505,6 +506,7 @@ def report_context(result, with_figures: bool = True) -> dict:
         "costs": costs_context(result, {r["id"]: r["anchor"] for r in rows}),
         "title": title_block(settings, code_edition(result)),
         "route": floor_motion_route(result),
+        "building": building_context(result),  # a yielding building's storeys (assess/report/building.py)
         "references": reference_rows(),
         "stylesheet": Markup(template_text(STYLESHEET_NAME)),  # our own file, not user text
     }

@@ -451,7 +451,11 @@ def hazard_limit_text(result: AssessmentResult) -> str:
         how = {"records": "records selected from the site's records folder and scaled to",
                "synthetic": "synthetic ground motions matched to"}.get(text(result.ground_method), "motions matched to")
         parts.append(f"The ground motions are {how} the site's spectrum ({len(result.ground_motions)} motions)")
-    if result.floors is not None:
+    if result.floors is not None and "response" in result.floors:  # a yielding building (floors.csv says so)
+        parts.append("the upper floors' motions are the ground motions through a model of the building that "
+                     "yields, trusted up to the storey drift its section gives; the building's own collapse is "
+                     "not assessed")
+    elif result.floors is not None:
         parts.append("the upper floors' motions are the ground motions through the building's elastic modes, "
                      "which a yielding building would lower")
     if parts:

@@ -77,16 +77,19 @@ def test_a_floor_motion_is_the_ground_motion_through_the_building(hospital):
     assert motions.loc[f"{name} @ floor 2", "pta_g"] == pytest.approx(float(np.max(np.abs(roof.accel_g))), rel=1e-9)
 
 
-def test_a_floor_with_its_own_rows_keeps_them(make_workbook):
+@pytest.mark.parametrize("response, floors", [("elastic", [0, 2]), ("yielding", [0, 1, 2])])
+def test_a_floor_with_its_own_rows_keeps_them(make_workbook, response, floors):
+    """floors.csv: the ground and the building's floors with items (elastic), every floor with the storey
+    below it (yielding, docs/outputs.md)."""
     hazard = [{"level": "DE", "motion": "engineer's floor 1", "floor": 1, "pta_g": 0.8, "tp_s": 0.5,
                "vp_cm_s": 30, "pulse": "B"}]
-    path = make_workbook(_sheets(hazard=hazard), record=False)
+    path = make_workbook(_sheets(hazard=hazard, building=BUILDING + [["response", response]]), record=False)
     result = run_assessment(read_workbook(path), "DE", seed=3)
     floor_1 = set(result.motions.loc[result.motions["id"] == "M-1", "motion"])
     floor_2 = set(result.motions.loc[result.motions["id"] == "R-2", "motion"])
     assert floor_1 == {"engineer's floor 1"}
     assert all(name.endswith("@ floor 2") for name in floor_2) and len(floor_2) == 3
-    assert list(result.floors["floor"]) == [0, 2]
+    assert list(result.floors["floor"]) == floors
 
 
 def test_derive_floors_gives_way_to_the_building(make_workbook):

@@ -20,6 +20,8 @@ import pytest
 from assess.assessment.motions import level_motions
 from assess.assessment.pipeline import run_assessment
 from assess.building import building_modes
+from assess.building.design import design_strength
+from assess.building.nonlinear import yielding_response, yielding_stick
 from assess.building.response import floor_records
 from assess.fragility.stripes import fragility_files
 from assess.hazard.openquake import read_openquake_hazard
@@ -68,15 +70,17 @@ class Recording(RunnerBase):
         return self.inner.run(cases, progress=progress)
 
 
-def _sheets(site=SITE):
-    return {"equipment": [dict(item) for item in EQUIPMENT], "site": site, "building": BUILDING}
+def _sheets(site=SITE, response=None):
+    building = BUILDING + ([["response", response]] if response else [])
+    return {"equipment": [dict(item) for item in EQUIPMENT], "site": site, "building": building}
 
 
-@pytest.fixture(scope="module")
-def de_run(tmp_path_factory):
-    """Level DE of the hospital of tests/assessment/test_floor_motions.py, with the lab's curve, through a cache."""
+@pytest.fixture(scope="module", params=["elastic", "yielding"])
+def de_run(tmp_path_factory, request):
+    """Level DE of the hospital of tests/assessment/test_floor_motions.py, with the lab's curve, through a cache;
+    the building elastic, or yielding (its storeys' strength the code's design for the site sheet's values)."""
     folder = tmp_path_factory.mktemp("stripes")
-    path = write_workbook(folder / "h.xlsx", _sheets())
+    path = write_workbook(folder / "h.xlsx", _sheets(response=request.param))
     recording = Recording()
     runner = CachingRunner(recording, folder / "cache")
     result = run_assessment(read_workbook(path), "DE", seed=3, hazard_curve=read_openquake_hazard(CURVE),
@@ -91,13 +95,30 @@ def test_the_stripes_floor_histories_are_the_pga_scaled_ground_suite_through_the
     assert len(ground) == 3
     # the building sheet's numbers: 2 storeys of 4 m, T1 0.3 s, 5 % damping (docs/workbook.md defaults)
     modes = building_modes(2, 4.0, system="other", period_s=0.3, damping=0.05)
+    yielding = result.floors["response"].iloc[0] == "yielding" if "response" in result.floors else False
+    if yielding:  # the code's design for S_DS 1.0, S_D1 0.6, risk category IV, times the overstrength 2
+        strength = design_strength("other", [1.0, 1.0], [4.0, 8.0], 0.3, sds_g=1.0, sd1_g=0.6, risk_category="IV")
+        stick = yielding_stick(2, 4.0, strength.storey_yield_ratio, system="other", period_s=0.3, damping=0.05)
     expected = {0: [], 1: [], 2: []}
+    top_ductility = []
     for x in STRIPES_G:
         scaled = [Record(g.accel_g * (x / np.max(np.abs(g.accel_g))), g.dt_s, g.name) for g in ground]
         through = floor_records(modes, scaled, floors=[1, 2])
         expected[0] += [s.accel_g for s in scaled]
-        expected[1] += [r.accel_g for r in through[1]]
-        expected[2] += [r.accel_g for r in through[2]]
+        for k, record in enumerate(scaled):
+            floors = [through[1][k].accel_g, through[2][k].accel_g]
+            if yielding:  # each stripe's scaled history through the stick (elastic modes where no storey yields)
+                response = yielding_response(stick, record.accel_g, record.dt_s)
+                if x == STRIPES_G[-1]:
+                    top_ductility.append(response.ductility.max())
+                    # yielding: not the linearly scaled elastic floor history
+                    assert np.max(np.abs(response.floor_accel_g[2] - floors[1])) > 0.05 * np.max(np.abs(floors[1]))
+                if response.ductility.max() >= 1.0:
+                    floors = [response.floor_accel_g[1], response.floor_accel_g[2]]
+            expected[1].append(floors[0])
+            expected[2].append(floors[1])
+    if yielding:
+        assert min(top_ductility) > 1.0  # the strongest stripe yields the building under every motion
     # the first batch of stripes: the one after the level's own runs (18 cases); every item under its floor
     stripes = [b for b in recording.batches if b.kind == PEAKS][1]
     assert len(stripes) == 3 * 2 * 10 * 3  # items x directions x stripes x ground motions

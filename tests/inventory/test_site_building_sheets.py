@@ -126,3 +126,64 @@ def test_an_invalid_sds_is_named_once_not_called_missing(make_workbook, bad):
     site = [p for p in problems if p.sheet == "site"]
     assert _located(problems, "site", "B2"), [str(p) for p in problems]
     assert not any("without" in p.message or "gives no hazard" in p.message for p in site), [str(p) for p in site]
+
+
+# ---------------------------------------------------------------- the yielding building's keys
+
+DESIGN_SITE = [("sds_g", 1.1), ("sd1_g", 0.6), ("risk_category", "IV")]
+
+
+def test_yielding_keys_are_read(make_workbook):
+    building = read_workbook(make_workbook(_sheets(site=DESIGN_SITE, building=[
+        ("storeys", 5), ("height_m", 20), ("system", "shear wall"), ("response", " Yielding"),
+        ("yield_base_shear_g", 0.45), ("p_delta", "YES")]))).building
+    assert (building.response, building.yield_base_shear_g, building.overstrength, building.p_delta) == (
+        "yielding", 0.45, None, True)
+
+
+@pytest.mark.parametrize("site, building, expected", [
+    (DESIGN_SITE, [], "yielding"),                              # the site's design values give the strength
+    (None, [], "elastic"),                                      # nothing gives it
+    (None, [("yield_base_shear_g", 0.3)], "yielding"),          # the engineer's
+    (DESIGN_SITE, [("response", "elastic")], "elastic"),        # the sheet says so
+])
+def test_the_default_response_is_yielding_where_the_strength_is_known(make_workbook, site, building, expected):
+    inventory = read_workbook(make_workbook(_sheets(site=site, building=[("storeys", 3), ("height_m", 12)]
+                                                    + building)))
+    assert inventory.building.response_with(inventory.site) == expected
+
+
+@pytest.mark.parametrize("rows, cell, words, fix", [
+    ([("response", "plastic")], "B4", "is not elastic or yielding", "write yielding"),
+    ([("response", "yeilding")], "B4", "did you mean 'yielding'", "write yielding"),
+    ([("p_delta", "maybe")], "B4", "not yes or no", "write yes"),
+    ([("yield_base_shear_g", 7.0)], "B4", "not plausible", ""),
+    ([("overstrength", 0.5)], "B4", "not plausible", ""),
+    ([("response", "elastic"), ("overstrength", 2.5)], "A5", "response is elastic", "delete the overstrength row"),
+    ([("yield_base_shear_g", 0.3), ("overstrength", 2.5)], "A5", "both yield_base_shear_g and overstrength",
+     "keep yield_base_shear_g"),
+])
+def test_yielding_refusals_name_the_cell(make_workbook, rows, cell, words, fix):
+    problems = _problems(make_workbook, site=DESIGN_SITE, building=[("storeys", 3), ("height_m", 12)] + rows)
+    located = _located(problems, "building", cell)
+    assert located and words in located[0].message, [(p.cell, p.message) for p in problems]
+    assert fix in located[0].fix and located[0].fix
+
+
+def test_yielding_without_a_strength_is_refused_at_the_response_cell(make_workbook):
+    """No yield_base_shear_g and a site sheet without design values (here, none at all): exit 2 at response."""
+    problems = _problems(make_workbook, building=[("storeys", 3), ("height_m", 12), ("response", "yielding")])
+    (problem,) = problems
+    assert (problem.sheet, problem.cell) == ("building", "B4")
+    assert "nothing gives the storeys' strength" in problem.message and "yield_base_shear_g" in problem.fix
+
+
+def test_the_command_exits_2_on_a_bad_response_and_writes_nothing(make_workbook, tmp_path, capsys):
+    from assess import cli
+    path = make_workbook(_sheets(site=DESIGN_SITE, building=[("storeys", 3), ("height_m", 12),
+                                                             ("response", "nonlinear")]))
+    out = tmp_path / "out"
+    assert cli.main([str(path), "--hazard", "DE", "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert "building" in err and "B4" in err and "Traceback" not in err
+    assert not out.exists() or not any(out.iterdir())

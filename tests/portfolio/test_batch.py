@@ -458,7 +458,8 @@ def test_a_building_with_site_and_building_sheets_gives_what_the_main_command_gi
     for name in ("summary.csv", "motions.csv", "ground_motions.csv", "floors.csv", "work_orders.csv"):
         assert (out / "clinic" / name).read_bytes() == (alone / name).read_bytes(), name
     floors = pd.read_csv(out / "clinic" / "floors.csv")
-    assert sorted(set(floors["floor"])) == [0, 2]  # the ground suite and the floor it passed through the building
+    # a yielding building (the default where the site sheet gives design values): a row for every floor
+    assert sorted(set(floors["floor"])) == [0, 1, 2] and set(floors["response"]) == {"yielding"}
     motions = pd.read_csv(out / "clinic" / "motions.csv")
     assert len(set(motions.loc[motions["id"] == "C-2", "motion"])) == 3  # one per ground motion of the suite
 

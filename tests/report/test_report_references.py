@@ -26,7 +26,7 @@ NAME = r"[A-Z][a-zà-ÿ]+(?:[- ][A-Z][a-zà-ÿ]+)?"  # Housner, Der Kiureghian, 
 AUTHORS_YEAR = re.compile(rf"\b({NAME}(?:(?:, | & | and ){NAME})*)(?: et al\.)?,? \(?((?:19|20)\d\d)\b")
 #: "Housner's", "Newmark's", "Mavroeidis–Papageorgiou", "Moreau–Jean"
 EPONYM = re.compile(rf"\b({NAME})'s\b|\b({NAME})–({NAME})\b")
-STANDARD = re.compile(r"\b(ASCE(?:/SEI)? (?:7|41)(?:-\d\d)?|FEMA [EP]-\d+|ACI \d{3}(?:-\d\d)?)\b")
+STANDARD = re.compile(r"\b(ASCE(?:/SEI)? (?:7|41)(?:-\d\d)?|FEMA [EP]-\d+|FEMA \d{3}|ACI \d{3}(?:-\d\d)?)\b")
 
 #: Capitalised words before a year or an "'s" that name no source: earthquakes and places (Loma Prieta
 #: 1989), months, software and file formats. A word here is never a reference's author.

@@ -1,0 +1,278 @@
+"""The yielding building of a ``building`` sheet: its stick, its floors' histories and what its storeys did.
+
+The building sheet's ``response: yielding`` (by default wherever the storeys' strength is known,
+docs/workbook.md) passes each ground motion through a stick of yielding storey springs
+(:func:`~assess.building.nonlinear.yielding_stick`: bilinear springs for steel frames and braces,
+pinching, stiffness-degrading ones for concrete; Rayleigh damping on the tangent stiffness), started
+from the building's elastic model (:func:`~assess.building.modes.building_modes`: the same T_1 and
+stiffness profile) with each storey's strength from ``yield_base_shear_g`` or the code's design times an
+overstrength (:func:`~assess.building.design.design_strength`). A ground motion under which no storey
+yields (every storey's ductility below 1) gives the elastic route's floor histories themselves
+(:func:`~assess.building.response.floor_records`): a building strong enough to stay elastic is
+assessed exactly as the elastic route assesses it. The two models are not the same building at the
+threshold, though: for frames (the stick keeps the elastic model's flexural column) the stick's
+elastic limit is within 2-25 % RMS of the modal route's histories (Rayleigh against modal damping;
+roof PFA 0.98-1.10 times), but a wall's or ``other``'s stick is an equivalent shear stick (a storey
+spring cannot yield in flexure), whose elastic limit differs from the shear-flexural modes (α = 1) by
+150-185 % RMS with a roof PFA 1.25-1.65 times the modal one (3 to 12 storeys,
+``benchmarks/yielding_elastic_limit.py``): a motion that only just yields such a building gets floor
+motions noticeably different from one that just does not.
+
+What the storeys did under each motion (peak drift ratio, ductility) goes to ``floors.csv``
+(:func:`storey_table`); a drift ratio beyond :data:`DRIFT_LIMIT_BY_SYSTEM` is beyond what the stick
+can be trusted for. The limits are the transient drifts of the *Collapse Prevention* structural
+performance level of FEMA 356 [1]_ Table C1-3 (steel moment frames 5 %, concrete frames 4 %,
+braced steel frames and concrete walls 2 %): there the building is near collapse, its members lose
+strength with every cycle, which the stick's springs (no strength degradation) do not follow, and
+its floors' motions are no longer the model's. The building's own collapse is not assessed.
+
+A stick's history depends only on the stick and the ground history, so the same ground history gives
+the same floor histories bit for bit: the equipment cases simulated under them are found in the case
+cache (:mod:`assess.command.cache`) on the next run, a curve update included. Within a run, the
+stick's answers are kept up to :data:`MEMORY_BYTES` (:func:`stick_history`), so that the floors table
+and the stripes' onset do not simulate a ground history twice.
+
+References
+----------
+.. [1] FEMA 356 (2000). Prestandard and Commentary for the Seismic Rehabilitation of Buildings.
+   Federal Emergency Management Agency. Table C1-3 (structural performance levels and damage:
+   vertical elements, drift).
+"""
+from __future__ import annotations
+
+import hashlib
+import threading
+from collections import OrderedDict
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass
+from typing import Optional, Sequence
+
+import numba
+import numpy as np
+import pandas as pd
+
+from assess.hazard.records import Record
+
+from .design import DesignStrength, design_strength
+from .modes import BuildingModes
+from .nonlinear import YieldingStick, yielding_response, yielding_stick
+from .response import floor_records
+
+#: Storey drift ratio beyond which the stick is not trusted, per lateral system [-]: the Collapse
+#: Prevention level's transient drift of FEMA 356 Table C1-3 (module text); ``other`` takes the lowest.
+DRIFT_LIMIT_BY_SYSTEM = {
+    "steel moment frame": 0.05,
+    "concrete moment frame": 0.04,
+    "eccentrically braced frame": 0.02,
+    "braced frame": 0.02,
+    "shear wall": 0.02,
+    "other": 0.02,
+}
+#: Bytes of stick answers (every floor's history per ground history) a run keeps, most recent first.
+MEMORY_BYTES = 256 * 2 ** 20
+
+
+@dataclass(frozen=True)
+class YieldingBuilding:
+    """The yielding building the floor route uses, beside the elastic model it starts from.
+
+    Attributes
+    ----------
+    modes : BuildingModes
+        The building's elastic model (its periods and floors; the elastic route's histories where no
+        storey yields).
+    stick : YieldingStick
+        The stick of storey springs.
+    strength : DesignStrength
+        Where its storeys' strength came from.
+    system : str
+        The lateral system.
+    drift_limit : float
+        :data:`DRIFT_LIMIT_BY_SYSTEM` of the system [-].
+    p_delta : bool
+        Whether the stick carries the gravity loads' P-Delta stiffness.
+    key : str
+        A digest of the stick (what its histories depend on), for :func:`yielding_histories`'s memory.
+    """
+
+    modes: BuildingModes
+    stick: YieldingStick
+    strength: DesignStrength
+    system: str
+    drift_limit: float
+    p_delta: bool
+    key: str
+
+    # the elastic model's description, as the route reads it from BuildingModes
+    @property
+    def storeys(self) -> int:
+        return self.modes.storeys
+
+    @property
+    def floor_heights_m(self) -> np.ndarray:
+        return self.modes.floor_heights_m
+
+    @property
+    def periods_s(self) -> np.ndarray:
+        return self.modes.periods_s
+
+    @property
+    def n_modes(self) -> int:
+        return self.modes.n_modes
+
+    @property
+    def effective_mass_ratio(self) -> np.ndarray:
+        return self.modes.effective_mass_ratio
+
+
+def _stick_key(stick: YieldingStick) -> str:
+    digest = hashlib.blake2b(digest_size=16)
+    for value in (stick.floor_masses_kg, stick.storey_heights_m, stick.stiffness_n_m, stick.yield_force_n,
+                  stick.hardening, stick.linear_stiffness_n_m, np.asarray(stick.rayleigh, dtype=float)):
+        digest.update(np.ascontiguousarray(value, dtype=float).tobytes())
+    digest.update(f"{stick.law}|{stick.pinch_x}|{stick.pinch_y}|{stick.unloading_beta}|"
+                  f"{stick.damping_stiffness}".encode())
+    return digest.hexdigest()
+
+
+def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.05, sds_g=None, sd1_g=None,
+                      tl_s=None, s1_g=None, risk_category="II", overstrength=None, yield_base_shear_g=None,
+                      p_delta: bool = False) -> YieldingBuilding:
+    """The yielding stick of a building whose elastic model is ``modes`` (equal floor masses, uniform storeys).
+
+    The storeys' strength: ``yield_base_shear_g`` where given, else ASCE 7-22 §12.8's design from the site's
+    values at the building's T_1 (``modes.periods_s[0]``) times ``overstrength``
+    (:func:`~assess.building.design.design_strength`); the springs' law and the stick's flexure are the
+    system's (:data:`~assess.building.design.LAW_BY_SYSTEM`,
+    :data:`~assess.building.nonlinear.FLEXURE_BY_SYSTEM`).
+
+    Examples
+    --------
+    A 4-storey steel moment frame, T_1 0.6 s, at S_DS 1.0, S_D1 0.6: C_s 0.125, yield at 2 × 0.125:
+
+    >>> from assess.building.modes import building_modes
+    >>> modes = building_modes(4, 4.0, system="steel moment frame", period_s=0.6)
+    >>> b = yielding_building(modes, "steel moment frame", sds_g=1.0, sd1_g=0.6)
+    >>> round(b.strength.yield_base_shear_g, 4), b.stick.law, b.drift_limit
+    (0.25, 'bilinear', 0.05)
+    """
+    heights = modes.floor_heights_m[1:]
+    storey_heights = np.diff(modes.floor_heights_m)
+    period_s = float(modes.periods_s[0])
+    strength = design_strength(system, np.ones(modes.storeys), heights, period_s, sds_g=sds_g, sd1_g=sd1_g,
+                               tl_s=tl_s, s1_g=s1_g, risk_category=risk_category, overstrength=overstrength,
+                               yield_base_shear_g=yield_base_shear_g)
+    stick = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, system=system,
+                           period_s=period_s, alpha=modes.alpha, damping=damping, p_delta=p_delta)
+    return YieldingBuilding(modes, stick, strength, system, DRIFT_LIMIT_BY_SYSTEM[system], bool(p_delta),
+                            _stick_key(stick))
+
+
+@dataclass(frozen=True)
+class StickHistory:
+    """One ground history through the stick: every floor's acceleration (row 0 the ground) and each storey's
+    peak drift ratio and ductility; ``elastic`` where no storey yielded (the rows are then the elastic
+    route's histories)."""
+
+    floor_accel_g: np.ndarray
+    peak_drift_ratio: np.ndarray
+    ductility: np.ndarray
+    elastic: bool
+
+
+_MEMORY: "OrderedDict[tuple, StickHistory]" = OrderedDict()
+_MEMORY_USED = [0]  # bytes of the histories in _MEMORY
+_MEMORY_LOCK = threading.Lock()
+
+
+def forget() -> None:
+    """Empty the memory of :func:`stick_history` (tests)."""
+    with _MEMORY_LOCK:
+        _MEMORY.clear()
+        _MEMORY_USED[0] = 0
+
+
+def stick_history(building: YieldingBuilding, ground_accel_g, dt_s: float) -> StickHistory:
+    """One ground history through ``building`` (module text: the elastic route's histories where no storey
+    yields), kept in memory up to :data:`MEMORY_BYTES` of the most recent."""
+    ground = np.ascontiguousarray(ground_accel_g, dtype=float)
+    key = (building.key, float(dt_s), ground.size, hashlib.blake2b(ground.tobytes(), digest_size=16).digest())
+    with _MEMORY_LOCK:
+        if key in _MEMORY:
+            _MEMORY.move_to_end(key)
+            return _MEMORY[key]
+    response = yielding_response(building.stick, ground, dt_s)  # the compiled kernel releases the GIL
+    elastic = bool(np.all(response.ductility < 1.0))
+    accel = response.floor_accel_g
+    if elastic:
+        history = floor_records(building.modes, [Record(ground, dt_s, "")])
+        accel = np.vstack([history[k][0].accel_g for k in range(building.storeys + 1)])
+    out = StickHistory(accel, response.peak_drift_ratio, response.ductility, elastic)
+    with _MEMORY_LOCK:
+        if key not in _MEMORY:
+            _MEMORY[key] = out
+            _MEMORY_USED[0] += accel.nbytes
+        while _MEMORY_USED[0] > MEMORY_BYTES and len(_MEMORY) > 1:
+            _, dropped = _MEMORY.popitem(last=False)
+            _MEMORY_USED[0] -= dropped.floor_accel_g.nbytes
+    return out
+
+
+def yielding_histories(building: YieldingBuilding, ground_motions: Sequence[Record],
+                       floors: Optional[Sequence[int]] = None) -> tuple[dict[int, list[Record]], list[StickHistory]]:
+    """Every ground motion through the yielding building: the floors' histories as records (as
+    :func:`~assess.building.response.floor_records` gives them) and each motion's :class:`StickHistory`."""
+    wanted = list(range(building.storeys + 1)) if floors is None else [int(k) for k in floors]
+    if any(not 0 <= k <= building.storeys for k in wanted):
+        raise ValueError(f"floors must lie between 0 and {building.storeys}")
+    out = {k: [] for k in wanted}
+    grounds = [np.ascontiguousarray(motion.accel_g, dtype=float) for motion in ground_motions]
+    # each motion on its own thread (the kernel releases the GIL): what changes is when, not what
+    with ThreadPoolExecutor(max(1, min(numba.get_num_threads(), len(grounds)))) as pool:
+        histories = list(pool.map(lambda m: stick_history(building, grounds[m], ground_motions[m].dt_s),
+                                  range(len(grounds))))
+    for motion, ground, history in zip(ground_motions, grounds, histories):
+        for k in wanted:
+            accel = ground.copy() if k == 0 else history.floor_accel_g[k].copy()
+            out[k].append(Record(accel, motion.dt_s, motion.name if k == 0 else f"{motion.name} @ floor {k}"))
+    return out, histories
+
+
+def building_floor_records(building, ground_motions: Sequence[Record],
+                           floors: Optional[Sequence[int]] = None) -> dict[int, list[Record]]:
+    """The floors' histories under each ground motion, through the building as it is modelled: its elastic
+    modes (:class:`~assess.building.modes.BuildingModes`) or its yielding stick (:class:`YieldingBuilding`)."""
+    if isinstance(building, YieldingBuilding):
+        return yielding_histories(building, ground_motions, floors)[0]
+    return floor_records(building, ground_motions, floors=floors)
+
+
+def storey_table(building: YieldingBuilding, histories: Sequence[StickHistory], floors) -> pd.DataFrame:
+    """What each storey did over the suite, one row per floor of ``floors`` (storey k below floor k; floor 0
+    has none): the columns ``floors.csv`` adds for a yielding building (docs/outputs.md).
+
+    Columns: ``response`` (``yielding``), ``yield_base_shear_g``, ``storey_yield_ratio`` (the storey's
+    yield shear over the weight), ``drift_ratio_median``, ``drift_ratio_min``, ``drift_ratio_max`` (peak
+    storey drift over its height), ``ductility_median``, ``ductility_min``, ``ductility_max`` (peak drift
+    over the yield drift), ``motions_yielded`` (motions under which any storey yielded), ``drift_limit``
+    and ``motions_beyond_drift_limit`` (motions whose storey drift passed it).
+    """
+    drift = np.array([h.peak_drift_ratio for h in histories])
+    ductility = np.array([h.ductility for h in histories])
+    yielded = int(sum(not h.elastic for h in histories))
+    rows = []
+    for k in sorted(int(f) for f in floors):
+        row = {"response": "yielding", "yield_base_shear_g": building.strength.yield_base_shear_g,
+               "storey_yield_ratio": np.nan, "drift_ratio_median": np.nan, "drift_ratio_min": np.nan,
+               "drift_ratio_max": np.nan, "ductility_median": np.nan, "ductility_min": np.nan,
+               "ductility_max": np.nan, "motions_yielded": yielded, "drift_limit": building.drift_limit,
+               "motions_beyond_drift_limit": np.nan}
+        if k > 0:
+            d, mu = drift[:, k - 1], ductility[:, k - 1]
+            row.update(storey_yield_ratio=float(building.strength.storey_yield_ratio[k - 1]),
+                       drift_ratio_median=float(np.median(d)), drift_ratio_min=float(d.min()),
+                       drift_ratio_max=float(d.max()), ductility_median=float(np.median(mu)),
+                       ductility_min=float(mu.min()), ductility_max=float(mu.max()),
+                       motions_beyond_drift_limit=int(np.sum(d > building.drift_limit)))
+        rows.append(row)
+    return pd.DataFrame(rows)

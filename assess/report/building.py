@@ -1,0 +1,109 @@
+"""The report's building section: what a yielding building's storeys did, and where the model stops.
+
+Everything here is read from the result's ``floors.csv`` table (:func:`assess.building.yielding.storey_table`
+and :func:`assess.building.floors.floors_table`): each storey's peak drift ratio and ductility over the
+suite, the storeys whose drift passed the limit the model is trusted to (FEMA 356 Table C1-3's Collapse
+Prevention drift for the system, :data:`assess.building.yielding.DRIFT_LIMIT_BY_SYSTEM`), and, as a sanity
+check beside each floor's PFA/PGA, ASCE 7-22 §13.3.1's H_f. An elastic building has no section: its
+floors are described in the report's notes.
+"""
+from __future__ import annotations
+
+import math
+
+from assess.quantity_text import floor_numbering_of, floor_text
+
+#: Sentence closing the section, whatever the drifts.
+COLLAPSE_NOT_ASSESSED = ("The building's own collapse is not assessed: this report is about its contents, under "
+                         "the floor motions of a building that stays standing.")
+
+
+def _percent(value: float) -> str:
+    """A drift ratio in per cent, two significant digits.
+
+    >>> _percent(0.0123), _percent(0.02)
+    ('1.2 %', '2 %')
+    """
+    return f"{100.0 * value:.2g} %"
+
+
+def _drift_range(low: float, high: float) -> str:
+    """``0.00092, 0.0033`` → ``0.092–0.33 %``."""
+    return f"{100.0 * low:.2g}–{100.0 * high:.2g} %"
+
+
+def _number(value: float) -> str:
+    """A ductility: one decimal (``1.03`` → ``1.0``), whole numbers from 10."""
+    return f"{value:.1f}" if value < 10 else f"{value:.0f}"
+
+
+def _storeys_text(storeys: list[int]) -> str:
+    words = [str(k) for k in storeys]
+    if len(words) == 1:
+        return f"storey {words[0]}"
+    return "storeys " + ", ".join(words[:-1]) + " and " + words[-1]
+
+
+def building_context(result) -> dict | None:
+    """The section's rows and sentences from ``result.floors`` (None unless the building yields).
+
+    Returns
+    -------
+    dict or None
+        ``lead`` (a sentence), ``rows`` (per storey: ``storey``, ``floors`` (the floors it joins, labelled as
+        the report labels floors), ``yield_ratio``, ``drift`` and ``drift_range``, ``ductility`` and
+        ``ductility_range``, ``beyond`` (motions beyond the limit), ``pfa_over_pga``, ``hf``), ``warning``
+        (a sentence, or "" when no storey passed the limit), ``notice`` (the same in one sentence for the
+        report's first page, or "") and ``collapse`` (:data:`COLLAPSE_NOT_ASSESSED`).
+    """
+    floors = getattr(result, "floors", None)
+    if floors is None or "response" not in floors or not (floors["response"] == "yielding").any():
+        return None
+    numbering = floor_numbering_of(result.settings or {})
+    table = floors.sort_values("floor")
+    motions = int(table["motions"].iloc[0])
+    yielded = int(table["motions_yielded"].iloc[0])
+    limit = float(table["drift_limit"].iloc[0])
+    rows, beyond = [], {}
+    for _, row in table[table["floor"] > 0].iterrows():
+        k = int(row["floor"])
+        count = int(row["motions_beyond_drift_limit"])
+        if count:
+            beyond[k] = count
+        rows.append({
+            "storey": k,
+            "floors": f"{floor_text(k - 1, numbering)}–{floor_text(k, numbering)}",
+            "yield_ratio": f"{row['storey_yield_ratio']:.3g}",
+            "drift": _percent(row["drift_ratio_median"]),
+            "drift_range": _drift_range(row["drift_ratio_min"], row["drift_ratio_max"]),
+            "ductility": _number(row["ductility_median"]),
+            "ductility_range": f"{_number(row['ductility_min'])}–{_number(row['ductility_max'])}",
+            "beyond": count,
+            "pfa_over_pga": f"{row['pfa_over_pga_median']:.2f}",
+            "hf": f"{row['hf_asce7_22']:.2f}",
+        })
+    lead = (f"The upper floors' motions come from a model of the building that yields: its storeys yield at a "
+            f"base shear of {float(table['yield_base_shear_g'].iloc[0]):.3g} times its weight (the notes at the top "
+            f"say where that comes from). {yielded} of the {motions} ground motions yielded at least one storey"
+            + (" (the others gave the elastic modes' floor motions)." if yielded < motions else ".")
+            + " Each storey's peak drift (over its height) and ductility (peak drift over the drift at which it "
+            "yields) are the median over the motions, with their range; PFA/PGA is the floor's, beside ASCE 7-22 "
+            "§13.3.1's H_f as a check (not a target).")
+    warning = notice = ""
+    if beyond:
+        worst = max(beyond.values())
+        warning = (f"Beyond what the model can be trusted for: the drift of {_storeys_text(sorted(beyond))} passed "
+                   f"{_percent(limit)} under {'a motion' if worst == 1 else f'up to {worst} of the {motions} motions'}"
+                   f". {_percent(limit)} is the transient drift of FEMA 356's Collapse Prevention level for this "
+                   "system (Table C1-3): there a building is near collapse and its members lose strength with "
+                   "every cycle, which the model's storeys do not, so the floor motions under those ground motions, "
+                   "and the items' results under them, are outside what the model stands for. Have a structural "
+                   "engineer look at the building first.")
+        notice = (f"The building's model passed the storey drift it is trusted to ({_percent(limit)}, "
+                  f"{_storeys_text(sorted(beyond))}) under up to {worst} of the {motions} motions: the floor motions "
+                  "under those, and the items' results under them, are outside what it stands for.")
+    return {"lead": lead, "rows": rows, "warning": warning, "notice": notice, "collapse": COLLAPSE_NOT_ASSESSED,
+            "limit": _percent(limit) if not math.isnan(limit) else ""}
+
+
+__all__ = ["COLLAPSE_NOT_ASSESSED", "building_context"]

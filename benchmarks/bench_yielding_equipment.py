@@ -1,0 +1,118 @@
+"""Equipment demand on the floors of yielding buildings: the tool's yielding route against OpenSees buildings.
+
+Run: python benchmarks/bench_yielding_equipment.py [--levels DE,MCE_R] [--buildings smf4,smf8,wall6]
+     [--motions 11] [--overstrengths 1.5,2,3]      (needs openseespy and pyslammer; about 2 minutes)
+
+The truth: three yielding OpenSeesPy buildings of our own (tests/peers/opensees_buildings.py: steel
+special moment frames of 4 and 8 storeys, a pinching concrete shear wall of 6 storeys; tapering storey
+stiffness, design strengths with an overstrength growing up the height), under real records
+(pyslammer's sample records, the first ``--motions`` of ``peers.yielding_equipment.RECORDS``, each a
+30 s window from 1 s before 5 % of its Arias intensity) scaled so that their 5 %-damped S_a(T_1) is
+the design spectrum's (S_DS 1.0 g, S_D1 0.6 g) at DE, 1.5 times it at MCE_R. Six items (the paper's three prototypes, a
+loaded server rack, loaded shelving, a chest freezer) on the mid-height floor and on the roof.
+
+Every route runs the product itself (``run_assessment`` on a workbook whose hazard sheet gives the
+scaled ground records at floor 0, with a ``site`` sheet of the same design values, Risk Category II, and
+a ``building`` sheet of the building's storeys, height, system and T_1): only the floor histories differ.
+
+* ``truth``: the OpenSees floor histories (the yielding route's stick swapped for OpenSees);
+* ``given``: ``response: yielding`` with ``yield_base_shear_g`` the OpenSees building's base shear at
+  yield (its first storey's yield shear over the weight);
+* ``design x Ω``: ``response: yielding`` from the design data only (ASCE 7-22 §12.8) with
+  ``overstrength`` Ω (2 is the default);
+* ``elastic``: ``response: elastic``, today's modal route.
+
+Columns, each route against the truth over the (item, motion, direction) cases: PFA tool/truth at the
+mid-height floor and the roof (median over the motions), sliding: geometric mean and σ of
+ln(tool/truth) over the cases where the truth slides 1 cm or more and neither overturns (tool floored at
+0.1 cm); overturn verdicts: the share of cases where either overturns on which both agree (and over all
+cases); risk class: the share of items whose class is the same. Then each floor's PFA/PGA (median over
+the motions) beside ASCE 7-22 §13.3.1's H_f/R_μ (R_μ = max(√(1.1 R/(I_e Ω_0)), 1.3), eq. 13.3-6): a
+sanity check, not a target. Nothing is fitted here.
+"""
+from __future__ import annotations
+
+import argparse
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+REPO = Path(__file__).resolve().parents[1]
+sys.path[:0] = [str(REPO / "tests")]
+
+from assess.building.floors import height_factor  # noqa: E402
+from peers.opensees_buildings import BUILDINGS  # noqa: E402
+from peers.yielding_equipment import (LEVELS, SYSTEM_R, assess, compare, ground_suite,  # noqa: E402
+                                      opensees_floors, workbook)
+
+
+def markdown(frame: pd.DataFrame) -> str:
+    """A DataFrame as a Markdown table (numbers to 3 decimals)."""
+    def cell(value):
+        return f"{value:.3f}" if isinstance(value, float) else str(value)
+    lines = ["| " + " | ".join(frame.columns) + " |", "|" + "---|" * len(frame.columns)]
+    lines += ["| " + " | ".join(cell(v) for v in row) + " |" for row in frame.itertuples(index=False)]
+    return "\n".join(lines)
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--levels", default="DE")
+    parser.add_argument("--buildings", default="smf4,smf8,wall6")
+    parser.add_argument("--motions", type=int, default=11)
+    parser.add_argument("--overstrengths", default="1.5,2,3")
+    args = parser.parse_args(argv)
+    rows, ratios = [], []
+    start = time.perf_counter()
+    for name in args.buildings.split(","):
+        truth = BUILDINGS[name]
+        for level in args.levels.split(","):
+            suite = ground_suite(args.motions, truth.period_s, LEVELS[level])
+            with tempfile.TemporaryDirectory() as tmp:
+                folder = Path(tmp)
+                given = round(truth.yield_base_shear_g, 6)
+                routes = {"given": [["response", "yielding"], ["yield_base_shear_g", given]]}
+                for omega in args.overstrengths.split(","):
+                    routes[f"design x {omega}"] = [["response", "yielding"], ["overstrength", float(omega)]]
+                routes["elastic"] = [["response", "elastic"]]
+                with opensees_floors(truth, suite):
+                    reference = assess(workbook(folder, truth, suite, level, [["response", "yielding"]]), level)
+                results = {route: assess(workbook(folder, truth, suite, level, extra), level)
+                           for route, extra in routes.items()}
+            for route, result in results.items():
+                rows.append({"building": name, "level": level, "route": route, **compare(result, reference)})
+            r_factor, omega0 = SYSTEM_R[truth.system]
+            r_mu = max(np.sqrt(1.1 * r_factor / omega0), 1.3)
+            for route, result in [("truth", reference)] + [(k, v) for k, v in results.items()
+                                                           if k in ("given", "design x 2")]:
+                floors = result[0].floors.set_index("floor")
+                for floor in (truth.storeys // 2, truth.storeys):
+                    z = floor / truth.storeys
+                    ratios.append({"building": name, "level": level, "route": route, "floor": floor,
+                                   "pfa_over_pga": floors.loc[floor, "pfa_over_pga_median"],
+                                   "hf_over_rmu": float(height_factor(z, truth.period_s)) / r_mu,
+                                   "roof_ductility_max": floors["ductility_max"].max(),
+                                   "drift_max": floors["drift_ratio_max"].max()})
+            print(f"{name} {level}: done ({time.perf_counter() - start:.0f} s)", file=sys.stderr)
+    table = pd.DataFrame(rows)
+    pd.set_option("display.width", 200)
+    print(markdown(table))
+    print()
+    pooled = []
+    for route, group in table.groupby("route", sort=False):
+        pooled.append({"route": route, "gm (range over buildings)": f"{group['gm'].min():.2f}-{group['gm'].max():.2f}",
+                       "sigma_ln max": round(group["sigma_ln"].max(), 2),
+                       "overturn agree min": round(group["overturn_agree"].min(), 2),
+                       "class agree min": round(group["class_agree"].min(), 2)})
+    print(markdown(pd.DataFrame(pooled)))
+    print()
+    print(markdown(pd.DataFrame(ratios)))
+    print(f"\ntotal {time.perf_counter() - start:.0f} s")
+
+
+if __name__ == "__main__":
+    main()

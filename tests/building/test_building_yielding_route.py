@@ -1,0 +1,179 @@
+"""The yielding building in the product (docs/workbook.md, sheet ``building``; docs/outputs.md, ``floors.csv``).
+
+Checked against what the route does not compute itself: the elastic route's histories from the building
+sheet's numbers (``building_modes`` + ``floor_records``, the modal route of today) byte for byte where the
+building must stay elastic; the yielding stick's own response history (``yielding_response`` of
+assess/building/nonlinear.py, verified against OpenSees in tests/verification/) built here from the sheet's
+numbers and ASCE 7-22 §12.8 by hand; the drift ratios against the stick's drifts over the storey height; the
+documented columns of docs/outputs.md against the file; the report's words against the rules of the issue
+(the drift beyond the trusted limit is warned, the collapse is said not to be assessed).
+"""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from assess.assessment.motions import level_motions, simulated_motions
+from assess.assessment.pipeline import run_assessment
+from assess.building import building_modes, floor_records
+from assess.building import yielding as yielding_module
+from assess.building.nonlinear import yielding_response, yielding_stick
+from assess.inventory import read_workbook
+from assess.report.render import render_html
+from tests.assessment.test_floor_motions import EQUIPMENT, SITE
+from tests.project.test_docs import compare, section, table_names
+
+#: 2 storeys of 4 m, T1 0.3 s, "other" (pinching springs, an equivalent shear stick): docs/workbook.md.
+BUILDING = [["key", "value"], ["storeys", 2], ["storey_height_m", 4.0], ["period_s", 0.3]]
+
+
+def _sheets(*rows):
+    return {"equipment": [dict(item) for item in EQUIPMENT], "site": SITE,
+            "building": BUILDING + [list(r) for r in rows]}
+
+
+def _floor_histories(path):
+    """Every floor motion's history (by motion name) and the level's ground histories, as the route makes them."""
+    inventory = read_workbook(path)
+    level = level_motions(inventory, "DE", lambda m: None, seed=3)
+    simulated = simulated_motions(level, path.name, inventory.settings, 3, lambda m: None)
+    table = level.table.set_index("motion_key")
+    out = {table.at[k, "motion"]: [r.accel_g for r, _ in h] for k, h in simulated.histories.items()}
+    ground = [level.records[key] for key in level.table.loc[level.table["floor"] == 0, "record_path"]]
+    return out, ground, level, simulated
+
+
+def _elastic_expected(ground):
+    modes = building_modes(2, 4.0, system="other", period_s=0.3, damping=0.05)
+    return floor_records(modes, ground, floors=[1, 2])
+
+
+@pytest.mark.parametrize("rows", [[("response", "elastic")],
+                                  [("response", "yielding"), ("yield_base_shear_g", 3.0)]])
+def test_elastic_or_strong_enough_gives_todays_elastic_floor_motions_byte_for_byte(make_workbook, rows):
+    """``response: elastic``, or a yield base shear above the demand (3 W: no storey yields), gives the floor
+    histories of the elastic modes built here from the sheet's numbers, to the last bit."""
+    yielding_module.forget()
+    histories, ground, level, simulated = _floor_histories(make_workbook(_sheets(*rows), record=False))
+    expected = _elastic_expected(ground)
+    for m, motion in enumerate(ground):
+        for floor in (1, 2):
+            (got,) = histories[f"{motion.name} @ floor {floor}"]
+            assert got.tobytes() == expected[floor][m].accel_g.tobytes()
+    if rows[0][1] == "yielding":  # and floors.csv says no motion yielded a storey
+        assert (simulated.floors["motions_yielded"] == 0).all()
+        assert simulated.floors["ductility_max"].max() < 1.0
+
+
+def test_a_yielding_building_gives_the_sticks_floor_motions(make_workbook):
+    """With the code's design (no yield_base_shear_g): the storeys' strength by hand from ASCE 7-22 §12.8 —
+    'other' takes R 3 (Table 12.2-1, H.), risk category IV I_e 1.5, S_DS 1.0, S_D1 0.6, T 0.3 s ≤ C_u T_a:
+    C_s = min(1.0/(3/1.5), 0.6/(0.3 · 3/1.5)) = 0.5, times the overstrength 1.2 given here = 0.6 W; with
+    k = 1 (T ≤ 0.5 s), C_v = (4, 8)/12, so storey 2 carries 2/3 of it. Under a motion that yields a storey
+    the floors' histories are the stick's response itself."""
+    yielding_module.forget()
+    path = make_workbook(_sheets(("response", "yielding"), ("overstrength", 1.2)), record=False)
+    histories, ground, level, simulated = _floor_histories(path)
+    ratios = np.array([0.6, 0.6 * 2.0 / 3.0])
+    stick = yielding_stick(2, 4.0, ratios, system="other", period_s=0.3, damping=0.05)
+    floors = simulated.floors.set_index("floor")
+    assert floors.loc[1, "yield_base_shear_g"] == pytest.approx(0.6, rel=1e-12)
+    assert floors.loc[[1, 2], "storey_yield_ratio"].to_numpy() == pytest.approx(ratios, rel=1e-12)
+    elastic = _elastic_expected(ground)
+    yielded = 0
+    drifts = []
+    for m, motion in enumerate(ground):
+        response = yielding_response(stick, motion.accel_g, motion.dt_s)
+        drifts.append(np.abs(response.drift_m).max(axis=1) / 4.0)
+        for floor in (1, 2):
+            (got,) = histories[f"{motion.name} @ floor {floor}"]
+            if response.ductility.max() >= 1.0:
+                np.testing.assert_array_equal(got, response.floor_accel_g[floor])
+            else:
+                np.testing.assert_array_equal(got, elastic[floor][m].accel_g)
+        yielded += response.ductility.max() >= 1.0
+    assert yielded >= 1, "the design level must yield this building for the test to mean anything"
+    assert floors.loc[1, "motions_yielded"] == yielded
+    drifts = np.array(drifts)
+    for storey in (1, 2):
+        assert floors.loc[storey, "drift_ratio_median"] == pytest.approx(np.median(drifts[:, storey - 1]), rel=1e-12)
+        assert floors.loc[storey, "drift_ratio_max"] == pytest.approx(drifts[:, storey - 1].max(), rel=1e-12)
+    # the roof shakes less than the elastic building's where the building yields
+    roof_pfa = [np.abs(histories[f"{g.name} @ floor 2"][0]).max() for g in ground]
+    elastic_pfa = [np.abs(e.accel_g).max() for e in elastic[2]]
+    assert np.median(roof_pfa) < np.median(elastic_pfa)
+
+
+def test_the_same_ground_history_gives_the_same_floor_history_bit_for_bit():
+    """What lets the case cache find a yielding floor's cases again (a curve update simulates nothing twice):
+    the stick's history depends on the stick and the ground history only, memory or not."""
+    modes = building_modes(4, 3.5, system="steel moment frame", period_s=0.6)
+    building = yielding_module.yielding_building(modes, "steel moment frame", sds_g=1.0, sd1_g=0.6)
+    t = np.arange(0.0, 12.0, 0.01)
+    from assess.hazard.records import Record
+    ground = [Record(0.6 * np.sin(2 * np.pi * t / 0.7) * np.exp(-((t - 4.0) / 2.0) ** 2), 0.01, "g")]
+    yielding_module.forget()
+    first = yielding_module.building_floor_records(building, ground)
+    yielding_module.forget()
+    again = yielding_module.building_floor_records(building, ground)
+    remembered = yielding_module.building_floor_records(building, ground)
+    for k in range(5):
+        assert first[k][0].accel_g.tobytes() == again[k][0].accel_g.tobytes() == remembered[k][0].accel_g.tobytes()
+
+
+def test_floors_csv_columns_are_documented(make_workbook):
+    path = make_workbook(_sheets(("response", "yielding")), record=False)
+    _, _, _, simulated = _floor_histories(path)
+    documented = table_names(section("outputs.md", "With a `building` sheet: `floors.csv`"))
+    compare(documented, list(simulated.floors.columns), "docs/outputs.md, floors.csv")
+
+
+@pytest.fixture(scope="module")
+def weak(tmp_path_factory):
+    """A weak building (yield at 0.05 W) at DE: its storeys pass the 2 % drift 'other' is trusted to."""
+    from workbooks import write_workbook
+    path = write_workbook(tmp_path_factory.mktemp("weak") / "h.xlsx",
+                          _sheets(("response", "yielding"), ("yield_base_shear_g", 0.05)))
+    return run_assessment(read_workbook(path), "DE", seed=3)
+
+
+def test_the_report_warns_beyond_the_trusted_drift_and_says_collapse_is_not_assessed(weak):
+    floors = weak.floors.set_index("floor")
+    assert floors.loc[1:, "drift_ratio_max"].max() > 0.02 and floors.loc[1, "drift_limit"] == 0.02
+    beyond = floors.loc[1:, "motions_beyond_drift_limit"]
+    assert beyond.max() >= 1
+    # a storey counts motions beyond the limit exactly where its largest drift passed it
+    assert ((beyond > 0) == (floors.loc[1:, "drift_ratio_max"] > 0.02)).all()
+    html = render_html(weak)
+    assert "The building: what its storeys did" in html
+    assert "Beyond what the model can be trusted for" in html and "FEMA 356" in html
+    first_page = html[:html.index("Act first")]  # and said on the first page, before the items
+    assert "passed the storey drift it is trusted to" in first_page
+    assert any(f"The building{quote}s own collapse is not assessed" in html for quote in ("&#39;", "'"))
+    assert "a model of the building that yields" in html
+
+
+def test_an_elastic_building_has_no_building_section(make_workbook):
+    path = make_workbook(_sheets(("response", "elastic")), record=False)
+    result = run_assessment(read_workbook(path), "DE", seed=3)
+    assert "response" not in result.floors
+    html = render_html(result)
+    assert "The building: what its storeys did" not in html
+    assert "through the building&#39;s elastic modes" in html or "through the building's elastic modes" in html
+
+
+def test_p_delta_adds_the_gravity_loads_geometric_stiffness():
+    """``p_delta: yes``: the stick's linear part gains -P_i/h_i per storey, P_i the weight above storey i
+    (two floors of equal mass m, storeys of 4 m: -(2 m g + m g)/4 on floor 1, -m g/4 on the roof), and
+    nothing else changes."""
+    from assess.assessment.floors import building_model_of
+    from assess.inventory.site_building import BuildingSheet, SiteSheet
+    site = SiteSheet(sds_g=1.0, sd1_g=0.6)
+    plain = building_model_of(BuildingSheet(storeys=2, height_m=8.0, period_s=0.3), site)
+    with_p_delta = building_model_of(BuildingSheet(storeys=2, height_m=8.0, period_s=0.3, p_delta=True), site)
+    weight = plain.stick.floor_masses_kg[0] * 9.80665
+    expected = -np.array([[2 * weight / 4 + weight / 4, -weight / 4], [-weight / 4, weight / 4]])
+    np.testing.assert_allclose(with_p_delta.stick.linear_stiffness_n_m - plain.stick.linear_stiffness_n_m, expected,
+                               rtol=1e-12)
+    np.testing.assert_array_equal(with_p_delta.stick.yield_force_n, plain.stick.yield_force_n)
+    assert with_p_delta.p_delta and not plain.p_delta

@@ -1,0 +1,142 @@
+"""Equipment on the floors of yielding buildings: the harness of the tool-against-OpenSees equipment checks.
+
+Used by tests/verification/test_yielding_equipment.py and benchmarks/bench_yielding_equipment.py (its
+docstring says what is measured). The truth is :mod:`peers.opensees_buildings`; every route runs the
+product itself (``run_assessment`` on a workbook whose hazard sheet gives the scaled ground records at
+floor 0, a ``site`` sheet with the design values, Risk Category II, and a ``building`` sheet with the
+building's storeys, height, system and T_1), so that only the floor histories differ: for the truth, the
+yielding route's stick is swapped for the OpenSees building (:func:`opensees_floors`).
+"""
+from __future__ import annotations
+
+import hashlib
+import os
+from contextlib import contextmanager
+from pathlib import Path
+
+import numpy as np
+
+from assess.assessment.pipeline import run_assessment
+from assess.building import yielding as yielding_module
+from assess.hazard.records import read_record
+from assess.inventory import read_workbook
+from assess.site.asce7 import design_spectral_acceleration_g
+from assess.site.spectrum import pseudo_acceleration_spectrum
+from peers.opensees_buildings import truth_response
+from workbooks import write_workbook
+
+SDS_G, SD1_G = 1.0, 0.6
+LEVELS = {"DE": 1.0, "MCE_R": 1.5}
+WINDOW_S = 30.0
+#: pyslammer's records used, in this order (the two longest, Kocaeli and Nisqually, and Chi-Chi's long
+#: record left for last).
+RECORDS = ("Cape_Mendocino_1992_PET-090", "Coalinga_1983_PVB-045", "Duzce_1999_375-090",
+           "Imperial_Valley_1979_BCR-230", "Kobe_1995_TAK-090", "Landers_1992_LCN-345",
+           "Loma_Prieta_1989_HSP-000", "Morgan_Hill_1984_CYC-285", "N_Palm_Springs_1986_WWT-180",
+           "Northridge_1994_PAC-175", "Northridge_1994_VSP-360", "Nahanni_1985_NS1-280",
+           "Coyote_Lake_1979_G02-050", "Mammoth_Lakes-1_1980_CVK-090", "Chi-Chi_1999_TCU068-090")
+#: The items (SI): id, height, width, depth [m], mass [kg], μ, clearance [m].
+ITEMS = (("FORMA", 2.286, 0.622, 0.84, 330.0, 0.23, 0.15),
+         ("KELVINATOR", 2.134, 0.66, 0.81, 230.0, 0.28, 0.15),
+         ("ASP", 1.803, 0.584, 0.74, 140.0, 0.31, 0.15),
+         ("RACK", 2.032, 0.6096, 1.0668, 635.0, 0.30, 0.3556),
+         ("SHELVING", 2.1844, 1.2192, 0.6096, 408.0, 0.35, 0.254),
+         ("CHEST", 0.91, 1.60, 0.75, 150.0, 0.30, 0.10))
+#: (R, Ω_0) of ASCE 7-22 Table 12.2-1 for the systems (I_e 1), for R_μ.
+SYSTEM_R = {"steel moment frame": (8.0, 3.0), "shear wall": (5.0, 2.5)}
+
+
+def windowed(record):
+    """A 30 s window of the record from 1 s before 5 % of its Arias intensity."""
+    accel = np.asarray(record.accel_g, dtype=float)
+    arias = np.cumsum(accel ** 2)
+    start = max(0, int(np.searchsorted(arias, 0.05 * arias[-1])) - int(round(1.0 / record.dt_s)))
+    return accel[start:start + int(round(WINDOW_S / record.dt_s)) + 1]
+
+
+def ground_suite(count, period_s, factor):
+    import pyslammer
+    folder = os.path.join(os.path.dirname(pyslammer.__file__), "sample_ground_motions")
+    target = factor * float(design_spectral_acceleration_g(period_s, SDS_G, SD1_G))
+    out = []
+    for name in RECORDS[:count]:
+        record = read_record(os.path.join(folder, name + ".csv"))
+        accel = windowed(record)
+        have = float(np.atleast_1d(pseudo_acceleration_spectrum(accel, record.dt_s, [period_s]))[0])
+        scaled = np.array([float(f"{a:.10g}") for a in accel * (target / have)])  # as the record file holds it
+        out.append((name, scaled, record.dt_s))
+    return out
+
+
+def _key(accel) -> str:
+    return hashlib.blake2b(np.ascontiguousarray(accel, dtype=float).tobytes(), digest_size=16).hexdigest()
+
+
+def workbook(folder: Path, truth, suite, level, building_rows) -> Path:
+    floors = (truth.storeys // 2, truth.storeys)
+    equipment = [{"id": f"{item}-{floor}", "name": item.lower(), "floor": floor, "height_m": h, "width_m": w,
+                  "depth_m": d, "mass_kg": m, "mu": mu, "clearance_m": c}
+                 for floor in floors for item, h, w, d, m, mu, c in ITEMS]
+    files, hazard = {}, []
+    for name, accel, dt in suite:
+        path = f"records/{name}.csv"
+        files[path] = "time_s,accel_g\n" + "".join(f"{k * dt:.6f},{a:.10g}\n" for k, a in enumerate(accel))
+        hazard.append({"level": level, "motion": name, "floor": 0, "record": path, "scale": 1.0})
+    site = [["key", "value"], ["sds_g", SDS_G], ["sd1_g", SD1_G], ["risk_category", "II"]]
+    building = [["key", "value"], ["storeys", truth.storeys], ["storey_height_m", truth.storey_height_m],
+                ["system", truth.system], ["period_s", truth.period_s], ["damping", 0.05]] + building_rows
+    return write_workbook(folder / "building.xlsx", {"equipment": equipment, "hazard": hazard, "site": site,
+                                                     "building": building}, files=files)
+
+
+@contextmanager
+def opensees_floors(truth, suite):
+    """The yielding route's stick swapped for the OpenSees building under each ground history of ``suite``."""
+    answers = {}
+    for _, accel, dt in suite:
+        floor_accel, drift, yield_drift = truth_response(truth, accel, dt)
+        peak = np.abs(drift).max(axis=1)
+        answers[_key(accel)] = yielding_module.StickHistory(
+            floor_accel, peak / truth.storey_height_m, peak / yield_drift, False)
+    original = yielding_module.stick_history
+
+    def stick_history(building, ground_accel_g, dt_s):
+        return answers[_key(ground_accel_g)]
+
+    yielding_module.stick_history = stick_history
+    try:
+        yield
+    finally:
+        yielding_module.stick_history = original
+
+
+def assess(path, level):
+    result = run_assessment(read_workbook(path), level, seed=0)
+    motions = result.motions.copy()
+    motions["ground"] = motions["motion"].str.split(" @ ").str[0]
+    return result, motions.set_index(["id", "ground", "direction"]).sort_index()
+
+
+def compare(tool, truth):
+    """The route's numbers against the truth's (module text)."""
+    (_, t), (_, r) = tool, truth
+    t, r = t.align(r, join="inner", axis=0)
+    over_t, over_r = t["sim_overturned"].astype(bool), r["sim_overturned"].astype(bool)
+    slides = (r["sim_sliding_max_cm"] >= 1.0) & ~over_t & ~over_r
+    ratio = np.log(np.maximum(t.loc[slides, "sim_sliding_max_cm"], 0.1) / r.loc[slides, "sim_sliding_max_cm"])
+    either = over_t | over_r
+    classes = tool[0].summary.set_index("id")["risk"].align(truth[0].summary.set_index("id")["risk"], join="inner")
+    pfa = {}
+    for where in ("mid", "roof"):
+        floor_of = t.reset_index().groupby("id")["floor"].first()
+        floor = floor_of.max() if where == "roof" else floor_of.min()
+        tp = t[t["floor"] == floor].groupby(level="ground")["pta_g"].first()
+        rp = r[r["floor"] == floor].groupby(level="ground")["pta_g"].first()
+        pfa[where] = float(np.median(tp / rp))
+    return {"pfa_mid": pfa["mid"], "pfa_roof": pfa["roof"], "n_sliding": int(slides.sum()),
+            "gm": float(np.exp(ratio.mean())) if len(ratio) else np.nan,
+            "sigma_ln": float(ratio.std(ddof=1)) if len(ratio) > 1 else np.nan,
+            "n_overturn": int(either.sum()),
+            "overturn_agree": float((over_t[either] == over_r[either]).mean()) if either.any() else np.nan,
+            "overturn_agree_all": float((over_t == over_r).mean()),
+            "class_agree": float((classes[0] == classes[1]).mean())}
