@@ -10,11 +10,10 @@ from __future__ import annotations
 
 import math
 
+from assess.inventory.units import CM_PER_IN, KG_PER_LB, N_PER_LBF  # noqa: F401 (the report's conversions)
+
 #: The unit systems a report can be written in.
 SYSTEMS = ("si", "us")
-CM_PER_IN = 2.54
-N_PER_LBF = 4.4482216152605
-KG_PER_LB = 0.45359237
 
 
 def system_of(settings_or_system) -> str:

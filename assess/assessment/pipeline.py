@@ -140,7 +140,7 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     return AssessmentResult(
         workbook=inventory.path, facility=settings.facility,
         site=settings.site, level=level.level, level_label=level.level_label,
-        summary=summary[summary_columns], motions=result_stage.motion_table(with_planar_peaks(at_mu, ran.planar)),
+        summary=summary[[column for column in summary_columns if column in summary]], motions=result_stage.motion_table(with_planar_peaks(at_mu, ran.planar)),
         flags=decided.flags, regression=result_stage.regression_record(constants, settings),
         settings=settings, simulated=True, seed=seed, histories=histories, hazard_notes=level.notes,
         suite_runs=suite_runs(demand.cases, ran.runs, ran.planar),
@@ -150,6 +150,7 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
         anchorage=anchorage, ground_method=ground_method,
         design_spectrum=None if level.site is None else level.site.design,
         site_class=str(getattr(inventory.site, "site_class", None) or ""), floor_origins=origins,
+        decisions=decided.items,
     )
 
 

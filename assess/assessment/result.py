@@ -131,6 +131,10 @@ class AssessmentResult:
     design_spectrum : DesignSpectrum or None
         The site's ASCE 7 spectrum (:class:`assess.site.asce7.DesignSpectrum`) where the site sheet gives one;
         ``site_class`` the site sheet's site class ("" where it gives none).
+    decisions : dict
+        id -> :class:`assess.decision.decisions.ItemDecision`: what was decided for each item, in numbers and
+        kinds; the summary's columns that are words or US forces are made from it by the report
+        (:func:`assess.report.advice.with_words`), absent from ``summary`` until then.
     floor_origins : dict
         Where each floor's time histories come from (:func:`assess.assessment.summary.floor_origins`):
         floor (None: every floor) -> ``workbook``, ``site records``, ``site synthetic``, with
@@ -158,7 +162,8 @@ class AssessmentResult:
     ground_motions: pd.DataFrame | None = None
     spectrum: pd.DataFrame | None = None
     floors: pd.DataFrame | None = None
-    anchorage: AnchorageSite | None = None
+    anchorage: object | None = None
+    decisions: dict = field(default_factory=dict)
     ground_method: str = ""
     design_spectrum: DesignSpectrum | None = None
     site_class: str = ""

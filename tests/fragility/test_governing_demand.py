@@ -15,8 +15,8 @@ import pandas as pd
 import pytest
 from scipy import stats
 
-from assess.assessment.pipeline import run_assessment
-from assess.inventory.settings import Settings
+from assessed import run_assessment
+from assess.data import default_settings
 from assess.fragility.governing import governing_demand
 from assess.fragility.suite import (
     PULSE_SHARE_MIN, binomial_interval, effective_count, pulse_acceleration_share, regression_applies,
