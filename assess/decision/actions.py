@@ -33,7 +33,7 @@ import pandas as pd
 
 from assess.quantity_text import floor_text
 from assess.inventory.units import CM_PER_M  # noqa: F401 (the decisions' too)
-from assess.inventory.settings import Settings  # noqa: F401 (the doctests)
+from assess.inventory.settings import Settings
 
 
 class ActionKind(StrEnum):
@@ -100,7 +100,7 @@ def room_to_gain_cm(row: dict) -> float:
     return max(float(np.ceil(float(row["demand_room_cm"]))) - float(np.floor(float(row["clearance_cm"]))), 0.0)
 
 
-def room_is_realistic(row: dict, settings: dict) -> bool:
+def room_is_realistic(row: dict, settings: Settings) -> bool:
     """Whether the room the item must gain (:func:`room_to_gain_cm`) is one a room can spare: at most
     ``room_max_cm``, what an aisle can give up when the item is moved out into it.
 
@@ -112,7 +112,7 @@ def room_is_realistic(row: dict, settings: dict) -> bool:
     return room_to_gain_cm(row) <= settings.room_max_cm
 
 
-def lowering_suffices(row: dict, lowered: LoweredDemand | None, settings: dict) -> bool:
+def lowering_suffices(row: dict, lowered: LoweredDemand | None, settings: Settings) -> bool:
     """Whether moving the heavy contents low is enough on its own: with the lowered centre of mass the
     engine finds no overturning and no rocking under any history of the item's suite, and sliding past
     its room below ``risk_pf_moderate`` (``lowered``: the item's demand in the what-if run; None where
@@ -124,7 +124,7 @@ def lowering_suffices(row: dict, lowered: LoweredDemand | None, settings: dict) 
 
 
 def choose_action(row: dict, uplift: bool, casters: bool, lowered: LoweredDemand | None,
-                  settings: dict) -> ActionKind:
+                  settings: Settings) -> ActionKind:
     """The action kind that fits the item (module docstring).
 
     ``row``: its governing demand with ``risk``; ``uplift``: whether it rocks under any motion;
@@ -155,7 +155,7 @@ def choose_action(row: dict, uplift: bool, casters: bool, lowered: LoweredDemand
     return ActionKind.TETHER if casters else ActionKind.RESTRAIN
 
 
-def residual_chances(kind: str, row: dict, lowered: LoweredDemand | None, settings: dict) -> tuple[float, float]:
+def residual_chances(kind: str, row: dict, lowered: LoweredDemand | None, settings: Settings) -> tuple[float, float]:
     """(``p_overturn_after``, ``p_beyond_clearance_after``): the item's chances if the action is taken.
 
     ``lower_contents``: the engine's, with the lowered centre of mass; ``room`` and ``lock_casters``: its
@@ -175,7 +175,7 @@ def residual_chances(kind: str, row: dict, lowered: LoweredDemand | None, settin
     return float(row["p_overturn"]), float(row["p_beyond_clearance"])
 
 
-def decide_action(item, row: dict, uplift: bool, lowered: LoweredDemand | None, settings: dict) -> ActionDecision:
+def decide_action(item, row: dict, uplift: bool, lowered: LoweredDemand | None, settings: Settings) -> ActionDecision:
     """The action of one freestanding item (:class:`ActionDecision`; ``row``: its governing demand with
     ``risk`` and ``clearance_cm``; ``lowered``: its demand in the lowered-contents run, or None)."""
     casters = bool(getattr(item, "casters", False))
@@ -187,7 +187,7 @@ def decide_action(item, row: dict, uplift: bool, lowered: LoweredDemand | None, 
 
 # ---------------------------------------------------------------- the what-if run: heavy contents low
 
-def lowered_contents_items(equipment: pd.DataFrame, rows: dict, uplift: dict, settings: dict) -> list:
+def lowered_contents_items(equipment: pd.DataFrame, rows: dict, uplift: dict, settings: Settings) -> list:
     """The items whose heavy contents the what-if moves low: freestanding items that overturn or rock
     (``rows``: id -> governing demand; ``uplift``: id -> whether it rocks) and whose centre of mass is
     above ``lower_contents_cg_fraction`` of their height (by more than 1 cm), in item order."""
@@ -202,7 +202,7 @@ def lowered_contents_items(equipment: pd.DataFrame, rows: dict, uplift: dict, se
     return chosen
 
 
-def lowered_rows(equipment: pd.DataFrame, rows: dict, uplift: dict, settings: dict) -> dict:
+def lowered_rows(equipment: pd.DataFrame, rows: dict, uplift: dict, settings: Settings) -> dict:
     """id -> :class:`LoweredDemand`, what :func:`decide_action` reads of the lowered-contents run
     (``rows``/``uplift`` of that run, :class:`assess.assessment.demand.ItemDemand`)."""
     fraction = settings.lower_contents_cg_fraction

@@ -30,6 +30,7 @@ from assess.decision.risk_classes import (
 )
 from assess.fragility.friction_range import mu_dependence_sentence
 from assess.fragility.regression import RegressionConstants
+from assess.inventory.settings import Settings
 from assess.mechanics.modes import ROCK, SLIDE_ROCK
 from assess.quantity_text import floor_numbering_of, floor_text
 
@@ -80,7 +81,7 @@ class Decisions:
 
 
 def decide(equipment: pd.DataFrame, governing: dict, uplift: dict, cases: pd.DataFrame, at_mu_ends: pd.DataFrame,
-           constants: RegressionConstants, settings: dict, site: AnchorageSite | None = None,
+           constants: RegressionConstants, settings: Settings, site: AnchorageSite | None = None,
            lowered: dict | None = None) -> Decisions:
     """Every item's decisions from its governing demand (``governing``: id -> its demand row,
     :func:`assess.assessment.demand.item_rows`; ``uplift``: id -> whether it uplifts; ``cases``: the
@@ -124,7 +125,7 @@ NO_MU_RANGE = {"mu_low": np.nan, "mu_high": np.nan, "risk_mu_low": "", "risk_mu_
                "p_beyond_clearance_mu_low": np.nan, "p_beyond_clearance_mu_high": np.nan, "mu_range_note": ""}
 
 
-def mu_range_decision(end: pd.Series, risk: str, demand_note: str, consequence: str, settings: dict) -> dict:
+def mu_range_decision(end: pd.Series, risk: str, demand_note: str, consequence: str, settings: Settings) -> dict:
     """For an item with a range of friction: its risk class with every run at ``mu_low`` and at
     ``mu_high`` (:func:`~assess.decision.risk_classes.classify_risk` of the demand at each end, ``end``: its row of
     :func:`assess.fragility.friction_range.demand_at_ends`), and
@@ -143,7 +144,7 @@ def mu_range_decision(end: pd.Series, risk: str, demand_note: str, consequence: 
             "mu_range_note": sentence, "demand_note": f"{demand_note} {sentence}".strip()}
 
 
-def decide_item(item, row: dict, uplift: bool, settings: dict, site: AnchorageSite | None = None,
+def decide_item(item, row: dict, uplift: bool, settings: Settings, site: AnchorageSite | None = None,
                 lowered: actions.LoweredDemand | None = None) -> ItemDecision:
     """The decision for one freestanding item (:class:`ItemDecision`) from its governing demand ``row`` (a
     dict holding ``p_beyond_clearance``, ``p_overturn``, ``p_rocking_harm`` and their intervals,
@@ -164,7 +165,7 @@ def decide_item(item, row: dict, uplift: bool, settings: dict, site: AnchorageSi
                         MappingProxyType({**row, "risk": risk}))
 
 
-def item_columns(decision: ItemDecision, settings: dict) -> dict:
+def item_columns(decision: ItemDecision, settings: Settings) -> dict:
     """The summary's decision columns of one freestanding item that are numbers and kinds: ``risk``,
     ``performance_objective``, ``risk_range`` (the classes at the lower and at the upper ends of every
     chance's 90 % interval), the action's (:meth:`~assess.decision.actions.ActionDecision.columns`), the

@@ -128,7 +128,7 @@ def classify_risk(chances: Chances, consequence: str, settings: Settings) -> str
     return max(mode_classes(chances, consequence, settings).values(), key=CLASS_ORDER.index)
 
 
-def deciding_chance(chances: Chances, consequence: str, settings: dict) -> str:
+def deciding_chance(chances: Chances, consequence: str, settings: Settings) -> str:
     """The one chance that decides the class, in a few words: the largest of those at the item's class
     (for a low item, the largest chance that counts for it).
 

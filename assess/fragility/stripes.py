@@ -66,6 +66,7 @@ from scipy import stats
 from assess.fragility.agreement import AT_LEVEL_COLUMNS, level_comparison_sentence
 from assess.fragility.msa import FITTED, FragilityFit, fit_lognormal_fragilities
 from assess.hazard.openquake import OpenQuakeHazard
+from assess.inventory.settings import Settings
 from assess.inventory.units import CM_PER_M
 from assess.quantity_text import floor_numbering_of, floor_text
 from assess.hazard.risk_integral import curve_annual_rates, openquake_failure_rate, probability_in_years

@@ -16,15 +16,13 @@ import math
 import pandas as pd
 
 from assess.anchorage.design import in_us_units
-from assess.assessment.result import SUMMARY_COLUMNS
+from assess.assessment.result import SUMMARY_COLUMNS, WORD_COLUMNS, AssessmentResult
 from assess.decision.actions import ActionKind, LoweredDemand, room_to_gain_cm
 from assess.decision.costs import CostNote  # noqa: F401 (the doctests)
 from assess.decision.risk_classes import CLASS_ORDER, MODE_WORDS, Chances, mode_classes, rocking_harm_counts
+from assess.inventory.settings import Settings
 from assess.quantity_text import force_text, length_text, moment_text, percent_text, system_of
 
-#: The summary's columns that are words or US units, made here (:func:`with_words`).
-WORD_COLUMNS = ("action", "what_if", "risk_reason", "anchor_basis", "cost_note", "anchor_force_kip",
-                "anchor_moment_kip_ft", "anchor_tension_kip", "anchor_shear_omega_kip", "anchor_tension_omega_kip")
 #: What a work order asks for, by action kind (work_orders.csv and the report's work orders).
 WORK_ORDER_TEXT = {
     "anchor": "anchor to the floor or wall",
@@ -73,14 +71,14 @@ def _why_overturn_or_rock(row: dict) -> str:
     return _rocking_text(row)
 
 
-def _why(row: dict, uplift: bool, system: str, settings: dict) -> str:
+def _why(row: dict, uplift: bool, system: str, settings: Settings) -> str:
     """Why an item is held: it overturns or rocks, or it slides farther than a room can spare."""
     if float(row["p_overturn"]) > 0.0 or uplift:
         return _why_overturn_or_rock(row)
     return f"{_room_numbers(row, system)}: {_more_than_spare(row, system, settings)}"
 
 
-def _more_than_spare(row: dict, system: str, settings: dict) -> str:
+def _more_than_spare(row: dict, system: str, settings: Settings) -> str:
     return (f"{length_text(room_to_gain_cm(row), system, 'up')} more, beyond the "
             f"{length_text(settings.room_max_cm, system)} a room can spare")
 
@@ -102,7 +100,7 @@ def _lowered_text(row, lowered: LoweredDemand, system: str) -> str:
             f"{percent_text(row['p_beyond_clearance'])}), and {rocks}, under the same motions")
 
 
-def action_sentence(kind: str, row, uplift: bool, lowered: LoweredDemand | None, settings: dict) -> str:
+def action_sentence(kind: str, row, uplift: bool, lowered: LoweredDemand | None, settings: Settings) -> str:
     """A plain sentence a facility manager can act on, for the action ``kind`` (:func:`choose_action`)."""
     system = system_of(settings)
     if kind == "anchor":
@@ -124,7 +122,7 @@ def action_sentence(kind: str, row, uplift: bool, lowered: LoweredDemand | None,
     return "No action needed"
 
 
-def what_if_sentence(kind: str, row, lowered: LoweredDemand | None, settings: dict) -> str:
+def what_if_sentence(kind: str, row, lowered: LoweredDemand | None, settings: Settings) -> str:
     """The item's risk if the action is taken, from its own numbers or the engine's what-if run."""
     system = system_of(settings)
     engine = ""
@@ -153,17 +151,17 @@ def what_if_sentence(kind: str, row, lowered: LoweredDemand | None, settings: di
 
 # ---------------------------------------------------------------- why the item is in its class
 
-def _threshold_text(mode: str, risk: str, settings: dict) -> str:
+def _threshold_text(mode: str, risk: str, settings: Settings) -> str:
     key = {"overturn": "risk_overturn", "beyond_clearance": "risk_pf", "rocking_harm": "risk_rocking"}[mode]
     return f"{100.0 * getattr(settings, f'{key}_{risk}'):g}%"  # a threshold as given: 2.5%, not rounded
 
 
-def risk_reason(chances: Chances, consequence: str, settings: dict) -> str:
+def risk_reason(chances: Chances, consequence: str, settings: Settings) -> str:
     """Why the item is in its class (:func:`assess.decision.risk_classes.classify_risk`), in one sentence from
     its chances and the thresholds.
 
-    >>> s = {"risk_overturn_high": 0.1, "risk_overturn_moderate": 0.025, "risk_pf_high": 0.5,
-    ...      "risk_pf_moderate": 0.1, "risk_rocking_moderate": 0.1}
+    >>> s = Settings(risk_overturn_high=0.1, risk_overturn_moderate=0.025, risk_pf_high=0.5,
+    ...              risk_pf_moderate=0.1, risk_rocking_moderate=0.1)
     >>> risk_reason(Chances(0.39, 0.0, 0.2), "hazardous", s)
     'high: 39% chance of overturning (high from 10%)'
     >>> risk_reason(Chances(0.0, 0.03, 0.6), "ordinary", s)
@@ -274,7 +272,7 @@ def cost_note_text(notes, kind: str = "") -> str:
 
 # ---------------------------------------------------------------- the summary's words
 
-def item_words(decision, settings: dict) -> dict:
+def item_words(decision, settings: Settings) -> dict:
     """The word and US-unit columns (:data:`WORD_COLUMNS` but ``cost_note``) of one item's
     :class:`~assess.decision.decisions.ItemDecision`, in the units of ``settings`` (``units``)."""
     system = system_of(settings)
@@ -288,7 +286,7 @@ def item_words(decision, settings: dict) -> dict:
             "risk_reason": risk_reason(decision.chances, decision.consequence, settings)}
 
 
-def with_words(result):
+def with_words(result: AssessmentResult) -> AssessmentResult:
     """``result`` (:class:`~assess.assessment.result.AssessmentResult`) with its summary's columns that are
     words or US forces (:data:`WORD_COLUMNS`) made from each item's decision (``result.decisions``) and cost
     notes, in the units of its settings (``units``), each at its place in
@@ -297,8 +295,7 @@ def with_words(result):
     summary = result.summary
     if "action" in summary.columns or not result.decisions:
         return result
-    settings = result.settings or {}
-    rows = [item_words(result.decisions[item_id], settings) for item_id in summary["id"]]
+    rows = [item_words(result.decisions[item_id], result.settings) for item_id in summary["id"]]
     out = summary.copy()
     for column in WORD_COLUMNS:
         if column != "cost_note":

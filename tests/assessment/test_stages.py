@@ -13,7 +13,7 @@ import pandas as pd
 import pytest
 
 from assessed import run_assessment
-from assess.data import default_settings
+from assess.inventory.settings import Settings
 from assess.decision import decisions
 from assess.errors import InputError
 from assess.report.advice import item_words
@@ -79,7 +79,7 @@ def test_decisions_follow_the_thresholds_and_rank_the_items():
     assert by_item["MID"]["action"].startswith("Give it room: it needs 42 cm to be low risk and has 30 cm")
     # with no room to spare: restrain
     assert by_item["TIPS"]["action"] == "Anchor it to the floor or wall: it overturns under 1 of its 3 motions"
-    tight_settings = {**settings, "room_max_cm": 11.0}
+    tight_settings = dataclasses.replace(settings, room_max_cm=11.0)
     tight = decisions.decide(equipment, governing, uplift, cases, pd.DataFrame(), constants, tight_settings)
     tight = {i: {**row, **item_words(tight.items[i], tight_settings)} for i, row in tight.by_item.items()}
     assert [tight[i]["action_kind"] for i in ("MID", "HIGH")] == ["restrain", "restrain"]

@@ -77,9 +77,9 @@ def test_room_is_asked_only_where_a_room_can_spare_it():
                                  SETTINGS)["action_kind"] == "restrain"
     # the setting moves the line: with 200 cm to spare the far item gets room
     assert _decided(Item(), _row(p_beyond=0.6, room_cm=190.3), False, None,
-                                 {**SETTINGS, "room_max_cm": 200.0})["action_kind"] == "room"
+                                 dataclasses.replace(SETTINGS, room_max_cm=200.0))["action_kind"] == "room"
     # in US units the room is in inches (191 cm = 75.2 in, rounded up)
-    us = _decided(Item(), _row(p_beyond=0.6, room_cm=190.3), False, None, {**SETTINGS, "units": "us"})
+    us = _decided(Item(), _row(p_beyond=0.6, room_cm=190.3), False, None, dataclasses.replace(SETTINGS, units="us"))
     assert "it needs 75 in" in us["action"] and "12 in a room can spare" in us["action"]
     assert "has 3 in" in us["action"]  # 10 cm = 3.9 in, rounded down
 

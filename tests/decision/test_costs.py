@@ -14,7 +14,7 @@ import pandas as pd
 import pytest
 
 from assessed import run_assessment
-from assess.data import default_settings
+from assess.inventory.settings import Settings
 from assess.decision import costs
 from assess.decision.costs import (
     COST_COLUMNS, after_probabilities, benefit_cost_ratio, cost_table, expected_loss_ratio, item_costs,

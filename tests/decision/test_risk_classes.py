@@ -11,7 +11,7 @@ import pandas as pd
 import pytest
 
 from assessed import run_assessment
-from assess.data import default_settings
+from assess.inventory.settings import Settings
 from assess.decision import decisions
 from assess.decision.risk_classes import CLASS_ORDER, Chances, classify_risk
 from assess.fragility.governing import governing_demand, rocking_harm
@@ -99,7 +99,7 @@ def _decided(row_chances, consequence="critical"):
         row.update({name: value, f"{name}_low": low, f"{name}_high": high})
     item = pd.DataFrame([{"id": "X", "floor": 0, "mass_kg": 100.0, "width_m": 0.6, "depth_m": 0.6,
                           "cg_height_m": 0.9, "consequence": consequence}]).iloc[0]
-    return _columns(decisions.decide_item(item, row, True, {**SETTINGS, "sds_g": 0.0}), SETTINGS)
+    return _columns(decisions.decide_item(item, row, True, dataclasses.replace(SETTINGS, sds_g=0.0)), SETTINGS)
 
 
 def test_the_risk_range_spans_the_classes_of_every_chances_interval():

@@ -8,7 +8,7 @@ import pytest
 from scipy import integrate, stats
 
 from assessed import run_assessment
-from assess.data import default_settings
+from assess.inventory.settings import Settings
 from assess.fragility.friction_range import friction_nodes, items_whose_class_changes
 from assess.inventory import Inventory
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2 as G

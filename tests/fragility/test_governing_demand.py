@@ -16,7 +16,7 @@ import pytest
 from scipy import stats
 
 from assessed import run_assessment
-from assess.data import default_settings
+from assess.inventory.settings import Settings
 from assess.fragility.governing import governing_demand
 from assess.fragility.suite import (
     PULSE_SHARE_MIN, binomial_interval, effective_count, pulse_acceleration_share, regression_applies,

@@ -8,7 +8,7 @@ import pandas as pd
 import pytest
 
 from assessed import run_assessment
-from assess.data import default_settings
+from assess.inventory.settings import Settings
 from assess.errors import InputError
 from assess.inventory import Inventory
 from assess.mechanics.sliding import sliding_response

@@ -23,6 +23,7 @@ import pytest
 
 from assess.anchorage import anchorage_site
 from assess.anchorage import item_anchorage as _item_anchorage
+from assess.inventory.settings import Settings
 from assess.inventory.site_building import BuildingSheet, SiteSheet
 from assess.report.advice import anchorage_columns
 
