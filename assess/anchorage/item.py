@@ -28,7 +28,6 @@ from dataclasses import dataclass
 
 from assess.anchorage.coefficients import DEFAULT_COMPONENT_TYPE, canonical_edition, component_coefficients
 from assess.building.period import approximate_period
-from assess.inventory.settings import Settings
 from assess.anchorage.design import AnchorageForces, design_force
 from assess.anchorage.equations import component_importance_factor
 from assess.site.asce7 import from_mapped_values
@@ -88,7 +87,7 @@ def _sds_from_site(site) -> tuple[float, str]:
     return math.nan, ""
 
 
-def anchorage_site(site=None, building=None, settings: Settings | None = None) -> AnchorageSite:
+def anchorage_site(site=None, building=None, settings=None) -> AnchorageSite:
     """The :class:`AnchorageSite` of a workbook from its ``site`` and ``building`` sheets
     (:class:`~assess.inventory.site_building.SiteSheet`, :class:`~assess.inventory.site_building.BuildingSheet`,
     None where absent) and its settings (:class:`assess.inventory.settings.Settings`: ``sds_g``, ``roof_floor``
