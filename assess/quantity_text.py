@@ -9,12 +9,15 @@ result object); only their text changes. Exact conversions: 1 in = 2.54 cm (by d
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
+
+from assess.inventory.units import CM_PER_IN, KG_PER_LB, N_PER_LBF  # noqa: F401 (the report's conversions)
+
+if TYPE_CHECKING:  # the annotations only
+    from assess.inventory.settings import Settings
 
 #: The unit systems a report can be written in.
 SYSTEMS = ("si", "us")
-CM_PER_IN = 2.54
-N_PER_LBF = 4.4482216152605
-KG_PER_LB = 0.45359237
 
 
 def system_of(settings_or_system) -> str:
@@ -179,7 +182,7 @@ def percent_text(probability) -> str:
 FLOOR_NUMBERINGS = ("ground_0", "ground_1")
 
 
-def floor_numbering_of(settings) -> str:
+def floor_numbering_of(settings: Settings | None) -> str:
     """``'ground_0'`` or ``'ground_1'`` from the settings (:class:`assess.inventory.settings.Settings`, its
     ``floor_numbering``); ``'ground_0'`` by default (no settings)."""
     numbering = str((settings.floor_numbering if settings is not None else "") or "ground_0").strip().lower()

@@ -13,9 +13,9 @@ from assess.anchorage.coefficients import (
 )
 from assess.anchorage.design import AnchorageForces, design_force, in_us_units
 from assess.anchorage.equations import component_importance_factor
-from assess.anchorage.item import AnchorageSite, anchorage_sentence, anchorage_site, item_anchorage
+from assess.anchorage.item import AnchorageSite, ItemAnchorage, anchorage_site, item_anchorage
 
-__all__ = ["AnchorageForces", "AnchorageSite", "ComponentCoefficients", "anchorage_sentence", "anchorage_site",
+__all__ = ["AnchorageForces", "AnchorageSite", "ComponentCoefficients", "ItemAnchorage", "anchorage_site",
            "item_anchorage", "DEFAULT_COMPONENT_TYPE", "EDITIONS", "canonical_edition",
            "component_coefficients", "component_importance_factor", "component_types", "design_force",
            "in_us_units"]

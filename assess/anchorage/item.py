@@ -28,10 +28,10 @@ from dataclasses import dataclass
 
 from assess.anchorage.coefficients import DEFAULT_COMPONENT_TYPE, canonical_edition, component_coefficients
 from assess.building.period import approximate_period
-from assess.anchorage.design import AnchorageForces, design_force, in_us_units
+from assess.anchorage.design import AnchorageForces, design_force
 from assess.anchorage.equations import component_importance_factor
-from assess.quantity_text import force_text, moment_text
 from assess.site.asce7 import from_mapped_values
+from assess.units import conversion_factor
 
 #: ``g`` [m/s²] (the one in assess.mechanics.geometry; repeated so this package stays free of the engine's).
 STANDARD_GRAVITY_M_S2 = 9.80665
@@ -42,10 +42,13 @@ DEFAULT_RISK_CATEGORY = "II"
 #: (its restraint carries the force), or already anchored (its anchorage to be checked against it).
 ANCHORAGE_KINDS = ("anchor", "restrain", "tether", "anchored")
 
-#: The anchorage columns of ``summary.csv`` (docs/outputs.md), in order.
+#: The anchorage columns of ``summary.csv`` (docs/outputs.md), in order; the ``*_kip`` ones and ``anchor_basis``
+#: are the report's (:func:`assess.report.advice.anchorage_columns`), the others :meth:`ItemAnchorage.columns`.
 COLUMNS = ("component_type", "ip", "anchor_force_kn", "anchor_force_kip", "anchor_moment_knm", "anchor_moment_kip_ft",
            "anchor_tension_kn", "anchor_tension_kip", "anchor_omega0", "anchor_shear_omega_kn",
            "anchor_shear_omega_kip", "anchor_tension_omega_kn", "anchor_tension_omega_kip", "anchor_basis")
+#: Newtons per kilonewton (pint).
+N_PER_KN = conversion_factor("kilonewton", "newton")
 
 
 @dataclass(frozen=True)
@@ -125,14 +128,6 @@ def anchorage_site(site=None, building=None, settings=None) -> AnchorageSite:
                          basis="; ".join(notes))
 
 
-def _empty(item, consequence: str, site: AnchorageSite) -> dict:
-    out = {column: math.nan for column in COLUMNS}
-    out["component_type"] = component_coefficients(site.edition, _type_name(item)).component_type
-    out["ip"] = component_importance_factor(consequence, site.risk_category, getattr(item, "ip", None))
-    out["anchor_basis"] = ""
-    return out
-
-
 def _type_name(item) -> str:
     name = getattr(item, "component_type", None)
     if name is None or (isinstance(name, float) and name != name) or not str(name).strip():
@@ -150,55 +145,50 @@ def item_forces(item, consequence: str, site: AnchorageSite) -> AnchorageForces:
         half_width_m=min(float(item.width_m), float(item.depth_m)) / 2.0)
 
 
-def item_anchorage(item, consequence: str, action_kind: str, site: AnchorageSite, system: str = "si") -> dict:
-    """The anchorage columns (:data:`COLUMNS`) of one item: its component type and I_p always; for an item
-    whose ``action_kind`` is one of :data:`ANCHORAGE_KINDS`, F_p per unit and what it does at the base, in
-    kN and kip, without and with Ω0, and ``anchor_basis`` (the factors used, in words); NaN and a sentence
-    saying what to add where S_DS is not known. The forces in ``anchor_basis`` are in ``system``'s units
-    (``'si'`` or ``'us'``); the columns carry both.
-    """
-    out = _empty(item, consequence, site)
-    if action_kind not in ANCHORAGE_KINDS:
+@dataclass(frozen=True)
+class ItemAnchorage:
+    """What one item's anchorage must resist (:func:`item_anchorage`), in SI: its component type and I_p;
+    ``forces`` (:class:`~assess.anchorage.design.AnchorageForces`, newtons) where its action holds it in place
+    and S_DS is known, None otherwise; ``wanted``: whether its action asks for the force
+    (:data:`ANCHORAGE_KINDS`); ``site``: where the force's terms come from."""
+
+    component_type: str
+    importance: float
+    forces: AnchorageForces | None
+    wanted: bool
+    site: AnchorageSite
+
+    @property
+    def missing_sds(self) -> bool:
+        """The force is wanted but S_DS is not known."""
+        return self.wanted and self.forces is None
+
+    def columns(self) -> dict:
+        """Its columns of summary.csv in SI (kN, kN·m; NaN without a force); ``ip`` and ``component_type``
+        always."""
+        out = {column: math.nan for column in COLUMNS if not column.endswith(("_kip", "_kip_ft", "_basis"))}
+        out.update({"component_type": self.component_type, "ip": self.importance})
+        forces = self.forces
+        if forces is None:
+            return out
+        out.update({
+            "anchor_force_kn": forces.force_n / N_PER_KN, "anchor_moment_knm": forces.overturning_moment_nm / N_PER_KN,
+            "anchor_tension_kn": forces.tension_n / N_PER_KN,
+            "anchor_omega0": forces.overstrength if forces.overstrength_applied else 1.0,
+            "anchor_shear_omega_kn": forces.anchor_shear_n / N_PER_KN,
+            "anchor_tension_omega_kn": forces.anchor_tension_n / N_PER_KN,
+        })
         return out
-    if not site.sds_g > 0.0:
-        out["anchor_basis"] = ("add sds_g to the site sheet (or the settings) for the ASCE 7 design force of its "
-                               "anchorage")
-        return out
+
+
+def item_anchorage(item, consequence: str, action_kind: str, site: AnchorageSite) -> ItemAnchorage:
+    """The anchorage of one item (:class:`ItemAnchorage`): its component type and I_p always; for an item
+    whose ``action_kind`` is one of :data:`ANCHORAGE_KINDS`, the design forces per unit (F_p and what it does
+    at the base, without and with Ω0) where S_DS is known."""
+    wanted = action_kind in ANCHORAGE_KINDS
+    if not wanted or not site.sds_g > 0.0:
+        return ItemAnchorage(component_coefficients(site.edition, _type_name(item)).component_type,
+                             component_importance_factor(consequence, site.risk_category, getattr(item, "ip", None)),
+                             None, wanted, site)
     forces = item_forces(item, consequence, site)
-    us = in_us_units(forces)
-    omega = forces.overstrength if forces.overstrength_applied else 1.0
-    out.update({
-        "component_type": forces.component_type, "ip": forces.importance,
-        "anchor_force_kn": forces.force_n / 1000.0, "anchor_force_kip": us["force_kip"],
-        "anchor_moment_knm": forces.overturning_moment_nm / 1000.0,
-        "anchor_moment_kip_ft": us["overturning_moment_lbf_ft"] / 1000.0,
-        "anchor_tension_kn": forces.tension_n / 1000.0, "anchor_tension_kip": us["tension_kip"],
-        "anchor_omega0": omega,
-        "anchor_shear_omega_kn": forces.anchor_shear_n / 1000.0, "anchor_shear_omega_kip": us["anchor_shear_kip"],
-        "anchor_tension_omega_kn": forces.anchor_tension_n / 1000.0,
-        "anchor_tension_omega_kip": us["anchor_tension_kip"],
-        "anchor_basis": f"{forces.basis(system)}; forces per unit; {site.basis}",
-    })
-    return out
-
-
-def anchorage_sentence(row, system="si") -> str:
-    """What the report says about an item's anchorage, from its summary row (``row``: a mapping with the
-    :data:`COLUMNS`), forces in SI or US units (:mod:`assess.quantity_text`); "" without a force.
-
-    >>> anchorage_sentence({"anchor_force_kn": 4.0, "anchor_moment_knm": 4.8, "anchor_tension_kn": 1.2,
-    ...                     "anchor_omega0": 2.0, "anchor_shear_omega_kn": 8.0, "anchor_tension_omega_kn": 5.2})
-    'design force F_p 4 kN per unit at its centre of mass; overturning moment 4.8 kN·m and uplift (tension) 1.2 kN on the far edge of its narrower base; anchors in concrete, with Omega_0 2: shear 8 kN, tension 5.2 kN'
-    """
-    force = row.get("anchor_force_kn")
-    if force is None or not math.isfinite(float(force)):
-        return ""
-    text = (f"design force F_p {force_text(force, system)} per unit at its centre of mass; overturning moment "
-            f"{moment_text(row.get('anchor_moment_knm'), system)} and uplift (tension) "
-            f"{force_text(row.get('anchor_tension_kn'), system)} on the far edge of its narrower base")
-    omega = row.get("anchor_omega0")
-    if omega is not None and math.isfinite(float(omega)) and float(omega) > 1.0:
-        text += (f"; anchors in concrete, with Omega_0 {float(omega):g}: shear "
-                 f"{force_text(row.get('anchor_shear_omega_kn'), system)}, tension "
-                 f"{force_text(row.get('anchor_tension_omega_kn'), system)}")
-    return text
+    return ItemAnchorage(forces.component_type, forces.importance, forces, True, site)

@@ -20,6 +20,7 @@ from assess.fragility import (
 from assess.fragility.friction_range import demand_at_ends
 from assess.inventory.settings import Settings
 from assess.fragility.governing import add_pulse_share, governing_demand, motion_sources, regression_note
+from assess.inventory.units import CM_PER_M
 from assess.mechanics.modes import MODE_SEVERITY, ROCK, SLIDE, SLIDE_ROCK, initial_mode
 
 SLIDING_MODES = (SLIDE, SLIDE_ROCK)
@@ -174,8 +175,8 @@ def regression_demand(cases: pd.DataFrame, constants: RegressionConstants) -> pd
     rocks_only = (cases["mode"] == ROCK).to_numpy()
     # A block that rocks without sliding has no sliding demand from this regression.
     cases["edp_median"] = np.where(rocks_only, np.nan, median_edp(im_sliding, constants.zeta, constants.eta))
-    cases["sliding_median_cm"] = np.where(rocks_only, np.nan, median_m * 100.0)
-    cases["sliding_p84_cm"] = np.where(rocks_only, np.nan, p84_m * 100.0)
+    cases["sliding_median_cm"] = np.where(rocks_only, np.nan, median_m * CM_PER_M)
+    cases["sliding_p84_cm"] = np.where(rocks_only, np.nan, p84_m * CM_PER_M)
     cases["capacity_edp"] = capacity
     cases["pf_sliding"] = np.where(rocks_only, np.nan, pf)
     cases["im_outside_fit"] = slides & ((cases["im"] < constants.im_min) | (cases["im"] > constants.im_max))

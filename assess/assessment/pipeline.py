@@ -27,7 +27,7 @@ from assess.anchorage import anchorage_site
 from assess.assessment import cases as case_stage
 from assess.assessment import demand as demand_stage
 from assess.assessment import inputs, motions as motion_stage, run as run_stage, summary as result_stage
-from assess.assessment.result import SUMMARY_COLUMNS, AssessmentResult
+from assess.assessment.result import SUMMARY_COLUMNS, WORD_COLUMNS, AssessmentResult
 from assess.calibration.apply import check_applies, with_declared
 from assess.decision import actions, costs, decisions
 from assess.fragility import RegressionConstants
@@ -140,7 +140,8 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     return AssessmentResult(
         workbook=inventory.path, facility=settings.facility,
         site=settings.site, level=level.level, level_label=level.level_label,
-        summary=summary[summary_columns], motions=result_stage.motion_table(with_planar_peaks(at_mu, ran.planar)),
+        summary=summary[[column for column in summary_columns if column in summary or column not in WORD_COLUMNS]],
+        motions=result_stage.motion_table(with_planar_peaks(at_mu, ran.planar)),
         flags=decided.flags, regression=result_stage.regression_record(constants, settings),
         settings=settings, simulated=True, seed=seed, histories=histories, hazard_notes=level.notes,
         suite_runs=suite_runs(demand.cases, ran.runs, ran.planar),
@@ -150,6 +151,7 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
         anchorage=anchorage, ground_method=ground_method,
         design_spectrum=None if level.site is None else level.site.design,
         site_class=str(getattr(inventory.site, "site_class", None) or ""), floor_origins=origins,
+        decisions=decided.items,
     )
 
 

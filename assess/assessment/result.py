@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING
 import pandas as pd
 
 from assess.decision.costs import COST_COLUMNS
+from assess.decision.decisions import ItemDecision
 from assess.decision.flags import Flag
 from assess.hazard.levels import HazardLevel
 from assess.inventory.settings import Settings
@@ -36,6 +37,12 @@ SUMMARY_COLUMNS = [
     "p_rocking_harm", "p_rocking_harm_low", "p_rocking_harm_high", "performance_objective", "risk_reason",
     "regression_applies", "regression_note",
 ] + COST_COLUMNS  # what failures cost and actions buy (assess/decision/costs.py); empty where no value is given
+
+#: The summary's columns that are words or US forces: the report makes them from ``decisions`` in its units
+#: (:func:`assess.report.advice.with_words`); until then ``cost_note`` holds the cost stage's kinds
+#: (:class:`assess.decision.costs.CostNote`) and the others are absent.
+WORD_COLUMNS = ("action", "what_if", "risk_reason", "anchor_basis", "cost_note", "anchor_force_kip",
+                "anchor_moment_kip_ft", "anchor_tension_kip", "anchor_shear_omega_kip", "anchor_tension_omega_kip")
 
 #: Columns of ``motions.csv`` in order, each documented in docs/outputs.md (tests/project/test_docs.py).
 MOTION_COLUMNS = [
@@ -131,6 +138,10 @@ class AssessmentResult:
     design_spectrum : DesignSpectrum or None
         The site's ASCE 7 spectrum (:class:`assess.site.asce7.DesignSpectrum`) where the site sheet gives one;
         ``site_class`` the site sheet's site class ("" where it gives none).
+    decisions : dict[str, ItemDecision]
+        id -> :class:`assess.decision.decisions.ItemDecision`: what was decided for each item, in numbers and
+        kinds; the summary's columns that are words or US forces are made from it by the report
+        (:func:`assess.report.advice.with_words`), absent from ``summary`` until then.
     floor_origins : dict
         Where each floor's time histories come from (:func:`assess.assessment.summary.floor_origins`):
         floor (None: every floor) -> ``workbook``, ``site records``, ``site synthetic``, with
@@ -159,6 +170,7 @@ class AssessmentResult:
     spectrum: pd.DataFrame | None = None
     floors: pd.DataFrame | None = None
     anchorage: AnchorageSite | None = None
+    decisions: dict[str, ItemDecision] = field(default_factory=dict)
     ground_method: str = ""
     design_spectrum: DesignSpectrum | None = None
     site_class: str = ""

@@ -18,6 +18,7 @@ import pandas as pd
 from assess.calibration.apply import case_block, theta_over_declared
 from assess.fragility.ground_stripes import ground_curve_risk, ground_sources
 from assess.fragility.planar import planar_runs
+from assess.inventory.units import CM_PER_M
 from assess.quantity_text import floor_numbering_of
 from assess.fragility.stripes import curve_risk
 from assess.hazard.records import Record
@@ -139,7 +140,7 @@ def simulate_cases(cases: pd.DataFrame, motions: dict[int, list[tuple[Record, st
         theta_max_over_alpha = theta_over_declared(theta_max_over_alpha, [blocks_by_case[k] for k in run_case])
     runs = pd.DataFrame({
         "case": run_case, "realization": [histories[j][1] for j in run_history],
-        "sliding_max_cm": peaks.sliding_max_m * 100.0, "sliding_residual_cm": peaks.sliding_residual_m * 100.0,
+        "sliding_max_cm": peaks.sliding_max_m * CM_PER_M, "sliding_residual_cm": peaks.sliding_residual_m * CM_PER_M,
         "theta_max_over_alpha": theta_max_over_alpha, "uplift": peaks.uplift,
         "overturned": peaks.overturned, "mode": peaks.mode, "solver": peaks.solver})
     grouped = runs.groupby("case", sort=True)
@@ -177,7 +178,7 @@ def worst_histories(cases: pd.DataFrame, runs: pd.DataFrame, equipment: pd.DataF
     ranked = runs.assign(
         id=cases["id"].to_numpy()[runs["case"]],
         _over=runs["overturned"].astype(int),
-        _ratio=runs["sliding_max_cm"] / (cases["clearance_m"].to_numpy()[runs["case"]] * 100.0),
+        _ratio=runs["sliding_max_cm"] / (cases["clearance_m"].to_numpy()[runs["case"]] * CM_PER_M),
     ).sort_values(["_over", "theta_max_over_alpha", "_ratio"], ascending=False, kind="stable")
     worst = ranked.drop_duplicates("id")
     names = equipment.set_index("id")["name"]
@@ -198,8 +199,8 @@ def worst_histories(cases: pd.DataFrame, runs: pd.DataFrame, equipment: pd.DataF
             "id": case.id, "name": names[case.id], "motion": case.motion, "direction": int(case.direction),
             "sim_motion": description, "mode": response.mode, "solver": response.solver,
             "alpha_rad": float(case.alpha_rad), "time_s": response.time_s,
-            "sliding_cm": response.sliding_m * 100.0, "theta_over_alpha": response.theta_rad / case.alpha_rad,
+            "sliding_cm": response.sliding_m * CM_PER_M, "theta_over_alpha": response.theta_rad / case.alpha_rad,
             "floor_accel_g": floor, "overturned": bool(response.overturned),
-            "clearance_cm": float(case.clearance_m) * 100.0,
+            "clearance_cm": float(case.clearance_m) * CM_PER_M,
         })
     return histories

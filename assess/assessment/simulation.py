@@ -17,10 +17,10 @@ import numpy as np
 from assess.inventory.settings import Settings
 from assess.fragility import RegressionConstants, intensity_measure, sliding_quantile
 from assess.hazard.records import MIN_DURATION_S, Record, pulse_record, read_record
+from assess.inventory.units import CM_PER_M
 from assess.mechanics.block import Block, BlockResponse
 from assess.mechanics.gateway import DEFAULT_TAIL_S, run_responses
 
-M_TO_CM = 100.0
 
 
 @dataclass(frozen=True)
@@ -60,8 +60,8 @@ class ItemSimulation:
             "mu_static": self.block.mu_static,
             "restitution": self.block.restitution_effective,
             "mode": r.mode,
-            "sliding_max_cm": r.sliding_max_m * M_TO_CM,
-            "sliding_residual_cm": r.sliding_residual_m * M_TO_CM,
+            "sliding_max_cm": r.sliding_max_m * CM_PER_M,
+            "sliding_residual_cm": r.sliding_residual_m * CM_PER_M,
             "theta_max_over_alpha": r.theta_max_over_alpha,
             "uplift": bool(r.uplift),
             "overturned": bool(r.overturned),
@@ -73,7 +73,7 @@ class ItemSimulation:
         }
         if self.pulse_period_s is not None:
             out["regression"] = {"tp_s": self.pulse_period_s, "im": self.im,
-                                 "sliding_median_cm": self.regression_sliding_median_m * M_TO_CM}
+                                 "sliding_median_cm": self.regression_sliding_median_m * CM_PER_M}
         return out
 
     def as_text(self) -> str:
@@ -103,7 +103,7 @@ class ItemSimulation:
         r = self.response
         floor = np.zeros(r.time_s.size)
         floor[:min(self.motion.accel_g.size, floor.size)] = self.motion.accel_g[:floor.size]
-        table = np.column_stack([r.time_s, floor, r.sliding_m * 100.0, r.theta_rad / self.block.alpha_rad])
+        table = np.column_stack([r.time_s, floor, r.sliding_m * CM_PER_M, r.theta_rad / self.block.alpha_rad])
         buffer = io.StringIO()
         np.savetxt(buffer, table, delimiter=",", fmt="%.9g",
                    header="time_s,floor_accel_g,sliding_cm,theta_over_alpha", comments="")

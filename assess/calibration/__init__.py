@@ -16,6 +16,7 @@ import numpy as np
 import pandas as pd
 
 from assess.hazard.processing import peak_velocity_m_s
+from assess.inventory.units import CM_PER_M
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
 
 from assess.calibration.effects import EFFECTS, available_effects, half_width_of
@@ -177,7 +178,7 @@ def residual_table(measured: pd.DataFrame, predicted: Predicted, observed: Measu
     table = pd.DataFrame({
         "specimen": measured["specimen"].to_numpy(), "motion": measured["motion"].to_numpy(),
         "direction": measured["direction"].to_numpy(),
-        "sliding_measured_cm": observed.sliding_m * 100, "sliding_predicted_cm": predicted.sliding_m * 100,
+        "sliding_measured_cm": observed.sliding_m * CM_PER_M, "sliding_predicted_cm": predicted.sliding_m * CM_PER_M,
         "sliding_log_ratio": np.where(np.isfinite(observed.sliding_m),
                                       sliding_log_ratio(predicted.sliding_m, observed.sliding_m), np.nan),
         "theta_measured": observed.theta_max_over_alpha, "theta_predicted": predicted.theta_max_over_alpha,

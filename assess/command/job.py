@@ -35,6 +35,7 @@ from assess.hazard.usgs import read_hazard_curve_file
 from assess.inventory import read_workbook
 from assess.mechanics.runner import LocalRunner
 from assess.quantity_text import system_of
+from assess.report import advice
 from assess.report.calibration import render_calibration_html
 from assess.report.tables import csv_text, restore_text, summary_text
 
@@ -241,6 +242,7 @@ def run_job(job: AssessmentJob, say: Say = lambda message: None,
                                              runner=runner, hazard_curve=hazard_curve,
                                              allow_records_outside=job.allow_records_outside,
                                              curve_risk=shared_curve)
+            result = advice.with_words(result)  # the advice in words, in the report's units
             if shared_curve is None and result.curve_risk is not None and result.curve_risk.intensity == "PGA":
                 shared_curve = result.curve_risk
             results.append(with_comparison(result, job.compare_with, out_dir / "summary.csv", say))

@@ -11,6 +11,7 @@ from assess import report
 from assess.assessment.result import AssessmentResult
 from assess.fragility.stripes import fragility_files
 from assess.quantity_text import system_of
+from assess.report import advice
 from assess.report.spreadsheet import summary_workbook, with_us_units
 from assess.report.tables import (  # noqa: F401 (re-exported)
     csv_text, declared_csv_text, neutralise_formulas, restore_text, summary_text,
@@ -28,6 +29,8 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: st
     results of the other levels of the same run, add their sheets to summary.xlsx
     after this level's.
     """
+    result = advice.with_words(result)
+    other_levels = tuple(advice.with_words(other) for other in other_levels)
     files = _tables(result, formats, units, other_levels)
     files.update(report.report_files(result, html="html" in formats, pdf="pdf" in formats))
     return files

@@ -35,6 +35,7 @@ Newnan, Eschenbach & Lavelle, Engineering Economic Analysis (uniform-series pres
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
@@ -59,7 +60,19 @@ HOLDING_ACTIONS = ("anchor", "tether", "restrain", "lock_casters")
 #: Actions that are no action (nothing to buy).
 NO_ACTION = ("none", "anchored", "")
 
-#: Columns this module adds to ``summary.csv`` (docs/outputs.md), in order.
+@dataclass(frozen=True)
+class CostNote:
+    """What an item's cost numbers rest on, or why one is missing, as a kind (``code``): ``no_value``,
+    ``anchored``, ``curve_rates`` (with ``bounds``: "upper bound", "lower bound" where a rate is a bound),
+    ``no_action``, ``unknown_after``, ``no_cost``, ``free``, ``scaled_after``, ``no_curve``; the
+    ``cost_note`` column is their words (:func:`assess.report.advice.cost_note_text`)."""
+
+    code: str
+    bounds: tuple = ()
+
+
+#: Columns this module adds to ``summary.csv`` (docs/outputs.md), in order (``cost_note``: a tuple of
+#: :class:`CostNote`, words in the files).
 COST_COLUMNS = [
     "value", "mitigation_cost", "expected_loss", "expected_loss_after", "loss_avoided_per_cost",
     "expected_annual_loss", "expected_annual_loss_after", "benefit_cost_ratio", "cost_note",
@@ -210,17 +223,17 @@ def item_costs(row, settings: Settings, has_curve: bool) -> dict:
       the expected annual loss scaled by the share the action leaves of the loss at the level (a stated
       approximation); ``benefit_cost_ratio`` (:func:`benefit_cost_ratio`) of the avoided annual loss over
       ``remaining_life_yr`` at ``discount_rate``;
-    * ``cost_note``: what the numbers rest on, or why one is missing.
+    * ``cost_note``: what the numbers rest on, or why one is missing (a tuple of :class:`CostNote`).
     """
     empty = {column: math.nan for column in COST_COLUMNS}
-    empty["cost_note"] = ""
+    empty["cost_note"] = ()
     value = _number(row, "value")
     kind = str(row.get("action_kind") or "")
     if math.isnan(value):
-        return {**empty, "cost_note": "" if kind == "anchored" else "no value given"}
+        return {**empty, "cost_note": () if kind == "anchored" else (CostNote("no_value"),)}
     out = {**empty, "value": value}
     if kind == "anchored":
-        return {**out, "cost_note": "anchored: not analysed, no loss computed"}
+        return {**out, "cost_note": (CostNote("anchored"),)}
     p_now = (_number(row, "p_overturn"), _number(row, "p_beyond_clearance"), _number(row, "p_rocking_harm"))
     out["expected_loss"] = value * expected_loss_ratio(*p_now)
     notes = []
@@ -228,42 +241,38 @@ def item_costs(row, settings: Settings, has_curve: bool) -> dict:
         rate_overturn, bound_o = _annual_rate(row, "overturn")
         rate_beyond, bound_s = _annual_rate(row, "beyond_clearance")
         out["expected_annual_loss"] = value * expected_loss_ratio(rate_overturn, rate_beyond, 0.0)
-        bounds = sorted({b for b in (bound_o, bound_s) if b})
-        notes.append("annual loss from the curve's rates of overturning and sliding past the room"
-                     + (f" ({' and '.join(bounds)} where the stripes give no central rate)" if bounds else "")
-                     + ", without rocking harm")
+        notes.append(CostNote("curve_rates", tuple(sorted({b for b in (bound_o, bound_s) if b}))))
     if kind in NO_ACTION:
         out["expected_loss_after"] = out["expected_loss"]
         out["expected_annual_loss_after"] = out["expected_annual_loss"]
-        return {**out, "cost_note": "; ".join(["no action recommended"] + notes)}
+        return {**out, "cost_note": (CostNote("no_action"), *notes)}
     p_after = after_probabilities(row, settings)
     cost = mitigation_cost_of(row, settings)
     out["mitigation_cost"] = cost
     if p_after is None:
-        return {**out, "cost_note": "; ".join([f"what '{kind}' leaves is not known: no loss after it"] + notes)}
+        return {**out, "cost_note": (CostNote("unknown_after"), *notes)}
     out["expected_loss_after"] = value * expected_loss_ratio(*p_after)
     avoided = out["expected_loss"] - out["expected_loss_after"]
     if math.isnan(cost):
-        notes.insert(0, f"no cost for '{kind}': give mitigation_cost or the setting mitigation_cost_{kind}")
+        notes.insert(0, CostNote("no_cost"))
     elif cost > 0.0:
         out["loss_avoided_per_cost"] = avoided / cost
     else:
-        notes.insert(0, f"'{kind}' costs nothing as given: no ratio")
+        notes.insert(0, CostNote("free"))
     if has_curve:
         eal = out["expected_annual_loss"]
         if kind in HOLDING_ACTIONS:
             out["expected_annual_loss_after"] = 0.0
         elif out["expected_loss"] > 0.0:
             out["expected_annual_loss_after"] = eal * out["expected_loss_after"] / out["expected_loss"]
-            notes.append(f"annual loss after '{kind}' scaled by the share of the level's loss it leaves")
+            notes.append(CostNote("scaled_after"))
         if not math.isnan(out["expected_annual_loss_after"]) and not math.isnan(cost) and cost > 0.0:
             out["benefit_cost_ratio"] = benefit_cost_ratio(eal - out["expected_annual_loss_after"], cost,
                                                            settings.discount_rate,
                                                            settings.remaining_life_yr)
     else:
-        notes.append("no benefit-cost ratio without a hazard curve (--oq-hazard): the level is one earthquake, "
-                     "not how often it happens")
-    return {**out, "cost_note": "; ".join(notes)}
+        notes.append(CostNote("no_curve"))
+    return {**out, "cost_note": tuple(notes)}
 
 
 def cost_table(summary: pd.DataFrame, equipment: pd.DataFrame, settings: Settings, has_curve: bool) -> pd.DataFrame:

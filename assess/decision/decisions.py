@@ -5,29 +5,34 @@ stage :mod:`assess.assessment.demand`): every function here is a pure
 function of an item's governing demand and the settings. The risk rule is
 :func:`assess.decision.risk_classes.classify_risk`, fed by the demand's probabilities
 of each failure mode (``p_overturn``, ``p_beyond_clearance``, ``p_rocking_harm``)
-and the item's consequence: replacing the rule means replacing that module. What the report says about an item is
-built from these fields (:mod:`assess.report.sentences`); the columns are
-those of ``summary.csv`` (docs/outputs.md).
+and the item's consequence: replacing the rule means replacing that module.
+
+The stage gives numbers (SI) and kinds only, one frozen :class:`ItemDecision` per item, and knows nothing of
+the units the report is written in: what the report and the files say about an item (its action, what-if,
+why it is in its class, the anchorage's basis and its forces in kip) is made from it by
+:mod:`assess.report.advice`. The columns are those of ``summary.csv`` (docs/outputs.md).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from types import MappingProxyType
 
 import numpy as np
 import pandas as pd
 
-from assess.anchorage import AnchorageSite, anchorage_site, item_anchorage
+from assess.anchorage import AnchorageSite, ItemAnchorage, anchorage_site, item_anchorage
 from assess.decision import actions
-from assess.decision.actions import suite_share_text  # noqa: F401 (re-exported)
+from assess.decision.actions import ActionDecision, ActionKind
 from assess.decision.flags import Flag
 from assess.decision.risk_classes import (
     ROCKING_HARM_SEVERITY, SLIDING_SEVERITY, Chances, classify_risk, deciding_chance, performance_objective,
-    risk_range, risk_reason, rocking_harm_counts,
+    risk_range, rocking_harm_counts,
 )
 from assess.fragility.friction_range import mu_dependence_sentence
 from assess.fragility.regression import RegressionConstants
+from assess.inventory.settings import Settings
 from assess.mechanics.modes import ROCK, SLIDE_ROCK
-from assess.quantity_text import floor_numbering_of, floor_text, length_text, system_of
+from assess.quantity_text import floor_numbering_of, floor_text
 
 UPLIFT_MODES = (ROCK, SLIDE_ROCK)
 
@@ -37,23 +42,46 @@ def item_consequence(item) -> str:
     return str(getattr(item, "consequence", "") or "ordinary")
 
 
-#: What an anchored item's row says (it is not analysed as freestanding).
-ANCHORED = {"mode": "", "risk": "anchored", "action": "None: anchored (not analysed as freestanding)",
-            "action_kind": "anchored", "flags": (), "risk_reason": "anchored: not analysed as freestanding",
+#: What an anchored item's row holds (it is not analysed as freestanding).
+ANCHORED = {"mode": "", "risk": "anchored", "action_kind": ActionKind.ANCHORED.value, "flags": (),
             "performance_objective": "", "p_overturn_after": np.nan, "p_beyond_clearance_after": np.nan}
+#: The action of an anchored item.
+ANCHORED_ACTION = ActionDecision(ActionKind.ANCHORED, np.nan, np.nan)
+
+
+@dataclass(frozen=True)
+class ItemDecision:
+    """What was decided for one item, in numbers and kinds (SI): the words a reader sees are made from it
+    by :mod:`assess.report.advice`.
+
+    ``risk``: its class (``anchored`` for an anchored item); ``chances``: its chances (None where anchored);
+    ``action``: :class:`~assess.decision.actions.ActionDecision`; ``anchorage``:
+    :class:`~assess.anchorage.ItemAnchorage`; ``demand``: the governing demand the decision read (lengths in
+    cm; empty where anchored).
+    """
+
+    item_id: str
+    risk: str
+    consequence: str
+    chances: Chances | None
+    action: ActionDecision
+    anchorage: ItemAnchorage
+    demand: MappingProxyType = field(default_factory=lambda: MappingProxyType({}))
 
 
 @dataclass
 class Decisions:
-    """The decisions stage's output: per item (``by_item``: id -> the summary's decision columns, in
-    :data:`assess.assessment.result.SUMMARY_COLUMNS`) and the flags of every item, in item order."""
+    """The decisions stage's output: per item (``by_item``: id -> the summary's decision columns that are
+    numbers and kinds, in :data:`assess.assessment.result.SUMMARY_COLUMNS`; ``items``: id ->
+    :class:`ItemDecision`) and the flags of every item, in item order."""
 
     by_item: dict
     flags: list
+    items: dict = field(default_factory=dict)
 
 
 def decide(equipment: pd.DataFrame, governing: dict, uplift: dict, cases: pd.DataFrame, at_mu_ends: pd.DataFrame,
-           constants: RegressionConstants, settings: dict, site: AnchorageSite | None = None,
+           constants: RegressionConstants, settings: Settings, site: AnchorageSite | None = None,
            lowered: dict | None = None) -> Decisions:
     """Every item's decisions from its governing demand (``governing``: id -> its demand row,
     :func:`assess.assessment.demand.item_rows`; ``uplift``: id -> whether it uplifts; ``cases``: the
@@ -65,21 +93,22 @@ def decide(equipment: pd.DataFrame, governing: dict, uplift: dict, cases: pd.Dat
     (:func:`assess.anchorage.anchorage_site`; None: from the settings alone).
     """
     site = site if site is not None else anchorage_site(None, None, settings)
-    by_item, flags = {}, []
+    by_item, flags, items = {}, [], {}
     for item in equipment.itertuples(index=False):
         decided = dict(NO_MU_RANGE)
         if item.anchored:
-            by_item[item.id] = {**ANCHORED, **decided,
-                                **item_anchorage(item, item_consequence(item), ANCHORED["action_kind"], site,
-                                                 system_of(settings))}
+            consequence = item_consequence(item)
+            anchorage = item_anchorage(item, consequence, ANCHORED["action_kind"], site)
+            items[item.id] = ItemDecision(item.id, "anchored", consequence, None, ANCHORED_ACTION, anchorage)
+            by_item[item.id] = {**ANCHORED, **decided, **anchorage.columns()}
             continue
-        row = {"consequence": item_consequence(item), "clearance_cm": item.clearance_m * 100.0,
-               "cg_height_cm": item.cg_height_m * 100.0, **governing[item.id]}
-        found = item_flags(item, cases[cases["id"] == item.id], constants, system_of(settings),
-                           floor_numbering_of(settings))
+        row = {"consequence": item_consequence(item), "clearance_cm": item.clearance_m * actions.CM_PER_M,
+               "cg_height_cm": item.cg_height_m * actions.CM_PER_M, **governing[item.id]}
+        found = item_flags(item, cases[cases["id"] == item.id], constants, floor_numbering_of(settings))
         flags.extend(found)
         decided["flags"] = tuple(flag.code for flag in found)
-        decided.update(decide_item(item, row, uplift[item.id], settings, site, (lowered or {}).get(item.id)))
+        items[item.id] = decide_item(item, row, uplift[item.id], settings, site, (lowered or {}).get(item.id))
+        decided.update(item_columns(items[item.id], settings))
         if item.id in at_mu_ends.index:
             decided.update(mu_range_decision(at_mu_ends.loc[item.id], decided["risk"], row["demand_note"],
                                              row["consequence"], settings))
@@ -88,7 +117,7 @@ def decide(equipment: pd.DataFrame, governing: dict, uplift: dict, cases: pd.Dat
                                                   for column in ("action_kind", "priority_score")}})
     for item_id, rank in zip(table["id"], priorities(table)):
         by_item[item_id]["priority"] = int(rank)
-    return Decisions(by_item, flags)
+    return Decisions(by_item, flags, items)
 
 
 #: The μ-range columns of an item without a range (or anchored).
@@ -96,7 +125,7 @@ NO_MU_RANGE = {"mu_low": np.nan, "mu_high": np.nan, "risk_mu_low": "", "risk_mu_
                "p_beyond_clearance_mu_low": np.nan, "p_beyond_clearance_mu_high": np.nan, "mu_range_note": ""}
 
 
-def mu_range_decision(end: pd.Series, risk: str, demand_note: str, consequence: str, settings: dict) -> dict:
+def mu_range_decision(end: pd.Series, risk: str, demand_note: str, consequence: str, settings: Settings) -> dict:
     """For an item with a range of friction: its risk class with every run at ``mu_low`` and at
     ``mu_high`` (:func:`~assess.decision.risk_classes.classify_risk` of the demand at each end, ``end``: its row of
     :func:`assess.fragility.friction_range.demand_at_ends`), and
@@ -115,35 +144,37 @@ def mu_range_decision(end: pd.Series, risk: str, demand_note: str, consequence: 
             "mu_range_note": sentence, "demand_note": f"{demand_note} {sentence}".strip()}
 
 
-def decide_item(item, row: dict, uplift: bool, settings: dict, site: AnchorageSite | None = None,
-                lowered: dict | None = None) -> dict:
-    """The decisions for one freestanding item from its governing demand ``row`` (a dict holding
-    ``p_beyond_clearance``, ``p_overturn``, ``p_rocking_harm`` and their intervals, ``demand_room_cm``,
-    ``clearance_cm``,
-    ``consequence``, ``theta_max_over_alpha``, ``suite_motions``, ``suite_histories``) and whether it
-    uplifts under any motion (``uplift``).
+def decide_item(item, row: dict, uplift: bool, settings: Settings, site: AnchorageSite | None = None,
+                lowered: actions.LoweredDemand | None = None) -> ItemDecision:
+    """The decision for one freestanding item (:class:`ItemDecision`) from its governing demand ``row`` (a
+    dict holding ``p_beyond_clearance``, ``p_overturn``, ``p_rocking_harm`` and their intervals,
+    ``demand_room_cm``, ``clearance_cm``, ``cg_height_cm``, ``consequence``, ``theta_max_over_alpha``,
+    ``suite_motions``, ``suite_histories``) and whether it uplifts under any motion (``uplift``).
 
-    Returns ``risk`` (:func:`~assess.decision.risk_classes.classify_risk`), ``risk_reason``, ``performance_objective``,
-    ``risk_range`` (the classes at the lower and at the upper ends of every chance's 90 % interval),
-    the action columns (:func:`assess.decision.actions.decide_action`: ``action``, ``action_kind``, ``what_if``,
-    ``p_overturn_after``, ``p_beyond_clearance_after``; ``lowered``: the engine's demand with the heavy contents
-    low, where it was simulated), the anchorage columns (:func:`assess.anchorage.item_anchorage` in ``site``)
-    and ``priority_score``.
+    Its class (:func:`~assess.decision.risk_classes.classify_risk`), its action
+    (:func:`assess.decision.actions.decide_action`; ``lowered``: the engine's demand with the heavy contents
+    low, where it was simulated) and its anchorage (:func:`assess.anchorage.item_anchorage` in ``site``).
     """
     consequence = row["consequence"]
     chances = Chances.of(row)
-    decided = {"risk": classify_risk(chances, consequence, settings),
-               "risk_reason": risk_reason(chances, consequence, settings),
-               "performance_objective": performance_objective(consequence)}
-    bounds = {classify_risk(Chances.of(row, suffix), consequence, settings) for suffix in ("_low", "_high")}
-    decided["risk_range"] = risk_range(decided["risk"], bounds)
-    row = {**row, **decided}
-    decided.update(actions.decide_action(item, row, uplift, lowered, settings))
-    row["action_kind"] = decided["action_kind"]
+    risk = classify_risk(chances, consequence, settings)
+    action = actions.decide_action(item, {**row, "risk": risk}, uplift, lowered, settings)
     site = site if site is not None else anchorage_site(None, None, settings)
-    decided.update(item_anchorage(item, row["consequence"], decided["action_kind"], site, system_of(settings)))
-    decided["priority_score"] = priority_score(consequence, chances)
-    return decided
+    anchorage = item_anchorage(item, consequence, action.kind.value, site)
+    return ItemDecision(str(item.id), risk, consequence, chances, action, anchorage,
+                        MappingProxyType({**row, "risk": risk}))
+
+
+def item_columns(decision: ItemDecision, settings: Settings) -> dict:
+    """The summary's decision columns of one freestanding item that are numbers and kinds: ``risk``,
+    ``performance_objective``, ``risk_range`` (the classes at the lower and at the upper ends of every
+    chance's 90 % interval), the action's (:meth:`~assess.decision.actions.ActionDecision.columns`), the
+    anchorage's in SI (:meth:`~assess.anchorage.ItemAnchorage.columns`) and ``priority_score``."""
+    row, consequence = decision.demand, decision.consequence
+    bounds = {classify_risk(Chances.of(row, suffix), consequence, settings) for suffix in ("_low", "_high")}
+    return {"risk": decision.risk, "performance_objective": performance_objective(consequence),
+            "risk_range": risk_range(decision.risk, bounds), **decision.action.columns(),
+            **decision.anchorage.columns(), "priority_score": priority_score(consequence, decision.chances)}
 
 
 #: Weight of what an item's failure costs (the workbook's ``consequence``), for the order of action.
@@ -186,7 +217,7 @@ def ims_range(ims) -> str:
     return low if low == high else f"{low}–{high}"
 
 
-def item_flags(item, item_cases: pd.DataFrame, constants: RegressionConstants, system: str = "si",
+def item_flags(item, item_cases: pd.DataFrame, constants: RegressionConstants,
                numbering: str = "ground_0") -> list[Flag]:
     """The caveats of one freestanding item's result, from its cases (every motion and direction)."""
     flags = []
@@ -216,8 +247,8 @@ def item_flags(item, item_cases: pd.DataFrame, constants: RegressionConstants, s
             f"response analysis.")))
     if not np.isclose(item.cg_height_m, item.height_m / 2.0):
         flags.append(Flag(item.id, "cg_not_mid_height", (
-            f"centre of mass at {length_text(item.cg_height_m * 100, system)}, not mid-height: alpha and b/h use it; "
-            "p assumes the mass spread over the whole box."), length_text(item.cg_height_m * 100, system)))
+            "centre of mass at {length}, not mid-height: alpha and b/h use it; "
+            "p assumes the mass spread over the whole box."), "{length}", item.cg_height_m * actions.CM_PER_M))
     return flags
 
 
@@ -236,4 +267,4 @@ def with_input_warnings(decided: Decisions, warnings) -> Decisions:
             by_item[warning.item_id]["flags"] = codes + ("implausible_input",)
     order = {item_id: k for k, item_id in enumerate(by_item)}
     flags = sorted(list(decided.flags) + added, key=lambda flag: order.get(flag.item_id, len(order)))
-    return Decisions(by_item, flags)
+    return Decisions(by_item, flags, decided.items)

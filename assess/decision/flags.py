@@ -15,3 +15,6 @@ class Flag:
     #: What is this item's own in a few words ("46 in", "IM 0.06–0.16"), shown beside its id where the report
     #: gathers the flags of one cause into one (:func:`assess.report.sentences.flag_groups`); "" for none.
     detail: str = ""
+    #: A length of the item's own [cm] that ``message`` and ``detail`` name as ``{length}``, written in the
+    #: report's units by the report (:func:`assess.report.sentences.flag_text`); None for none.
+    length_cm: float | None = None

@@ -128,40 +128,6 @@ def classify_risk(chances: Chances, consequence: str, settings: Settings) -> str
     return max(mode_classes(chances, consequence, settings).values(), key=CLASS_ORDER.index)
 
 
-def _threshold_text(mode: str, risk: str, settings: Settings) -> str:
-    key = {"overturn": "risk_overturn", "beyond_clearance": "risk_pf", "rocking_harm": "risk_rocking"}[mode]
-    return f"{100.0 * getattr(settings, f'{key}_{risk}'):g}%"  # a threshold as given: 2.5%, not rounded
-
-
-def risk_reason(chances: Chances, consequence: str, settings: Settings) -> str:
-    """Why the item is in its class, in one sentence from its chances and the thresholds.
-
-    >>> s = Settings(risk_overturn_high=0.1, risk_overturn_moderate=0.025, risk_pf_high=0.5,
-    ...              risk_pf_moderate=0.1, risk_rocking_moderate=0.1)
-    >>> risk_reason(Chances(0.39, 0.0, 0.2), "hazardous", s)
-    'high: 39% chance of overturning (high from 10%)'
-    >>> risk_reason(Chances(0.0, 0.03, 0.6), "ordinary", s)
-    'low: 0% chance of overturning, 3% of sliding past its room, each below its threshold (moderate from 2.5% and 10%); rocking that harms it (60%) does not count for an ordinary item'
-    """
-    classes = mode_classes(chances, consequence, settings)
-    risk = max(classes.values(), key=CLASS_ORDER.index)
-    values = {"overturn": chances.overturn, "beyond_clearance": chances.beyond_clearance,
-              "rocking_harm": chances.rocking_harm}
-    if risk != "low":
-        parts = [f"{percent_text(values[mode])} chance of {MODE_WORDS[mode]} ({risk} from "
-                 f"{_threshold_text(mode, risk, settings)})" for mode in MODE_WORDS if classes[mode] == risk]
-        return f"{risk}: " + "; ".join(parts)
-    counted = [mode for mode in MODE_WORDS if mode != "rocking_harm" or rocking_harm_counts(consequence)]
-    listed = ", ".join(f"{percent_text(values[mode])}{' chance' if k == 0 else ''} of {MODE_WORDS[mode]}"
-                       for k, mode in enumerate(counted))
-    thresholds = " and ".join(_threshold_text(mode, "moderate", settings) for mode in counted)
-    text = f"low: {listed}, each below its threshold (moderate from {thresholds})"
-    if not rocking_harm_counts(consequence):
-        text += (f"; rocking that harms it ({percent_text(chances.rocking_harm)}) does not count for an "
-                 "ordinary item")
-    return text
-
-
 def deciding_chance(chances: Chances, consequence: str, settings: Settings) -> str:
     """The one chance that decides the class, in a few words: the largest of those at the item's class
     (for a low item, the largest chance that counts for it).

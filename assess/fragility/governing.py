@@ -37,6 +37,7 @@ import pandas as pd
 from scipy import stats
 
 from assess.fragility.planar import planar_note
+from assess.inventory.units import CM_PER_M
 from assess.mechanics.gateway import pure_sliding_proved
 from assess.mechanics.modes import MODE_SEVERITY
 from assess.fragility.regression import RegressionConstants, probability_of_exceedance, capacity_edp, sliding_quantile
@@ -171,7 +172,7 @@ def _regression_by_motion(cases: pd.DataFrame, constants: RegressionConstants) -
     """Per item and motion: the regression's median sliding [cm] (larger of the directions that slide) and P(> clearance)."""
     slides = cases["mode"].isin(("slide", "slide-rock"))
     im = np.where(slides, cases["im"], 0.0)
-    median_cm = np.asarray(sliding_quantile(im, cases["pta_g"], cases["tp_s"], constants, 0.5)) * 100.0
+    median_cm = np.asarray(sliding_quantile(im, cases["pta_g"], cases["tp_s"], constants, 0.5)) * CM_PER_M
     pf = np.asarray(probability_of_exceedance(im, capacity_edp(cases["clearance_m"], cases["pta_g"], cases["tp_s"]),
                                               constants.zeta, constants.eta, constants.sigma))
     table = pd.DataFrame({"id": cases["id"], "motion_key": cases["motion_key"], "mu_node": cases["mu_node"],
@@ -216,7 +217,7 @@ def suite_mode(severities) -> str:
 def _item_demand(item_cases: pd.DataFrame, histories: pd.DataFrame | None, regression: pd.DataFrame | None,
                  constants: RegressionConstants, room_quantile: float,
                  harm_theta_over_alpha: float = ROCKING_HARM_THETA_OVER_ALPHA) -> dict:
-    clearance_cm = float(item_cases["clearance_m"].iloc[0]) * 100.0
+    clearance_cm = float(item_cases["clearance_m"].iloc[0]) * CM_PER_M
     units = item_cases.drop_duplicates(["motion_key", "mu_node"]).set_index(["motion_key", "mu_node"])
     source_of = item_cases.sort_values("mu_weight", ascending=False, kind="stable") \
         .drop_duplicates("motion_key").set_index("motion_key")["demand_source"].reindex(

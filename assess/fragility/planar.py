@@ -24,6 +24,7 @@ import numpy as np
 import pandas as pd
 
 from assess.hazard.records import Record
+from assess.inventory.units import CM_PER_M
 from assess.mechanics.gateway import Cases, pure_sliding_proved
 
 #: Columns of :func:`planar_runs`.
@@ -66,8 +67,8 @@ def planar_runs(cases: pd.DataFrame, pairs: dict[int, tuple[Record, Record]], ru
     peaks = runner.run(Cases.planar(chosen["block"].tolist(), [r.accel_g for r in records],
                                     [r.dt_s for r in records], first, first + 1))
     return chosen[["id", "motion_key", "mu_node"]].assign(
-        realization=0, sliding_cm=peaks.sliding_max_m * 100.0,
-        residual_cm=peaks.sliding_residual_m * 100.0)[PLANAR_COLUMNS]
+        realization=0, sliding_cm=peaks.sliding_max_m * CM_PER_M,
+        residual_cm=peaks.sliding_residual_m * CM_PER_M)[PLANAR_COLUMNS]
 
 
 def planar_note(motions: int, total: int) -> str:

@@ -67,6 +67,7 @@ from assess.fragility.agreement import AT_LEVEL_COLUMNS, level_comparison_senten
 from assess.fragility.msa import FITTED, FragilityFit, fit_lognormal_fragilities
 from assess.hazard.openquake import OpenQuakeHazard
 from assess.inventory.settings import Settings
+from assess.inventory.units import CM_PER_M
 from assess.quantity_text import floor_numbering_of, floor_text
 from assess.hazard.risk_integral import curve_annual_rates, openquake_failure_rate, probability_in_years
 from assess.mechanics.gateway import Cases
@@ -261,7 +262,7 @@ class StripeBatch:
         peaks = runner.run(Cases.peaks(self.blocks, self.records, self.dts, np.asarray(self.index)),
                            progress=progress)
         runs = pd.DataFrame(self.rows, columns=["id", "direction", "pfa_g", "history"])
-        runs["sliding_max_cm"] = peaks.sliding_max_m * 100.0
+        runs["sliding_max_cm"] = peaks.sliding_max_m * CM_PER_M
         runs["overturned"] = peaks.overturned
         return runs
 
@@ -547,7 +548,7 @@ def fit_and_integrate(cases: pd.DataFrame, hazard: OpenQuakeHazard, levels_g, ra
 
     plan = [(floor, float(x), None) for floor, levels in stripes_by_floor.items() for x in levels]
     runs = run_plan(plan, report)
-    clearance_cm = cases.drop_duplicates("id").set_index("id")["clearance_m"] * 100.0
+    clearance_cm = cases.drop_duplicates("id").set_index("id")["clearance_m"] * CM_PER_M
     floor_of = cases.drop_duplicates("id").set_index("id")["floor"]
     fits, stripes = fit_items(stripe_outcomes(runs, clearance_cm))
     # floor acceleration [g] below which the item stays at rest: it slides from μ_s g, uplifts from g b/h

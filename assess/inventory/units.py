@@ -15,6 +15,14 @@ from dataclasses import dataclass
 
 from assess.units import conversion_factor
 
+#: Centimetres per metre and per inch, from pint (exact: 100 and 2.54); the summary's lengths are in cm.
+CM_PER_M = conversion_factor("meter", "centimeter")
+CM_PER_IN = conversion_factor("inch", "centimeter")
+#: Newtons per pound-force and kilograms per pound, as defined (1 lb = 0.45359237 kg, 1 lbf = 1 lb x g):
+#: pint's factors to the last bit but one (tests/inventory/test_unit_constants.py).
+N_PER_LBF = 4.4482216152605
+KG_PER_LB = 0.45359237
+
 
 @dataclass(frozen=True)
 class Dimension:

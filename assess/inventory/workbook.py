@@ -123,11 +123,11 @@ def read_workbook(path: str | Path) -> Inventory:
         equipment = _check_equipment(tables["equipment"], reports["equipment"])
     if "hazard" in tables:
         hazard = _check_hazard(tables["hazard"], path.parent, reports["hazard"])
-    settings = default_settings()
+    values = default_settings()  # the settings' values, checked at their cells, then typed (Settings)
     if "settings" in tables:
-        settings = _read_settings(tables["settings"], settings, reports["settings"])
-    if not str(settings.get("units", "")).strip() and "equipment" in tables:
-        settings["units"] = units.unit_system_of_suffixes(
+        values = _read_settings(tables["settings"], values, reports["settings"])
+    if not str(values.get("units", "")).strip() and "equipment" in tables:
+        values["units"] = units.unit_system_of_suffixes(
             header.suffix for header in tables["equipment"].headers.values() if header.column.dimension is units.LENGTH)
     site = read_site(tables["site"], path.parent, reports["site"]) if "site" in tables else None
     building = read_building(tables["building"], reports["building"]) if "building" in tables else None
@@ -142,7 +142,7 @@ def read_workbook(path: str | Path) -> Inventory:
         warnings = tuple(plausibility.equipment_warnings(tables["equipment"].rows, tables["equipment"].headers,
                                                          given, sheets["equipment"]))
     return Inventory(path=path, equipment=_frame(equipment, _EQUIPMENT_TYPES),
-                     hazard=_frame(hazard, _HAZARD_TYPES), settings=Settings.from_mapping(settings), site=site,
+                     hazard=_frame(hazard, _HAZARD_TYPES), settings=Settings.from_mapping(values), site=site,
                      building=building, warnings=warnings)
 
 

@@ -51,6 +51,7 @@ from assess.assessment.inputs import check_inputs
 from assess.assessment.motions import check_level
 from assess.command import output
 from assess.command.cache import CachingRunner
+from assess.report import advice
 from assess.command.folders import (OUTPUT_NAMES, existing_folder, folder_mode, machine_refusal, refuse_foreign_files,
                                     refuse_open_office_files, swap_folder, write_files)
 from assess.command.job import JOB_FORMATS, Say, open_runner, set_threads
@@ -515,6 +516,7 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
                 result = pipeline.run_assessment(item.inventory, item.level, seed=seed, runner=runner,
                                         hazard_curve=item.curve, allow_records_outside=item.allow_records_outside,
                                         progress=lambda message, tag=tag: say(f"{tag}: {message}"))
+                result = advice.with_words(result)  # the advice in words, in the report's units
                 files = output.render_outputs(result, formats, units=units)
                 write_files(staging / building.name, files)
                 simulated, reused = runner.cases_simulated - before[0], runner.cases_reused - before[1]

@@ -23,9 +23,8 @@ import pandas as pd
 from markupsafe import Markup
 
 import assess
-from assess.anchorage.item import anchorage_sentence
 from assess.anchorage.method import anchorage_method
-from assess.decision.actions import work_order_sentences
+from assess.report.advice import anchorage_sentence, with_words, work_order_sentences
 from assess.decision.risk_classes import rule_text
 from assess.quantity_text import floor_numbering_of, length_unit, length_value, system_of
 from assess.report import figures
@@ -450,6 +449,7 @@ def _data_uri(svg: str) -> str:
 def report_context(result, with_figures: bool = True) -> dict:
     """Everything the template shows, formatted (pure: no clock, no I/O); its ``figures``
     (:func:`report_figures`, the slow part) None where ``with_figures`` is false."""
+    result = with_words(result)
     summary = _sorted_summary(result.summary)
     settings = result.settings
     system = system_of(settings)
@@ -480,7 +480,7 @@ def report_context(result, with_figures: bool = True) -> dict:
         "high": [r for r in rows if r["risk"] == "high"],
         "moderate": [r for r in rows if r["risk"] == "moderate"],
         "rows": rows,
-        "flag_groups": flag_groups(result.flags, (im_min, im_max)),
+        "flag_groups": flag_groups(result.flags, (im_min, im_max), system),
         "flag_count": len(result.flags),
         "flag_items": len({flag.item_id for flag in result.flags}),
         "regression": {"zeta": zeta, "eta": eta, "sigma": sigma, "im_min": im_min,
@@ -559,7 +559,9 @@ def _with_summary(result, summary: pd.DataFrame):
 
 
 def render_html(result) -> str:
-    """The risk report of ``result`` as one self-contained HTML document."""
+    """The risk report of ``result`` as one self-contained HTML document (its advice in words,
+    :func:`assess.report.advice.with_words`)."""
+    result = with_words(result)
     return report_template().render(report_context(result, with_figures=False), figures=report_figures(result),
                                     appendix_only=False)
 

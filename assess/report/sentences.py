@@ -15,7 +15,9 @@ import pandas as pd
 from assess.assessment.result import RISK_CLASSES, AssessmentResult
 from assess.fragility import friction_range, planar
 from assess.inventory.settings import Settings
-from assess.quantity_text import floor_text, floors_text, percent_text, rounded_length, significant_text  # noqa: F401 (floor labels)
+from assess.quantity_text import (  # noqa: F401 (floor labels)
+    floor_text, floors_text, length_text, percent_text, rounded_length, significant_text,
+)
 
 DASH = "–"
 
@@ -214,7 +216,20 @@ FLAG_ORDER = ("implausible_input", "calibrated", "uplift", "derived_floor_motion
               "im_outside_fit")
 
 
-def flag_groups(flags, im_range: tuple[float, float] = (1.71, 6.40)) -> list[dict]:
+def flag_text(text: str, flag, system: str = "si") -> str:
+    """A flag's ``message`` or ``detail`` (``text``) with its length (:attr:`~assess.decision.flags.Flag.length_cm`)
+    in the report's units.
+
+    >>> from assess.decision.flags import Flag
+    >>> flag_text("{length}", Flag("A", "cg_not_mid_height", "", "{length}", 116.84), "us")
+    '46 in'
+    """
+    if flag.length_cm is None:
+        return text
+    return text.replace("{length}", length_text(flag.length_cm, system))
+
+
+def flag_groups(flags, im_range: tuple[float, float] = (1.71, 6.40), system: str = "si") -> list[dict]:
     """The result's flags, one group per cause (code), each titled (:data:`FLAG_TITLES`) and in the order of
     :data:`FLAG_ORDER`. A cause of :data:`FLAG_CAUSES` is said once (``cause``), with its items and what is
     each one's own (``items``: ``id`` and ``detail``); any other (a cell to check, a calibration's change)
@@ -234,14 +249,16 @@ def flag_groups(flags, im_range: tuple[float, float] = (1.71, 6.40)) -> list[dic
     groups = []
     for code in codes:
         members = by_code[code]
-        items = list({flag.item_id: {"id": flag.item_id, "detail": flag.detail} for flag in members}.values())
+        items = list({flag.item_id: {"id": flag.item_id, "detail": flag_text(flag.detail, flag, system)}
+                      for flag in members}.values())
         cause = FLAG_CAUSES.get(code)
         groups.append({
             "code": code,
             "title": FLAG_TITLES.get(code, code.replace("_", " ").capitalize()),
             "cause": cause.format(im_min=f"{im_range[0]:g}", im_max=f"{im_range[1]:g}") if cause else "",
             "items": items,
-            "entries": [] if cause else [{"item_id": flag.item_id, "message": flag.message} for flag in members],
+            "entries": [] if cause else [{"item_id": flag.item_id, "message": flag_text(flag.message, flag, system)}
+                                         for flag in members],
         })
     return groups
 

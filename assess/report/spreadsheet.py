@@ -19,14 +19,12 @@ import zipfile
 import numpy as np
 import pandas as pd
 
-from assess.quantity_text import N_PER_LBF
+from assess.inventory.units import CM_PER_IN, N_PER_LBF
 from assess.report.tables import neutralise_formulas
 
 #: The date written into a workbook's document properties and zip entries: no time of day goes into a file,
 #: so the same inputs give the same bytes.
 FIXED_DATE = datetime.datetime(2024, 1, 1, 0, 0, 0)
-#: Centimetres per inch (exact).
-CM_PER_IN = 2.54
 _FORBIDDEN_IN_SHEET_NAMES = re.compile(r"[\[\]:*?/\\]")
 
 

@@ -115,3 +115,15 @@ def test_the_columns_table_ships_with_the_package():
     assert set(table["dtype"]) == {"str", "float64", "int64", "bool"}
     assert not table.duplicated(["file", "column"]).any()
     assert (table["meaning"].str.len() > 0).all() and (table["stage"].str.len() > 0).all()
+
+
+def test_the_columns_the_report_makes_are_declared_as_the_report_s():
+    """The summary's words and kips are made by the report from the decisions (``WORD_COLUMNS``): the table
+    declares exactly those as the ``report`` stage's, each a column of ``summary.csv``."""
+    from assess.assessment.result import SUMMARY_COLUMNS, WORD_COLUMNS
+    from assess.data import output_columns
+    table = output_columns()
+    report = table[(table["file"] == "summary.csv") & (table["stage"] == "report")]["column"]
+    assert sorted(report) == sorted(WORD_COLUMNS) and len(report) == len(WORD_COLUMNS)
+    assert set(WORD_COLUMNS) <= set(SUMMARY_COLUMNS)
+    assert set(table.loc[table["file"] != "summary.csv", "stage"]).isdisjoint({"report"})

@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from assess.assessment.pipeline import run_assessment
+from assessed import run_assessment
 from assess.building import building_modes
 from assess.building.response import floor_records
 from assess.errors import InputError

@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from assess.assessment.pipeline import run_assessment
+from assessed import run_assessment
 from assess.hazard.openquake import read_openquake_hazard
 from assess.hazard.pulses import pulse_acceleration
 from assess.mechanics.block import Block

@@ -5,7 +5,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from assess.assessment.pipeline import run_assessment
+from assessed import run_assessment
 from assess.assessment.result import MOTION_COLUMNS, SUMMARY_COLUMNS
 from assess.command.output import csv_text
 from assess.data import km2010_table3

@@ -12,10 +12,11 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from assess.assessment.pipeline import run_assessment
+from assessed import run_assessment
 from assess.inventory.settings import Settings
 from assess.decision import decisions
 from assess.errors import InputError
+from assess.report.advice import item_words
 from assess.fragility.friction_range import mu_dependence_sentence
 from assess.fragility.regression import RegressionConstants
 from assess.inventory import Inventory
@@ -70,7 +71,7 @@ def test_decisions_follow_the_thresholds_and_rank_the_items():
     settings = Settings(risk_pf_high=0.5, risk_pf_moderate=0.1)
     constants = RegressionConstants.from_settings(settings)
     decided = decisions.decide(equipment, governing, uplift, cases, pd.DataFrame(), constants, settings)
-    by_item = decided.by_item
+    by_item = {i: {**row, **item_words(decided.items[i], settings)} for i, row in decided.by_item.items()}
     assert [by_item[i]["risk"] for i in ("LOW", "MID", "HIGH", "TIPS", "FIXED")] == [
         "low", "moderate", "high", "high", "anchored"]
     # each has 30 cm: the 12 cm more it needs is within room_max_cm (30 cm): room for both
@@ -78,8 +79,9 @@ def test_decisions_follow_the_thresholds_and_rank_the_items():
     assert by_item["MID"]["action"].startswith("Give it room: it needs 42 cm to be low risk and has 30 cm")
     # with no room to spare: restrain
     assert by_item["TIPS"]["action"] == "Anchor it to the floor or wall: it overturns under 1 of its 3 motions"
-    tight = decisions.decide(equipment, governing, uplift, cases, pd.DataFrame(), constants,
-                             dataclasses.replace(settings, room_max_cm=11.0)).by_item
+    tight_settings = dataclasses.replace(settings, room_max_cm=11.0)
+    tight = decisions.decide(equipment, governing, uplift, cases, pd.DataFrame(), constants, tight_settings)
+    tight = {i: {**row, **item_words(tight.items[i], tight_settings)} for i, row in tight.by_item.items()}
     assert [tight[i]["action_kind"] for i in ("MID", "HIGH")] == ["restrain", "restrain"]
     assert tight["MID"]["action"].startswith(
         "Restrain it (edge stops, bumpers or straps): it needs 42 cm to be low risk and has 30 cm (20% chance of "

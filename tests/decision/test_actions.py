@@ -8,17 +8,19 @@ above a base of half-width b does not uplift while the floor's acceleration stay
 1963, eq. 2; Makris & Roussos 2000), nor slide while it stays below μ g; the block as loaded is checked
 to overturn by the independent Housner ODE of tests/rocking_reference.py.
 """
+import dataclasses
 from pathlib import Path
 
-import dataclasses
 import numpy as np
 import pandas as pd
 import pytest
 
-from assess.assessment.pipeline import run_assessment
+from assessed import run_assessment
 from assess.inventory.settings import Settings
 from assess.decision import actions
+from assess.decision.actions import LoweredDemand
 from assess.inventory import Inventory, read_workbook
+from assess.report import advice
 from rocking_reference import reference_rocking
 
 SETTINGS = Settings(risk_pf_high=0.5, risk_pf_moderate=0.1, room_max_cm=30.0)
@@ -36,18 +38,26 @@ def _row(p_beyond=0.0, p_overturn=0.0, room_cm=20.0, risk="high", motions=3, his
             "suite_histories": histories}
 
 
+def _decided(item, row, uplift, lowered, settings):
+    """The action's columns (numbers and kinds, the decision stage's) and its words (the report's)."""
+    action = actions.decide_action(item, row, uplift, lowered, settings)
+    assert isinstance(action.kind, actions.ActionKind)
+    return {**action.columns(), "action": advice.action_sentence(action.kind, row, uplift, lowered, settings),
+            "what_if": advice.what_if_sentence(action.kind, row, lowered, settings)}
+
+
 def test_an_item_on_casters_is_tethered_or_its_casters_locked_never_bolted_down():
     overturns = _row(p_overturn=0.4)
-    assert actions.decide_action(Item(casters=True), overturns, True, None, SETTINGS)["action_kind"] == "tether"
-    assert actions.decide_action(Item(casters=False), overturns, True, None, SETTINGS)["action_kind"] == "anchor"
+    assert _decided(Item(casters=True), overturns, True, None, SETTINGS)["action_kind"] == "tether"
+    assert _decided(Item(casters=False), overturns, True, None, SETTINGS)["action_kind"] == "anchor"
     rocks = _row(p_overturn=0.0)
-    assert actions.decide_action(Item(casters=True), rocks, True, None, SETTINGS)["action_kind"] == "tether"
+    assert _decided(Item(casters=True), rocks, True, None, SETTINGS)["action_kind"] == "tether"
     # it slides farther than a room can spare: tethered; within what a room can spare: casters locked, room kept
     slides = _row(p_beyond=0.6, room_cm=191.0)
-    decided = actions.decide_action(Item(casters=True), slides, False, None, SETTINGS)
+    decided = _decided(Item(casters=True), slides, False, None, SETTINGS)
     assert decided["action_kind"] == "tether" and "181 cm more, beyond the 30 cm a room can spare" in decided["action"]
     assert (decided["p_overturn_after"], decided["p_beyond_clearance_after"]) == (0.0, 0.0)
-    rolls = actions.decide_action(Item(casters=True), _row(p_beyond=0.6, room_cm=39.1), False, None, SETTINGS)
+    rolls = _decided(Item(casters=True), _row(p_beyond=0.6, room_cm=39.1), False, None, SETTINGS)
     assert rolls["action_kind"] == "lock_casters"
     assert rolls["action"].startswith("Lock or chock its casters and keep 40 cm clear around it")
     assert rolls["p_beyond_clearance_after"] == SETTINGS.risk_pf_moderate and "tether it" in rolls["what_if"]
@@ -56,53 +66,53 @@ def test_an_item_on_casters_is_tethered_or_its_casters_locked_never_bolted_down(
 
 def test_room_is_asked_only_where_a_room_can_spare_it():
     """It has 10 cm: 191 cm means gaining 181 cm, far beyond the 30 cm a room can spare; 40 cm means 30 more."""
-    far = actions.decide_action(Item(), _row(p_beyond=0.6, room_cm=190.3), False, None, SETTINGS)
+    far = _decided(Item(), _row(p_beyond=0.6, room_cm=190.3), False, None, SETTINGS)
     assert far["action_kind"] == "restrain"
     assert not far["action"].startswith("Give it room") and "181 cm more, beyond the 30 cm a room can spare" in \
         far["action"]
     assert "it needs 191 cm to be low risk and has 10 cm" in far["action"]  # the need is still said, rounded up
-    near = actions.decide_action(Item(), _row(p_beyond=0.3, room_cm=39.2, risk="moderate"), False, None, SETTINGS)
+    near = _decided(Item(), _row(p_beyond=0.3, room_cm=39.2, risk="moderate"), False, None, SETTINGS)
     assert near["action_kind"] == "room" and near["action"].startswith("Give it room: it needs 40 cm")
-    assert actions.decide_action(Item(), _row(p_beyond=0.3, room_cm=40.2, risk="moderate"), False, None,
+    assert _decided(Item(), _row(p_beyond=0.3, room_cm=40.2, risk="moderate"), False, None,
                                  SETTINGS)["action_kind"] == "restrain"
     # the setting moves the line: with 200 cm to spare the far item gets room
-    assert actions.decide_action(Item(), _row(p_beyond=0.6, room_cm=190.3), False, None,
+    assert _decided(Item(), _row(p_beyond=0.6, room_cm=190.3), False, None,
                                  dataclasses.replace(SETTINGS, room_max_cm=200.0))["action_kind"] == "room"
     # in US units the room is in inches (191 cm = 75.2 in, rounded up)
-    us = actions.decide_action(Item(), _row(p_beyond=0.6, room_cm=190.3), False, None, dataclasses.replace(SETTINGS, units="us"))
+    us = _decided(Item(), _row(p_beyond=0.6, room_cm=190.3), False, None, dataclasses.replace(SETTINGS, units="us"))
     assert "it needs 75 in" in us["action"] and "12 in a room can spare" in us["action"]
     assert "has 3 in" in us["action"]  # 10 cm = 3.9 in, rounded down
 
 
 @pytest.mark.parametrize("p_overturn", [0.001, 0.004, 1 / 300])
 def test_a_chance_of_overturning_above_0_never_reads_0_percent(p_overturn):
-    decided = actions.decide_action(Item(), _row(p_overturn=p_overturn), True, None, SETTINGS)
+    decided = _decided(Item(), _row(p_overturn=p_overturn), True, None, SETTINGS)
     assert decided["action_kind"] == "anchor"
     assert "0%" not in decided["action"].replace("<1%", "") and "under <1% of its 30 simulated histories" in \
         decided["action"]
 
 
 def test_the_residual_chances_follow_the_action():
-    anchored = actions.decide_action(Item(), _row(p_beyond=0.7, p_overturn=0.9), True, None, SETTINGS)
+    anchored = _decided(Item(), _row(p_beyond=0.7, p_overturn=0.9), True, None, SETTINGS)
     assert (anchored["p_overturn_after"], anchored["p_beyond_clearance_after"]) == (0.0, 0.0)
     assert "assumed to hold" in anchored["what_if"]
-    room = actions.decide_action(Item(), _row(p_beyond=0.3, room_cm=35.0, risk="moderate"), False, None, SETTINGS)
+    room = _decided(Item(), _row(p_beyond=0.3, room_cm=35.0, risk="moderate"), False, None, SETTINGS)
     assert (room["p_overturn_after"], room["p_beyond_clearance_after"]) == (0.0, 0.1)
-    none = actions.decide_action(Item(), _row(p_beyond=0.02, risk="low"), False, None, SETTINGS)
+    none = _decided(Item(), _row(p_beyond=0.02, risk="low"), False, None, SETTINGS)
     assert none["action_kind"] == "none" and none["p_beyond_clearance_after"] == 0.02
 
 
 def test_lowering_the_contents_is_the_action_only_where_the_engine_finds_the_item_still():
     row = _row(p_overturn=0.4)
-    still = {"p_overturn": 0.0, "p_beyond_clearance": 0.0, "uplift": False, "theta_max_over_alpha": 0.0,
-             "cg_fraction": 0.4, "cg_height_cm": 80.0}
-    decided = actions.decide_action(Item(), row, True, still, SETTINGS)
+    still = LoweredDemand(p_overturn=0.0, p_beyond_clearance=0.0, uplift=False, theta_max_over_alpha=0.0,
+                          cg_fraction=0.4, cg_height_cm=80.0)
+    decided = _decided(Item(), row, True, still, SETTINGS)
     assert decided["action_kind"] == "lower_contents"
     assert (decided["p_overturn_after"], decided["p_beyond_clearance_after"]) == (0.0, 0.0)
     assert decided["action"].startswith("Move its heavy contents to the lowest shelves: as loaded it overturns under 40% of its 30")
     assert "centre of mass at 40% of its height, 80 cm instead of 100 cm" in decided["what_if"]
-    rocking = {**still, "p_overturn": 0.1, "uplift": True}
-    decided = actions.decide_action(Item(), row, True, rocking, SETTINGS)
+    rocking = dataclasses.replace(still, p_overturn=0.1, uplift=True)
+    decided = _decided(Item(), row, True, rocking, SETTINGS)
     assert decided["action_kind"] == "anchor" and "Lowering its contents alone is not enough" in decided["what_if"]
     assert "overturning 10% (as loaded 40%)" in decided["what_if"]
 
@@ -122,7 +132,7 @@ def test_work_orders_group_the_actions_by_floor_and_room():
     # every unit that needs an action is in exactly one order
     needs = summary[~summary["action_kind"].isin(["none", "anchored"])]
     assert orders["count"].sum() == needs["quantity"].sum()
-    floors = actions.work_order_sentences(orders)
+    floors = advice.work_order_sentences(orders)
     assert [f["floor"] for f in floors] == [0, 1] and floors[1]["units"] == 3 + 1 + 1
     assert floors[1]["rooms"][0]["orders"] == ["anchor to the floor or wall: A, B (3 units)",
                                                "give room (each item's in its details): D (1 unit)"]

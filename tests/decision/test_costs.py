@@ -13,7 +13,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from assess.assessment.pipeline import run_assessment
+from assessed import run_assessment
 from assess.inventory.settings import Settings
 from assess.decision import costs
 from assess.decision.costs import (
@@ -21,6 +21,7 @@ from assess.decision.costs import (
     present_value_factor,
 )
 from assess.report import render_html
+from assess.report.advice import cost_note_text
 from assess.report.costs import costs_context, ranked
 from assess.report.render import make_environment, report_context, template_text
 
@@ -90,7 +91,7 @@ def test_room_leaves_the_moderate_threshold_and_unknown_actions_leave_no_ratio()
     assert out["loss_avoided_per_cost"] == pytest.approx(2.5)
     relocate = item_costs({**row, "action_kind": "relocate"}, settings, False)
     assert math.isnan(relocate["expected_loss_after"]) and math.isnan(relocate["loss_avoided_per_cost"])
-    assert "not known" in relocate["cost_note"]
+    assert "not known" in cost_note_text(relocate["cost_note"], "relocate")
 
 
 def test_the_actions_own_probabilities_after_are_used_where_the_summary_has_them():
@@ -107,7 +108,7 @@ def test_the_mitigation_cost_comes_from_the_item_else_the_setting_else_none():
     assert item_costs(row, with_setting, False)["mitigation_cost"] == 400.0
     assert item_costs({**row, "mitigation_cost": 250.0}, with_setting, False)["mitigation_cost"] == 250.0
     none = item_costs(row, SETTINGS, False)
-    assert math.isnan(none["mitigation_cost"]) and "mitigation_cost_anchor" in none["cost_note"]
+    assert math.isnan(none["mitigation_cost"]) and "mitigation_cost_anchor" in cost_note_text(none["cost_note"], "anchor")
 
 
 # ----------------------------------------------------------------- annual loss and BCR over a curve
@@ -130,7 +131,7 @@ def test_a_rate_given_only_as_a_bound_is_used_and_said():
     out = item_costs(row, SETTINGS, has_curve=True)
     # 100,000 x (1e-5 + 0.5 x (2e-3 - 1e-5))
     assert out["expected_annual_loss"] == pytest.approx(100_000 * (1e-5 + 0.5 * (2e-3 - 1e-5)))
-    assert "upper bound" in out["cost_note"]
+    assert "upper bound" in cost_note_text(out["cost_note"])
 
 
 def test_without_a_curve_there_is_no_benefit_cost_ratio_and_the_note_says_why():
@@ -138,7 +139,7 @@ def test_without_a_curve_there_is_no_benefit_cost_ratio_and_the_note_says_why():
            "mitigation_cost": 100.0}
     out = item_costs(row, SETTINGS, has_curve=False)
     assert math.isnan(out["benefit_cost_ratio"]) and math.isnan(out["expected_annual_loss"])
-    assert "no benefit-cost ratio without a hazard curve" in out["cost_note"]
+    assert "no benefit-cost ratio without a hazard curve" in cost_note_text(out["cost_note"])
 
 
 # ----------------------------------------------------------------- absent costs: nothing changes

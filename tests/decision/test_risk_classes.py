@@ -10,14 +10,15 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from assess.assessment.pipeline import run_assessment
+from assessed import run_assessment
 from assess.inventory.settings import Settings
 from assess.decision import decisions
-from assess.decision.risk_classes import CLASS_ORDER, Chances, classify_risk, risk_reason
+from assess.decision.risk_classes import CLASS_ORDER, Chances, classify_risk
 from assess.fragility.governing import governing_demand, rocking_harm
 from assess.fragility.regression import RegressionConstants
 from assess.inventory import Inventory
 from assess.quantity_text import percent_text
+from assess.report.advice import item_words, risk_reason
 from assess.report.sentences import format_percent
 from rocking_reference import reference_rocking
 from tests.fragility.test_governing_demand import DT_S, _sine_record
@@ -47,9 +48,14 @@ def test_the_pharmacy_refrigerator_that_barely_rocks_is_low_not_high():
            "theta_max_over_alpha": 0.05, "suite_motions": 11, "suite_histories": 11}
     item = pd.DataFrame([{"id": "RX-0-03", "floor": 0, "mass_kg": 150.0, "width_m": 1.2, "depth_m": 0.8,
                           "cg_height_m": 1.0, "consequence": "critical"}]).iloc[0]
-    decided = decisions.decide_item(item, row, True, SETTINGS)
+    decided = _columns(decisions.decide_item(item, row, True, SETTINGS), SETTINGS)
     assert decided["risk"] == "low" and decided["risk_range"] == ""
     assert decided["risk_reason"].startswith("low: 0% chance of overturning")
+
+
+def _columns(decision, settings):
+    """An item's summary columns: the decision's numbers and kinds and the report's words of them."""
+    return {**decisions.item_columns(decision, settings), **item_words(decision, settings)}
 
 
 def test_shelving_that_overturns_in_most_runs_is_high():
@@ -93,7 +99,7 @@ def _decided(row_chances, consequence="critical"):
         row.update({name: value, f"{name}_low": low, f"{name}_high": high})
     item = pd.DataFrame([{"id": "X", "floor": 0, "mass_kg": 100.0, "width_m": 0.6, "depth_m": 0.6,
                           "cg_height_m": 0.9, "consequence": consequence}]).iloc[0]
-    return decisions.decide_item(item, row, True, dataclasses.replace(SETTINGS, sds_g=0.0))
+    return _columns(decisions.decide_item(item, row, True, dataclasses.replace(SETTINGS, sds_g=0.0)), SETTINGS)
 
 
 def test_the_risk_range_spans_the_classes_of_every_chances_interval():

@@ -7,7 +7,7 @@ import pandas as pd
 import pytest
 from scipy import integrate, stats
 
-from assess.assessment.pipeline import run_assessment
+from assessed import run_assessment
 from assess.inventory.settings import Settings
 from assess.fragility.friction_range import friction_nodes, items_whose_class_changes
 from assess.inventory import Inventory
@@ -186,7 +186,7 @@ def test_the_method_text_names_exactly_the_items_whose_class_changes():
 
 
 def test_an_overturning_share_weighted_over_mu_is_not_read_as_a_count_of_motions():
-    from assess.decision.decisions import suite_share_text as _suite_share_text
+    from assess.report.advice import suite_share_text as _suite_share_text
 
     assert _suite_share_text(1 / 3, {"suite_motions": 3, "suite_histories": 3}) == "1 of its 3 motions"
     assert _suite_share_text(0.1, {"suite_motions": 3, "suite_histories": 3}) == \

@@ -15,7 +15,7 @@ import pandas as pd
 import pytest
 from scipy import stats
 
-from assess.assessment.pipeline import run_assessment
+from assessed import run_assessment
 from assess.inventory.settings import Settings
 from assess.fragility.governing import governing_demand
 from assess.fragility.suite import (

@@ -15,7 +15,7 @@ import pandas as pd
 import pytest
 from scipy import integrate, stats
 
-from assess.assessment.pipeline import run_assessment
+from assessed import run_assessment
 from assess.hazard.openquake import read_openquake_hazard
 from assess.hazard.risk_integral import annual_rates_of_curve
 from assess.inventory import read_workbook

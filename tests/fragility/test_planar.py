@@ -7,7 +7,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from assess.assessment.pipeline import run_assessment
+from assessed import run_assessment
 from assess.inventory.settings import Settings
 from assess.errors import InputError
 from assess.inventory import Inventory

@@ -18,7 +18,7 @@ import pandas as pd
 import pytest
 
 from assess.assessment.motions import level_motions
-from assess.assessment.pipeline import run_assessment
+from assessed import run_assessment
 from assess.building import building_modes
 from assess.building.design import design_strength
 from assess.building.nonlinear import yielding_response, yielding_stick

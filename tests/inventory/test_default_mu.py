@@ -15,7 +15,7 @@ import pandas as pd
 import pytest
 
 from assess import cli
-from assess.assessment.pipeline import run_assessment
+from assessed import run_assessment
 from assess.errors import InputError
 from assess.inventory import read_workbook
 from assess.inventory.friction import WIDE_RANGE, default_range

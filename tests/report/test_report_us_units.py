@@ -19,8 +19,8 @@ import pytest
 
 from assess import cli
 from assess.command import job
-from assess.decision import actions
 from assess.inventory.settings import Settings
+from assess.report import advice
 from assess.errors import InputError
 from assess.inventory import read_workbook
 from assess.report import render_html
@@ -111,8 +111,8 @@ def test_the_room_an_item_has_reads_alike_in_its_advice_and_its_table():
     """Clearance 20 cm = 7.87 in: the advice says it has 7 in, and so does the table (not 8)."""
     row = {"p_overturn": 0.0, "risk": "moderate", "demand_room_cm": 54.2, "clearance_cm": 20.0,
            "p_beyond_clearance": 0.3, "theta_max_over_alpha": 0.0, "suite_motions": 3}
-    us = actions.action_sentence("room", row, False, None, Settings(units="us"))
-    si = actions.action_sentence("room", row, False, None, Settings(units="si"))
+    us = advice.action_sentence("room", row, False, None, Settings(units="us"))
+    si = advice.action_sentence("room", row, False, None, Settings(units="si"))
     assert "needs 22 in" in us and "has 7 in" in us  # 54.2 / 2.54 = 21.3 up; 20 / 2.54 = 7.87 down
     assert "needs 55 cm" in si and "has 20 cm" in si
     result = make_result()

@@ -21,13 +21,21 @@ from types import SimpleNamespace
 
 import pytest
 
-from assess.anchorage import anchorage_site, item_anchorage
+from assess.anchorage import anchorage_site
+from assess.anchorage import item_anchorage as _item_anchorage
 from assess.inventory.settings import Settings
 from assess.inventory.site_building import BuildingSheet, SiteSheet
+from assess.report.advice import anchorage_columns
 
 G = 9.80665
 N_PER_KIP = 4448.2216152605
 BUILDING = BuildingSheet(storeys=4, height_m=16.0, system="steel moment frame")
+
+
+def item_anchorage(item, consequence, action_kind, site):
+    """The item's anchorage columns as summary.csv has them: SI (the decision's) and kip (the report's)."""
+    anchorage = _item_anchorage(item, consequence, action_kind, site)
+    return {**anchorage.columns(), **anchorage_columns(anchorage)}
 
 
 def _site(code):
