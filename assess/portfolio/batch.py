@@ -467,7 +467,7 @@ def default_out_dir(portfolio: Path) -> Path:
 
 def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, seed: int = 0,
                   formats: tuple[str, ...] = ("html", "pdf", "xlsx"), units: str | None = None,
-                  say: Callable[[str], None] = lambda message: None) -> StagedPortfolio:
+                  say: Callable[[str], None] = lambda message: None, spread=None) -> StagedPortfolio:
     """Assess every building through ``runner`` (a :class:`~assess.command.cache.CachingRunner`), writing into a
     staging folder beside ``out_dir``; returns it staged (:meth:`StagedPortfolio.commit` puts it in place).
 
@@ -476,7 +476,9 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
     ``out_dir`` (:func:`building_key`: its workbook, records and hazard curve,
     level, seed, formats, the code) keeps its folder as it is, when the folder's
     files are those that run wrote; the others are assessed, their simulations
-    reused from the cache where their cases did not change.
+    reused from the cache where their cases did not change. ``spread`` (a
+    :class:`~assess.portfolio.spread.BuildingSpread`, on a cluster) assesses
+    them on the cluster's workers, when it applies, with the same files and counts.
     """
 
     out_dir = Path(out_dir)
@@ -493,15 +495,33 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
         rows, current, manifest = [], {}, {}
         version = code_version()
         total = len(prepared)
+        keys = [building_key(item, seed=seed, formats=formats, units=units, version=version) for item in prepared]
+        kept_folders = [_unchanged_folder(out_dir / item.building.name, before_manifest.get(item.building.name), key)
+                        for item, key in zip(prepared, keys)]
+        outcomes = {}
+        pending = [number for number, kept in enumerate(kept_folders) if kept is None]
+        if spread is not None and spread.applies([prepared[k] for k in pending]):
+            say(f"on the cluster: {spread.reason}")
+            outcomes = dict(zip(pending, spread.assess([prepared[k] for k in pending], seed=seed, formats=formats,
+                                                       units=units, say=say)))
+        elif spread is not None:
+            say(f"on the cluster: {spread.reason}")
         for number, item in enumerate(prepared, start=1):
             building = item.building
             tag = f"[{number}/{total}] {building.name}"
             say(f"{tag}: {building.workbook.name} at level {item.level}"
                 + (f", hazard curve {Path(item.curve.path).name}" if item.curve is not None else ""))
             started = time.perf_counter()
-            key = building_key(item, seed=seed, formats=formats, units=units, version=version)
-            kept = _unchanged_folder(out_dir / building.name, before_manifest.get(building.name), key)
-            if kept is not None:
+            key, kept = keys[number - 1], kept_folders[number - 1]
+            if number - 1 in outcomes:
+                outcome = outcomes[number - 1]
+                files, summary, level_label = outcome.files, outcome.summary, outcome.level_label
+                write_files(staging / building.name, files)
+                simulated, reused = outcome.simulated, outcome.reused
+                entry = dict(key=key, cases=simulated + reused, level_label=level_label,
+                             files={name: _digest(data) for name, data in files.items()})
+                kept = files
+            elif kept is not None:
                 write_files(staging / building.name, kept)
                 entry = dict(before_manifest[building.name])
                 summary = _restored_summary(kept["summary.csv"])
@@ -590,7 +610,12 @@ def run_batch(job: BatchJob, say: Say = lambda message: None) -> tuple[StagedPor
     with open_runner(job.scheduler, lambda message: None, out_dir / CACHE_FOLDER,
                      tls=job.scheduler_tls) as runner:
         say(f"{len(prepared)} buildings; results are reused from {out_dir / CACHE_FOLDER}")
-        staged = run_portfolio(prepared, out_dir, runner=runner, seed=job.seed, formats=job.formats, say=say)
+        spread = None
+        if job.scheduler is not None:
+            from assess.portfolio.spread import BuildingSpread
+            spread = BuildingSpread(runner)
+        staged = run_portfolio(prepared, out_dir, runner=runner, seed=job.seed, formats=job.formats, say=say,
+                               spread=spread)
     return staged, runner, out_dir
 
 
