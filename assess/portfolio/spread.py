@@ -67,7 +67,7 @@ def assess_building(item, *, seed: int, formats, units, cache_folder: str) -> Bu
     runner.asked = []
     result = pipeline.run_assessment(item.inventory, item.level, seed=seed, runner=runner, hazard_curve=item.curve,
                                      allow_records_outside=item.allow_records_outside)
-    files = output.render_outputs(result, formats, units=units)
+    files = output.render_outputs(result, formats, units=units, pdf_processes=1)  # a worker starts no process
     return BuildingOutcome(files=files, summary=result.summary, level_label=result.level_label,
                            asked=runner.asked, write_errors=list(runner.write_errors))
 

@@ -1,9 +1,10 @@
 """assess batch on a Dask cluster: its buildings spread over the workers, the files those of one machine.
 
 A scheduler and two worker processes are started on 127.0.0.1. The same
-portfolio is run with and without ``--scheduler``, then again with two of its
-buildings edited, and every file of the two output folders (the cache's packs
-aside) is compared byte for byte: the buildings' folders, portfolio.csv with
+portfolio is run with and without ``--scheduler``, then again with every
+building edited, and every file of the two output folders (the cache's packs
+aside) is compared byte for byte: the buildings' folders (their PDF reports
+included, laid out on the workers), portfolio.csv with
 each building's cases simulated and reused, changes.csv, the page and the
 manifest. Two buildings share a workbook's items, so the second reuses the
 first's cases: the count a worker cannot see, worked out afterwards
@@ -72,7 +73,8 @@ def test_a_portfolio_on_the_cluster_writes_what_one_machine_writes(cluster, tmp_
         shutil.rmtree(site, ignore_errors=True)
         shutil.copytree(originals, site)
         before = _executed(cluster)
-        assert cli.main(["batch", str(site / "portfolio.xlsx"), "--out", str(out), "--format", "xlsx", *extra]) == 0
+        assert cli.main(["batch", str(site / "portfolio.xlsx"), "--out", str(out), "--format", "xlsx,pdf",
+                         *extra]) == 0
         after = _executed(cluster)
         printed = capsys.readouterr().err
         if extra:
@@ -80,7 +82,7 @@ def test_a_portfolio_on_the_cluster_writes_what_one_machine_writes(cluster, tmp_
             assert all(after[w] > before[w] for w in after)  # both workers assessed buildings
         first = _files(out)
         shutil.copytree(edits, site, dirs_exist_ok=True)  # every building edited: all assessed again
-        assert cli.main(["batch", str(site / "portfolio.xlsx"), "--out", str(out), "--format", "xlsx", "--quiet",
+        assert cli.main(["batch", str(site / "portfolio.xlsx"), "--out", str(out), "--format", "xlsx,pdf", "--quiet",
                          *extra]) == 0
         outs[where] = first, _files(out)
     for run in (0, 1):
