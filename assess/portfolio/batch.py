@@ -502,8 +502,14 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
         pending = [number for number, kept in enumerate(kept_folders) if kept is None]
         if spread is not None and spread.applies([prepared[k] for k in pending]):
             say(f"on the cluster: {spread.reason}")
+            def deliver(number, outcome):  # written as it arrives; only the digests and summary.csv are kept
+                files = outcome.files
+                write_files(staging / prepared[pending[number]].building.name, files)
+                outcome.files = {name: _digest(data) for name, data in files.items()}
+                outcome.summary_csv = files["summary.csv"]
+
             outcomes = dict(zip(pending, spread.assess([prepared[k] for k in pending], seed=seed, formats=formats,
-                                                       units=units, say=say)))
+                                                       units=units, say=say, deliver=deliver)))
         elif spread is not None:
             say(f"on the cluster: {spread.reason}")
         for number, item in enumerate(prepared, start=1):
@@ -514,13 +520,11 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
             started = time.perf_counter()
             key, kept = keys[number - 1], kept_folders[number - 1]
             if number - 1 in outcomes:
-                outcome = outcomes[number - 1]
-                files, summary, level_label = outcome.files, outcome.summary, outcome.level_label
-                write_files(staging / building.name, files)
+                outcome = outcomes[number - 1]  # its files written as it arrived (``deliver``)
+                summary, level_label = outcome.summary, outcome.level_label
                 simulated, reused = outcome.simulated, outcome.reused
-                entry = dict(key=key, cases=simulated + reused, level_label=level_label,
-                             files={name: _digest(data) for name, data in files.items()})
-                kept = files
+                entry = dict(key=key, cases=simulated + reused, level_label=level_label, files=outcome.files)
+                kept = {"summary.csv": outcome.summary_csv}
             elif kept is not None:
                 write_files(staging / building.name, kept)
                 entry = dict(before_manifest[building.name])

@@ -46,6 +46,7 @@ class BuildingOutcome:
     write_errors: list = field(default_factory=list)
     simulated: int = 0
     reused: int = 0
+    summary_csv: bytes = b""
 
 
 def assess_building(item, *, seed: int, formats, units, cache_folder: str) -> BuildingOutcome:
@@ -142,9 +143,12 @@ class BuildingSpread:
         self.reason = f"{len(pending)} buildings spread over {threads} worker threads"
         return True
 
-    def assess(self, pending: list, *, seed: int, formats, units, say: Callable[[str], None]) -> list:
+    def assess(self, pending: list, *, seed: int, formats, units, say: Callable[[str], None],
+               deliver: Callable[[int, BuildingOutcome], None] = lambda number, outcome: None) -> list:
         """The :class:`BuildingOutcome` of each building of ``pending`` (in its order), assessed on the workers,
-        the largest first; their cases counted by :func:`sequential_account`."""
+        the largest first; their cases counted by :func:`sequential_account`. ``deliver(number, outcome)`` is
+        called as each arrives (to write its files, which it may then drop: a portfolio's reports need not
+        all be held at once)."""
         from distributed import as_completed
 
         self.runner._load_new_packs()
@@ -160,6 +164,8 @@ class BuildingSpread:
             for future in as_completed(futures, loop=self.client.loop):
                 number = futures[future]
                 outcomes[number] = future.result()
+                future.release()  # the worker forgets it
+                deliver(number, outcomes[number])
                 say(f"{pending[number].building.name}: assessed on a worker ({sum(o is not None for o in outcomes)}"
                     f"/{len(pending)})")
         finally:
