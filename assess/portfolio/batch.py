@@ -552,7 +552,9 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
                                      Path(item.curve.path).name if item.curve is not None else "", summary,
                                      simulated, reused))
             counts = summary["risk"].value_counts()
-            say(f"{tag}: {simulated} cases simulated, {reused} reused, {time.perf_counter() - started:.1f} s; "
+            seconds = outcomes[number - 1].seconds if number - 1 in outcomes else time.perf_counter() - started
+            where = " on a worker" if number - 1 in outcomes else ""
+            say(f"{tag}: {simulated} cases simulated, {reused} reused, {seconds:.1f} s{where}; "
                 f"{counts.get('high', 0)} high, {counts.get('moderate', 0)} moderate, {counts.get('low', 0)} low risk")
         staged.summary = pd.DataFrame(rows)
         staged.changes = changes_between(

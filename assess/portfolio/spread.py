@@ -24,6 +24,7 @@ reused).
 from __future__ import annotations
 
 import hashlib
+import time
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
@@ -47,6 +48,7 @@ class BuildingOutcome:
     simulated: int = 0
     reused: int = 0
     summary_csv: bytes = b""
+    seconds: float = 0.0
 
 
 def assess_building(item, *, seed: int, formats, units, cache_folder: str) -> BuildingOutcome:
@@ -64,13 +66,15 @@ def assess_building(item, *, seed: int, formats, units, cache_folder: str) -> Bu
         numba.set_num_threads(max(1, min(get_worker().state.nthreads, numba.config.NUMBA_NUM_THREADS)))
     except (ImportError, ValueError):  # not on a worker (a test calls it here)
         pass
+    started = time.perf_counter()
     runner = CachingRunner(LocalRunner(), cache_folder)
     runner.asked = []
     result = pipeline.run_assessment(item.inventory, item.level, seed=seed, runner=runner, hazard_curve=item.curve,
                                      allow_records_outside=item.allow_records_outside)
     files = output.render_outputs(result, formats, units=units, pdf_processes=1)  # a worker starts no process
     return BuildingOutcome(files=files, summary=result.summary, level_label=result.level_label,
-                           asked=runner.asked, write_errors=list(runner.write_errors))
+                           asked=runner.asked, write_errors=list(runner.write_errors),
+                           seconds=time.perf_counter() - started)
 
 
 def sequential_account(known: set, asked_by_building: list[list]) -> list[tuple[int, int]]:
