@@ -8,7 +8,7 @@ level 2in50, their hazard curve), the laboratory (lab.xlsx, 2in50), the
 pharmacy (pharmacy.xlsx, DE) and the hospital (hospital.xlsx, its site and
 building sheets, DE): six buildings, ``--copies`` times each (a copy is its
 own building: its workbook copied under another name, every item's friction
-raised by 0.01 per copy so that no copy reuses another's cases). It is run
+(mu and its range) raised by 0.01 per copy so that no copy reuses another's cases). It is run
 from a scratch copy of inventories/, first run (an empty cache) each time:
 
 1. on this machine (``--jobs`` = the workers' threads);
@@ -70,10 +70,11 @@ def make_portfolio(scratch: Path, copies: int) -> Path:
                 book = openpyxl.load_workbook(source)
                 sheet = book["equipment"]
                 header = [cell.value for cell in sheet[1]]
-                column = header.index("mu")
+                columns = [k for k, name in enumerate(header) if name in ("mu", "mu_static", "mu_low", "mu_high")]
                 for row in sheet.iter_rows(min_row=2):
-                    if isinstance(row[column].value, (int, float)):
-                        row[column].value = round(row[column].value + 0.01 * copy, 3)
+                    for column in columns:
+                        if isinstance(row[column].value, (int, float)):
+                            row[column].value = round(row[column].value + 0.01 * copy, 3)
                 book.save(folder / workbook)
             rows.append((f"{name}-{copy}" if copy else name, workbook, level, curve))
     book = openpyxl.Workbook()
