@@ -496,12 +496,13 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
         version = code_version()
         total = len(prepared)
         keys = [building_key(item, seed=seed, formats=formats, units=units, version=version) for item in prepared]
-        kept_folders = [_unchanged_folder(out_dir / item.building.name, before_manifest.get(item.building.name), key)
-                        for item, key in zip(prepared, keys)]
         outcomes = {}
-        pending = [number for number, kept in enumerate(kept_folders) if kept is None]
+        pending = [] if spread is None else [  # the buildings to assess (their folders are read again below)
+            number for number, (item, key) in enumerate(zip(prepared, keys))
+            if _unchanged_folder(out_dir / item.building.name, before_manifest.get(item.building.name), key) is None]
         if spread is not None and spread.applies([prepared[k] for k in pending]):
             say(f"on the cluster: {spread.reason}")
+
             def deliver(number, outcome):  # written as it arrives; only the digests and summary.csv are kept
                 files = outcome.files
                 write_files(staging / prepared[pending[number]].building.name, files)
@@ -518,7 +519,9 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
             say(f"{tag}: {building.workbook.name} at level {item.level}"
                 + (f", hazard curve {Path(item.curve.path).name}" if item.curve is not None else ""))
             started = time.perf_counter()
-            key, kept = keys[number - 1], kept_folders[number - 1]
+            key = keys[number - 1]
+            kept = None if number - 1 in outcomes else \
+                _unchanged_folder(out_dir / building.name, before_manifest.get(building.name), key)
             if number - 1 in outcomes:
                 outcome = outcomes[number - 1]  # its files written as it arrived (``deliver``)
                 summary, level_label = outcome.summary, outcome.level_label
