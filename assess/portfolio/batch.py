@@ -654,6 +654,16 @@ def building_key(item: PreparedBuilding, *, seed: int, formats, units: str, vers
     digest = hashlib.blake2b(digest_size=16)
     digest.update(f"{version}|{item.level}|{seed}|{sorted(formats)}|{units}|".encode())
     digest.update(_file_digest(item.building.workbook).encode())
+    for record in building_records(item):
+        digest.update(f"|{record}|{_file_digest(Path(record))}".encode())
+    if item.curve is not None:
+        digest.update(f"|curve|{_file_digest(Path(item.curve.path))}".encode())
+    return digest.hexdigest()
+
+
+def building_records(item: PreparedBuilding) -> list[str]:
+    """The files besides its workbook that a building's assessment reads: every record its hazard sheet names,
+    its site sheet's uniform-hazard spectrum and the records of its records folder."""
     hazard = item.inventory.hazard
     records = sorted({str(p) for column in hazard.columns if column.endswith("_path")  # record_path, and
                       for p in hazard[column] if isinstance(p, str) and p})           # any other record column
@@ -663,11 +673,7 @@ def building_key(item: PreparedBuilding, *, seed: int, formats, units: str, vers
             records.append(site.uhs_path)
         if site.records_folder:
             records += sorted(str(p) for p in Path(site.records_folder).rglob("*") if p.is_file())
-    for record in records:
-        digest.update(f"|{record}|{_file_digest(Path(record))}".encode())
-    if item.curve is not None:
-        digest.update(f"|curve|{_file_digest(Path(item.curve.path))}".encode())
-    return digest.hexdigest()
+    return records
 
 
 def _file_digest(path: Path) -> str:

@@ -9,7 +9,7 @@ the worker sends back the building's files (bytes) and table, which are
 written here. This needs the workers to see the portfolio's files at the same
 paths as this machine (a shared file system, as on most clusters, or a
 cluster on this machine): :meth:`BuildingSpread.applies` checks it, each
-worker reading every workbook's bytes; otherwise, and where there are fewer
+worker reading every workbook and record; otherwise, and where there are fewer
 buildings to assess than worker threads, the buildings run one after the
 other here with their cases spread over the workers (:class:`~assess.mechanics.distributed.DaskRunner`).
 
@@ -130,19 +130,23 @@ class BuildingSpread:
 
     def applies(self, pending: list) -> bool:
         """Whether to spread these buildings (``PreparedBuilding``) over the workers: at least
-        ``buildings_per_thread`` per worker thread, and every worker reads every workbook as this machine does
-        (``reason`` says why not)."""
+        ``buildings_per_thread`` per worker thread, and every worker reads every workbook and record of them
+        (:func:`~assess.portfolio.batch.building_records`) at the same path, with the same bytes, as this
+        machine does (``reason`` says why not)."""
         threads = max(1, sum(self.client.nthreads().values()))
         if len(pending) < max(2, self.buildings_per_thread * threads):
             self.reason = (f"{len(pending)} buildings to assess for {threads} worker threads: the buildings run here "
                            "one after the other, their cases on the workers")
             return False
-        paths = sorted({str(Path(item.building.workbook).resolve()) for item in pending})
+        from assess.portfolio.batch import building_records
+        paths = sorted({str(Path(path).resolve()) for item in pending
+                        for path in [item.building.workbook, *building_records(item)]})
         here = _file_digests(paths)
         theirs = self.client.run(_file_digests, paths)
         if any(digests != here for digests in theirs.values()):
-            self.reason = ("the workers do not see the portfolio's workbooks as this machine does (no shared file "
-                           "system): the buildings run here one after the other, their cases on the workers")
+            self.reason = ("the workers do not see the portfolio's workbooks and records as this machine does (no "
+                           "shared file system): the buildings run here one after the other, their cases on the "
+                           "workers")
             return False
         self.reason = f"{len(pending)} buildings spread over {threads} worker threads"
         return True

@@ -128,3 +128,37 @@ def test_the_sequential_account_is_what_a_cache_counts_building_after_building(t
     # by hand: (0,0) and (1,1) stored before; (2,0) new, again, again; (3,1) new; (1,0) new; (2,1) new
     assert counted == [(2, 3), (1, 3), (1, 1)]
     assert sequential_account(known, asked) == counted
+
+
+class _Workers:
+    """A client's two workers as BuildingSpread asks them: threads, and a function run on each; the second
+    worker reads files as ``second`` says (None: as this machine)."""
+
+    def __init__(self, second=None):
+        self.second = second
+
+    def nthreads(self):
+        return {"tcp://a": 1, "tcp://b": 1}
+
+    def run(self, function, *args):
+        return {"tcp://a": function(*args), "tcp://b": function(*args) if self.second is None else self.second(*args)}
+
+
+class _Runner:
+    def __init__(self, client):
+        self.inner = type("Inner", (), {"client": client})()
+
+
+def test_buildings_are_spread_only_when_enough_and_every_worker_reads_their_files(tmp_path):
+    from assess.portfolio.batch import prepare_buildings, read_portfolio
+    from assess.portfolio.spread import BuildingSpread
+
+    site = _portfolio(tmp_path / "site", BUILDINGS)
+    prepared = prepare_buildings(read_portfolio(site))
+    assert BuildingSpread(_Runner(_Workers())).applies(prepared)
+    few = BuildingSpread(_Runner(_Workers()))
+    assert not few.applies(prepared[:1]) and "1 buildings to assess for 2 worker threads" in few.reason
+    for elsewhere in (lambda paths: [None] * len(paths),  # no shared file system: the files are not there
+                      lambda paths: ["another file"] * len(paths)):  # other files at the same paths
+        apart = BuildingSpread(_Runner(_Workers(elsewhere)))
+        assert not apart.applies(prepared) and "do not see the portfolio's workbooks" in apart.reason
