@@ -56,8 +56,8 @@ TASKS_PER_THREAD = 4
 MIN_TASK_STEPS = 2_000_000
 #: Seconds allowed to reach the scheduler and find a worker, by default.
 CONNECT_TIMEOUT_S = 10.0
-#: Columns of a block table (:func:`block_table`): the fields of a Block, then the sliding interface's
-#: (NaN where a field is None), and whether the block is a BlockOnInterface.
+#: Columns of a block table (:func:`block_table`): the fields of a Block, whether it is a BlockOnInterface
+#: (1) or not (0), then its sliding interface's fields; NaN where a field is None.
 BLOCK_COLUMNS = ("half_width_m", "cg_height_m", "height_m", "mu", "mu_static", "restitution", "foot_inset_m",
                  "on_interface", "low_speed_factor", "rate_s_m", "yield_displacement_m")
 

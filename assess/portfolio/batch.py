@@ -622,7 +622,7 @@ def run_batch(job: BatchJob, say: Say = lambda message: None) -> tuple[StagedPor
         spread = None
         if job.scheduler is not None:
             from assess.portfolio.spread import BuildingSpread
-            spread = BuildingSpread(runner)
+            spread = BuildingSpread(runner, files_of=lambda item: [item.building.workbook, *building_records(item)])
         staged = run_portfolio(prepared, out_dir, runner=runner, seed=job.seed, formats=job.formats, say=say,
                                spread=spread)
     return staged, runner, out_dir

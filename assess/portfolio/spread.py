@@ -121,6 +121,8 @@ class BuildingSpread:
     """
 
     runner: object
+    #: The files a building's assessment reads (its workbook, its records: ``run_batch`` gives them).
+    files_of: Callable = lambda item: [item.building.workbook]
     buildings_per_thread: int = BUILDINGS_PER_THREAD
     reason: str = ""
 
@@ -130,17 +132,15 @@ class BuildingSpread:
 
     def applies(self, pending: list) -> bool:
         """Whether to spread these buildings (``PreparedBuilding``) over the workers: at least
-        ``buildings_per_thread`` per worker thread, and every worker reads every workbook and record of them
-        (:func:`~assess.portfolio.batch.building_records`) at the same path, with the same bytes, as this
-        machine does (``reason`` says why not)."""
+        ``buildings_per_thread`` per worker thread, and every worker reads every file of them (``files_of``:
+        the workbook and records) at the same path, with the same bytes, as this machine does (``reason``
+        says why not)."""
         threads = max(1, sum(self.client.nthreads().values()))
         if len(pending) < max(2, self.buildings_per_thread * threads):
             self.reason = (f"{len(pending)} buildings to assess for {threads} worker threads: the buildings run here "
                            "one after the other, their cases on the workers")
             return False
-        from assess.portfolio.batch import building_records
-        paths = sorted({str(Path(path).resolve()) for item in pending
-                        for path in [item.building.workbook, *building_records(item)]})
+        paths = sorted({str(Path(path).resolve()) for item in pending for path in self.files_of(item)})
         here = _file_digests(paths)
         theirs = self.client.run(_file_digests, paths)
         if any(digests != here for digests in theirs.values()):

@@ -150,15 +150,23 @@ class _Runner:
 
 
 def test_buildings_are_spread_only_when_enough_and_every_worker_reads_their_files(tmp_path):
-    from assess.portfolio.batch import prepare_buildings, read_portfolio
+    from assess.portfolio.batch import building_records, prepare_buildings, read_portfolio
     from assess.portfolio.spread import BuildingSpread
 
     site = _portfolio(tmp_path / "site", BUILDINGS)
     prepared = prepare_buildings(read_portfolio(site))
-    assert BuildingSpread(_Runner(_Workers())).applies(prepared)
-    few = BuildingSpread(_Runner(_Workers()))
+    read = []
+
+    def files_of(item):  # as run_batch gives them: the workbook and its record
+        read.append(item.building.name)
+        return [item.building.workbook, *building_records(item)]
+
+    assert building_records(prepared[0]) == [str(site.parent / "records" / "m1.csv")]
+    assert BuildingSpread(_Runner(_Workers()), files_of=files_of).applies(prepared)
+    assert sorted(read) == sorted(BUILDINGS)
+    few = BuildingSpread(_Runner(_Workers()), files_of=files_of)
     assert not few.applies(prepared[:1]) and "1 buildings to assess for 2 worker threads" in few.reason
     for elsewhere in (lambda paths: [None] * len(paths),  # no shared file system: the files are not there
                       lambda paths: ["another file"] * len(paths)):  # other files at the same paths
-        apart = BuildingSpread(_Runner(_Workers(elsewhere)))
+        apart = BuildingSpread(_Runner(_Workers(elsewhere)), files_of=files_of)
         assert not apart.applies(prepared) and "do not see the portfolio's workbooks" in apart.reason
