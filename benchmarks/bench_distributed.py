@@ -1,18 +1,22 @@
-"""The engine on a Dask cluster against this machine: throughput, memory per worker, same numbers.
+"""The engine on a Dask cluster against this machine's threads at equal cores: throughput, CPU, memory, same numbers.
 
-Run: python benchmarks/bench_distributed.py [--items 1000] [--workers 2] [--scheduler ADDRESS]
-                                            [--cases-per-task N] [--cold-cache]
+Run: python benchmarks/bench_distributed.py [--items 1000] [--workers 2] [--repeat 5] [--scheduler ADDRESS]
+                                            [--tasks-per-thread N] [--cold-cache]
 
 The cases are those of ``bench_assessment.py`` (N items x pyslammer's 18
-records x 2 directions). They run once serially on this machine
-(``assess.mechanics.engine.simulate_cases``, all numba threads) and once
+records x 2 directions). They run on this machine with as many numba threads
+as there are workers (``assess.mechanics.engine.simulate_cases``), and
 through :class:`assess.mechanics.distributed.DaskRunner` on a loopback
 cluster of ``--workers`` worker processes (one thread and one numba thread
-each) started here, or on the cluster at ``--scheduler``. Each is run twice
-and the second (warm) run is reported; the first run on the cluster includes
-the workers' loading (``--cold-cache``: compiling) of the numba kernels.
-Prints cases per second, each worker's peak resident memory and whether
-every number of every case is identical. Not a test.
+each) started here, or on the cluster at ``--scheduler``. Each is run once to
+warm up (the first run on the cluster includes the workers' loading, with
+``--cold-cache`` compiling, of the numba kernels), then ``--repeat`` times,
+the two alternating so that a change in the machine's load falls on both;
+the median and the fastest run are reported. Prints cases per second, the
+CPU seconds spent in the workers, in this process (the client; a loopback
+scheduler runs in it too) and in the scheduler, each worker's peak resident
+memory, the load average before and after, and whether every number of every
+case is identical. Not a test.
 """
 from __future__ import annotations
 
@@ -76,42 +80,31 @@ def cpu_s():
     return usage.ru_utime + usage.ru_stime
 
 
-def timed(run, label, cpu=None):
-    """(peaks, wall seconds, CPU seconds) of the second of two runs; ``cpu()`` reads the workers' CPU clock."""
-    seconds = []
-    for attempt in range(2):
-        start, start_cpu, start_here = time.perf_counter(), cpu() if cpu else 0.0, cpu_s()
-        peaks = run()
-        seconds.append(time.perf_counter() - start)
-    here = cpu_s() - start_here
-    used = (cpu() - start_cpu) if cpu else here
-    where = f"{used:.1f} CPU s in the workers, {here:.1f} CPU s here (client and scheduler)" if cpu \
-        else f"{used:.1f} CPU s"
-    print(f"{label}: first run {seconds[0]:.1f} s, second run {seconds[1]:.1f} s ({where})")
-    return peaks, seconds[1], used
+def load():
+    """The 1, 5 and 15 minute load averages, as text."""
+    return " ".join(f"{x:.2f}" for x in os.getloadavg())
 
 
 def main():
     import numba
     import numpy as np
 
-    from assess.mechanics.distributed import DaskRunner
+    from assess.mechanics.distributed import TASKS_PER_THREAD, DaskRunner
     from assess.mechanics.engine import simulate_cases
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--items", type=int, default=1000)
     parser.add_argument("--workers", type=int, default=2)
+    parser.add_argument("--repeat", type=int, default=5, help="timed runs of each, after one warm-up run")
     parser.add_argument("--scheduler", metavar="ADDRESS", help="an existing cluster (default: a loopback one)")
-    parser.add_argument("--cases-per-task", type=int, help="default: DaskRunner's")
+    parser.add_argument("--tasks-per-thread", type=int, default=TASKS_PER_THREAD)
     parser.add_argument("--cold-cache", action="store_true",
                         help="the loopback workers compile the kernels into an empty numba cache")
     args = parser.parse_args()
+    print(f"load average before: {load()} ({os.cpu_count()} cores)")
     blocks, records, dts, index = cases(args.items)
     n = len(blocks)
     print(f"{args.items} items x {len(records)} records x 2 directions = {n} cases")
-
-    serial, serial_s, _ = timed(lambda: simulate_cases(blocks, records, dts, index),
-                             f"this machine ({numba.config.NUMBA_NUM_THREADS} numba threads)")
 
     cluster = None
     address = args.scheduler
@@ -123,32 +116,83 @@ def main():
         cluster = LocalCluster(n_workers=args.workers, threads_per_worker=1, processes=True, host="127.0.0.1",
                                dashboard_address=None, env=env, silence_logs=40)
         address = cluster.scheduler_address
-    runner = DaskRunner.connect(address) if args.cases_per_task is None else DaskRunner.connect(
-        address, cases_per_task=args.cases_per_task)
+    runner = DaskRunner.connect(address, tasks_per_thread=args.tasks_per_thread)
     try:
-        workers = runner.client.scheduler_info()["workers"]
-        numba_setup = set(runner.client.run(numba_config).values())
+        client = runner.client
+        workers = client.nthreads()
+        threads = sum(workers.values())
+        numba.set_num_threads(min(threads, numba.config.NUMBA_NUM_THREADS))
+        local_label = f"this machine ({numba.get_num_threads()} numba threads)"
+        cluster_label = f"Dask ({len(workers)} workers, {threads} threads)"
         print("numba in the workers (threads, cache folder or '' beside the package):",
-              ", ".join(map(str, numba_setup)))
-        threads = sum(w["nthreads"] for w in workers.values())
-        before = runner.client.run(peak_rss_mb)
-        remote, remote_s, _ = timed(lambda: runner.simulate_cases(blocks, records, dts, index),
-                                    f"Dask at {address} ({len(workers)} workers, {threads} threads)",
-                                    cpu=lambda: sum(runner.client.run(cpu_s).values()))
-        after = runner.client.run(peak_rss_mb)
+              ", ".join(map(str, set(client.run(numba_config).values()))))
+        scheduler_pid = client.run_on_scheduler(os.getpid)
+        scheduler_here = scheduler_pid == os.getpid()
+        before_memory = client.run(peak_rss_mb)
+
+        def local_run():
+            return simulate_cases(blocks, records, dts, index)
+
+        def cluster_run():
+            return runner.simulate_cases(blocks, records, dts, index)
+
+        clock = {"local": [], "cluster": []}
+        cpu = {"local": 0.0, "workers": 0.0, "here": 0.0, "scheduler": 0.0}
+        for attempt in range(args.repeat + 1):
+            start, start_here = time.perf_counter(), cpu_s()
+            serial = local_run()
+            wall = time.perf_counter() - start
+            if attempt:
+                clock["local"].append(wall)
+                cpu["local"] += cpu_s() - start_here
+            else:
+                print(f"{local_label}: warm-up run {wall:.2f} s")
+            tasks_before = runner.tasks_run
+            workers_cpu = sum(client.run(cpu_s).values())
+            scheduler_cpu = client.run_on_scheduler(cpu_s)
+            start, start_here = time.perf_counter(), cpu_s()
+            remote = cluster_run()
+            wall = time.perf_counter() - start
+            here = cpu_s() - start_here
+            tasks = runner.tasks_run - tasks_before
+            if attempt:
+                clock["cluster"].append(wall)
+                cpu["here"] += here
+                cpu["workers"] += sum(client.run(cpu_s).values()) - workers_cpu
+                cpu["scheduler"] += client.run_on_scheduler(cpu_s) - scheduler_cpu
+            else:
+                print(f"{cluster_label}: warm-up run {wall:.2f} s (the workers load the kernels), {tasks} tasks")
+        after_memory = client.run(peak_rss_mb)
     finally:
         runner.close()
         if cluster is not None:
             cluster.close()
 
-    print(f"throughput: this machine {n / serial_s:,.0f} cases/s, Dask {n / remote_s:,.0f} cases/s "
-          f"(tasks of {runner.cases_per_task} cases, {runner.tasks_run // 2} per run)")
-    for worker in sorted(after):
-        print(f"  worker {worker}: peak resident memory {after[worker]:.0f} MB "
-              f"(after start-up {before[worker]:.0f} MB)")
+    repeat = max(1, args.repeat)
+    median = {k: float(np.median(v)) for k, v in clock.items()}
+    fastest = {k: min(v) for k, v in clock.items()}
+    print(f"{local_label}: median {median['local']:.2f} s, fastest {fastest['local']:.2f} s of {repeat} runs; "
+          f"{cpu['local'] / repeat:.2f} CPU s a run")
+    where = ("client and scheduler: one process here" if scheduler_here else "client")
+    print(f"{cluster_label}: median {median['cluster']:.2f} s, fastest {fastest['cluster']:.2f} s of {repeat} runs; "
+          f"{cpu['workers'] / repeat:.2f} CPU s a run in the workers, {cpu['here'] / repeat:.2f} here ({where})"
+          + ("" if scheduler_here else f", {cpu['scheduler'] / repeat:.2f} in the scheduler")
+          + f"; {tasks} tasks a run")
+    local_rate, cluster_rate = n / median["local"], n / median["cluster"]
+    print(f"throughput (medians): this machine {local_rate:,.0f} cases/s, Dask {cluster_rate:,.0f} cases/s: "
+          f"the cluster at {100 * cluster_rate / local_rate:.0f} % of the threads "
+          f"(fastest runs: {100 * fastest['local'] / fastest['cluster']:.0f} %)")
+    spent = cpu["workers"] + cpu["here"] + (0.0 if scheduler_here else cpu["scheduler"])
+    print(f"work per CPU second (a measure the machine's other load does not change much): this machine "
+          f"{n * repeat / cpu['local']:,.0f} cases per CPU s, Dask {n * repeat / spent:,.0f} "
+          f"(workers, client and scheduler): {100 * cpu['local'] / spent:.0f} %")
+    for worker in sorted(after_memory):
+        print(f"  worker {worker}: peak resident memory {after_memory[worker]:.0f} MB "
+              f"(after start-up {before_memory[worker]:.0f} MB)")
     print(f"this process: peak resident memory {peak_rss_mb():.0f} MB")
     same = all(np.array_equal(getattr(serial, f), getattr(remote, f)) for f in FIELDS)
     print(f"identical numbers (every field of all {n} cases): {'yes' if same else 'NO'}")
+    print(f"load average after: {load()}")
     os._exit(0 if same else 1)  # the cluster's threads need not be waited for
 
 

@@ -209,6 +209,9 @@ class CachingRunner(RunnerBase):
     cases asked for. ``runs_simulated`` and ``runs_reused`` count every run the
     same way, by kind (``peaks``, ``planar``, ``response``). ``write_errors``
     holds why a pack could not be stored (the run goes on without storing it).
+    ``asked``, when set to a list, receives ``(kind, keys)`` of every batch
+    run (the portfolio's account of a building assessed on a worker,
+    :func:`assess.portfolio.spread.sequential_account`).
     """
 
     def __init__(self, inner=None, folder=".cache", *, max_bytes: int = DEFAULT_MAX_BYTES,
@@ -222,6 +225,7 @@ class CachingRunner(RunnerBase):
         self.runs_simulated: dict = {}
         self.runs_reused: dict = {}
         self.write_errors: list[str] = []
+        self.asked: Optional[list] = None
         self._index = _Index()
         self._responses: dict = {}
 
@@ -229,6 +233,8 @@ class CachingRunner(RunnerBase):
     def run(self, cases: Cases, *, progress: Progress = None) -> Result:
         n = len(cases)
         keys = case_keys(cases, self.version)
+        if self.asked is not None:
+            self.asked.append((cases.kind, keys))
         cacheable = np.array([k is not None for k in keys], dtype=bool)
         key_array = np.array([k if k is not None else b"" for k in keys], dtype=f"S{KEY_BYTES}")
         self._load_new_packs()
@@ -302,6 +308,10 @@ class CachingRunner(RunnerBase):
                          theta_max_over_alpha=values["theta_max_over_alpha"], uplift=values["uplift"],
                          overturned=values["overturned"], mode=texts["mode"].astype(str),
                          solver=texts["solver"].astype(str))
+
+    def known_keys(self) -> list[bytes]:
+        """The keys of every stored peaks and planar case read so far, as :func:`case_keys` gives them."""
+        return [key.ljust(KEY_BYTES, b"\0") for key in self._index.keys.tolist()]  # numpy drops trailing zeros
 
     # ------------------------------------------------------------ the folder
     def _pack_paths(self) -> list[Path]:

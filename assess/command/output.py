@@ -19,7 +19,8 @@ from assess.report.tables import (  # noqa: F401 (re-exported)
 
 
 def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: str | None = None,
-                   other_levels: tuple[AssessmentResult, ...] = ()) -> dict[str, bytes]:
+                   other_levels: tuple[AssessmentResult, ...] = (), pdf_processes: int | None = None
+                   ) -> dict[str, bytes]:
     """All files of a run, by name, as bytes (nothing is written here).
 
     ``formats`` may hold ``html``, ``pdf`` (the report) and ``xlsx``
@@ -27,12 +28,14 @@ def render_outputs(result: AssessmentResult, formats: tuple[str, ...], units: st
     inches beside centimetres in US units). ``units`` (``si`` or ``us``) defaults to the result's
     settings' (``--units`` or the workbook's, :func:`assess.quantity_text.system_of`). ``other_levels``, the
     results of the other levels of the same run, add their sheets to summary.xlsx
-    after this level's.
+    after this level's. ``pdf_processes``: as :func:`assess.report.pdf.render_pdf` takes its ``processes``
+    (1 on a cluster's worker, which may start no process and has a core per thread; the bytes are the same).
     """
     result = advice.with_words(result)
     other_levels = tuple(advice.with_words(other) for other in other_levels)
     files = _tables(result, formats, units, other_levels)
-    files.update(report.report_files(result, html="html" in formats, pdf="pdf" in formats))
+    files.update(report.report_files(result, html="html" in formats, pdf="pdf" in formats,
+                                     pdf_processes=pdf_processes))
     return files
 
 

@@ -1,14 +1,17 @@
 """The engine's cases on a Dask distributed cluster (``assess --scheduler ADDRESS``).
 
 :class:`DaskRunner` is a runner of :mod:`assess.mechanics.gateway`: it cuts
-a batch of cases (of any kind), ordered by record, into tasks of
-:data:`CASES_PER_TASK` (so the tasks depend on the cases alone, never on how
-many workers there are), sends each record to the cluster once, runs
-:func:`assess.mechanics.gateway.run_cases` on the workers and puts the
-results back in case order. A case's result depends only on its block and its
-record (the kernels are deterministic and every synthetic motion is seeded
-per motion before it gets here), so the numbers are those of a run on this
-machine, bit for bit, wherever and in whatever order the tasks ran.
+a batch of cases (of any kind) into a few tasks per worker thread, of equal
+cost (:func:`cost_tasks`: every task holds the same share of every record's
+cases, so the same number of time steps), sends the batch's records and
+distinct blocks (as a float table, :func:`block_table`) to every worker once,
+ships each task as arrays (block rows, record indices), runs
+:func:`assess.mechanics.gateway.run_cases` on the workers and puts the results
+(arrays) back in case order. A case's result depends only on its block and
+its record (the kernels are deterministic, every case is computed alone, and
+every synthetic motion is seeded per motion before it gets here), so the
+numbers are those of a run on this machine, bit for bit, however the cases
+were cut and wherever and in whatever order the tasks ran.
 
 The workers need the same version of ``assess`` installed (checked when
 connecting). Dask [1] was chosen because it is the Python scientific stack's
@@ -32,7 +35,7 @@ import pickle
 import struct
 import sys
 import time
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -41,35 +44,174 @@ import numpy as np
 import assess
 from assess.errors import InputError, Problem
 
+from .block import Block
+from .engine import BlockOnInterface, SlidingInterface
 from .gateway import RESPONSE, CasePeaks, Cases, Progress, Result, RunnerBase, run_cases
 
-#: Cases per task: about a tenth of a second to a second of work on one core, so that small jobs
-#: still spread over the workers and scheduling (about a millisecond a task) costs little.
-CASES_PER_TASK = 256
+#: Tasks per worker thread aimed at: a few large tasks, of equal cost, so that a worker slowed by its machine
+#: leaves its last task to the others while scheduling (about a millisecond a task) costs nothing.
+TASKS_PER_THREAD = 4
+#: Least work in one task [block-steps: cases x time steps]: about a tenth of a second on one core, so that a
+#: small batch is not cut into tasks that cost more to send than to run.
+MIN_TASK_STEPS = 2_000_000
 #: Seconds allowed to reach the scheduler and find a worker, by default.
 CONNECT_TIMEOUT_S = 10.0
+#: Columns of a block table (:func:`block_table`): the fields of a Block, whether it is a BlockOnInterface
+#: (1) or not (0), then its sliding interface's fields; NaN where a field is None.
+BLOCK_COLUMNS = ("half_width_m", "cg_height_m", "height_m", "mu", "mu_static", "restitution", "foot_inset_m",
+                 "on_interface", "low_speed_factor", "rate_s_m", "yield_displacement_m")
 
 
-def case_tasks(record_index, cases_per_task: int = CASES_PER_TASK) -> list[np.ndarray]:
-    """The cases of each task: all cases ordered by record (then by case), cut every ``cases_per_task``.
+def case_steps(cases: Cases) -> np.ndarray:
+    """Time steps of each case [-]: its record's samples and the tail after it (the cost of a run, per block).
 
-    Depends on the cases alone (never on the cluster), so the same cases
-    always make the same tasks; a task holds the cases of one record or of a
-    few consecutive ones.
+    >>> c = Cases.peaks([Block(0.2, 0.5, 1.0, 0.3)] * 2, [np.zeros(100), np.zeros(50)], [0.01, 0.02], [0, 1],
+    ...                 tail_s=1.0)
+    >>> case_steps(c).tolist()
+    [200, 100]
+    """
+    steps = np.array([len(r) + int(np.ceil(cases.tail_s / dt)) for r, dt in zip(cases.records_g, cases.dt_s)],
+                     dtype=np.int64)
+    return steps[cases.record_index] if len(cases) else np.zeros(0, dtype=np.int64)
 
-    >>> [t.tolist() for t in case_tasks([1, 0, 1, 1, 0], cases_per_task=2)]
-    [[1, 4], [0, 2], [3]]
+
+def cost_tasks(record_index, steps, n_tasks: int) -> list[np.ndarray]:
+    """The cases of each of ``n_tasks`` tasks of equal cost: all cases ordered by record, dealt in turn.
+
+    Every task takes every ``n_tasks``-th case of that order, so each holds
+    the same share (to one case) of every record's cases and of the blocks
+    along them: the same number of time steps (``steps``, per case) to one
+    case, and a mix of sliding and rocking blocks like the batch's. A task's
+    cases stay in record order (the sliding kernel runs a record at a time).
+
+    >>> [t.tolist() for t in cost_tasks([1, 0, 1, 1, 0], np.ones(5), 2)]
+    [[1, 0, 3], [4, 2]]
     """
     record_index = np.asarray(record_index, dtype=np.int64)
-    if cases_per_task < 1:
-        raise ValueError("cases_per_task must be 1 or more")
+    if n_tasks < 1:
+        raise ValueError("n_tasks must be 1 or more")
     order = np.argsort(record_index, kind="stable")
-    return [order[start:start + cases_per_task] for start in range(0, order.size, cases_per_task)]
+    tasks = [order[t::n_tasks] for t in range(min(n_tasks, order.size))]
+    return tasks
 
 
-def _run_task(cases: Cases, records_g: list) -> Result:
-    """One task on a worker: its cases under its records (sent apart, once per record), through the gateway."""
-    return run_cases(replace(cases, records_g=records_g))
+def task_count(total_steps: int, n_cases: int, threads: int, *, tasks_per_thread: int = TASKS_PER_THREAD,
+               min_task_steps: int = MIN_TASK_STEPS) -> int:
+    """How many tasks a batch is cut into: ``tasks_per_thread`` per worker thread, each worth at least
+    ``min_task_steps`` block-steps, never more than the cases.
+
+    >>> task_count(360_000 * 4_000, 360_000, 16), task_count(1_000_000, 500, 16), task_count(0, 0, 4)
+    (64, 1, 1)
+    """
+    by_cost = max(1, int(total_steps) // max(1, int(min_task_steps)))
+    return max(1, min(int(threads) * int(tasks_per_thread), by_cost, int(n_cases)))
+
+
+def block_table(blocks) -> tuple[np.ndarray, np.ndarray] | None:
+    """The distinct blocks of ``blocks`` as a float table (:data:`BLOCK_COLUMNS`) and each block's row.
+
+    None when a block is neither a :class:`~assess.mechanics.block.Block` nor a
+    :class:`~assess.mechanics.engine.BlockOnInterface` (it travels as itself).
+    A block given as the same object, or with the same fields, takes one row.
+
+    >>> table, rows = block_table([Block(0.2, 0.5, 1.0, 0.3)] * 3 + [Block(0.2, 0.5, 1.0, 0.4)])
+    >>> table.shape, rows.tolist()
+    ((2, 11), [0, 0, 0, 1])
+    """
+    by_id: dict = {}
+    by_fields: dict = {}
+    rows = np.empty(len(blocks), dtype=np.int64)
+    table: list = []
+    for k, block in enumerate(blocks):
+        row = by_id.get(id(block))
+        if row is None:
+            fields = _block_fields(block)
+            if fields is None:
+                return None
+            row = by_fields.setdefault(fields, len(table))
+            if row == len(table):
+                table.append(fields)
+            by_id[id(block)] = row
+        rows[k] = row
+    nan = float("nan")
+    table = [[nan if v is None else float(v) for v in fields] for fields in table]
+    return np.array(table, dtype=float).reshape(-1, len(BLOCK_COLUMNS)), rows
+
+
+def _block_fields(block) -> tuple | None:
+    """A block's fields in the order of :data:`BLOCK_COLUMNS` (None where a field is None), or None."""
+    kind = type(block)
+    if kind is Block:
+        interface, on = None, 0.0
+    elif kind is BlockOnInterface:
+        interface, on = block.interface, 1.0
+    else:
+        return None
+    laws = (None, None, None) if interface is None else \
+        (interface.low_speed_factor, interface.rate_s_m, interface.yield_displacement_m)
+    return (block.half_width_m, block.cg_height_m, block.height_m, block.mu, block.mu_static, block.restitution,
+            block.foot_inset_m, on) + laws
+
+
+def blocks_from_table(table: np.ndarray) -> list:
+    """The blocks of a :func:`block_table`'s rows, field for field (the inverse of :func:`block_table`)."""
+    blocks = []
+    for row in np.asarray(table, dtype=float).tolist():
+        value = [None if v != v else v for v in row]  # NaN: a field left None
+        fields = dict(zip(BLOCK_COLUMNS[:7], value[:7]))
+        if row[7] == 0.0:
+            blocks.append(Block(**fields))
+            continue
+        laws = value[8:]
+        interface = None if all(v is None for v in laws) else SlidingInterface(*laws)
+        blocks.append(BlockOnInterface(**fields, interface=interface))
+    return blocks
+
+
+@dataclass(frozen=True)
+class _Part:
+    """One task's cases as arrays: each case's block (a row of the batch's table, or the block itself when
+    the batch has no table) and record(s) (indices into the batch's records, sent once per worker)."""
+
+    kind: str
+    rows: np.ndarray
+    blocks: Any
+    record_index: np.ndarray
+    record_index_2: Any
+    tail_s: float
+    history: bool
+    solver: str
+
+
+def _run_part(shared, part: _Part):
+    """One task on a worker: its cases rebuilt from arrays, run by the gateway; peaks returned as arrays."""
+    records_g, dt_s, table = shared
+    if table is None:
+        blocks = part.blocks
+    else:
+        used, inverse = np.unique(part.rows, return_inverse=True)
+        built = blocks_from_table(table[used])
+        blocks = [built[i] for i in inverse.tolist()]
+    result = run_cases(Cases(part.kind, blocks, records_g, dt_s, part.record_index, part.record_index_2,
+                             tail_s=part.tail_s, history=part.history, solver=part.solver))
+    if part.kind == RESPONSE:
+        return result
+    return {name: _coded(getattr(result, name)) if name in _TEXT else getattr(result, name) for name in _FIELDS}
+
+
+_FIELDS = ("sliding_max_m", "sliding_residual_m", "theta_max_over_alpha", "uplift", "overturned", "mode", "solver")
+_TEXT = ("mode", "solver")
+
+
+def _coded(text: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """A column of a few distinct words as (words, one small code per case)."""
+    words, codes = np.unique(text, return_inverse=True)
+    return words, codes.astype(np.uint8 if words.size < 256 else np.int64)
+
+
+def _decoded(coded) -> np.ndarray:
+    words, codes = coded
+    return words[codes]
 
 
 def _worker_version():
@@ -314,21 +456,28 @@ def _client(address: str, security, timeout_s: float):
 class DaskRunner(RunnerBase):
     """Run the engine's cases on the Dask cluster that ``client`` is connected to.
 
-    Build it with :meth:`connect`. ``cases_simulated`` counts the ``peaks``
-    cases this runner simulated, ``runs_simulated`` every run by kind;
-    ``tasks_run`` the tasks it sent.
+    Build it with :meth:`connect`. A batch is cut into :func:`task_count`
+    tasks of equal cost (:func:`cost_tasks`): ``tasks_per_thread`` per worker
+    thread, each worth at least ``min_task_steps`` block-steps. Its records,
+    sample intervals and distinct blocks (a float table, :func:`block_table`)
+    are sent to every worker once per batch (Dask's broadcast scatter); a task
+    carries only each case's block row and record index, and its peaks come
+    back as arrays. ``cases_simulated`` counts the ``peaks`` cases this runner
+    simulated, ``runs_simulated`` every run by kind; ``tasks_run`` the tasks
+    it sent.
     """
 
     client: Any
-    cases_per_task: int = CASES_PER_TASK
+    tasks_per_thread: int = TASKS_PER_THREAD
+    min_task_steps: int = MIN_TASK_STEPS
     cases_simulated: int = field(default=0)
     tasks_run: int = field(default=0)
     runs_simulated: dict = field(default_factory=dict)
 
     @classmethod
     def connect(cls, address: str, *, timeout_s: float = CONNECT_TIMEOUT_S,
-                cases_per_task: int = CASES_PER_TASK, tls_ca_file=None, tls_cert=None,
-                tls_key=None) -> "DaskRunner":
+                tasks_per_thread: int = TASKS_PER_THREAD, min_task_steps: int = MIN_TASK_STEPS,
+                tls_ca_file=None, tls_cert=None, tls_key=None) -> "DaskRunner":
         """Connect to the scheduler at ``address`` (``tcp://host:8786``, ``host:8786``, ``tls://...``).
 
         A scheduler is trusted as code you run: Dask's client opens whatever
@@ -368,27 +517,40 @@ class DaskRunner(RunnerBase):
             reason = " ".join(str(error).split())[:300] or type(error).__name__
             raise _scheduler_problem(text, f"its workers cannot run assess ({reason})",
                                      "install assess (the same version) where the workers run") from None
-        return cls(client=client, cases_per_task=cases_per_task)
+        return cls(client=client, tasks_per_thread=tasks_per_thread, min_task_steps=min_task_steps)
 
     def close(self) -> None:
         """Disconnect from the cluster (the cluster itself keeps running)."""
         self.client.close()
+
+    def threads(self) -> int:
+        """Worker threads of the cluster now (at least 1)."""
+        return max(1, sum(self.client.nthreads().values()))
 
     def run(self, cases: Cases, *, progress: Progress = None) -> Result:
         """As :func:`assess.mechanics.gateway.run_cases`, on the cluster's workers."""
         from distributed import as_completed  # the optional cluster extra
 
         n = len(cases)
-        tasks = case_tasks(cases.record_index, self.cases_per_task)
-        used = cases.records_used()
-        # unique keys per batch (hash=False): a record sent again by the next batch is not the one being released
-        scattered = self.client.scatter([np.asarray(cases.records_g[j], dtype=float) for j in used], hash=False)
-        records = dict(zip(used.tolist(), scattered))
+        if n == 0:
+            return run_cases(cases)
+        steps = case_steps(cases)
+        tasks = cost_tasks(cases.record_index, steps, task_count(int(steps.sum()), n, self.threads(),
+                                                                 tasks_per_thread=self.tasks_per_thread,
+                                                                 min_task_steps=self.min_task_steps))
+        packed = block_table(cases.blocks)
+        table, rows = packed if packed is not None else (None, None)
+        shared = ([np.asarray(r, dtype=float) for r in cases.records_g], [float(d) for d in cases.dt_s], table)
+        # once to every worker; a unique key per batch (hash=False): the next batch's is not the one being released
+        [everywhere] = self.client.scatter([shared], broadcast=True, hash=False)
         futures = {}
         for number, task in enumerate(tasks):
-            mine = cases.records_used(task).tolist()
-            part = cases.subset(task, records_g=[None] * len(mine))  # the records travel as the cluster's copies
-            futures[self.client.submit(_run_task, part, [records[j] for j in mine], pure=False)] = number
+            part = _Part(cases.kind, None if rows is None else rows[task],
+                         [cases.blocks[k] for k in task.tolist()] if rows is None else None,
+                         cases.record_index[task],
+                         None if cases.record_index_2 is None else cases.record_index_2[task],
+                         cases.tail_s, cases.history, cases.solver)
+            futures[self.client.submit(_run_part, everywhere, part, pure=False)] = number
         parts: list = [None] * len(tasks)
         done = 0
         try:
@@ -401,8 +563,7 @@ class DaskRunner(RunnerBase):
         finally:
             for future in futures:
                 future.release()
-            for future in records.values():
-                future.release()
+            everywhere.release()
         self._count(cases, n)
         self.tasks_run += len(tasks)
         return _assembled(tasks, parts, n, cases.kind)
@@ -410,18 +571,16 @@ class DaskRunner(RunnerBase):
 
 def _assembled(tasks, parts, n, kind) -> Result:
     """The tasks' results put back in case order."""
-    order = np.concatenate(tasks) if tasks else np.zeros(0, dtype=np.int64)
+    order = np.concatenate(tasks)
     if kind == RESPONSE:
         responses: list = [None] * n
         for k, response in zip(order.tolist(), [r for part in parts for r in part]):
             responses[k] = response
         return responses
     fields = {}
-    for name, empty in (("sliding_max_m", np.zeros(0)), ("sliding_residual_m", np.zeros(0)),
-                        ("theta_max_over_alpha", np.zeros(0)), ("uplift", np.zeros(0, dtype=bool)),
-                        ("overturned", np.zeros(0, dtype=bool)), ("mode", np.zeros(0, dtype=str)),
-                        ("solver", np.zeros(0, dtype=str))):
-        values = np.concatenate([getattr(p, name) for p in parts]) if parts else empty
+    for name in _FIELDS:
+        values = [_decoded(p[name]) if name in _TEXT else p[name] for p in parts]
+        values = np.concatenate(values)
         out = np.empty(n, dtype=values.dtype)
         out[order] = values
         fields[name] = out

@@ -468,7 +468,7 @@ def default_out_dir(portfolio: Path) -> Path:
 
 def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, seed: int = 0,
                   formats: tuple[str, ...] = ("html", "pdf", "xlsx"), units: str | None = None,
-                  say: Callable[[str], None] = lambda message: None) -> StagedPortfolio:
+                  say: Callable[[str], None] = lambda message: None, spread=None) -> StagedPortfolio:
     """Assess every building through ``runner`` (a :class:`~assess.command.cache.CachingRunner`), writing into a
     staging folder beside ``out_dir``; returns it staged (:meth:`StagedPortfolio.commit` puts it in place).
 
@@ -477,7 +477,9 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
     ``out_dir`` (:func:`building_key`: its workbook, records and hazard curve,
     level, seed, formats, the code) keeps its folder as it is, when the folder's
     files are those that run wrote; the others are assessed, their simulations
-    reused from the cache where their cases did not change.
+    reused from the cache where their cases did not change. ``spread`` (a
+    :class:`~assess.portfolio.spread.BuildingSpread`, on a cluster) assesses
+    them on the cluster's workers, when it applies, with the same files and counts.
     """
 
     out_dir = Path(out_dir)
@@ -494,15 +496,40 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
         rows, current, manifest = [], {}, {}
         version = code_version()
         total = len(prepared)
+        keys = [building_key(item, seed=seed, formats=formats, units=units, version=version) for item in prepared]
+        outcomes = {}
+        pending = [] if spread is None else [  # the buildings to assess (their folders are read again below)
+            number for number, (item, key) in enumerate(zip(prepared, keys))
+            if _unchanged_folder(out_dir / item.building.name, before_manifest.get(item.building.name), key) is None]
+        if spread is not None and spread.applies([prepared[k] for k in pending]):
+            say(f"on the cluster: {spread.reason}")
+
+            def deliver(number, outcome):  # written as it arrives; only the digests and summary.csv are kept
+                files = outcome.files
+                write_files(staging / prepared[pending[number]].building.name, files)
+                outcome.files = {name: _digest(data) for name, data in files.items()}
+                outcome.summary_csv = files["summary.csv"]
+
+            outcomes = dict(zip(pending, spread.assess([prepared[k] for k in pending], seed=seed, formats=formats,
+                                                       units=units, say=say, deliver=deliver)))
+        elif spread is not None:
+            say(f"on the cluster: {spread.reason}")
         for number, item in enumerate(prepared, start=1):
             building = item.building
             tag = f"[{number}/{total}] {building.name}"
             say(f"{tag}: {building.workbook.name} at level {item.level}"
                 + (f", hazard curve {Path(item.curve.path).name}" if item.curve is not None else ""))
             started = time.perf_counter()
-            key = building_key(item, seed=seed, formats=formats, units=units, version=version)
-            kept = _unchanged_folder(out_dir / building.name, before_manifest.get(building.name), key)
-            if kept is not None:
+            key = keys[number - 1]
+            kept = None if number - 1 in outcomes else \
+                _unchanged_folder(out_dir / building.name, before_manifest.get(building.name), key)
+            if number - 1 in outcomes:
+                outcome = outcomes[number - 1]  # its files written as it arrived (``deliver``)
+                summary, level_label = outcome.summary, outcome.level_label
+                simulated, reused = outcome.simulated, outcome.reused
+                entry = dict(key=key, cases=simulated + reused, level_label=level_label, files=outcome.files)
+                kept = {"summary.csv": outcome.summary_csv}
+            elif kept is not None:
                 write_files(staging / building.name, kept)
                 entry = dict(before_manifest[building.name])
                 summary = _restored_summary(kept["summary.csv"])
@@ -530,7 +557,9 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
                                      Path(item.curve.path).name if item.curve is not None else "", summary,
                                      simulated, reused))
             counts = summary["risk"].value_counts()
-            say(f"{tag}: {simulated} cases simulated, {reused} reused, {time.perf_counter() - started:.1f} s; "
+            seconds = outcomes[number - 1].seconds if number - 1 in outcomes else time.perf_counter() - started
+            where = " on a worker" if number - 1 in outcomes else ""
+            say(f"{tag}: {simulated} cases simulated, {reused} reused, {seconds:.1f} s{where}; "
                 f"{counts.get('high', 0)} high, {counts.get('moderate', 0)} moderate, {counts.get('low', 0)} low risk")
         staged.summary = pd.DataFrame(rows)
         staged.changes = changes_between(
@@ -592,7 +621,12 @@ def run_batch(job: BatchJob, say: Say = lambda message: None) -> tuple[StagedPor
     with open_runner(job.scheduler, lambda message: None, out_dir / CACHE_FOLDER,
                      tls=job.scheduler_tls) as runner:
         say(f"{len(prepared)} buildings; results are reused from {out_dir / CACHE_FOLDER}")
-        staged = run_portfolio(prepared, out_dir, runner=runner, seed=job.seed, formats=job.formats, say=say)
+        spread = None
+        if job.scheduler is not None:
+            from assess.portfolio.spread import BuildingSpread
+            spread = BuildingSpread(runner, files_of=lambda item: [item.building.workbook, *building_records(item)])
+        staged = run_portfolio(prepared, out_dir, runner=runner, seed=job.seed, formats=job.formats, say=say,
+                               spread=spread)
     return staged, runner, out_dir
 
 
@@ -622,6 +656,16 @@ def building_key(item: PreparedBuilding, *, seed: int, formats, units: str, vers
     digest = hashlib.blake2b(digest_size=16)
     digest.update(f"{version}|{item.level}|{seed}|{sorted(formats)}|{units}|".encode())
     digest.update(_file_digest(item.building.workbook).encode())
+    for record in building_records(item):
+        digest.update(f"|{record}|{_file_digest(Path(record))}".encode())
+    if item.curve is not None:
+        digest.update(f"|curve|{_file_digest(Path(item.curve.path))}".encode())
+    return digest.hexdigest()
+
+
+def building_records(item: PreparedBuilding) -> list[str]:
+    """The files besides its workbook that a building's assessment reads: every record its hazard sheet names,
+    its site sheet's uniform-hazard spectrum and the records of its records folder."""
     hazard = item.inventory.hazard
     records = sorted({str(p) for column in hazard.columns if column.endswith("_path")  # record_path, and
                       for p in hazard[column] if isinstance(p, str) and p})           # any other record column
@@ -631,11 +675,7 @@ def building_key(item: PreparedBuilding, *, seed: int, formats, units: str, vers
             records.append(site.uhs_path)
         if site.records_folder:
             records += sorted(str(p) for p in Path(site.records_folder).rglob("*") if p.is_file())
-    for record in records:
-        digest.update(f"|{record}|{_file_digest(Path(record))}".encode())
-    if item.curve is not None:
-        digest.update(f"|curve|{_file_digest(Path(item.curve.path))}".encode())
-    return digest.hexdigest()
+    return records
 
 
 def _file_digest(path: Path) -> str:

@@ -566,13 +566,15 @@ def render_html(result) -> str:
                                     appendix_only=False)
 
 
-def report_files(result, *, html: bool = True, pdf: bool = True) -> dict[str, bytes]:
+def report_files(result, *, html: bool = True, pdf: bool = True, pdf_processes: int | None = None
+                 ) -> dict[str, bytes]:
     """``report.html`` and/or ``report.pdf`` of ``result``, by name.
 
     The PDF's appendix (Appendix A, item by item) needs none of the figures, so its document is made
     first and laid out while the figures are drawn and the body is laid out
     (:func:`assess.report.pdf.render_pdf_of_parts`); ``report.pdf`` is the same bytes as
-    ``render_pdf(render_html(result))``.
+    ``render_pdf(render_html(result))``. ``pdf_processes``: as :func:`assess.report.pdf.render_pdf` takes its
+    ``processes`` (1 on a cluster's worker, which may start no process).
     """
     if not pdf:
         return {"report.html": render_html(result).encode()} if html else {}
@@ -585,7 +587,7 @@ def report_files(result, *, html: bool = True, pdf: bool = True) -> dict[str, by
         whole.append(template.render(context, figures=report_figures(result), appendix_only=False))
         return split_appendix(whole[0])[0]
 
-    files = {"report.pdf": render_pdf_of_parts(appendix, body)}
+    files = {"report.pdf": render_pdf_of_parts(appendix, body, processes=pdf_processes)}
     if html:
         files = {"report.html": whole[0].encode(), **files}
     return files

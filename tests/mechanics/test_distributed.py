@@ -4,7 +4,8 @@ A scheduler and two worker processes are started on 127.0.0.1 (one thread
 each). The main job on inventories/lab.xlsx is run serially (the session's run, tests/conftest.py)
 and through the scheduler and its summary.csv and motions.csv compared byte for byte; the
 runner itself is compared with the engine on cases of every solver, cut into
-small tasks so that they spread over both workers and come back out of order.
+small tasks so that they spread over both workers and come back out of order. The pieces that
+ship a batch (the block table, the tasks of equal cost) are checked against their definitions.
 """
 from __future__ import annotations
 
@@ -18,8 +19,10 @@ distributed = pytest.importorskip("distributed")
 from assess import cli  # noqa: E402
 from assess.hazard.pulses import pulse_acceleration  # noqa: E402
 from assess.mechanics.block import Block  # noqa: E402
-from assess.mechanics.distributed import DaskRunner, case_tasks  # noqa: E402
-from assess.mechanics.engine import GENERAL, ROCKING_KERNEL, SLIDING_KERNEL, simulate_cases  # noqa: E402
+from assess.mechanics.distributed import (DaskRunner, block_table, blocks_from_table, case_steps,  # noqa: E402
+                                         cost_tasks, task_count)
+from assess.mechanics.engine import (GENERAL, ROCKING_KERNEL, SLIDING_KERNEL, BlockOnInterface,  # noqa: E402
+                                    SlidingInterface, simulate_cases)
 from assess.mechanics.gateway import Cases, run_cases  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -73,12 +76,13 @@ def test_runner_reassembles_in_case_order(cluster):
     expected = simulate_cases(blocks, records, dts, index)
     assert {SLIDING_KERNEL, ROCKING_KERNEL, GENERAL} <= set(expected.solver)
     seen = []
-    runner = DaskRunner.connect(cluster.scheduler_address, cases_per_task=5)
+    # tasks far smaller than the runner cuts by default: they spread over both workers and finish out of order
+    runner = DaskRunner.connect(cluster.scheduler_address, tasks_per_thread=4, min_task_steps=1)
     try:
         got = runner.simulate_cases(blocks, records, dts, index, progress=lambda done, total: seen.append(done))
     finally:
         runner.close()
-    assert runner.cases_simulated == len(blocks) and runner.tasks_run == len(case_tasks(index, 5)) > 2
+    assert runner.cases_simulated == len(blocks) and runner.tasks_run == 2 * 4
     assert seen[-1] == len(blocks) and seen == sorted(seen)
     for name in ("sliding_max_m", "sliding_residual_m", "theta_max_over_alpha", "uplift", "overturned", "mode",
                  "solver"):
@@ -92,7 +96,7 @@ def test_planar_and_history_runs_on_the_cluster_are_the_local_ones(cluster):
     sliders = [k for k, b in enumerate(blocks) if b.mu_static < b.b_over_h]
     planar = Cases.planar([blocks[k] for k in sliders], records, dts, index[sliders], (index[sliders] + 1) % 3)
     responses = Cases.responses(blocks[:12], records, dts, index[:12], tail_s=1.0, history=True)
-    runner = DaskRunner.connect(cluster.scheduler_address, cases_per_task=4)
+    runner = DaskRunner.connect(cluster.scheduler_address, tasks_per_thread=3, min_task_steps=1)
     try:
         got_planar, got_responses = runner.run(planar), runner.run(responses)
     finally:
@@ -118,3 +122,75 @@ def test_unreachable_or_invalid_scheduler_exits_2(address, tmp_path, capsys):
     assert address in err and "--scheduler" in err and "Fix:" in err
     assert "Traceback" not in err
     assert not out.exists() or not any(out.iterdir())
+
+
+def _odd_blocks():
+    """Blocks of every field the table carries: restitution given, feet, both sliding interfaces, none."""
+    return [Block(half_width_m=0.3, cg_height_m=0.6, height_m=1.2, mu=0.2, mu_static=0.25),
+            Block(half_width_m=0.3, cg_height_m=0.6, height_m=1.2, mu=0.5, restitution=0.8, foot_inset_m=0.05),
+            BlockOnInterface(half_width_m=0.5, cg_height_m=0.4, height_m=0.8, mu=0.2,
+                             interface=SlidingInterface(yield_displacement_m=0.004)),
+            BlockOnInterface(half_width_m=0.5, cg_height_m=0.4, height_m=0.8, mu=0.2, mu_static=0.3,
+                             interface=SlidingInterface(low_speed_factor=0.6, rate_s_m=0.05)),
+            BlockOnInterface(half_width_m=0.5, cg_height_m=0.4, height_m=0.8, mu=0.3)]
+
+
+def test_block_table_gives_back_every_block_field_for_field():
+    blocks = _odd_blocks()
+    twice = blocks + [Block(half_width_m=0.3, cg_height_m=0.6, height_m=1.2, mu=0.2, mu_static=0.25)] + blocks
+    table, rows = block_table(twice)
+    assert table.shape[0] == len(blocks)  # an equal block, or the same object again, takes the same row
+    assert rows.tolist() == [0, 1, 2, 3, 4, 0, 0, 1, 2, 3, 4]
+    rebuilt = blocks_from_table(table)
+    assert [type(b) for b in rebuilt] == [type(b) for b in blocks]
+    assert rebuilt == blocks  # dataclass equality: every field, the interface's included
+
+    class Marked(Block):
+        pass
+
+    assert block_table(blocks + [Marked(half_width_m=0.3, cg_height_m=0.6, height_m=1.2, mu=0.2)]) is None
+
+
+def test_cost_tasks_take_every_case_once_and_an_equal_share_of_each_record():
+    rng = np.random.default_rng(3)
+    index = rng.integers(0, 7, size=1001)
+    steps = np.array([400, 900, 50, 1200, 700, 300, 2000])[index]
+    tasks = cost_tasks(index, steps, 6)
+    assert len(tasks) == 6
+    assert sorted(np.concatenate(tasks).tolist()) == list(range(index.size))
+    for j in range(7):
+        counts = [int(np.count_nonzero(index[t] == j)) for t in tasks]
+        assert max(counts) - min(counts) <= 1, (j, counts)
+    costs = [int(steps[t].sum()) for t in tasks]
+    assert max(costs) - min(costs) <= 400 + 900 + 50 + 1200 + 700 + 300 + 2000  # one case of each record at most
+    assert all(np.all(np.diff(index[t]) >= 0) for t in tasks)  # a task's cases in record order
+    assert task_count(10**12, 50, 16) == 50 and task_count(5, 10, 16, min_task_steps=1) == 5
+
+
+def test_case_steps_are_the_record_and_its_tail():
+    blocks = _odd_blocks()[:2]
+    cases = Cases.peaks(blocks, [np.zeros(101), np.zeros(10)], [0.01, 0.005], [1, 0], tail_s=0.5)
+    assert case_steps(cases).tolist() == [10 + 100, 101 + 50]
+
+
+def test_interface_and_unshippable_blocks_on_the_cluster_are_the_local_ones(cluster):
+    """Blocks on sliding interfaces travel in the table; a block of a class the table does not know travels as
+    itself: the numbers are this machine's either way."""
+    time_s = np.arange(0.0, 2.0, 0.01)
+    records = [pulse_acceleration("A", 0.6, 1.0, time_s), pulse_acceleration("B", 0.5, 0.8, time_s)]
+
+    class Marked(Block):
+        pass
+
+    runner = DaskRunner.connect(cluster.scheduler_address, tasks_per_thread=2, min_task_steps=1)
+    try:
+        for extra in ([], [Marked(half_width_m=0.25, cg_height_m=0.8, height_m=1.6, mu=0.5)]):
+            blocks = (_odd_blocks() + extra) * 2
+            index = np.repeat([0, 1], len(blocks) // 2)
+            expected = simulate_cases(blocks, records, [0.01, 0.01], index)
+            got = runner.simulate_cases(blocks, records, [0.01, 0.01], index)
+            for name in ("sliding_max_m", "sliding_residual_m", "theta_max_over_alpha", "uplift", "overturned",
+                         "mode", "solver"):
+                np.testing.assert_array_equal(getattr(got, name), getattr(expected, name), err_msg=name)
+    finally:
+        runner.close()
