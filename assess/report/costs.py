@@ -102,7 +102,7 @@ def lead_sentence(summary: pd.DataFrame, settings: Settings, has_curve: bool) ->
     ...                       "mitigation_cost": [40.0, float("nan")], "benefit_cost_ratio": [float("nan")] * 2,
     ...                       "expected_annual_loss": [float("nan")] * 2, "expected_annual_loss_after": [float("nan")] * 2,
     ...                       "value": [1000.0, 500.0], "action_kind": ["anchor", "none"]})
-    >>> lead_sentence(table, {"currency": "USD"}, False)  # doctest: +NORMALIZE_WHITESPACE
+    >>> lead_sentence(table, Settings(currency="USD"), False)  # doctest: +NORMALIZE_WHITESPACE
     'If this earthquake happens, the 3 freestanding units with a value are expected to lose USD 200 (USD 100 after the
     recommended actions, which cost USD 40 where a cost is given). No benefit-cost ratio: this level is one
     earthquake, not how often it happens; give a hazard curve (--oq-hazard) for one.'
@@ -135,7 +135,7 @@ def basis_sentence(settings: Settings, has_curve: bool, own_after: bool = False)
     """How the amounts are computed, in one paragraph (the loss model, and the discounting with a curve);
     ``own_after``: the summary gives each action's probabilities after it (``p_overturn_after``).
 
-    >>> basis_sentence({"discount_rate": 0.07, "remaining_life_yr": 15.0}, True).split("avoided, ")[-1]
+    >>> basis_sentence(Settings(discount_rate=0.07, remaining_life_yr=15.0), True).split("avoided, ")[-1]
     'over 15 years at 7 % a year (present value factor 9.11, as in FEMA benefit-cost analysis), divided by its cost.'
     """
     text_ = (f"Amounts per unit. Expected loss: the item's value times the share its worst outcome costs "

@@ -196,12 +196,12 @@ def test_failure_while_rendering_leaves_old_outputs_untouched(tmp_path, monkeypa
     out.mkdir()
     (out / "summary.csv").write_text("previous run\n")
 
-    def broken(html, **_):
+    def broken(result, **_):
         raise RuntimeError("renderer crashed")
 
     import assess.report
 
-    monkeypatch.setattr(assess.report, "render_pdf", broken)
+    monkeypatch.setattr(assess.report, "report_files", broken)
     code = cli.main([str(job_workbook(tmp_path / "in")), "--hazard", "2in50", "--out", str(out), "--quiet"])
     assert code == 1
     assert "internal error" in capsys.readouterr().err
@@ -476,16 +476,16 @@ def test_an_interrupt_a_library_swallows_still_stops_the_run(tmp_path, monkeypat
 
     import assess.report
 
-    def render_swallowing(html, **_):
+    def render_swallowing(result, **_):
         try:
             os.kill(os.getpid(), signal.SIGINT)
             for _ in range(10**6):
                 pass
         except KeyboardInterrupt:
             pass  # what a cffi callback does with it
-        return b"%PDF-1.7\n"
+        return {"report.pdf": b"%PDF-1.7\n"}
 
-    monkeypatch.setattr(assess.report, "render_pdf", render_swallowing)
+    monkeypatch.setattr(assess.report, "report_files", render_swallowing)
     code = cli.main([str(job_workbook(tmp_path)), "--hazard", "2in50", "--out", str(tmp_path / "out"), "--quiet"])
     assert code == 130 and capsys.readouterr().err.splitlines() == [INTERRUPTED]
     assert not (tmp_path / "out").exists()
