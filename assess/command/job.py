@@ -23,6 +23,7 @@ from assess import report
 from assess.assessment import pipeline
 from assess.assessment.comparison import compare_summaries, read_previous_summary
 from assess.assessment.inputs import check_inputs
+from assess.assessment.motions import check_level
 from assess.assessment.result import AssessmentResult
 from assess.calibration import read_measured, run_calibration
 from assess.calibration.apply import read_calibration
@@ -213,6 +214,8 @@ def run_job(job: AssessmentJob, say: Say = lambda message: None,
     for warning in inventory.warnings:
         (warn or say)(f"warning: {warning}")
     check_inputs(inventory, job.allow_records_outside)
+    for _, text in levels:  # a level the workbook has no motions for, refused before any level runs
+        check_level(inventory, text)
     oq_hazard = None
     if job.oq_hazard is not None:
         oq_hazard = read_hazard_curve_file(job.oq_hazard, site=oq_site(job.oq_site))

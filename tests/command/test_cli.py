@@ -170,6 +170,15 @@ def test_unknown_level_lists_the_levels(tmp_path):
     assert "Traceback" not in completed.stderr and not (tmp_path / "out").exists()
 
 
+def test_a_second_level_the_workbook_lacks_is_refused_before_the_first_runs(tmp_path):
+    """--hazard 2in50,10in50: 2in50 is there, 10in50 is not; nothing is simulated before the refusal."""
+    completed = run(LAB, "--hazard", "2in50,10in50", "--out", tmp_path / "out", cwd=tmp_path)
+    assert_refused(completed, "no motions for hazard level '10in50'",
+                   places=["lab.xlsx, sheet 'hazard', column 'level'"])
+    assert "simulated" not in completed.stderr and "preparing the motions" not in completed.stderr
+    assert not (tmp_path / "out").exists()
+
+
 @pytest.mark.parametrize("args, place", [
     (["--hazard", "sometimes"], "lab.xlsx, sheet 'hazard', column 'level'"),
     (["--hazard", "2in50", "--format", "docx"], "argument --format: 'docx'"),
