@@ -6,6 +6,11 @@ is a spring between floors i-1 and i whose force follows a hysteresis law
 stiffness-degrading for concrete); beside the springs an elastic part K_lin (the
 flexural column of the shear-flexural model of :mod:`assess.building.modes`, and,
 where asked, the P-Delta geometric stiffness, -P_i/h_i per storey) stays linear.
+Each spring's yield force is its share of the code's distribution of the strength,
+raised where the design makes the storey stronger (:data:`STRENGTH_BY_SYSTEM`):
+frames as strong as they are stiff at the first storey's yield drift
+(:func:`stiffness_strength`, after Priestley et al. [4]_), walls on the linear moment
+envelope of capacity design (:func:`capacity_design_strength`, Paulay & Priestley [6]_).
 With every spring elastic, K = K_springs + K_lin is exactly the stiffness of
 :func:`~assess.building.modes.building_modes`, so that the elastic limit is the
 elastic route's model.
@@ -460,7 +465,7 @@ def yielding_response(stick: YieldingStick, ground_accel_g, dt_s, *, substep_s=D
 
 
 def stiffness_strength(code_force_n, storey_stiffness_n_m, storey_heights_m):
-    """Each storey spring's yield force [N]: its code share, or what its stiffness gives at the base storey's yield drift.
+    """Each storey spring's yield force [N]: its code share, or its stiffness at the first storey's yield drift.
 
     .. math::  F_{y,i} = \\max\\Big(F^{code}_{y,i},\\; F^{code}_{y,1}\\,
                \\frac{k_i h_i}{k_1 h_1}\\Big)
@@ -494,7 +499,7 @@ def stiffness_strength(code_force_n, storey_stiffness_n_m, storey_heights_m):
 
 
 def capacity_design_strength(code_force_n, floor_forces, floor_heights_m):
-    """Each storey spring's yield force [N] in a capacity-designed wall: its code share, or what the linear moment envelope gives.
+    """Each storey spring's yield force [N] in a capacity-designed wall: its code share, or the moment envelope's.
 
     A cantilever wall is designed to yield in flexure at its base only: above the base its
     flexural strength follows a linear envelope from the base's strength to zero at the top

@@ -6,10 +6,11 @@ docs/workbook.md) passes each ground motion through a stick of yielding storey s
 pinching, stiffness-degrading ones for concrete; Rayleigh damping on the tangent stiffness), started
 from the building's elastic model (:func:`~assess.building.modes.building_modes`: the same T_1 and
 stiffness profile) with each storey's strength from ``yield_base_shear_g`` or the code's design times an
-overstrength (:func:`~assess.building.design.design_strength`). A ground motion under which no storey
-yields (every storey's ductility below 1) gives the elastic route's floor histories themselves
-(:func:`~assess.building.response.floor_records`): a building strong enough to stay elastic is
-assessed exactly as the elastic route assesses it. The two models are not the same building at the
+overstrength (:func:`~assess.building.design.design_strength`), raised above the code's distribution where
+the system's design makes a storey stronger (:data:`~assess.building.nonlinear.STRENGTH_BY_SYSTEM`). A
+ground motion under which no storey yields (every storey's ductility below 1) gives the elastic route's
+floor histories themselves (:func:`~assess.building.response.floor_records`): a building strong enough to
+stay elastic is assessed exactly as the elastic route assesses it. The two models are not the same building at the
 threshold, though: for frames (the stick keeps the elastic model's flexural column) the stick's
 elastic limit is within 2-25 % RMS of the modal route's histories (Rayleigh against modal damping;
 roof PFA 0.98-1.10 times), but a wall's or ``other``'s stick is an equivalent shear stick (a storey

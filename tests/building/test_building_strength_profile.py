@@ -63,13 +63,13 @@ def test_a_capacity_designed_wall_yields_first_at_its_base_and_above_on_a_linear
     shears = np.cumsum(forces[::-1])[::-1]
     stick = yielding_stick(storeys, HEIGHT_M, 0.4 * shears, system="shear wall", period_s=period_s)
     weight = storeys * 1.0e5 * GRAVITY_M_S2
-    load_factor = stick.yield_force_n / (shears * weight)          # λ_i: storey i yields under λ_i × the code's forces
+    load_factor = stick.yield_force_n / (shears * weight)  # storey i yields under λ_i × the code's forces
     assert np.all(load_factor[1:] > load_factor[0])               # the base yields first
     base = HEIGHT_M * np.arange(storeys)
     moment = np.array([sum(forces[j] * (heights[j] - base[i]) for j in range(i, storeys)) for i in range(storeys)])
     strength_moment = load_factor * moment                        # the wall's strength at each storey's base
     line = strength_moment[0] * (1.0 - base / heights[-1])
-    assert np.all(line >= 0.4 * moment * (1 - 1e-12))                         # the envelope lies above the code's moments
+    assert np.all(line >= 0.4 * moment * (1 - 1e-12))  # the envelope lies above the code's moments
     np.testing.assert_allclose(strength_moment, line, rtol=1e-12)
 
 

@@ -25,7 +25,9 @@ and the ELF shears, overstrengths 2.2, 2.18, 2.42, 3.35 up the height; the profi
 moved toward the tool. For the wall, capacity design keeps the plastic hinge at the base and makes the
 wall above stronger than its design actions ([5]_: the upper wall designed to a linear moment envelope
 from the base's overstrength moment, which lies above the ELF moment diagram), hence 1.8 at the base to
-3.0 at the top.
+3.0 at the top; that is less than a full linear envelope gives in a shear stick (1.8 × 2.53 = 4.5 at the
+top storey, the tool's rule, :func:`assess.building.nonlinear.capacity_design_strength`): a wall whose
+upper reinforcement is curtailed nearer its demand. Kept as the first pass set it.
 
 **Continuous column** (frames): the columns of a strong-column weak-beam moment frame stay elastic and
 continuous over the height; they tie the storeys together and spread the drift that a chain of
