@@ -570,6 +570,11 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
         2-8 % of the storey shear under the code's forces, 3 to 12 storeys).
     p_delta : bool
         Add the gravity loads' geometric stiffness (:func:`p_delta_stiffness`); T_1 stays that without it.
+    strength_profile : str, optional
+        How the springs' strength rises above their share of ``storey_yield_ratio`` (the first storey
+        keeps its share): by default the system's (:data:`STRENGTH_BY_SYSTEM`); ``"stiffness"``
+        (:func:`stiffness_strength`), ``"capacity design"`` (:func:`capacity_design_strength`) or
+        ``"code"`` (the shares as given).
     """
     n = int(storeys)
     flexure = FLEXURE_BY_SYSTEM[system] if flexure is None else flexure
