@@ -34,11 +34,13 @@ code's intent an upper bound for force-controlled elements (FEMA P-750 [2]_
 correctly yielding model slide equipment 1.5 times too much (issue 29's
 measurements). Where the base shear at yield is known (a pushover, an evaluation),
 ``yield_base_shear_g`` replaces C_s Ω and the storeys keep the code's distribution.
-The storeys' strengths follow the code's distribution of the design forces, so that
-an upper storey has no more overstrength than the first: real upper storeys, sized
-for drift, gravity and least member sizes, are often stronger than that, and the
-stick's upper storeys then yield more than a real building's (their ductility is in
-``floors.csv``, and the report warns beyond the drift the model is trusted for).
+The storeys' strengths here follow the code's distribution of the design forces, so
+that an upper storey has no more overstrength than the first; real upper storeys,
+sized for drift, gravity and least member sizes (frames) or capacity-designed to stay
+elastic above a base hinge (walls), are stronger than that, and the yielding stick
+raises them so (:data:`assess.building.nonlinear.STRENGTH_BY_SYSTEM`,
+:func:`~assess.building.nonlinear.stiffness_strength`,
+:func:`~assess.building.nonlinear.capacity_design_strength`).
 
 References
 ----------

@@ -6,6 +6,11 @@ is a spring between floors i-1 and i whose force follows a hysteresis law
 stiffness-degrading for concrete); beside the springs an elastic part K_lin (the
 flexural column of the shear-flexural model of :mod:`assess.building.modes`, and,
 where asked, the P-Delta geometric stiffness, -P_i/h_i per storey) stays linear.
+Each spring's yield force is its share of the code's distribution of the strength,
+raised where the design makes the storey stronger (:data:`STRENGTH_BY_SYSTEM`):
+frames as strong as they are stiff at the first storey's yield drift
+(:func:`stiffness_strength`, after Priestley et al. [4]_), walls on the linear moment
+envelope of capacity design (:func:`capacity_design_strength`, Paulay & Priestley [6]_).
 With every spring elastic, K = K_springs + K_lin is exactly the stiffness of
 :func:`~assess.building.modes.building_modes`, so that the elastic limit is the
 elastic route's model.
@@ -38,6 +43,14 @@ References
    doi:10.1061/(ASCE)0733-9445(2008)134:4(581)
 .. [3] Newmark, N. M. (1959). A method of computation for structural dynamics.
    J. Eng. Mech. Div. ASCE 85(EM3):67-94.
+.. [4] Priestley, M. J. N., Calvi, G. M. and Kowalsky, M. J. (2007). Displacement-Based
+   Seismic Design of Structures. IUSS Press, Pavia. Yield drift of frames (RC
+   θ_y ≈ 0.5 ε_y L_b/h_b, steel ≈ 0.65 ε_y L_b/h_b: geometry, not strength).
+.. [5] Priestley, M. J. N. (2003). Myths and Fallacies in Earthquake Engineering,
+   Revisited. The Mallet Milne Lecture. IUSS Press, Pavia. (Strength and stiffness
+   are not independent.)
+.. [6] Paulay, T. and Priestley, M. J. N. (1992). Seismic Design of Reinforced Concrete and
+   Masonry Buildings. Wiley. Ch. 5 (capacity design of cantilever walls: the moment envelope).
 """
 from __future__ import annotations
 
@@ -77,6 +90,18 @@ FLEXURE_BY_SYSTEM = {
     "braced frame": "elastic column",
     "shear wall": "equivalent shear",
     "other": "equivalent shear",
+}
+
+#: How the storeys' strength rises above the code's distribution of it, per system
+#: (:func:`stiffness_strength`, :func:`capacity_design_strength`; docs/workbook.md): a frame's or a
+#: brace's storey is as strong as it is stiff, a wall is capacity-designed to yield at its base.
+STRENGTH_BY_SYSTEM = {
+    "steel moment frame": "stiffness",
+    "concrete moment frame": "stiffness",
+    "eccentrically braced frame": "stiffness",
+    "braced frame": "stiffness",
+    "shear wall": "capacity design",
+    "other": "stiffness",
 }
 
 
@@ -439,10 +464,76 @@ def yielding_response(stick: YieldingStick, ground_accel_g, dt_s, *, substep_s=D
 
 
 
+def stiffness_strength(code_force_n, storey_stiffness_n_m, storey_heights_m):
+    """Each storey spring's yield force [N]: its code share, or its stiffness at the first storey's yield drift.
+
+    .. math::  F_{y,i} = \\max\\Big(F^{code}_{y,i},\\; F^{code}_{y,1}\\,
+               \\frac{k_i h_i}{k_1 h_1}\\Big)
+
+    A storey is at least as strong as the code's distribution of the strength asks (every
+    storey is designed for its own shear, ASCE 7-22 §12.8.4), and at least as strong as its
+    stiffness makes it: the yield drift of a frame storey is set by its geometry and the
+    steel's yield strain, not by its strength (Priestley, Calvi & Kowalsky [4]_; Priestley
+    [5]_), so a storey sized for drift, gravity or least member sizes, stiffer than its design
+    shear asks, is stronger in proportion, and a storey with the base storey's yield drift
+    ratio carries k_i θ_y h_i. Where the code's shares follow the stiffness (a stick whose
+    springs are the elastic model's under the code's forces, :func:`yielding_stick`'s
+    ``"equivalent shear"``) the rule changes little; where the upper storeys are stiffer than
+    their share (uniform storeys, a continuous column) they are stronger in proportion.
+
+    Examples
+    --------
+    Equal springs and storeys, code shares 1, 0.7, 0.4: every storey as strong as the first:
+
+    >>> stiffness_strength([10.0, 7.0, 4.0], [5.0, 5.0, 5.0], [3.0, 3.0, 3.0]).tolist()
+    [10.0, 10.0, 10.0]
+
+    A top storey softer than its share keeps its share: k 1, 0.5, 0.2:
+
+    >>> stiffness_strength([10.0, 7.0, 4.0], [1.0, 0.5, 0.2], [3.0, 3.0, 3.0]).tolist()
+    [10.0, 7.0, 4.0]
+    """
+    code = np.asarray(code_force_n, dtype=float)
+    stiffness_height = np.asarray(storey_stiffness_n_m, dtype=float) * np.asarray(storey_heights_m, dtype=float)
+    return np.maximum(code, code[0] * stiffness_height / stiffness_height[0])
+
+
+def capacity_design_strength(code_force_n, floor_forces, floor_heights_m):
+    """Each storey spring's yield force [N] in a capacity-designed wall: its code share, or the moment envelope's.
+
+    A cantilever wall is designed to yield in flexure at its base only: above the base its
+    flexural strength follows a linear envelope from the base's strength to zero at the top
+    (Paulay & Priestley [6]_ ch. 5; EN 1998-1 §5.5.2.4.1, there shifted up by the tension
+    shift, left out here), which lies above the moment of the code's lateral forces. In a
+    stick of storey springs, storey i (its base at z_{i-1}) yields when the moment there
+    reaches the envelope, under the code's forces scaled up:
+
+    .. math::  F_{y,i} = \\max\\Big(F^{code}_{y,i},\\; F^{code}_{y,1}\\,\\frac{V_i}{V_1}\\,
+               \\frac{1 - z_{i-1}/H}{M_i/M_1}\\Big),\\qquad M_i = \\sum_{j \\ge i} F_j (z_j - z_{i-1})
+
+    Examples
+    --------
+    Two storeys of 1 m, forces 1 and 2 at z 1 and 2: V = 3, 2; M = 5, 2 (over the base: 1·1 + 2·2);
+    the top storey yields at 3 × (2/3) × (1/2)/(2/5) = 2.5 where its share is 2:
+
+    >>> capacity_design_strength([3.0, 2.0], [1.0, 2.0], [1.0, 2.0]).tolist()
+    [3.0, 2.5]
+    """
+    code = np.asarray(code_force_n, dtype=float)
+    forces = np.asarray(floor_forces, dtype=float)
+    heights = np.asarray(floor_heights_m, dtype=float)
+    bases = np.concatenate([[0.0], heights[:-1]])
+    shears = np.cumsum(forces[::-1])[::-1]
+    moments = np.array([np.sum(forces[i:] * (heights[i:] - bases[i])) for i in range(heights.size)])
+    envelope = 1.0 - bases / heights[-1]
+    return np.maximum(code, code[0] * shears / shears[0] * envelope / (moments / moments[0]))
+
+
 def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="other", period_s=None, alpha=None,
                    storey_stiffness=None, floor_masses_kg=None, law=None, hardening=None, damping=0.05,
                    rayleigh_modes=(1, 3), flexure=None, p_delta=False,
-                   damping_stiffness="tangent", damping_model="rayleigh") -> YieldingStick:
+                   damping_stiffness="tangent", damping_model="rayleigh",
+                   strength_profile=None) -> YieldingStick:
     """The yielding stick of a building described as :func:`~assess.building.modes.building_modes` takes it.
 
     Parameters
@@ -479,6 +570,11 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
         2-8 % of the storey shear under the code's forces, 3 to 12 storeys).
     p_delta : bool
         Add the gravity loads' geometric stiffness (:func:`p_delta_stiffness`); T_1 stays that without it.
+    strength_profile : str, optional
+        How the springs' strength rises above their share of ``storey_yield_ratio`` (the first storey
+        keeps its share): by default the system's (:data:`STRENGTH_BY_SYSTEM`); ``"stiffness"``
+        (:func:`stiffness_strength`), ``"capacity design"`` (:func:`capacity_design_strength`) or
+        ``"code"`` (the shares as given).
     """
     n = int(storeys)
     flexure = FLEXURE_BY_SYSTEM[system] if flexure is None else flexure
@@ -519,6 +615,13 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
     yield_force = np.asarray(storey_yield_ratio, dtype=float) * weight * share
     if yield_force.shape != (n,) or np.any(~(yield_force > 0.0)):
         raise ValueError("storey_yield_ratio must give one positive ratio per storey")
+    strength_profile = STRENGTH_BY_SYSTEM[system] if strength_profile is None else strength_profile
+    if strength_profile == "stiffness":
+        yield_force = stiffness_strength(yield_force, springs, heights)
+    elif strength_profile == "capacity design":
+        yield_force = capacity_design_strength(yield_force, forces, floor_heights)
+    elif strength_profile != "code":
+        raise ValueError("strength_profile must be 'stiffness', 'capacity design' or 'code'")
     law = LAW_BY_SYSTEM[system] if law is None else law
     if damping_model == "rayleigh":
         rayleigh, modal = rayleigh_coefficients(periods, damping, rayleigh_modes), None

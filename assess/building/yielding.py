@@ -6,10 +6,11 @@ docs/workbook.md) passes each ground motion through a stick of yielding storey s
 pinching, stiffness-degrading ones for concrete; Rayleigh damping on the tangent stiffness), started
 from the building's elastic model (:func:`~assess.building.modes.building_modes`: the same T_1 and
 stiffness profile) with each storey's strength from ``yield_base_shear_g`` or the code's design times an
-overstrength (:func:`~assess.building.design.design_strength`). A ground motion under which no storey
-yields (every storey's ductility below 1) gives the elastic route's floor histories themselves
-(:func:`~assess.building.response.floor_records`): a building strong enough to stay elastic is
-assessed exactly as the elastic route assesses it. The two models are not the same building at the
+overstrength (:func:`~assess.building.design.design_strength`), raised above the code's distribution where
+the system's design makes a storey stronger (:data:`~assess.building.nonlinear.STRENGTH_BY_SYSTEM`). A
+ground motion under which no storey yields (every storey's ductility below 1) gives the elastic route's
+floor histories themselves (:func:`~assess.building.response.floor_records`): a building strong enough to
+stay elastic is assessed exactly as the elastic route assesses it. The two models are not the same building at the
 threshold, though: for frames (the stick keeps the elastic model's flexural column) the stick's
 elastic limit is within 2-25 % RMS of the modal route's histories (Rayleigh against modal damping;
 roof PFA 0.98-1.10 times), but a wall's or ``other``'s stick is an equivalent shear stick (a storey
@@ -44,7 +45,7 @@ import hashlib
 import threading
 from collections import OrderedDict
 from concurrent.futures import ThreadPoolExecutor
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Optional, Sequence
 
 import numba
@@ -55,7 +56,7 @@ from assess.hazard.records import Record
 
 from .design import DesignStrength, design_strength
 from .modes import BuildingModes
-from .nonlinear import YieldingStick, yielding_response, yielding_stick
+from .nonlinear import STRENGTH_BY_SYSTEM, YieldingStick, yielding_response, yielding_stick
 from .response import floor_records
 
 #: Storey drift ratio beyond which the stick is not trusted, per lateral system [-]: the Collapse
@@ -142,8 +143,10 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
 
     The storeys' strength: ``yield_base_shear_g`` where given, else ASCE 7-22 §12.8's design from the site's
     values at the building's T_1 (``modes.periods_s[0]``) times ``overstrength``
-    (:func:`~assess.building.design.design_strength`); the springs' law and the stick's flexure are the
-    system's (:data:`~assess.building.design.LAW_BY_SYSTEM`,
+    (:func:`~assess.building.design.design_strength`), spread over the storeys by the code's distribution
+    and raised where the system's design makes a storey stronger
+    (:data:`~assess.building.nonlinear.STRENGTH_BY_SYSTEM`: ``strength.storey_yield_ratio`` is the
+    result); the springs' law and the stick's flexure are the system's (:data:`~assess.building.design.LAW_BY_SYSTEM`,
     :data:`~assess.building.nonlinear.FLEXURE_BY_SYSTEM`).
 
     Examples
@@ -162,8 +165,16 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
     strength = design_strength(system, np.ones(modes.storeys), heights, period_s, sds_g=sds_g, sd1_g=sd1_g,
                                tl_s=tl_s, s1_g=s1_g, risk_category=risk_category, overstrength=overstrength,
                                yield_base_shear_g=yield_base_shear_g)
-    stick = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, system=system,
-                           period_s=period_s, alpha=modes.alpha, damping=damping, p_delta=p_delta)
+    arguments = dict(system=system, period_s=period_s, alpha=modes.alpha, damping=damping, p_delta=p_delta)
+    stick = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, **arguments)
+    code = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, strength_profile="code",
+                          **arguments)
+    profile = STRENGTH_BY_SYSTEM[system]
+    strength = replace(strength, storey_yield_ratio=strength.storey_yield_ratio * stick.yield_force_n
+                       / code.yield_force_n,
+                       source=f"{strength.source}; each storey at least as strong as "
+                              + ("its stiffness makes it at the first storey's yield drift" if profile == "stiffness"
+                                 else "a capacity-designed wall's linear moment envelope makes it"))
     return YieldingBuilding(modes, stick, strength, system, DRIFT_LIMIT_BY_SYSTEM[system], bool(p_delta),
                             _stick_key(stick))
 

@@ -1,0 +1,97 @@
+"""The yielding stick's strength over the height (issue 29): the code's share, raised where the design makes a
+storey stronger (assess.building.nonlinear.STRENGTH_BY_SYSTEM; docs/workbook.md).
+
+Checked against closed forms computed here, not against the functions' own output:
+
+* frames: a storey as strong as it is stiff. In a pure shear stick (no column) each spring's drift at yield is
+  F_y/k_0 whatever the load pattern, so every storey whose stiffness share is above its code share yields at
+  the first storey's drift ratio, and no storey yields at a smaller one;
+* walls: capacity design. Under the code's forces scaled up, the base yields first and every storey yields
+  where the moment of those forces at its base reaches a straight line from the base's moment to zero at
+  the top (the linear moment envelope), the moments summed here by hand;
+* the elastic column and the code's share: with the ``"code"`` profile the springs carry the code's shares
+  as before.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from assess.building.design import storey_shear_ratios
+from assess.building.modes import building_modes
+from assess.building.nonlinear import GRAVITY_M_S2, STRENGTH_BY_SYSTEM, yielding_stick
+from assess.building.yielding import yielding_building
+
+TAPER = np.array([1.0, 0.95, 0.9, 0.8, 0.7, 0.6, 0.5, 0.4])
+HEIGHT_M = 4.0
+
+
+def _code_shares(storeys, period_s):
+    return storey_shear_ratios(np.ones(storeys), HEIGHT_M * np.arange(1, storeys + 1), period_s)
+
+
+@pytest.mark.parametrize("storeys, period_s", [(4, 0.6), (8, 1.2)])
+def test_frame_storeys_yield_at_the_first_storeys_drift_where_their_stiffness_asks_more_than_the_code(storeys,
+                                                                                                     period_s):
+    shares = _code_shares(storeys, period_s)
+    stick = yielding_stick(storeys, HEIGHT_M, 0.2 * shares, system="steel moment frame", period_s=period_s,
+                           alpha=np.inf, storey_stiffness=TAPER[:storeys])
+    assert np.all(stick.linear_stiffness_n_m == 0.0)  # a pure shear stick: springs carry the storey shear
+    yield_drift_ratio = stick.yield_force_n / stick.stiffness_n_m / HEIGHT_M
+    relative_stiffness = TAPER[:storeys] / TAPER[0]
+    stiffer = relative_stiffness > shares + 1e-12       # the stiffness asks more than the code's share
+    assert stiffer[1:].any()                           # the check means something
+    np.testing.assert_allclose(yield_drift_ratio[stiffer], yield_drift_ratio[0], rtol=1e-12)
+    assert np.all(yield_drift_ratio >= yield_drift_ratio[0] * (1 - 1e-12))
+    weight = storeys * 1.0e5 * GRAVITY_M_S2
+    np.testing.assert_allclose(stick.yield_force_n[~stiffer], 0.2 * shares[~stiffer] * weight, rtol=1e-12)
+    assert stick.yield_force_n[0] == pytest.approx(0.2 * weight, rel=1e-12)  # the base keeps the given strength
+
+
+def test_uniform_storeys_of_a_frame_are_all_as_strong_as_the_first():
+    stick = yielding_stick(6, HEIGHT_M, 0.3 * _code_shares(6, 0.9), system="steel moment frame", period_s=0.9,
+                           alpha=np.inf)
+    np.testing.assert_allclose(stick.yield_force_n, stick.yield_force_n[0], rtol=1e-12)
+
+
+@pytest.mark.parametrize("storeys, period_s", [(6, 0.5), (10, 1.0)])
+def test_a_capacity_designed_wall_yields_first_at_its_base_and_above_on_a_linear_moment_envelope(storeys,
+                                                                                               period_s):
+    heights = HEIGHT_M * np.arange(1, storeys + 1)
+    k = np.clip(1.0 + (period_s - 0.5) / 2.0, 1.0, 2.0)            # ASCE 7-22 §12.8.3, by hand
+    forces = heights ** k / np.sum(heights ** k)
+    shears = np.cumsum(forces[::-1])[::-1]
+    stick = yielding_stick(storeys, HEIGHT_M, 0.4 * shears, system="shear wall", period_s=period_s)
+    weight = storeys * 1.0e5 * GRAVITY_M_S2
+    load_factor = stick.yield_force_n / (shears * weight)  # storey i yields under λ_i × the code's forces
+    assert np.all(load_factor[1:] > load_factor[0])               # the base yields first
+    base = HEIGHT_M * np.arange(storeys)
+    moment = np.array([sum(forces[j] * (heights[j] - base[i]) for j in range(i, storeys)) for i in range(storeys)])
+    strength_moment = load_factor * moment                        # the wall's strength at each storey's base
+    line = strength_moment[0] * (1.0 - base / heights[-1])
+    assert np.all(line >= 0.4 * moment * (1 - 1e-12))  # the envelope lies above the code's moments
+    np.testing.assert_allclose(strength_moment, line, rtol=1e-12)
+
+
+def test_the_code_profile_keeps_the_code_shares():
+    shares = _code_shares(4, 0.6)
+    stick = yielding_stick(4, HEIGHT_M, 0.2 * shares, system="steel moment frame", period_s=0.6, alpha=np.inf,
+                           strength_profile="code")
+    np.testing.assert_allclose(stick.yield_force_n, 0.2 * shares * 4 * 1.0e5 * GRAVITY_M_S2, rtol=1e-12)
+    with pytest.raises(ValueError, match="strength_profile"):
+        yielding_stick(4, HEIGHT_M, shares, system="other", period_s=0.6, strength_profile="uniform")
+
+
+@pytest.mark.parametrize("system", sorted(STRENGTH_BY_SYSTEM))
+def test_the_reported_storey_strength_is_the_sticks(system):
+    """floors.csv's storey_yield_ratio: the base keeps the given strength, no storey is below the code's share."""
+    modes = building_modes(5, 3.5, system=system, period_s=0.7)
+    building = yielding_building(modes, system, yield_base_shear_g=0.3)
+    ratios = building.strength.storey_yield_ratio
+    code = 0.3 * storey_shear_ratios(np.ones(5), 3.5 * np.arange(1, 6), 0.7)
+    assert ratios[0] == pytest.approx(0.3, rel=1e-12)
+    assert np.all(ratios >= code * (1 - 1e-12))
+    if system in ("steel moment frame", "concrete moment frame", "shear wall"):
+        # the top storey raised above its share (in a braced frame, α 4, the column already leaves the top
+        # storey's springs more than their share of the code's forces)
+        assert ratios[-1] > code[-1] * 1.2, (system, ratios, code)
