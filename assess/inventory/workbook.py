@@ -296,7 +296,24 @@ def _check_equipment(table: Table, report: SheetReport) -> list[dict]:
             else:
                 first_row_of[item_id] = row.number
     return [{**{c.output: row.values.get(c.name) for c in EQUIPMENT.columns},
+             "contents": default_contents(row.values.get("contents"), row.values.get("component_type")),
              "mu_source": row.values.get("mu_source", ""), "row": row.number} for row in table.rows]
+
+
+#: Component types whose contents are movable where the workbook does not say (shelving and cabinets).
+MOVABLE_CONTENTS_TYPES = ("storage shelving",)
+
+
+def default_contents(contents, component_type) -> str:
+    """An item's ``contents`` as written, else ``movable`` for shelving and cabinets
+    (:data:`MOVABLE_CONTENTS_TYPES`) and ``none`` otherwise.
+
+    >>> default_contents("", "storage shelving"), default_contents(None, ""), default_contents("fixed", "storage shelving")
+    ('movable', 'none', 'fixed')
+    """
+    if contents:
+        return str(contents)
+    return "movable" if component_type in MOVABLE_CONTENTS_TYPES else "none"
 
 
 def _check_item(row: Row, headers: dict[str, Header], report: SheetReport) -> None:
@@ -721,7 +738,7 @@ _EQUIPMENT_TYPES = {"id": "str", "name": "str", "room": "str", "floor": "int64",
                     "height_m": "float64", "width_m": "float64", "depth_m": "float64",
                     "mass_kg": "float64", "mu": "float64", "mu_static": "float64",
                     "clearance_m": "float64", "cg_height_m": "float64", "anchored": "bool",
-                    "casters": "bool", "quantity": "int64", "consequence": "str", "component_type": "str", "ip": "float64",
+                    "casters": "bool", "quantity": "int64", "consequence": "str", "component_type": "str", "contents": "str", "ip": "float64",
                     "mu_low": "float64", "mu_high": "float64", "value": "float64", "mitigation_cost": "float64",
                     "base": "str", "floor_finish": "str", "mu_source": "str", "row": "int64"}
 _HAZARD_TYPES = {"level": "str", "level_label": "str", "motion": "str", "all_floors": "bool",
