@@ -33,6 +33,7 @@ import numpy as np
 import pandas as pd
 
 from assess.quantity_text import floor_text
+from assess.decision.code_governed import CodeRule, code_rule
 from assess.decision.risk_classes import Chances, deciding_mode, mode_classes
 from assess.inventory.units import CM_PER_M  # noqa: F401 (the decisions' too)
 
@@ -42,6 +43,8 @@ class ActionKind(StrEnum):
 
     ANCHOR = "anchor"
     TETHER = "tether"
+    STRAP = "strap"
+    CHAIN = "chain"
     LOWER_CONTENTS = "lower_contents"
     RESTRAIN = "restrain"
     LOCK_CASTERS = "lock_casters"
@@ -54,7 +57,7 @@ class ActionKind(StrEnum):
 #: The action kinds, in the order a facility takes them (``action_kind`` of summary.csv).
 ACTION_KINDS = tuple(kind.value for kind in ActionKind)
 #: The kinds that hold the item against sliding and overturning (its residual chances 0, assuming it holds).
-HELD_KINDS = (ActionKind.ANCHOR, ActionKind.TETHER)
+HELD_KINDS = (ActionKind.ANCHOR, ActionKind.TETHER, ActionKind.STRAP, ActionKind.CHAIN)
 #: What an item's contents can do where the workbook says nothing (``contents``).
 DEFAULT_CONTENTS = "none"
 
@@ -82,7 +85,9 @@ class ActionDecision:
     whether it stands on casters; ``lowered``: the engine's what-if with its heavy contents low (None where
     it was not run); ``room_to_gain_cm``: :func:`room_to_gain_cm`; ``mode``: the failure that decided it
     (``overturn``, ``beyond_clearance``, ``rocking_harm``; "" for none); ``contents``: what its contents can
-    do (``movable``, ``fixed``, ``none``).
+    do (``movable``, ``fixed``, ``none``); ``code``: the rule of :mod:`assess.decision.code_governed` that
+    prescribes ``kind`` whatever the analysis says (None: the analysis chose it); ``analysis_kind``: the
+    action the analysis alone chooses (:func:`choose_action`).
     """
 
     kind: ActionKind
@@ -94,11 +99,16 @@ class ActionDecision:
     room_to_gain_cm: float = float("nan")
     mode: str = ""
     contents: str = DEFAULT_CONTENTS
+    code: CodeRule | None = None
+    analysis_kind: ActionKind | None = None
 
     def columns(self) -> dict:
-        """Its columns of summary.csv that are numbers and kinds."""
+        """Its columns of summary.csv that are numbers and kinds (and the code's detail and reference)."""
+        code = self.code
         return {"action_kind": self.kind.value, "p_overturn_after": self.p_overturn_after,
-                "p_beyond_clearance_after": self.p_beyond_clearance_after, "action_mode": self.mode}
+                "p_beyond_clearance_after": self.p_beyond_clearance_after, "action_mode": self.mode,
+                "action_analysis": (self.analysis_kind or self.kind).value,
+                "action_detail": code.detail if code else "", "action_reference": code.reference if code else ""}
 
 
 def room_to_gain_cm(row: dict) -> float:
@@ -214,14 +224,18 @@ def residual_chances(kind: str, row: dict, lowered: LoweredDemand | None, settin
 
 def decide_action(item, row: dict, uplift: bool, lowered: LoweredDemand | None, settings: dict) -> ActionDecision:
     """The action of one freestanding item (:class:`ActionDecision`; ``row``: its governing demand with
-    ``risk`` and ``clearance_cm``; ``lowered``: its demand in the lowered-contents run, or None)."""
+    ``risk`` and ``clearance_cm``; ``lowered``: its demand in the lowered-contents run, or None): the one a
+    code prescribes for its kind of equipment (:func:`assess.decision.code_governed.code_rule`) where one
+    does, else the analysis's (:func:`choose_action`)."""
     casters = bool(getattr(item, "casters", False))
     contents = str(getattr(item, "contents", "") or DEFAULT_CONTENTS)
-    kind = choose_action(row, uplift, casters, lowered, settings, contents)
+    analysis = choose_action(row, uplift, casters, lowered, settings, contents)
+    code = code_rule(item)
+    kind = ActionKind(code.action) if code is not None else analysis
     p_overturn_after, p_beyond_after = residual_chances(kind, row, lowered, settings)
     return ActionDecision(kind, p_overturn_after, p_beyond_after, uplift=bool(uplift), casters=casters,
                           lowered=lowered, room_to_gain_cm=room_to_gain_cm(row), mode=action_mode(row, settings),
-                          contents=contents)
+                          contents=contents, code=code, analysis_kind=analysis)
 
 
 # ---------------------------------------------------------------- the what-if run: heavy contents low
@@ -256,25 +270,52 @@ def lowered_rows(equipment: pd.DataFrame, rows: dict, uplift: dict, settings: di
 # ---------------------------------------------------------------- work orders
 
 #: Columns of work_orders.csv (docs/outputs.md).
-WORK_ORDER_COLUMNS = ["floor", "floor_label", "room", "action", "items", "count"]
+WORK_ORDER_COLUMNS = ["floor", "floor_label", "room", "action", "items", "names", "count", "detail", "reference",
+                      "force_kn", "unit_cost", "total_cost"]
+
+
+def _joined(values) -> str:
+    """The distinct non-empty texts of ``values``, in order, joined by "; "."""
+    seen = []
+    for value in values:
+        if isinstance(value, str) and value and value not in seen:
+            seen.append(value)
+    return "; ".join(seen)
 
 
 def work_orders(summary: pd.DataFrame, numbering: str = "ground_0") -> pd.DataFrame:
-    """One row per floor, room and action (:data:`WORK_ORDER_COLUMNS`): ``floor`` the workbook's number,
-    ``floor_label`` as the report labels it (``numbering``: :func:`assess.quantity_text.floor_text`),
-    ``items`` the ids (in id order), ``count`` the units (``quantity`` summed); items that need no action
-    and anchored items are left out (and a row without a known action kind). Ordered by floor, room, then
-    :data:`ACTION_KINDS`."""
+    """One row per floor, room, action and detail (:data:`WORK_ORDER_COLUMNS`): ``floor`` the workbook's
+    number, ``floor_label`` as the report labels it (``numbering``: :func:`assess.quantity_text.floor_text`),
+    ``items`` the ids and ``names`` their names (in id order), ``count`` the units (``quantity`` summed),
+    ``detail`` and ``reference`` what a code prescribes (``action_detail``, ``action_reference``; empty where
+    the analysis chose the action), ``force_kn`` the largest design force F_p per unit among them (the
+    force the anchor, tether, strap, chain or restraint resists; ``anchor_force_kn``), ``total_cost`` Σ
+    ``mitigation_cost`` × ``quantity`` (empty where an item has no cost) and ``unit_cost`` that over
+    ``count``. Items that need no action and anchored items are left out (and a row without a known action
+    kind). Ordered by floor, room, then :data:`ACTION_KINDS`."""
     kinds = summary["action_kind"] if "action_kind" in summary else pd.Series("", index=summary.index)
     acts = summary[kinds.isin([k for k in ACTION_KINDS if k not in ("none", "anchored")])]
     if not len(acts):
         return pd.DataFrame(columns=WORK_ORDER_COLUMNS)
+    def column(name, default):
+        return acts[name] if name in acts else pd.Series(default, index=acts.index)
+    cost = pd.to_numeric(column("mitigation_cost", np.nan), errors="coerce") * acts["quantity"]
     acts = acts.assign(room=acts["room"].fillna("").astype(str), _order=acts["action_kind"].map(ACTION_KINDS.index),
-                       id=acts["id"].astype(str))
-    grouped = acts.sort_values("id", kind="stable").groupby(["floor", "room", "_order", "action_kind"], sort=True)
-    table = grouped.agg(items=("id", lambda ids: ", ".join(ids)), count=("quantity", "sum")).reset_index()
-    table = table.rename(columns={"action_kind": "action"})
+                       id=acts["id"].astype(str), _detail=column("action_detail", "").fillna("").astype(str),
+                       _reference=column("action_reference", "").fillna("").astype(str), _cost=cost,
+                       _force=pd.to_numeric(column("anchor_force_kn", np.nan), errors="coerce"),
+                       _name=column("name", "").fillna("").astype(str))
+    grouped = acts.sort_values("id", kind="stable").groupby(["floor", "room", "_order", "action_kind", "_detail"],
+                                                            sort=True)
+    table = grouped.agg(items=("id", lambda ids: ", ".join(ids)),
+                        names=("_name", lambda names: "; ".join(name for name in names if name)),
+                        count=("quantity", "sum"), reference=("_reference", _joined),
+                        force_kn=("_force", "max"),
+                        total_cost=("_cost", lambda costs: costs.sum() if costs.notna().all() else np.nan)
+                        ).reset_index()
+    table = table.rename(columns={"action_kind": "action", "_detail": "detail"})
     table["floor"] = table["floor"].astype(int)
     table["count"] = table["count"].astype(int)
+    table["unit_cost"] = table["total_cost"] / table["count"]
     table["floor_label"] = [floor_text(f, numbering) for f in table["floor"]]
     return table[WORK_ORDER_COLUMNS].reset_index(drop=True)

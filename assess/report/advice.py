@@ -29,6 +29,8 @@ WORD_COLUMNS = ("action", "what_if", "risk_reason", "anchor_basis", "cost_note",
 WORK_ORDER_TEXT = {
     "anchor": "anchor to the floor or wall",
     "tether": "tether or strap to the wall (on casters)",
+    "strap": "strap to the wall (top and bottom thirds)",
+    "chain": "chain each cylinder to the wall or a fastened rack",
     "lower_contents": "move heavy contents to the lowest shelves",
     "restrain": "restrain (edge stops, bumpers or straps)",
     "lock_casters": "lock or chock the casters and keep room clear (each item's in its details)",
@@ -180,6 +182,34 @@ def what_if_sentence(kind: str, row, lowered: LoweredDemand | None, settings: di
     return ""
 
 
+#: What a code-prescribed action is called at the head of its sentence, by kind.
+CODE_VERBS = {"strap": "Strap it", "chain": "Chain it", "anchor": "Anchor it", "tether": "Tether it",
+              "restrain": "Restrain it"}
+#: The analysis's own action in a few words, by kind, for a code-prescribed item's what-if.
+ANALYSIS_WORDS = {"anchor": "anchor it", "tether": "tether it", "lower_contents": "move its heavy contents low",
+                  "restrain": "restrain it against sliding", "lock_casters": "lock its casters and keep room clear",
+                  "room": "give it room", "none": "no action", "relocate": "relocate it"}
+
+
+def code_sentences(action, row, settings: dict) -> tuple[str, str]:
+    """The action and what-if of an item whose action a code prescribes (``action.code``:
+    :class:`~assess.decision.code_governed.CodeRule`): the detail with its reference, and what the analysis
+    alone finds and would do (its own numbers are the item's as ever)."""
+    code = action.code
+    action_text = (f"{CODE_VERBS.get(action.kind.value, action.kind.value.capitalize())} ({code.equipment}: required "
+                   f"whatever the analysis says): {code.detail}. Reference: {code.reference}")
+    analysis = ANALYSIS_WORDS.get(action.analysis_kind.value, action.analysis_kind.value)
+    if action.analysis_kind.value == "none":
+        alone = "the analysis alone asks for no action (it is low risk in this earthquake)"
+    else:
+        sentence = action_sentence(action.analysis_kind.value, row, action.uplift, action.lowered, settings,
+                                   action.mode)
+        alone = f"the analysis alone would {analysis}: {sentence.split(': ', 1)[-1]}"
+    what_if = (f"Restrained as the code asks (assumed to hold), it would neither slide nor overturn: 0% for both; "
+               f"{alone}.")
+    return action_text, what_if
+
+
 # ---------------------------------------------------------------- why the item is in its class
 
 def _threshold_text(mode: str, risk: str, settings: dict) -> str:
@@ -312,6 +342,10 @@ def item_words(decision, settings: dict) -> dict:
     if action.kind == ActionKind.ANCHORED:
         return {**words, **ANCHORED_WORDS}
     row = decision.demand
+    if action.code is not None:
+        action_text, what_if = code_sentences(action, row, settings)
+        return {**words, "action": action_text, "what_if": what_if,
+                "risk_reason": risk_reason(decision.chances, decision.consequence, settings)}
     return {**words, "action": action_sentence(action.kind, row, action.uplift, action.lowered, settings,
                                                action.mode),
             "what_if": what_if_sentence(action.kind, row, action.lowered, settings, action.mode, action.contents),
@@ -342,15 +376,33 @@ def with_words(result):
 
 # ---------------------------------------------------------------- the work orders in words
 
-def work_order_sentences(table: pd.DataFrame) -> list[dict]:
-    """The report's work orders: per floor, its rooms, each with one sentence per action
-    ("anchor to the floor or wall: GAS-G-01 (1 unit)")."""
+def _order_sentence(order, system: str, currency: str) -> str:
+    """One work order in a sentence: what to do, the items and their names, the code's detail and reference,
+    the force to resist and the cost (each where the order has it)."""
+    names = f": {order.names}" if getattr(order, "names", "") else ""
+    text = (f"{WORK_ORDER_TEXT.get(order.action, order.action)}: {order.items} "
+            f"({_plural(int(order.count), 'unit')}{names})")
+    if getattr(order, "detail", ""):
+        text += f" — {order.detail} ({order.reference})"
+    force = getattr(order, "force_kn", math.nan)
+    if force is not None and math.isfinite(float(force)):
+        text += f"; force to resist up to {force_text(force, system)} per unit"
+    total = getattr(order, "total_cost", math.nan)
+    if total is not None and math.isfinite(float(total)):
+        unit = f"{currency} " if currency else ""
+        text += f"; cost {unit}{float(order.unit_cost):,.0f} per unit, {unit}{float(total):,.0f} in all"
+    return text
+
+
+def work_order_sentences(table: pd.DataFrame, system: str = "si", currency: str = "") -> list[dict]:
+    """The report's work orders: per floor, its rooms, each with one sentence per order
+    ("anchor to the floor or wall: GAS-G-01 (1 unit: gas cylinder cabinet); force to resist up to 2.3 kN per
+    unit"), forces in ``system``'s units and costs in ``currency`` (work_orders.csv, the same)."""
     floors = []
     for floor, on_floor in table.groupby("floor", sort=True):
         rooms = []
         for room, in_room in on_floor.groupby("room", sort=False):
-            orders = [f"{WORK_ORDER_TEXT.get(r.action, r.action)}: {r.items} ({_plural(int(r.count), 'unit')})"
-                      for r in in_room.itertuples(index=False)]
+            orders = [_order_sentence(r, system, currency) for r in in_room.itertuples(index=False)]
             rooms.append({"room": room or "(no room given)", "orders": orders})
         floors.append({"floor": int(floor), "units": int(on_floor["count"].sum()), "rooms": rooms})
     return floors

@@ -15,7 +15,8 @@ from assess.decision.costs import (
 from assess.report.sentences import DASH, finite, format_significant, text
 
 #: What each kind of action is called in the table.
-ACTION_WORDS = {"anchor": "anchor", "tether": "tether", "lock_casters": "lock casters", "restrain": "restrain",
+ACTION_WORDS = {"anchor": "anchor", "tether": "tether", "strap": "strap", "chain": "chain",
+                "lock_casters": "lock casters", "restrain": "restrain",
                 "room": "give room", "lower_contents": "lower contents", "relocate": "relocate"}
 
 

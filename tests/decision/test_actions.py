@@ -162,9 +162,11 @@ def test_work_orders_group_the_actions_by_floor_and_room():
         "room": ["1-10", "1-10", "0-01", "1-10", "1-20", "2-01"], "quantity": [2, 1, 3, 1, 1, 1],
         "action_kind": ["anchor", "anchor", "tether", "room", "anchor", "none"]})
     orders = actions.work_orders(summary)
-    assert list(orders.columns) == ["floor", "floor_label", "room", "action", "items", "count"]
-    assert orders.values.tolist() == [[0, "0", "0-01", "tether", "C", 3], [1, "1", "1-10", "anchor", "A, B", 3],
-                                      [1, "1", "1-10", "room", "D", 1], [1, "1", "1-20", "anchor", "E", 1]]
+    assert list(orders.columns) == ["floor", "floor_label", "room", "action", "items", "names", "count", "detail",
+                                    "reference", "force_kn", "unit_cost", "total_cost"]
+    assert orders[["floor", "floor_label", "room", "action", "items", "count"]].values.tolist() == [
+        [0, "0", "0-01", "tether", "C", 3], [1, "1", "1-10", "anchor", "A, B", 3],
+        [1, "1", "1-10", "room", "D", 1], [1, "1", "1-20", "anchor", "E", 1]]
     # under ground_1 (the US) the label counts the ground floor 1; the workbook's number stays
     us = actions.work_orders(summary, "ground_1")
     assert list(zip(us["floor"], us["floor_label"])) == [(0, "1"), (1, "2"), (1, "2"), (1, "2")]
@@ -175,6 +177,32 @@ def test_work_orders_group_the_actions_by_floor_and_room():
     assert [f["floor"] for f in floors] == [0, 1] and floors[1]["units"] == 3 + 1 + 1
     assert floors[1]["rooms"][0]["orders"] == ["anchor to the floor or wall: A, B (3 units)",
                                                "give room (each item's in its details): D (1 unit)"]
+
+
+def test_a_work_order_gives_the_crew_names_detail_force_and_cost():
+    """Two gas cylinder racks a code governs and an item the analysis anchors, in one room: the racks' order
+    carries NFPA 99's detail and reference, the largest F_p of the two (2.0 kN, not 1.5) and 2 x 300 + 1 x 300 in
+    all; the anchored item its own order; an item without a cost leaves its order's cost empty."""
+    summary = pd.DataFrame({
+        "id": ["G2", "G1", "S1", "S2"], "name": ["rack B", "rack A", "shelving", "cart"], "floor": [0, 0, 0, 0],
+        "room": ["gases"] * 4, "quantity": [2, 1, 1, 1], "action_kind": ["chain", "chain", "anchor", "tether"],
+        "action_detail": ["each cylinder chained", "each cylinder chained", "", ""],
+        "action_reference": ["NFPA 99 (2021) ch. 11", "NFPA 99 (2021) ch. 11", "", ""],
+        "anchor_force_kn": [2.0, 1.5, 3.0, np.nan], "mitigation_cost": [300.0, 300.0, 500.0, np.nan]})
+    orders = actions.work_orders(summary).set_index("action")
+    chain = orders.loc["chain"]
+    assert (chain["items"], chain["names"], chain["count"]) == ("G1, G2", "rack A; rack B", 3)
+    assert (chain["detail"], chain["reference"], chain["force_kn"]) == ("each cylinder chained", "NFPA 99 (2021) ch. 11", 2.0)
+    assert (chain["total_cost"], chain["unit_cost"]) == (900.0, 300.0)
+    assert orders.loc["anchor", "detail"] == "" and orders.loc["anchor", "force_kn"] == 3.0
+    assert np.isnan(orders.loc["tether", "total_cost"])
+    sentence = advice.work_order_sentences(actions.work_orders(summary), "us", "USD")[0]["rooms"][0]["orders"][0]
+    assert sentence.startswith("anchor to the floor or wall: S1 (1 unit: shelving)")
+    sentences = advice.work_order_sentences(actions.work_orders(summary), "us", "USD")[0]["rooms"][0]["orders"]
+    chained = next(sentence for sentence in sentences if sentence.startswith("chain"))
+    assert "each cylinder chained (NFPA 99 (2021) ch. 11)" in chained
+    assert "force to resist up to 450 lb per unit" in chained  # 2.0 kN = 449.6 lbf
+    assert "cost USD 300 per unit, USD 900 in all" in chained
 
 
 def test_the_sample_workbooks_mark_their_mobile_items():
