@@ -50,6 +50,8 @@ EQUIPMENT = [
           mu_range=(0.18, 0.40)),
     typed(item("LB-1-04", "Reagent refrigerator, solid door", "1-210 core lab", 1, 72, 30, 30, 380, 0.25, 3,
                "valuable", "reagents, beside LB-1-03"), "refrigerator", mu_range=(0.18, 0.40)),
+    typed(item("LB-1-06", "Reagent refrigerator, glass door, wide", "1-210 core lab", 1, 78, 28, 30, 340, 0.25, 3,
+               "valuable", "reagents, beside LB-1-04"), "refrigerator", mu_range=(0.18, 0.40)),
     typed(item("LB-1-05", "Linen cart, covered", "1-240 clean linen", 1, 66, 50, 26, 260, 0.50, 20, "ordinary",
                "on casters, brakes on", casters=True)),
     # floor 2: imaging

@@ -299,12 +299,15 @@ def work_orders(summary: pd.DataFrame, numbering: str = "ground_0") -> pd.DataFr
         return pd.DataFrame(columns=WORK_ORDER_COLUMNS)
     def column(name, default):
         return acts[name] if name in acts else pd.Series(default, index=acts.index)
+
+    def text(name):
+        return column(name, "").map(lambda value: value if isinstance(value, str) else "")
     cost = pd.to_numeric(column("mitigation_cost", np.nan), errors="coerce") * acts["quantity"]
     acts = acts.assign(room=acts["room"].fillna("").astype(str), _order=acts["action_kind"].map(ACTION_KINDS.index),
-                       id=acts["id"].astype(str), _detail=column("action_detail", "").fillna("").astype(str),
-                       _reference=column("action_reference", "").fillna("").astype(str), _cost=cost,
+                       id=acts["id"].astype(str), _detail=text("action_detail"),
+                       _reference=text("action_reference"), _cost=cost,
                        _force=pd.to_numeric(column("anchor_force_kn", np.nan), errors="coerce"),
-                       _name=column("name", "").fillna("").astype(str))
+                       _name=text("name"))
     grouped = acts.sort_values("id", kind="stable").groupby(["floor", "room", "_order", "action_kind", "_detail"],
                                                             sort=True)
     table = grouped.agg(items=("id", lambda ids: ", ".join(ids)),
