@@ -73,12 +73,19 @@ def anchorage_rows(result) -> pd.DataFrame:
     return table
 
 
+#: The columns summary.xlsx has that the report's page leaves out (they are in its method's table of types).
+PAGE_LEAVES_OUT = ("name", "edition", "table row")
+
+
 def anchorage_context(result) -> dict | None:
     """The report's anchorage table: its ``columns`` and ``rows`` as text (three significant digits for the
-    forces, two decimals for the factors); None where no item has a design force."""
+    forces, two decimals for the factors), without :data:`PAGE_LEAVES_OUT` so that it fits a page's width;
+    ``edition``; None where no item has a design force."""
     table = anchorage_rows(result)
     if not len(table):
         return None
+    editions = ", ".join(sorted(set(table["edition"])))
+    table = table.drop(columns=[column for column in PAGE_LEAVES_OUT if column in table])
     def cell(column, value):
         if isinstance(value, float):
             if not math.isfinite(value):
@@ -87,6 +94,6 @@ def anchorage_context(result) -> dict | None:
                 return f"{value:.3g}" if abs(value) < 1000 else f"{value:,.0f}"
             return f"{value:.2f}" if column != "F_p/W_p" else f"{value:.3f}"
         return str(value)
-    return {"columns": list(table.columns),
+    return {"edition": editions, "columns": list(table.columns),
             "rows": [[cell(column, value) for column, value in zip(table.columns, row)]
                      for row in table.itertuples(index=False)]}
