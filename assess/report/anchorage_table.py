@@ -73,6 +73,9 @@ def anchorage_rows(result) -> pd.DataFrame:
     return table
 
 
+#: Shorter headers on the page (summary.xlsx keeps the plain-text ones).
+PAGE_HEADERS = {"component type": "type", "Omega_0": "Ω0", "V with Omega_0": "V·Ω0", "T with Omega_0": "T·Ω0",
+                "R_mu": "Rμ", "confirmed": "checked"}
 #: The columns summary.xlsx has that the report's page leaves out (they are in its method's table of types).
 PAGE_LEAVES_OUT = ("name", "edition", "table row")
 
@@ -94,6 +97,8 @@ def anchorage_context(result) -> dict | None:
                 return f"{value:.3g}" if abs(value) < 1000 else f"{value:,.0f}"
             return f"{value:.2f}" if column != "F_p/W_p" else f"{value:.3f}"
         return str(value)
-    return {"edition": editions, "columns": list(table.columns),
+    headers = [PAGE_HEADERS.get(column.split(" (")[0], column.split(" (")[0]) + (
+        f" ({column.split(' (')[1]}" if " (" in column else "") for column in table.columns]
+    return {"edition": editions, "columns": headers,
             "rows": [[cell(column, value) for column, value in zip(table.columns, row)]
                      for row in table.itertuples(index=False)]}
