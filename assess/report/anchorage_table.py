@@ -15,7 +15,7 @@ import math
 
 import pandas as pd
 
-from assess.quantity_text import system_of
+from assess.quantity_text import floor_numbering_of, floor_text, system_of
 from assess.units import conversion_factor
 
 #: The force unit of each system, as pint names it and as a column shows it.
@@ -82,13 +82,16 @@ PAGE_LEAVES_OUT = ("name", "edition", "table row")
 
 def anchorage_context(result) -> dict | None:
     """The report's anchorage table: its ``columns`` and ``rows`` as text (three significant digits for the
-    forces, two decimals for the factors), without :data:`PAGE_LEAVES_OUT` so that it fits a page's width;
-    ``edition``; None where no item has a design force."""
+    forces, two decimals for the factors, floors labelled as the report labels them), without
+    :data:`PAGE_LEAVES_OUT` so that it fits a page's width; ``edition``; None where no item has a design
+    force."""
     table = anchorage_rows(result)
     if not len(table):
         return None
     editions = ", ".join(sorted(set(table["edition"])))
     table = table.drop(columns=[column for column in PAGE_LEAVES_OUT if column in table])
+    numbering = floor_numbering_of(result.settings or {})
+    table["floor"] = [floor_text(floor, numbering) for floor in table["floor"]]  # labelled as the report's floors
     def cell(column, value):
         if isinstance(value, float):
             if not math.isfinite(value):
