@@ -79,3 +79,15 @@ def test_equipment_the_table_does_not_name_is_left_to_the_analysis(kind):
 def test_a_strap_has_its_work_order_words():
     assert advice.WORK_ORDER_TEXT["strap"].startswith("strap to the wall")
     assert "chain" in advice.WORK_ORDER_TEXT["chain"]
+
+
+def test_page_one_gathers_the_code_governed_items_first():
+    from assess.report.sentences import action_groups
+
+    rows = [{"id": "WH", "action_kind": "strap", "action_reference": "UPC §507.2"},
+            {"id": "SH", "action_kind": "anchor", "action_reference": "ASCE 7-22 Table 13.5-1"},
+            {"id": "FR", "action_kind": "anchor", "action_reference": ""},
+            {"id": "OK", "action_kind": "none", "action_reference": ""}]
+    groups = action_groups(rows)
+    assert [(g["kind"], [r["id"] for r in g["rows"]]) for g in groups] == [
+        ("code", ["WH", "SH"]), ("anchor", ["FR"]), ("none", ["OK"])]
