@@ -73,6 +73,8 @@ def test_the_runner_sees_every_run_of_an_assessment(pair):
     items, motions, directions = 2, 1, 2
     stripes = result.curve_risk.runs
     assert stripes > 0
+    # summary.csv carries each item's contents as the workbook gives them
+    assert result.summary.set_index("id").loc[["SLIDER", "ROCKER"], "contents"].tolist() == ["none", "movable"]
     lowered = what_if_runs(result, pair.equipment)  # the item that rocks, again with its contents low: 1 motion x 2 directions
     assert lowered == motions * directions
     assert runner.seen == {PEAKS: items * motions * directions + stripes + lowered, PLANAR: 1, RESPONSE: items}
