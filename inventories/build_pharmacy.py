@@ -24,30 +24,34 @@ OUT = Path(__file__).resolve().parent / "pharmacy.xlsx"
 
 
 def item(id, name, room, floor, h_in, w_in, d_in, lb, mu, clearance_in, consequence, notes, cg_in=None,
-         anchored=False, qty=1, casters=False):
-    return dict(id=id, name=name, room=room, floor=floor, height_in=h_in, width_in=w_in, depth_in=d_in,
-                mass_lb=lb, mu=mu, clearance_in=clearance_in, cg_height_in=cg_in,
-                anchored="yes" if anchored else "no", casters="yes" if casters else "no", quantity=qty,
-                consequence=consequence, notes=notes)
+         anchored=False, qty=1, casters=False, contents=None):
+    row = dict(id=id, name=name, room=room, floor=floor, height_in=h_in, width_in=w_in, depth_in=d_in,
+               mass_lb=lb, mu=mu, clearance_in=clearance_in, cg_height_in=cg_in,
+               anchored="yes" if anchored else "no", casters="yes" if casters else "no", quantity=qty,
+               consequence=consequence, notes=notes)
+    if contents is not None:  # what its contents can do (movable, fixed, none): only where the row says
+        row["contents"] = contents
+    return row
 
 
 EQUIPMENT = [
     # ground floor: receiving and bulk storage
     item("RX-0-01", "Bulk IV-fluid storage rack, 5 shelves, loaded", "0-110 bulk store", 0, 84, 48, 24, 1400,
-         0.35, 12, "life-safety", "rack in the aisle to the fire exit; heavy cases on the upper shelves", cg_in=48),
+         0.35, 12, "life-safety", "rack in the aisle to the fire exit; heavy cases on the upper shelves", cg_in=48,
+         contents="movable"),
     item("RX-0-02", "Oxygen cylinder cart, 6 E-cylinders", "0-115 medical gases", 0, 40, 18, 12, 120, 0.45, 6,
          "hazardous", "cart on casters, brakes on; compressed oxygen", casters=True),
     item("RX-0-03", "Pharmacy refrigerator, double door", "0-120 cold room anteroom", 0, 80, 52, 32, 650, 0.25, 8,
          "critical", "vaccines and insulin; 8 in to the wall behind"),
     item("RX-0-04", "Flammable liquids cabinet, 45 gal", "0-125 hazardous store", 0, 65, 43, 18, 420, 0.30, 4,
-         "hazardous", "alcohols and solvents"),
+         "hazardous", "alcohols and solvents", contents="movable"),
     item("RX-0-05", "Carton flow rack", "0-110 bulk store", 0, 72, 60, 30, 900, 0.30, 10, "ordinary",
          "anchored to the wall", anchored=True),
     # floor 1: dispensing
     item("RX-1-01", "Automated dispensing cabinet, tower", "1-210 dispensing", 1, 78, 36, 30, 1100, 0.30, 6,
          "critical", "the unit the nurses draw every dose from"),
     item("RX-1-02", "Medication shelving, 6 shelves, stock loaded", "1-210 dispensing", 1, 84, 36, 18, 450, 0.35, 18,
-         "life-safety", "open shelving beside the staff workstation", cg_in=46),
+         "life-safety", "open shelving beside the staff workstation", cg_in=46, contents="movable"),
     item("RX-1-03", "Controlled-substance safe", "1-215 vault", 1, 42, 24, 22, 900, 0.40, 3, "valuable",
          "heavy, short"),
     item("RX-1-04", "Hazardous-drug storage cabinet (chemotherapy)", "1-220 hazardous drugs", 1, 72, 36, 24, 380, 0.30,

@@ -39,8 +39,9 @@ STANDARD_GRAVITY_M_S2 = 9.80665
 DEFAULT_EDITION = "ASCE 7-22"
 DEFAULT_RISK_CATEGORY = "II"
 #: Action kinds (``action_kind``) whose item gets the design force: it is anchored, restrained or tethered
-#: (its restraint carries the force), or already anchored (its anchorage to be checked against it).
-ANCHORAGE_KINDS = ("anchor", "restrain", "tether", "anchored")
+#: (its restraint carries the force; a code's strap or chain too), or already anchored (its anchorage to be checked
+#: against it).
+ANCHORAGE_KINDS = ("anchor", "restrain", "tether", "strap", "chain", "anchored")
 
 #: The anchorage columns of ``summary.csv`` (docs/outputs.md), in order; the ``*_kip`` ones and ``anchor_basis``
 #: are the report's (:func:`assess.report.advice.anchorage_columns`), the others :meth:`ItemAnchorage.columns`.

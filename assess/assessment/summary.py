@@ -15,7 +15,7 @@ import pandas as pd
 from assess.assessment.motions import MEMORY
 from assess.assessment.result import MOTION_COLUMNS, RegressionRecord
 from assess.inventory.settings import Settings
-from assess.decision import decisions
+from assess.decision import actions, decisions
 from assess.fragility.regression import RegressionConstants
 from assess.fragility.suite import PULSE_SHARE_MIN
 from assess.mechanics.geometry import frequency_parameter, slenderness
@@ -151,6 +151,7 @@ def inventory_piece(item) -> dict:
     """The columns of an item's row that the workbook gives (stage ``inventory``), the clearance in cm."""
     return {"id": item.id, "name": item.name, "room": item.room, "floor": item.floor, "quantity": item.quantity,
             "consequence": decisions.item_consequence(item), "mu": item.mu,
+            "contents": str(getattr(item, "contents", "") or actions.DEFAULT_CONTENTS),
             "mu_source": getattr(item, "mu_source", "workbook"), "clearance_cm": item.clearance_m * 100.0}
 
 

@@ -12,6 +12,7 @@ from assess.assessment.result import AssessmentResult
 from assess.fragility.stripes import fragility_files
 from assess.quantity_text import system_of
 from assess.report import advice
+from assess.report.anchorage_table import anchorage_rows
 from assess.report.spreadsheet import summary_workbook, with_us_units
 from assess.report.tables import (  # noqa: F401 (re-exported)
     csv_text, declared_csv_text, neutralise_formulas, restore_text, summary_text,
@@ -52,6 +53,10 @@ def _tables(result: AssessmentResult, formats: tuple[str, ...], units: str | Non
     if "xlsx" in formats:
         sheets = {result.level_label: summary_text(result.summary)}
         sheets.update({other.level_label: summary_text(other.summary) for other in other_levels})
+        for level in (result, *other_levels):  # the anchorage an engineer checks, a sheet per level
+            table = anchorage_rows(level)
+            if len(table):
+                sheets[f"anchorage {level.level_label}"] = table
         files["summary.xlsx"] = summary_workbook(sheets, units=units)
     if result.curve_risk is not None:
         files.update(fragility_files(result.curve_risk, result.summary))

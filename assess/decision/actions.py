@@ -1,15 +1,16 @@
 """What to do about each freestanding item, what that would change, and the work orders by floor and room.
 
 The actions part of the decisions stage (:mod:`assess.decision.decisions` calls
-:func:`decide_action` for every freestanding item). An action fits the item
-(:func:`choose_action`): an item that overturns or rocks is anchored, or
-tethered when it stands on casters (mobile by design), unless moving its
-heavy contents low stops it rocking (the engine says so: the what-if run of
-:func:`assess.assessment.run.lowered_contents`); an item that only slides
-past its room gets room where the room it needs to gain is one a room can
-spare (``room_max_cm``), a restraint otherwise; an item on casters that slides gets
-its casters locked or chocked and that room kept clear where a room can spare
-it, a tether otherwise.
+:func:`decide_action` for every freestanding item). The failure that makes the item's class decides the
+action (:func:`choose_action`; the mode is :func:`assess.decision.risk_classes.deciding_mode`):
+
+* where overturning or rocking that harms it is not low, the item is anchored, or tethered when it
+  stands on casters (mobile by design), unless moving its heavy contents low stops it rocking (the engine
+  says so: the what-if run of :func:`assess.assessment.run.lowered_contents`), which is offered only where
+  its ``contents`` are movable and never where it raises a chance;
+* where only sliding past its room makes it moderate or high, it gets room where the room it needs to
+  gain is one a room can spare (``room_max_cm``), a restraint against sliding otherwise; on casters, its
+  casters locked or chocked and that room kept clear where a room can spare it, a tether otherwise.
 
 Each action carries the item's chances if it is taken
 (:func:`residual_chances`): ``p_overturn_after`` and
@@ -17,8 +18,8 @@ Each action carries the item's chances if it is taken
 the sliding demand for ``room`` and ``lock_casters`` (the room is the sliding
 exceeded with probability ``risk_pf_moderate``; for an item on casters the
 workbook's μ is taken as that of its casters locked), 0 for a restraint that
-holds (anchor, tether, restraint: an assumption, stated in the what-if
-sentence), unchanged for ``none``.
+holds (an assumption, stated in the what-if sentence: anchor and tether hold it against both, a restraint
+against sliding only, its overturning left as it is), unchanged for ``none``.
 
 Everything here is a number or a kind (:class:`ActionKind`, :class:`ActionDecision`), in SI; the
 sentences a reader sees are made from them by :mod:`assess.report.advice`, in the report's units.
@@ -32,6 +33,8 @@ import numpy as np
 import pandas as pd
 
 from assess.quantity_text import floor_text
+from assess.decision.code_governed import CodeRule, code_rule
+from assess.decision.risk_classes import Chances, deciding_mode, mode_classes
 from assess.inventory.units import CM_PER_M  # noqa: F401 (the decisions' too)
 from assess.inventory.settings import Settings
 
@@ -41,6 +44,8 @@ class ActionKind(StrEnum):
 
     ANCHOR = "anchor"
     TETHER = "tether"
+    STRAP = "strap"
+    CHAIN = "chain"
     LOWER_CONTENTS = "lower_contents"
     RESTRAIN = "restrain"
     LOCK_CASTERS = "lock_casters"
@@ -52,8 +57,10 @@ class ActionKind(StrEnum):
 
 #: The action kinds, in the order a facility takes them (``action_kind`` of summary.csv).
 ACTION_KINDS = tuple(kind.value for kind in ActionKind)
-#: The kinds whose residual chances are 0 on the assumption that the restraint holds.
-HELD_KINDS = (ActionKind.ANCHOR, ActionKind.TETHER, ActionKind.RESTRAIN)
+#: The kinds that hold the item against sliding and overturning (its residual chances 0, assuming it holds).
+HELD_KINDS = (ActionKind.ANCHOR, ActionKind.TETHER, ActionKind.STRAP, ActionKind.CHAIN)
+#: What an item's contents can do where the workbook says nothing (``contents``).
+DEFAULT_CONTENTS = "none"
 
 
 @dataclass(frozen=True)
@@ -77,7 +84,11 @@ class ActionDecision:
     ``kind``: :class:`ActionKind`; ``p_overturn_after``, ``p_beyond_clearance_after``: its chances if the
     action is taken (:func:`residual_chances`); ``uplift``: whether it rocks as it stands; ``casters``:
     whether it stands on casters; ``lowered``: the engine's what-if with its heavy contents low (None where
-    it was not run); ``room_to_gain_cm``: :func:`room_to_gain_cm`.
+    it was not run); ``room_to_gain_cm``: :func:`room_to_gain_cm`; ``mode``: the failure that decided it
+    (``overturn``, ``beyond_clearance``, ``rocking_harm``; "" for none); ``contents``: what its contents can
+    do (``movable``, ``fixed``, ``none``); ``code``: the rule of :mod:`assess.decision.code_governed` that
+    prescribes ``kind`` whatever the analysis says (None: the analysis chose it); ``analysis_kind``: the
+    action the analysis alone chooses (:func:`choose_action`).
     """
 
     kind: ActionKind
@@ -87,11 +98,18 @@ class ActionDecision:
     casters: bool = False
     lowered: LoweredDemand | None = None
     room_to_gain_cm: float = float("nan")
+    mode: str = ""
+    contents: str = DEFAULT_CONTENTS
+    code: CodeRule | None = None
+    analysis_kind: ActionKind | None = None
 
     def columns(self) -> dict:
-        """Its columns of summary.csv that are numbers and kinds."""
+        """Its columns of summary.csv that are numbers and kinds (and the code's detail and reference)."""
+        code = self.code
         return {"action_kind": self.kind.value, "p_overturn_after": self.p_overturn_after,
-                "p_beyond_clearance_after": self.p_beyond_clearance_after}
+                "p_beyond_clearance_after": self.p_beyond_clearance_after, "action_mode": self.mode,
+                "action_analysis": (self.analysis_kind or self.kind).value,
+                "action_detail": code.detail if code else "", "action_reference": code.reference if code else ""}
 
 
 def room_to_gain_cm(row: dict) -> float:
@@ -115,23 +133,51 @@ def room_is_realistic(row: dict, settings: Settings) -> bool:
 def lowering_suffices(row: dict, lowered: LoweredDemand | None, settings: Settings) -> bool:
     """Whether moving the heavy contents low is enough on its own: with the lowered centre of mass the
     engine finds no overturning and no rocking under any history of the item's suite, and sliding past
-    its room below ``risk_pf_moderate`` (``lowered``: the item's demand in the what-if run; None where
-    it was not run)."""
+    its room below ``risk_pf_moderate`` and no more likely than as loaded (lowering never offered where it
+    raises a chance; ``lowered``: the item's demand in the what-if run; None where it was not run)."""
     if lowered is None:
         return False
     return (lowered.p_overturn == 0.0 and not lowered.uplift
-            and lowered.p_beyond_clearance < settings.risk_pf_moderate)
+            and lowered.p_beyond_clearance < settings.risk_pf_moderate
+            and lowered.p_beyond_clearance <= float(row["p_beyond_clearance"]))
+
+
+def _chances(row) -> Chances:
+    return Chances(float(row["p_overturn"]), float(row["p_beyond_clearance"]),
+                   float(row.get("p_rocking_harm", 0.0) or 0.0))
+
+
+def topples(row, settings: Settings) -> bool:
+    """Whether overturning or rocking that harms the item is not low on its own
+    (:func:`assess.decision.risk_classes.mode_classes`): room or a restraint against sliding would leave it."""
+    classes = mode_classes(_chances(row), str(row.get("consequence", "ordinary")), settings)
+    return classes["overturn"] != "low" or classes["rocking_harm"] != "low"
+
+
+def action_mode(row, settings: Settings) -> str:
+    """The failure that decides the action of a moderate or high item: ``overturn`` or ``rocking_harm`` where
+    either is not low (:func:`topples`; the larger chance of the two at the higher class), else
+    ``beyond_clearance``; "" for a low item."""
+    if row.get("risk") == "low":
+        return ""
+    chances, consequence = _chances(row), str(row.get("consequence", "ordinary"))
+    if not topples(row, settings):
+        return "beyond_clearance"
+    mode = deciding_mode(Chances(chances.overturn, 0.0, chances.rocking_harm), consequence, settings)
+    return mode if mode != "beyond_clearance" else "overturn"
 
 
 def choose_action(row: dict, uplift: bool, casters: bool, lowered: LoweredDemand | None,
-                  settings: Settings) -> ActionKind:
-    """The action kind that fits the item (module docstring).
+                  settings: Settings, contents: str = DEFAULT_CONTENTS) -> ActionKind:
+    """The action kind that fits the item, from the failure that decides it (module docstring).
 
-    ``row``: its governing demand with ``risk``; ``uplift``: whether it rocks under any motion;
-    ``casters``: whether it stands on casters; ``lowered``: its demand with its heavy contents low
-    (:func:`lowering_suffices`), or None.
+    ``row``: its governing demand with ``risk`` (and ``consequence``, ``p_rocking_harm`` where known);
+    ``uplift``: whether it rocks under any motion; ``casters``: whether it stands on casters; ``lowered``:
+    its demand with its heavy contents low (:func:`lowering_suffices`), or None; ``contents``: what its
+    contents can do (lowering is offered only where they are ``movable``).
 
-    >>> settings = Settings(risk_pf_moderate=0.1, room_max_cm=30)
+    >>> settings = Settings(risk_pf_moderate=0.1, room_max_cm=30, risk_overturn_moderate=0.025,
+    ...                     risk_overturn_high=0.1, risk_pf_high=0.5, risk_rocking_moderate=0.1)
     >>> row = {"p_overturn": 0.0, "p_beyond_clearance": 0.6, "demand_room_cm": 191.0, "risk": "high",
     ...        "clearance_cm": 30.0}
     >>> str(choose_action(row, False, False, None, settings)), str(choose_action(row, False, True, None, settings))
@@ -140,16 +186,15 @@ def choose_action(row: dict, uplift: bool, casters: bool, lowered: LoweredDemand
     'lock_casters'
     >>> str(choose_action({**row, "p_overturn": 0.3}, True, True, None, settings))
     'tether'
+    >>> str(choose_action({**row, "p_overturn": 0.004}, True, False, None, settings))  # <1%: the sliding decides
+    'restrain'
     """
     if row.get("risk") == "low":  # the class says it needs nothing: the action never says otherwise
         return ActionKind.NONE
-    overturns = float(row["p_overturn"]) > 0.0
-    if overturns or uplift:
-        if lowering_suffices(row, lowered, settings):
+    if topples(row, settings):
+        if contents == "movable" and lowering_suffices(row, lowered, settings):
             return ActionKind.LOWER_CONTENTS
         return ActionKind.TETHER if casters else ActionKind.ANCHOR
-    if float(row["p_beyond_clearance"]) < settings.risk_pf_moderate and row.get("risk") != "high":
-        return ActionKind.NONE
     if room_is_realistic(row, settings):
         return ActionKind.LOCK_CASTERS if casters else ActionKind.ROOM
     return ActionKind.TETHER if casters else ActionKind.RESTRAIN
@@ -159,9 +204,10 @@ def residual_chances(kind: str, row: dict, lowered: LoweredDemand | None, settin
     """(``p_overturn_after``, ``p_beyond_clearance_after``): the item's chances if the action is taken.
 
     ``lower_contents``: the engine's, with the lowered centre of mass; ``room`` and ``lock_casters``: its
-    chance of overturning (0: an item that overturns is not given room) and ``risk_pf_moderate``, the
-    chance that the sliding exceeds ``demand_room_cm``; a restraint (:data:`HELD_KINDS`): 0 and 0, assuming it holds;
-    ``none``: unchanged.
+    chance of overturning (low: an item whose overturning is not low is not given room) and
+    ``risk_pf_moderate``, the chance that the sliding exceeds ``demand_room_cm``; ``restrain``: its chance of
+    overturning and 0 (held against sliding, assuming it holds); anchor and tether (:data:`HELD_KINDS`): 0 and
+    0, assuming they hold; ``none``: unchanged.
 
     >>> residual_chances("room", {"p_overturn": 0.0, "p_beyond_clearance": 0.4}, None, Settings(risk_pf_moderate=0.1))
     (0.0, 0.1)
@@ -172,29 +218,38 @@ def residual_chances(kind: str, row: dict, lowered: LoweredDemand | None, settin
         return float(row["p_overturn"]), min(settings.risk_pf_moderate, float(row["p_beyond_clearance"]))
     if kind in HELD_KINDS:
         return 0.0, 0.0
+    if kind == "restrain":
+        return float(row["p_overturn"]), 0.0
     return float(row["p_overturn"]), float(row["p_beyond_clearance"])
 
 
 def decide_action(item, row: dict, uplift: bool, lowered: LoweredDemand | None, settings: Settings) -> ActionDecision:
     """The action of one freestanding item (:class:`ActionDecision`; ``row``: its governing demand with
-    ``risk`` and ``clearance_cm``; ``lowered``: its demand in the lowered-contents run, or None)."""
+    ``risk`` and ``clearance_cm``; ``lowered``: its demand in the lowered-contents run, or None): the one a
+    code prescribes for its kind of equipment (:func:`assess.decision.code_governed.code_rule`) where one
+    does, else the analysis's (:func:`choose_action`)."""
     casters = bool(getattr(item, "casters", False))
-    kind = choose_action(row, uplift, casters, lowered, settings)
+    contents = str(getattr(item, "contents", "") or DEFAULT_CONTENTS)
+    analysis = choose_action(row, uplift, casters, lowered, settings, contents)
+    code = code_rule(item)
+    kind = ActionKind(code.action) if code is not None else analysis
     p_overturn_after, p_beyond_after = residual_chances(kind, row, lowered, settings)
     return ActionDecision(kind, p_overturn_after, p_beyond_after, uplift=bool(uplift), casters=casters,
-                          lowered=lowered, room_to_gain_cm=room_to_gain_cm(row))
+                          lowered=lowered, room_to_gain_cm=room_to_gain_cm(row), mode=action_mode(row, settings),
+                          contents=contents, code=code, analysis_kind=analysis)
 
 
 # ---------------------------------------------------------------- the what-if run: heavy contents low
 
 def lowered_contents_items(equipment: pd.DataFrame, rows: dict, uplift: dict, settings: Settings) -> list:
-    """The items whose heavy contents the what-if moves low: freestanding items that overturn or rock
-    (``rows``: id -> governing demand; ``uplift``: id -> whether it rocks) and whose centre of mass is
-    above ``lower_contents_cg_fraction`` of their height (by more than 1 cm), in item order."""
+    """The items whose heavy contents the what-if moves low: freestanding items whose ``contents`` are
+    movable, that overturn or rock (``rows``: id -> governing demand; ``uplift``: id -> whether it rocks) and
+    whose centre of mass is above ``lower_contents_cg_fraction`` of their height (by more than 1 cm), in item
+    order."""
     fraction = settings.lower_contents_cg_fraction
     chosen = []
     for item in equipment[~equipment["anchored"]].itertuples(index=False):
-        if item.id not in rows:
+        if item.id not in rows or str(getattr(item, "contents", "") or DEFAULT_CONTENTS) != "movable":
             continue
         moves = float(rows[item.id]["p_overturn"]) > 0.0 or bool(uplift[item.id])
         if moves and float(item.cg_height_m) > fraction * float(item.height_m) + 0.01:
@@ -216,25 +271,55 @@ def lowered_rows(equipment: pd.DataFrame, rows: dict, uplift: dict, settings: Se
 # ---------------------------------------------------------------- work orders
 
 #: Columns of work_orders.csv (docs/outputs.md).
-WORK_ORDER_COLUMNS = ["floor", "floor_label", "room", "action", "items", "count"]
+WORK_ORDER_COLUMNS = ["floor", "floor_label", "room", "action", "items", "names", "count", "detail", "reference",
+                      "force_kn", "unit_cost", "total_cost"]
+
+
+def _joined(values) -> str:
+    """The distinct non-empty texts of ``values``, in order, joined by "; "."""
+    seen = []
+    for value in values:
+        if isinstance(value, str) and value and value not in seen:
+            seen.append(value)
+    return "; ".join(seen)
 
 
 def work_orders(summary: pd.DataFrame, numbering: str = "ground_0") -> pd.DataFrame:
-    """One row per floor, room and action (:data:`WORK_ORDER_COLUMNS`): ``floor`` the workbook's number,
-    ``floor_label`` as the report labels it (``numbering``: :func:`assess.quantity_text.floor_text`),
-    ``items`` the ids (in id order), ``count`` the units (``quantity`` summed); items that need no action
-    and anchored items are left out (and a row without a known action kind). Ordered by floor, room, then
-    :data:`ACTION_KINDS`."""
+    """One row per floor, room, action and detail (:data:`WORK_ORDER_COLUMNS`): ``floor`` the workbook's
+    number, ``floor_label`` as the report labels it (``numbering``: :func:`assess.quantity_text.floor_text`),
+    ``items`` the ids and ``names`` their names (in id order), ``count`` the units (``quantity`` summed),
+    ``detail`` and ``reference`` what a code prescribes (``action_detail``, ``action_reference``; empty where
+    the analysis chose the action), ``force_kn`` the largest design force F_p per unit among them (the
+    force the anchor, tether, strap, chain or restraint resists; ``anchor_force_kn``), ``total_cost`` Σ
+    ``mitigation_cost`` × ``quantity`` (empty where an item has no cost) and ``unit_cost`` that over
+    ``count``. Items that need no action and anchored items are left out (and a row without a known action
+    kind). Ordered by floor, room, then :data:`ACTION_KINDS`."""
     kinds = summary["action_kind"] if "action_kind" in summary else pd.Series("", index=summary.index)
     acts = summary[kinds.isin([k for k in ACTION_KINDS if k not in ("none", "anchored")])]
     if not len(acts):
         return pd.DataFrame(columns=WORK_ORDER_COLUMNS)
+    def column(name, default):
+        return acts[name] if name in acts else pd.Series(default, index=acts.index)
+
+    def text(name):
+        return column(name, "").map(lambda value: value if isinstance(value, str) else "")
+    cost = pd.to_numeric(column("mitigation_cost", np.nan), errors="coerce") * acts["quantity"]
     acts = acts.assign(room=acts["room"].fillna("").astype(str), _order=acts["action_kind"].map(ACTION_KINDS.index),
-                       id=acts["id"].astype(str))
-    grouped = acts.sort_values("id", kind="stable").groupby(["floor", "room", "_order", "action_kind"], sort=True)
-    table = grouped.agg(items=("id", lambda ids: ", ".join(ids)), count=("quantity", "sum")).reset_index()
-    table = table.rename(columns={"action_kind": "action"})
+                       id=acts["id"].astype(str), _detail=text("action_detail"),
+                       _reference=text("action_reference"), _cost=cost,
+                       _force=pd.to_numeric(column("anchor_force_kn", np.nan), errors="coerce"),
+                       _name=text("name"))
+    grouped = acts.sort_values("id", kind="stable").groupby(["floor", "room", "_order", "action_kind", "_detail"],
+                                                            sort=True)
+    table = grouped.agg(items=("id", lambda ids: ", ".join(ids)),
+                        names=("_name", lambda names: "; ".join(name for name in names if name)),
+                        count=("quantity", "sum"), reference=("_reference", _joined),
+                        force_kn=("_force", "max"),
+                        total_cost=("_cost", lambda costs: costs.sum() if costs.notna().all() else np.nan)
+                        ).reset_index()
+    table = table.rename(columns={"action_kind": "action", "_detail": "detail"})
     table["floor"] = table["floor"].astype(int)
     table["count"] = table["count"].astype(int)
+    table["unit_cost"] = table["total_cost"] / table["count"]
     table["floor_label"] = [floor_text(f, numbering) for f in table["floor"]]
     return table[WORK_ORDER_COLUMNS].reset_index(drop=True)

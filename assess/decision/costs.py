@@ -54,9 +54,10 @@ LOSS_RATIO_BEYOND_CLEARANCE = SLIDING_SEVERITY
 #: action gives it too.
 LOSS_RATIO_ROCKING_HARM = ROCKING_HARM_SEVERITY
 
-#: Actions after which the item is taken to neither slide, rock nor overturn (held in place), until the
+#: Actions after which the item is taken to neither slide, rock nor overturn (held in place; a restraint against
+#: sliding leaves its overturning and rocking, ``p_overturn_after``), until the
 #: summary gives the probabilities after the action (``p_overturn_after``, ``p_beyond_clearance_after``).
-HOLDING_ACTIONS = ("anchor", "tether", "restrain", "lock_casters")
+HOLDING_ACTIONS = ("anchor", "tether", "strap", "chain", "lock_casters")
 #: Actions that are no action (nothing to buy).
 NO_ACTION = ("none", "anchored", "")
 

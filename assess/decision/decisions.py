@@ -43,7 +43,8 @@ def item_consequence(item) -> str:
 
 
 #: What an anchored item's row holds (it is not analysed as freestanding).
-ANCHORED = {"mode": "", "risk": "anchored", "action_kind": ActionKind.ANCHORED.value, "flags": (),
+ANCHORED = {"mode": "", "risk": "anchored", "action_kind": ActionKind.ANCHORED.value, "action_mode": "",
+            "action_analysis": ActionKind.ANCHORED.value, "action_detail": "", "action_reference": "", "flags": (),
             "performance_objective": "", "p_overturn_after": np.nan, "p_beyond_clearance_after": np.nan}
 #: The action of an anchored item.
 ANCHORED_ACTION = ActionDecision(ActionKind.ANCHORED, np.nan, np.nan)

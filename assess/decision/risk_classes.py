@@ -128,14 +128,15 @@ def classify_risk(chances: Chances, consequence: str, settings: Settings) -> str
     return max(mode_classes(chances, consequence, settings).values(), key=CLASS_ORDER.index)
 
 
-def deciding_chance(chances: Chances, consequence: str, settings: Settings) -> str:
-    """The one chance that decides the class, in a few words: the largest of those at the item's class
-    (for a low item, the largest chance that counts for it).
+def deciding_mode(chances: Chances, consequence: str, settings: Settings) -> str:
+    """The failure mode that decides the class (``overturn``, ``beyond_clearance`` or ``rocking_harm``): the
+    one with the largest chance among those at the item's class (for a low item, among those that count for
+    it); overturning first among equals.
 
     >>> s = Settings(risk_overturn_high=0.1, risk_overturn_moderate=0.025, risk_pf_high=0.5,
     ...              risk_pf_moderate=0.1, risk_rocking_moderate=0.1)
-    >>> deciding_chance(Chances(0.0, 0.69, 0.0), "critical", s), deciding_chance(Chances(0.0, 0.004, 0.0), "critical", s)
-    ('69% chance of sliding past its room', '<1% chance of sliding past its room')
+    >>> deciding_mode(Chances(0.004, 0.78, 0.0), "critical", s), deciding_mode(Chances(0.2, 0.3, 0.0), "critical", s)
+    ('beyond_clearance', 'overturn')
     """
     classes = mode_classes(chances, consequence, settings)
     risk = max(classes.values(), key=CLASS_ORDER.index)
@@ -143,8 +144,21 @@ def deciding_chance(chances: Chances, consequence: str, settings: Settings) -> s
               "rocking_harm": chances.rocking_harm}
     candidates = [mode for mode in MODE_WORDS if classes[mode] == risk
                   and (mode != "rocking_harm" or rocking_harm_counts(consequence))]
-    mode = max(candidates, key=lambda m: values[m])  # max keeps the first of equals: overturning first
-    return f"{percent_text(values[mode])} chance of {MODE_WORDS[mode]}"
+    return max(candidates, key=lambda m: values[m])  # max keeps the first of equals: overturning first
+
+
+def deciding_chance(chances: Chances, consequence: str, settings: Settings) -> str:
+    """The one chance that decides the class, in a few words (:func:`deciding_mode`).
+
+    >>> s = Settings(risk_overturn_high=0.1, risk_overturn_moderate=0.025, risk_pf_high=0.5,
+    ...              risk_pf_moderate=0.1, risk_rocking_moderate=0.1)
+    >>> deciding_chance(Chances(0.0, 0.69, 0.0), "critical", s), deciding_chance(Chances(0.0, 0.004, 0.0), "critical", s)
+    ('69% chance of sliding past its room', '<1% chance of sliding past its room')
+    """
+    mode = deciding_mode(chances, consequence, settings)
+    value = {"overturn": chances.overturn, "beyond_clearance": chances.beyond_clearance,
+             "rocking_harm": chances.rocking_harm}[mode]
+    return f"{percent_text(value)} chance of {MODE_WORDS[mode]}"
 
 
 def risk_range(risk: str, classes: set) -> str:

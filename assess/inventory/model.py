@@ -26,7 +26,9 @@ class Inventory:
         ``clearance_m``, ``cg_height_m`` (= ``height_m / 2`` when not given),
         ``anchored`` (bool), ``casters`` (bool, False when not given), ``quantity`` (int, 1 when not given),
         ``consequence`` (str, one of
-        :data:`~assess.inventory.schema.CONSEQUENCES`, ``ordinary`` when not given),
+        :data:`~assess.inventory.schema.CONSEQUENCES`, ``ordinary`` when not given), ``contents`` (str:
+        ``movable``, ``fixed`` or ``none``; when not given ``movable`` for shelving and cabinets, ``none``
+        otherwise: :func:`assess.inventory.workbook.default_contents`),
         ``mu_low``, ``mu_high`` (the range μ may take, NaN when not given; both or neither,
         ``mu_low <= mu <= mu_high``), ``value`` and ``mitigation_cost`` (per unit, in the settings'
         ``currency``, NaN when not given; :mod:`assess.decision.costs`), ``base`` and ``floor_finish`` (str, "" when

@@ -145,6 +145,9 @@ EQUIPMENT = SheetSpec("equipment", (
     # holds some 10^4 racks) and keeps every count exact in 64-bit integers and floats
     Column("quantity", "integer", default=1, low=1, high=1_000_000),
     Column("consequence", "consequence", default="ordinary"),
+    # what its contents can do: movable (they can be moved to low shelves), fixed (built in), none; empty:
+    # movable for shelving and cabinets (component type storage shelving), none otherwise
+    Column("contents", "contents", default=""),
     # the row of ASCE 7 Table 13.5-1 / 13.6-1 for the anchorage force (empty: laboratory equipment)
     Column("component_type", "component_type", default=""),
     # I_p of ASCE 7 section 13.1.3, 1.0 or 1.5 (empty: from the consequence and the Risk Category)
@@ -504,6 +507,25 @@ def parse_consequence(value: object, column: Column) -> str:
     return text
 
 
+#: What an item's contents can do (docs/workbook.md, ``contents``).
+CONTENTS = ("movable", "fixed", "none")
+
+
+def parse_contents(value: object, column: Column) -> str:
+    """One of :data:`CONTENTS`, in any case.
+
+    >>> parse_contents(" Fixed ", None), parse_contents("NONE", None)
+    ('fixed', 'none')
+    """
+    text = str(value).strip().lower()
+    if text not in CONTENTS:
+        raise CellError(f"{quote(value)} is not a kind of contents.",
+                        "write movable (contents that can be moved to the lowest shelves), fixed (built in or "
+                        "fastened) or none, or leave the cell empty: movable for shelving and cabinets, none "
+                        "otherwise.")
+    return text
+
+
 def parse_component_type(value: object, column: Column) -> str:
     """A component type of ASCE 7 Tables 13.5-1 / 13.6-1 (``assess/data/components.csv``), by its name or an
     alias in any case, as the table names it.
@@ -561,6 +583,7 @@ PARSERS = {
     "pulse": parse_pulse,
     "consequence": parse_consequence,
     "component_type": parse_component_type,
+    "contents": parse_contents,
     "importance": parse_importance,
     "level": parse_level_cell,
     "raw": parse_raw,

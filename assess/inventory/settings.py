@@ -18,7 +18,7 @@ from assess.data import default_settings
 #: The packaged defaults, read once (the fields' defaults below).
 _DEFAULTS = default_settings()
 #: The kinds of action a per-unit mitigation cost may be set for (``mitigation_cost_<kind>``).
-MITIGATION_KINDS = ("anchor", "tether", "lock_casters", "restrain", "room", "lower_contents", "relocate")
+MITIGATION_KINDS = ("anchor", "tether", "strap", "chain", "lock_casters", "restrain", "room", "lower_contents", "relocate")
 
 
 @dataclass(frozen=True)
@@ -68,6 +68,8 @@ class Settings:
     remaining_life_yr: float = _DEFAULTS["remaining_life_yr"]
     mitigation_cost_anchor: float = _DEFAULTS["mitigation_cost_anchor"]
     mitigation_cost_tether: float = _DEFAULTS["mitigation_cost_tether"]
+    mitigation_cost_strap: float = _DEFAULTS["mitigation_cost_strap"]
+    mitigation_cost_chain: float = _DEFAULTS["mitigation_cost_chain"]
     mitigation_cost_lock_casters: float = _DEFAULTS["mitigation_cost_lock_casters"]
     mitigation_cost_restrain: float = _DEFAULTS["mitigation_cost_restrain"]
     mitigation_cost_room: float = _DEFAULTS["mitigation_cost_room"]

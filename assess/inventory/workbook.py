@@ -299,7 +299,38 @@ def _check_equipment(table: Table, report: SheetReport) -> list[dict]:
             else:
                 first_row_of[item_id] = row.number
     return [{**{c.output: row.values.get(c.name) for c in EQUIPMENT.columns},
+             "contents": default_contents(row.values.get("contents"), row.values.get("component_type")),
+             "equipment_kind": equipment_kind(row.raw.get("component_type")),
              "mu_source": row.values.get("mu_source", ""), "row": row.number} for row in table.rows]
+
+
+#: Component types whose contents are movable where the workbook does not say (shelving and cabinets).
+MOVABLE_CONTENTS_TYPES = ("storage shelving",)
+
+
+def equipment_kind(written) -> str:
+    """The workbook's ``component_type`` as written (an alias such as ``water heater`` names more than the
+    table's type), in lower case with single spaces; "" where empty. :mod:`assess.decision.code_governed`
+    reads it.
+
+    >>> equipment_kind(" Gas_Water  Heater "), equipment_kind(None)
+    ('gas water heater', '')
+    """
+    if written is None or (isinstance(written, float) and written != written):
+        return ""
+    return " ".join(str(written).strip().lower().replace("_", " ").replace("-", " ").split())
+
+
+def default_contents(contents, component_type) -> str:
+    """An item's ``contents`` as written, else ``movable`` for shelving and cabinets
+    (:data:`MOVABLE_CONTENTS_TYPES`) and ``none`` otherwise.
+
+    >>> default_contents("", "storage shelving"), default_contents(None, ""), default_contents("fixed", "storage shelving")
+    ('movable', 'none', 'fixed')
+    """
+    if contents:
+        return str(contents)
+    return "movable" if component_type in MOVABLE_CONTENTS_TYPES else "none"
 
 
 def _check_item(row: Row, headers: dict[str, Header], report: SheetReport) -> None:
@@ -582,7 +613,8 @@ SETTING_BOUNDS = {
     "remaining_life_yr": (1.0, 100.0, "remaining_life_yr is the years the action protects the item"),
     **{f"mitigation_cost_{kind}": (0.0, 1e12, f"mitigation_cost_{kind} is what '{kind}' costs per unit, "
                                    "0 or more (0: not given)")
-       for kind in ("anchor", "tether", "lock_casters", "restrain", "room", "lower_contents", "relocate")},
+       for kind in ("anchor", "tether", "strap", "chain", "lock_casters", "restrain", "room", "lower_contents",
+                    "relocate")},
     "rocking_harm_theta_over_alpha": (0.01, 0.99, "rocking_harm_theta_over_alpha is the peak rotation, as a "
                                       "share of the tipping angle alpha, from which rocking that does not "
                                       "overturn harms the item or its contents; at 1 the item overturns"),
@@ -724,7 +756,8 @@ _EQUIPMENT_TYPES = {"id": "str", "name": "str", "room": "str", "floor": "int64",
                     "height_m": "float64", "width_m": "float64", "depth_m": "float64",
                     "mass_kg": "float64", "mu": "float64", "mu_static": "float64",
                     "clearance_m": "float64", "cg_height_m": "float64", "anchored": "bool",
-                    "casters": "bool", "quantity": "int64", "consequence": "str", "component_type": "str", "ip": "float64",
+                    "casters": "bool", "quantity": "int64", "consequence": "str", "component_type": "str", "contents": "str", "equipment_kind": "str",
+                    "ip": "float64",
                     "mu_low": "float64", "mu_high": "float64", "value": "float64", "mitigation_cost": "float64",
                     "base": "str", "floor_finish": "str", "mu_source": "str", "row": "int64"}
 _HAZARD_TYPES = {"level": "str", "level_label": "str", "motion": "str", "all_floors": "bool",

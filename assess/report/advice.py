@@ -27,6 +27,8 @@ from assess.quantity_text import force_text, length_text, moment_text, percent_t
 WORK_ORDER_TEXT = {
     "anchor": "anchor to the floor or wall",
     "tether": "tether or strap to the wall (on casters)",
+    "strap": "strap to the wall (top and bottom thirds)",
+    "chain": "chain each cylinder to the wall or a fastened rack",
     "lower_contents": "move heavy contents to the lowest shelves",
     "restrain": "restrain (edge stops, bumpers or straps)",
     "lock_casters": "lock or chock the casters and keep room clear (each item's in its details)",
@@ -71,11 +73,25 @@ def _why_overturn_or_rock(row: dict) -> str:
     return _rocking_text(row)
 
 
-def _why(row: dict, uplift: bool, system: str, settings: Settings) -> str:
-    """Why an item is held: it overturns or rocks, or it slides farther than a room can spare."""
-    if float(row["p_overturn"]) > 0.0 or uplift:
+def _why(row, mode: str, system: str, settings: Settings) -> str:
+    """Why an item is held: it overturns or rocks (``mode`` overturn or rocking_harm), or it slides farther
+    than a room can spare."""
+    if mode in ("overturn", "rocking_harm"):
         return _why_overturn_or_rock(row)
     return f"{_room_numbers(row, system)}: {_more_than_spare(row, system, settings)}"
+
+
+#: Why moving the contents low is not offered, by ``contents``.
+_NOT_LOWERED = {"fixed": "its contents are fixed", "none": "it has no contents to move"}
+
+
+def _lowering_clause(row, lowered: LoweredDemand | None, contents: str, system: str) -> str:
+    """Why moving its contents low is not the action: its contents cannot move, or the engine's what-if."""
+    if contents in _NOT_LOWERED:
+        return f" Moving its contents low is not offered: {_NOT_LOWERED[contents]}."
+    if lowered is not None:
+        return f" Lowering its contents alone is not enough. {_lowered_text(row, lowered, system)}."
+    return ""
 
 
 def _more_than_spare(row: dict, system: str, settings: Settings) -> str:
@@ -100,13 +116,17 @@ def _lowered_text(row, lowered: LoweredDemand, system: str) -> str:
             f"{percent_text(row['p_beyond_clearance'])}), and {rocks}, under the same motions")
 
 
-def action_sentence(kind: str, row, uplift: bool, lowered: LoweredDemand | None, settings: Settings) -> str:
-    """A plain sentence a facility manager can act on, for the action ``kind`` (:func:`choose_action`)."""
+def action_sentence(kind: str, row, uplift: bool, lowered: LoweredDemand | None, settings: Settings,
+                    mode: str = "") -> str:
+    """A plain sentence a facility manager can act on, for the action ``kind``
+    (:func:`assess.decision.actions.choose_action`) and the failure that decided it (``mode``:
+    :func:`assess.decision.actions.action_mode`; "" read as overturning where it overturns or rocks)."""
     system = system_of(settings)
+    mode = mode or ("overturn" if float(row["p_overturn"]) > 0.0 or uplift else "beyond_clearance")
     if kind == "anchor":
         return f"Anchor it to the floor or wall: {_why_overturn_or_rock(row)}"
     if kind == "tether":
-        return f"Tether or strap it to the wall (it stands on casters): {_why(row, uplift, system, settings)}"
+        return f"Tether or strap it to the wall (it stands on casters): {_why(row, mode, system, settings)}"
     if kind == "lower_contents":
         return (f"Move its heavy contents to the lowest shelves: as loaded {_why_overturn_or_rock(row)}; with its "
                 f"centre of mass at {float(lowered.cg_fraction):.0%} of its height the engine finds it still "
@@ -117,36 +137,75 @@ def action_sentence(kind: str, row, uplift: bool, lowered: LoweredDemand | None,
     if kind == "room":
         return f"Give it room: {_room_numbers(row, system)}"
     if kind == "restrain":
-        return (f"Restrain it (edge stops, bumpers or straps): {_room_numbers(row, system)}: "
+        return (f"Restrain it against sliding (edge stops, bumpers or cable restraints): {_room_numbers(row, system)}: "
                 f"{_more_than_spare(row, system, settings)}")
     return "No action needed"
 
 
-def what_if_sentence(kind: str, row, lowered: LoweredDemand | None, settings: Settings) -> str:
-    """The item's risk if the action is taken, from its own numbers or the engine's what-if run."""
+def _overturn_stays(row) -> str:
+    return (f"its chance of overturning stays {percent_text(float(row['p_overturn']))}, low on its own, "
+            "so anchoring is not needed")
+
+
+def what_if_sentence(kind: str, row, lowered: LoweredDemand | None, settings: Settings, mode: str = "",
+                     contents: str = "movable") -> str:
+    """The item's risk if the action is taken, from its own numbers or the engine's what-if run, and why
+    not the next action (``mode``: the failure that decided it; ``contents``: what its contents can do)."""
     system = system_of(settings)
-    engine = ""
-    if lowered is not None and kind != "lower_contents":
-        engine = f" Lowering its contents alone is not enough. {_lowered_text(row, lowered, system)}."
+    mode = mode or ("overturn" if float(row["p_overturn"]) > 0.0 else "beyond_clearance")
+    lowering = "" if kind == "lower_contents" else _lowering_clause(row, lowered, contents, system)
     if kind == "anchor":
-        return ("Anchored (assumed to hold), it would neither slide nor overturn: "
-                "0% for both. Giving it room does not help: it overturns or rocks where it stands." + engine)
+        return ("Anchored (assumed to hold), it would neither slide nor overturn: 0% for both. Room or a "
+                "restraint against sliding would not do: it overturns or rocks where it stands." + lowering)
     if kind == "tether":
+        if mode == "beyond_clearance":
+            return ("Tethered to the structure (assumed to hold), it would neither roll away nor overturn: "
+                    f"0% for both. Locking its casters would not do: it needs "
+                    f"{_more_than_spare(row, system, settings)} (setting room_max_cm).")
         return ("Tethered to the structure (assumed to hold), it would neither roll away nor overturn: "
-                "0% for both." + engine)
+                "0% for both." + lowering)
     if kind == "lower_contents":
         return (f"{_lowered_text(row, lowered, system)}. Anchoring it would also do, at 0% for both "
                 "(assumed to hold).")
     if kind == "restrain":
-        return ("Restrained (assumed to hold), it would not slide past its room: 0%. Room would not do: it needs "
+        return ("Restrained against sliding (assumed to hold), it would not slide past its room: 0%; "
+                f"{_overturn_stays(row)}. Room would not do: it needs "
                 f"{_more_than_spare(row, system, settings)} (setting room_max_cm).")
     if kind == "room" or kind == "lock_casters":
         locked = (" Its sliding was computed with the workbook's mu, taken as that of its casters locked: if they "
                   "are not, tether it." if kind == "lock_casters" else "")
         return (f"Given {length_text(row['demand_room_cm'], system, 'up')} of room (it has "
                 f"{length_text(row['clearance_cm'], system, 'down')}), its chance of sliding past it would be "
-                f"{percent_text(settings.risk_pf_moderate)}: low risk.{locked}")
+                f"{percent_text(settings.risk_pf_moderate)}: low risk; {_overturn_stays(row)}.{locked}")
     return ""
+
+
+#: What a code-prescribed action is called at the head of its sentence, by kind.
+CODE_VERBS = {"strap": "Strap it", "chain": "Chain it", "anchor": "Anchor it", "tether": "Tether it",
+              "restrain": "Restrain it"}
+#: The analysis's own action in a few words, by kind, for a code-prescribed item's what-if.
+ANALYSIS_WORDS = {"anchor": "anchor it", "tether": "tether it", "lower_contents": "move its heavy contents low",
+                  "restrain": "restrain it against sliding", "lock_casters": "lock its casters and keep room clear",
+                  "room": "give it room", "none": "no action", "relocate": "relocate it"}
+
+
+def code_sentences(action, row, settings: Settings) -> tuple[str, str]:
+    """The action and what-if of an item whose action a code prescribes (``action.code``:
+    :class:`~assess.decision.code_governed.CodeRule`): the detail with its reference, and what the analysis
+    alone finds and would do (its own numbers are the item's as ever)."""
+    code = action.code
+    action_text = (f"{CODE_VERBS.get(action.kind.value, action.kind.value.capitalize())} ({code.equipment}: required "
+                   f"whatever the analysis says): {code.detail}. Reference: {code.reference}")
+    analysis = ANALYSIS_WORDS.get(action.analysis_kind.value, action.analysis_kind.value)
+    if action.analysis_kind.value == "none":
+        alone = "the analysis alone asks for no action (it is low risk in this earthquake)"
+    else:
+        sentence = action_sentence(action.analysis_kind.value, row, action.uplift, action.lowered, settings,
+                                   action.mode)
+        alone = f"the analysis alone would {analysis}: {sentence.split(': ', 1)[-1]}"
+    what_if = (f"Restrained as the code asks (assumed to hold), it would neither slide nor overturn: 0% for both; "
+               f"{alone}.")
+    return action_text, what_if
 
 
 # ---------------------------------------------------------------- why the item is in its class
@@ -281,8 +340,13 @@ def item_words(decision, settings: Settings) -> dict:
     if action.kind == ActionKind.ANCHORED:
         return {**words, **ANCHORED_WORDS}
     row = decision.demand
-    return {**words, "action": action_sentence(action.kind, row, action.uplift, action.lowered, settings),
-            "what_if": what_if_sentence(action.kind, row, action.lowered, settings),
+    if action.code is not None:
+        action_text, what_if = code_sentences(action, row, settings)
+        return {**words, "action": action_text, "what_if": what_if,
+                "risk_reason": risk_reason(decision.chances, decision.consequence, settings)}
+    return {**words, "action": action_sentence(action.kind, row, action.uplift, action.lowered, settings,
+                                               action.mode),
+            "what_if": what_if_sentence(action.kind, row, action.lowered, settings, action.mode, action.contents),
             "risk_reason": risk_reason(decision.chances, decision.consequence, settings)}
 
 
@@ -309,15 +373,33 @@ def with_words(result: AssessmentResult) -> AssessmentResult:
 
 # ---------------------------------------------------------------- the work orders in words
 
-def work_order_sentences(table: pd.DataFrame) -> list[dict]:
-    """The report's work orders: per floor, its rooms, each with one sentence per action
-    ("anchor to the floor or wall: GAS-G-01 (1 unit)")."""
+def _order_sentence(order, system: str, currency: str) -> str:
+    """One work order in a sentence: what to do, the items and their names, the code's detail and reference,
+    the force to resist and the cost (each where the order has it)."""
+    names = f": {order.names}" if getattr(order, "names", "") else ""
+    text = (f"{WORK_ORDER_TEXT.get(order.action, order.action)}: {order.items} "
+            f"({_plural(int(order.count), 'unit')}{names})")
+    if getattr(order, "detail", ""):
+        text += f" — {order.detail} ({order.reference})"
+    force = getattr(order, "force_kn", math.nan)
+    if force is not None and math.isfinite(float(force)):
+        text += f"; force to resist up to {force_text(force, system)} per unit"
+    total = getattr(order, "total_cost", math.nan)
+    if total is not None and math.isfinite(float(total)):
+        unit = f"{currency} " if currency else ""
+        text += f"; cost {unit}{float(order.unit_cost):,.0f} per unit, {unit}{float(total):,.0f} in all"
+    return text
+
+
+def work_order_sentences(table: pd.DataFrame, system: str = "si", currency: str = "") -> list[dict]:
+    """The report's work orders: per floor, its rooms, each with one sentence per order
+    ("anchor to the floor or wall: GAS-G-01 (1 unit: gas cylinder cabinet); force to resist up to 2.3 kN per
+    unit"), forces in ``system``'s units and costs in ``currency`` (work_orders.csv, the same)."""
     floors = []
     for floor, on_floor in table.groupby("floor", sort=True):
         rooms = []
         for room, in_room in on_floor.groupby("room", sort=False):
-            orders = [f"{WORK_ORDER_TEXT.get(r.action, r.action)}: {r.items} ({_plural(int(r.count), 'unit')})"
-                      for r in in_room.itertuples(index=False)]
+            orders = [_order_sentence(r, system, currency) for r in in_room.itertuples(index=False)]
             rooms.append({"room": room or "(no room given)", "orders": orders})
         floors.append({"floor": int(floor), "units": int(on_floor["count"].sum()), "rooms": rooms})
     return floors

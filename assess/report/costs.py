@@ -16,7 +16,8 @@ from assess.report.sentences import DASH, finite, format_significant, text
 from assess.inventory.settings import Settings
 
 #: What each kind of action is called in the table.
-ACTION_WORDS = {"anchor": "anchor", "tether": "tether", "lock_casters": "lock casters", "restrain": "restrain",
+ACTION_WORDS = {"anchor": "anchor", "tether": "tether", "strap": "strap", "chain": "chain",
+                "lock_casters": "lock casters", "restrain": "restrain",
                 "room": "give room", "lower_contents": "lower contents", "relocate": "relocate"}
 
 
@@ -84,9 +85,47 @@ def costs_context(result, anchors: dict | None = None) -> dict | None:
             "note": text(row.get("cost_note")),
         })
     return {"currency": currency or "the workbook's currency", "has_curve": has_curve, "rows": rows,
+            "sensitivity": bcr_sensitivity(summary, settings) if has_curve else None,
             "lead": lead_sentence(summary, settings, has_curve),
             "basis": basis_sentence(settings, has_curve, "p_overturn_after" in summary),
             "ratio_heading": "Benefit / cost" if has_curve else "Loss avoided per 1 spent"}
+
+
+#: The discount rates [1/yr] and remaining lives [yr] page 1's sensitivity shows beside the settings' own:
+#: 3 % and 7 % (OMB Circular A-94's two rates, the lower for cost-effectiveness; FEMA BCA uses 7 %), 10 %;
+#: 10 and 30 years either side of the default 15.
+SENSITIVITY_RATES = (0.03, 0.07, 0.10)
+SENSITIVITY_LIVES_YR = (10.0, 15.0, 30.0)
+
+
+def bcr_sensitivity(summary: pd.DataFrame, settings: Settings) -> dict | None:
+    """The benefit-cost ratio of all the recommended actions together (Σ avoided annual loss × PV / Σ cost,
+    every unit counted, over the items that have a ratio) at each discount rate and remaining life of
+    :data:`SENSITIVITY_RATES` and :data:`SENSITIVITY_LIVES_YR` (with the settings' own), for page 1: the
+    ratio scales with the present-value factor, :func:`~assess.decision.costs.present_value_factor`. None
+    where no item has a ratio.
+
+    >>> table = pd.DataFrame({"quantity": [2], "expected_annual_loss": [100.0], "expected_annual_loss_after": [0.0],
+    ...                       "mitigation_cost": [500.0], "benefit_cost_ratio": [1.8]})
+    >>> out = bcr_sensitivity(table, Settings(discount_rate=0.07, remaining_life_yr=15.0))
+    >>> out["lives"], out["rows"][1]  # 2 x 100 x 9.108 / (2 x 500) = 1.8 at 7 %, 15 years; 7.024 and 12.41
+    (['10', '15', '30'], {'rate': '7 %', 'own': True, 'ratios': ['1.4', '1.8', '2.5']})
+    """
+    bcr = pd.to_numeric(summary.get("benefit_cost_ratio"), errors="coerce") if "benefit_cost_ratio" in summary \
+        else pd.Series(dtype=float)
+    has = bcr.notna()
+    if not has.any():
+        return None
+    cost = _total(summary, "mitigation_cost", has)
+    avoided = _total(summary, "expected_annual_loss", has) - _total(summary, "expected_annual_loss_after", has)
+    own_rate, own_years = settings.discount_rate, settings.remaining_life_yr
+    rates = sorted(set(SENSITIVITY_RATES) | {own_rate})
+    lives = sorted(set(SENSITIVITY_LIVES_YR) | {own_years})
+    rows = [{"rate": f"{100 * rate:g} %", "own": rate == own_rate,
+             "ratios": [ratio_text(avoided * present_value_factor(rate, years) / cost) for years in lives]}
+            for rate in rates]
+    return {"lives": [f"{years:g}" for years in lives], "rows": rows, "own_life": f"{own_years:g}",
+            "own_rate": f"{100 * own_rate:g} %"}
 
 
 def _total(summary: pd.DataFrame, column: str, where=None) -> float:
@@ -105,7 +144,7 @@ def lead_sentence(summary: pd.DataFrame, settings: Settings, has_curve: bool) ->
     >>> lead_sentence(table, Settings(currency="USD"), False)  # doctest: +NORMALIZE_WHITESPACE
     'If this earthquake happens, the 3 freestanding units with a value are expected to lose USD 200 (USD 100 after the
     recommended actions, which cost USD 40 where a cost is given). No benefit-cost ratio: this level is one
-    earthquake, not how often it happens; give a hazard curve (--oq-hazard) for one.'
+    earthquake, not how often it happens; give a hazard curve (--oq-hazard: an OpenQuake or USGS curve) for one.'
     """
     currency = settings.currency
     valued = pd.to_numeric(summary["expected_loss"], errors="coerce").notna()  # a value, and analysed
@@ -119,7 +158,7 @@ def lead_sentence(summary: pd.DataFrame, settings: Settings, has_curve: bool) ->
                 f"{money_text(cost, currency)} where a cost is given).")
     if not has_curve:
         return (sentence + " No benefit-cost ratio: this level is one earthquake, not how often it happens; "
-                "give a hazard curve (--oq-hazard) for one.")
+                "give a hazard curve (--oq-hazard: an OpenQuake or USGS curve) for one.")
     bcr = pd.to_numeric(summary["benefit_cost_ratio"], errors="coerce")
     worth = bcr >= 1.0
     n_worth = int(worth.sum())

@@ -25,6 +25,7 @@ from markupsafe import Markup
 import assess
 from assess.anchorage.method import anchorage_method
 from assess.report.advice import anchorage_sentence, with_words, work_order_sentences
+from assess.report.anchorage_table import anchorage_context
 from assess.decision.risk_classes import rule_text
 from assess.quantity_text import floor_numbering_of, length_unit, length_value, system_of
 from assess.report import figures
@@ -156,6 +157,7 @@ def _item_row(row: pd.Series, system: str = "si", numbering: str = "ground_0") -
         "risk": text(row.get("risk")),
         "risk_range": text(row.get("risk_range")),
         "action_kind": text(row.get("action_kind")),
+        "action_reference": text(row.get("action_reference")),
         "consequence": text(row.get("consequence")),
         "anchor_sentence": anchorage_sentence(row, system),
         "anchor_basis": text(row.get("anchor_basis")),
@@ -501,7 +503,9 @@ def report_context(result, with_figures: bool = True) -> dict:
         "method_notes": method_notes(summary),
         "changes": changes(result.comparison),
         "work_orders": [{**floor, "floor": floor_text(floor["floor"], numbering)}  # labelled as every floor is
-                        for floor in work_order_sentences(result.work_orders())],
+                        for floor in work_order_sentences(result.work_orders(), system,
+                                                          settings.currency or "")],
+        "anchorage_table": anchorage_context(result),
         "curve": curve_context(result, numbering),
         "costs": costs_context(result, {r["id"]: r["anchor"] for r in rows}),
         "title": title_block(settings, code_edition(result)),

@@ -130,6 +130,8 @@ def what_happens(row: pd.Series) -> str:
 
 #: Page 1's groups of actions, in the order a manager takes them.
 ACTION_GROUPS = (
+    ("code", "Restrain as the codes require", "a code or FEMA E-74 prescribes their restraint whatever the analysis "
+     "says: each item's detail and reference are beside it"),
     ("anchor", "Anchor", "they overturn or rock in this earthquake; moving them away from walls does not help"),
     ("tether", "Tether or strap", "they stand on casters and overturn, rock, or roll farther than a room can "
      "spare in this earthquake"),
@@ -152,10 +154,12 @@ def after_text(row) -> str:
 
 
 def action_groups(rows: list[dict]) -> list[dict]:
-    """The items of each action kind (``action_kind`` of the summary), in the page's order."""
+    """The items of each action kind (``action_kind`` of the summary), in the page's order; the items whose
+    action a code prescribes (``action_reference``) in a group of their own, first."""
     groups = []
     for kind, title, why in ACTION_GROUPS:
-        members = [r for r in rows if r.get("action_kind") == kind]
+        members = [r for r in rows if (r.get("action_kind") == kind and not r.get("action_reference"))
+                   or (kind == "code" and r.get("action_reference"))]
         if members:
             groups.append({"kind": kind, "title": title, "why": why, "rows": members})
     return groups

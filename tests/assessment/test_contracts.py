@@ -50,7 +50,7 @@ def test_every_setting_is_typed_and_numbers_become_floats():
 
 def test_the_mitigation_cost_of_each_action_kind_is_its_setting():
     costs = Settings(**{f"mitigation_cost_{kind}": float(k + 1) for k, kind in enumerate(MITIGATION_KINDS)})
-    assert [costs.mitigation_cost(kind) for kind in MITIGATION_KINDS] == [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]
+    assert [costs.mitigation_cost(kind) for kind in MITIGATION_KINDS] == [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0]
     assert costs.mitigation_cost("none") == 0.0 and costs.mitigation_cost("anchored") == 0.0
     assert all(f"mitigation_cost_{kind}" in _toml() for kind in MITIGATION_KINDS)
 

@@ -9,6 +9,7 @@ kernel.
 from __future__ import annotations
 
 import ast
+import dataclasses
 from pathlib import Path
 
 import numpy as np
@@ -46,18 +47,22 @@ class Counting(RunnerBase):
 
 @pytest.fixture(scope="module")
 def pair(tmp_path_factory):
-    """The planar tests' two items (SLIDER cannot uplift, ROCKER can) under one record pair."""
+    """The planar tests' two items (SLIDER cannot uplift, ROCKER can, its contents movable) under one record
+    pair."""
     folder = tmp_path_factory.mktemp("pair")
     first = component(0.5, 0.9, 0.3)
-    return pair_inventory(folder, first, component(0.4, 0.7, 1.1))
+    inventory = pair_inventory(folder, first, component(0.4, 0.7, 1.1))
+    return dataclasses.replace(inventory, equipment=inventory.equipment.assign(contents=["none", "movable"]))
 
 
 
-def what_if_runs(result) -> int:
-    """The runs of the actions' what-if (assess.decision.actions): every case of an item that rocks or overturns
-    (centre of mass above lower_contents_cg_fraction of its height) again, under each of its histories."""
+def what_if_runs(result, equipment) -> int:
+    """The runs of the actions' what-if (assess.decision.actions): every case of an item whose contents are
+    movable (the workbook's ``equipment``) that rocks or overturns (centre of mass above
+    lower_contents_cg_fraction of its height) again, under each of its histories."""
     motions, summary = result.motions, result.summary.set_index("id")
     rocks = set(motions.loc[motions["sim_uplift"].astype(bool), "id"]) | set(summary.index[summary["p_overturn"] > 0])
+    rocks &= set(equipment.loc[equipment["contents"] == "movable", "id"])
     return int(motions.loc[motions["id"].isin(rocks), "sim_realizations"].sum())
 
 def test_the_runner_sees_every_run_of_an_assessment(pair):
@@ -68,7 +73,9 @@ def test_the_runner_sees_every_run_of_an_assessment(pair):
     items, motions, directions = 2, 1, 2
     stripes = result.curve_risk.runs
     assert stripes > 0
-    lowered = what_if_runs(result)  # the item that rocks, again with its contents low: 1 motion x 2 directions
+    # summary.csv carries each item's contents as the workbook gives them
+    assert result.summary.set_index("id").loc[["SLIDER", "ROCKER"], "contents"].tolist() == ["none", "movable"]
+    lowered = what_if_runs(result, pair.equipment)  # the item that rocks, again with its contents low: 1 motion x 2 directions
     assert lowered == motions * directions
     assert runner.seen == {PEAKS: items * motions * directions + stripes + lowered, PLANAR: 1, RESPONSE: items}
     assert runner.inner.runs_simulated == runner.seen

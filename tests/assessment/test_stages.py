@@ -84,7 +84,8 @@ def test_decisions_follow_the_thresholds_and_rank_the_items():
     tight = {i: {**row, **item_words(tight.items[i], tight_settings)} for i, row in tight.by_item.items()}
     assert [tight[i]["action_kind"] for i in ("MID", "HIGH")] == ["restrain", "restrain"]
     assert tight["MID"]["action"].startswith(
-        "Restrain it (edge stops, bumpers or straps): it needs 42 cm to be low risk and has 30 cm (20% chance of "
+        "Restrain it against sliding (edge stops, bumpers or cable restraints): it needs 42 cm to be low risk and "
+        "has 30 cm (20% chance of "
         "sliding past it): 12 cm more, beyond the 11 cm a room can spare")
     # ordinary items: overturning 1/3 outranks 0.5 x 0.6 sliding, then 0.5 x 0.2; no action and anchored last, by id
     assert sorted(by_item, key=lambda i: by_item[i]["priority"]) == ["TIPS", "HIGH", "MID", "FIXED", "LOW"]

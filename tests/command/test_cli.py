@@ -115,7 +115,7 @@ def test_summary_xlsx_has_the_rows_of_summary_csv(lab_run):
     out = scratch / "reports" / "lab-2in50"
     csv = restore_text(pd.read_csv(out / "summary.csv", dtype={"id": str}, keep_default_na=False, na_values=[""]))
     book = openpyxl.load_workbook(out / "summary.xlsx", read_only=False)
-    assert book.sheetnames == ["2in50"]
+    assert book.sheetnames == ["2in50", "anchorage 2in50"]  # the level, then its anchorage table
     sheet = book["2in50"]
     assert sheet.freeze_panes == "C2"
     rows = list(sheet.iter_rows(values_only=True))
@@ -134,6 +134,9 @@ def test_summary_xlsx_has_the_rows_of_summary_csv(lab_run):
             else:
                 assert value == pytest.approx(float(want), rel=1e-5, abs=1e-9), (expected["id"], column)
     assert all(cell.data_type != "f" for row in sheet.iter_rows() for cell in row)
+    anchorage = list(book["anchorage 2in50"].iter_rows(values_only=True))  # the items with a design force
+    assert anchorage[0][0] == "id"
+    assert [row[0] for row in anchorage[1:]] == list(csv.loc[csv["anchor_force_kn"].notna(), "id"])
 
 
 def test_same_inputs_give_the_same_files(lab_run, lab_html, odd_names_run, tmp_path):

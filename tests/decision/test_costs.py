@@ -258,3 +258,24 @@ def test_page_one_ranks_by_the_ratio_then_the_scenario_ratio_then_priority():
         "priority": [2, 5, 6, 4, 1, 3]})
     # with a ratio (highest first), then with only the scenario's, then by priority; no action: not listed
     assert ranked(summary)["id"].tolist() == ["B-high", "B-low", "S", "P1", "P2"]
+
+
+def test_page_one_shows_the_ratio_at_other_discount_rates_and_lives():
+    """The sensitivity of page 1: at the settings' own rate and life it is the item's benefit_cost_ratio
+    (item_costs, another path); elsewhere that ratio times PV(r, n) / PV(r0, n0), PV the sum of the discount
+    factors (discount_sum, by hand)."""
+    from assess.report.costs import bcr_sensitivity
+
+    row = {"value": 10_000.0, "p_overturn": 0.3, "p_beyond_clearance": 0.5, "action_kind": "anchor",
+           "mitigation_cost": 400.0, "annual_rate_overturn": 2e-3, "annual_rate_beyond_clearance": 5e-3}
+    settings = dataclasses.replace(SETTINGS, discount_rate=0.07, remaining_life_yr=15.0)
+    out = item_costs(row, settings, has_curve=True)
+    summary = pd.DataFrame([{**row, **out, "quantity": 3}])
+    table = bcr_sensitivity(summary, settings)
+    assert table["lives"] == ["10", "15", "30"] and [r["rate"] for r in table["rows"]] == ["3 %", "7 %", "10 %"]
+    own = next(r for r in table["rows"] if r["own"])
+    assert float(own["ratios"][1]) == pytest.approx(out["benefit_cost_ratio"], rel=0.01)
+    for r, rate in zip(table["rows"], (0.03, 0.07, 0.10)):
+        for shown, years in zip(r["ratios"], (10, 15, 30)):
+            expected = out["benefit_cost_ratio"] * discount_sum(rate, years) / discount_sum(0.07, 15)
+            assert float(shown) == pytest.approx(expected, rel=0.05)  # two significant digits shown

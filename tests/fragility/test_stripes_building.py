@@ -167,10 +167,12 @@ def _updated_curve(folder: Path) -> Path:
 
 
 def what_if_runs(result) -> int:
-    """The runs of the actions' what-if (assess.decision.actions): every case of an item that rocks or overturns
-    (centre of mass above lower_contents_cg_fraction of its height) again, under each of its histories."""
+    """The runs of the actions' what-if (assess.decision.actions): every case of an item whose contents are
+    movable (the workbook's, or the default of its component type) that rocks or overturns (centre of mass
+    above lower_contents_cg_fraction of its height) again, under each of its histories."""
     motions, summary = result.motions, result.summary.set_index("id")
     rocks = set(motions.loc[motions["sim_uplift"].astype(bool), "id"]) | set(summary.index[summary["p_overturn"] > 0])
+    rocks &= set(summary.index[summary["contents"] == "movable"])
     return int(motions.loc[motions["id"].isin(rocks), "sim_realizations"].sum())
 
 def test_a_curve_update_reintegrates_without_simulating(de_run):

@@ -42,7 +42,7 @@ def test_good_workbook_reads_to_documented_si_columns(make_workbook):
     equipment = inventory.equipment
     assert list(equipment.columns) == [
         "id", "name", "room", "floor", "height_m", "width_m", "depth_m", "mass_kg", "mu",
-        "mu_static", "clearance_m", "cg_height_m", "anchored", "casters", "quantity", "consequence", "component_type", "ip",
+        "mu_static", "clearance_m", "cg_height_m", "anchored", "casters", "quantity", "consequence", "component_type", "contents", "equipment_kind", "ip",
         "mu_low", "mu_high", "value", "mitigation_cost", "base", "floor_finish", "mu_source", "row"]
     assert list(equipment["id"]) == ["INC-1", "FRZ-2", "BSC-3"]
     assert list(equipment["row"]) == [2, 3, 5]  # blank row 4 skipped
@@ -294,6 +294,21 @@ def test_component_type_and_ip_are_read_and_checked(make_workbook):
     sheets["equipment"][1]["ip"] = 1.25
     assert_mentions(only_problem(make_workbook(sheets)), "cell", "column 'ip'",
                     "'1.25' is not a component importance factor", "13.1.3")
+
+
+def test_contents_are_read_with_their_default_and_checked(make_workbook):
+    """contents: as written in any case; empty: movable for shelving and cabinets, none otherwise
+    (docs/workbook.md); the component type as written is kept beside the table's name (equipment_kind)."""
+    sheets = good_sheets()
+    sheets["equipment"][0]["component_type"] = "Storage_Cabinet"
+    sheets["equipment"][1]["contents"] = " FIXED "
+    equipment = read_workbook(make_workbook(sheets)).equipment
+    assert list(equipment["contents"]) == ["movable", "fixed", "none"]
+    assert list(equipment["equipment_kind"]) == ["storage cabinet", "", ""]
+    assert equipment["component_type"].iloc[0] == "storage shelving"
+    sheets["equipment"][1]["contents"] = "loose"
+    assert_mentions(only_problem(make_workbook(sheets)), "column 'contents'", "'loose' is not a kind of contents",
+                    "movable", "fixed", "none")
 
 
 def test_static_friction_below_kinetic(make_workbook):

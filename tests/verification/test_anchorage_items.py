@@ -228,3 +228,47 @@ def test_the_method_include_lays_out_the_equations_and_the_rows_used():
         assert text in html, text
     assert "storage shelving" not in html.split("<tbody>")[1]  # no force, not listed
     assert "built-in" not in html
+
+
+def test_the_five_items_from_the_anchorage_table():
+    """The report's anchorage table (and summary.xlsx's sheet) gives the five items above as checked by hand:
+    W_p, z/h, I_p, F_p, F_p/W_p, T and T with Omega_0 per unit, in kN (SI) and in kip (US, 1 kip = 4448.2216 N)."""
+    from types import SimpleNamespace
+
+    import pandas as pd
+
+    from assess.decision.actions import ActionDecision, ActionKind
+    from assess.decision.decisions import ItemDecision
+    from assess.report.anchorage_table import anchorage_rows
+
+    five = {  # id: (item, consequence, action, hand F_p [N], T [N], T with Omega_0 [N], I_p)
+        "FRZ": (_item(1, 300.0, 0.7, 0.8, 0.9, "freezer"), "critical", "anchor", 1588.68, 1071.73, 3114.31, 1.5),
+        "RACK": (_item(4, 600.0, 0.6, 1.1, 1.0, "server rack"), "critical", "anchor", 6825.22, 9433.65, 20809.01, 1.5),
+        "GRADE": (_item(0, 200.0, 0.6, 0.9, 0.5), "ordinary", "restrain", 706.08, 0.0, 529.56, 1.0),
+        "CAB": (_item(2, 150.0, 0.45, 0.6, 0.9, "storage cabinet", ip=1.5), "ordinary", "anchor", 951.65, 1417.87,
+                3321.17, 1.5),
+        "SWG": (_item(3, 800.0, 0.6, 1.5, 1.1, "Switchgear"), "critical", "anchor", 6579.60, 9473.65, 21536.25, 1.5),
+    }
+    site = _site("ASCE 7-22")
+    decisions = {item_id: ItemDecision(item_id, "high", consequence, None,
+                                       ActionDecision(ActionKind(action), 0.0, 0.0),
+                                       _item_anchorage(item, consequence, action, site))
+                 for item_id, (item, consequence, action, *_) in five.items()}
+    summary = pd.DataFrame({"id": list(five), "name": list(five), "floor": [v[0].floor for v in five.values()]})
+    for units, per_n in (("si", 1000.0), ("us", N_PER_KIP)):
+        unit = {"si": "kN", "us": "kip"}[units]
+        table = anchorage_rows(SimpleNamespace(summary=summary, decisions=decisions,
+                                               settings=Settings(units=units))).set_index("id")
+        assert list(table.index) == list(five)
+        for item_id, (item, _, _, force_n, tension_n, tension_omega_n, ip) in five.items():
+            row = table.loc[item_id]
+            assert row[f"W_p ({unit})"] * per_n == pytest.approx(item.mass_kg * G, abs=0.01)
+            assert row["z/h"] == pytest.approx(site.z_over_h(item.floor)) and row["I_p"] == ip
+            assert row[f"F_p ({unit})"] * per_n == pytest.approx(force_n, abs=0.01)
+            assert row[f"V ({unit})"] == row[f"F_p ({unit})"]
+            assert row["F_p/W_p"] == pytest.approx(force_n / (item.mass_kg * G), abs=1e-5)
+            assert row[f"T ({unit})"] * per_n == pytest.approx(tension_n, abs=0.01)
+            assert row[f"T with Omega_0 ({unit})"] * per_n == pytest.approx(tension_omega_n, abs=0.01)
+            assert row["Omega_0"] == 2.0 and row["edition"] == "ASCE 7-22"
+            assert row["confirmed"] in ("yes", "partly", "no") and row["table row"].startswith("Table 13.")
+    assert table.loc["FRZ", "governs"] == "minimum"  # 0.3 S_DS I_p W_p, by hand above
