@@ -59,7 +59,7 @@ def building_context(result) -> dict | None:
     floors = getattr(result, "floors", None)
     if floors is None or "response" not in floors or not (floors["response"] == "yielding").any():
         return None
-    numbering = floor_numbering_of(result.settings or {})
+    numbering = floor_numbering_of(result.settings)
     table = floors.sort_values("floor")
     motions = int(table["motions"].iloc[0])
     yielded = int(table["motions_yielded"].iloc[0])
