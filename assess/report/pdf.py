@@ -29,7 +29,6 @@ import multiprocessing
 import os
 import signal
 import urllib.parse
-from collections.abc import Callable
 from concurrent.futures import ProcessPoolExecutor
 from concurrent.futures.process import BrokenProcessPool
 
@@ -176,26 +175,13 @@ def render_pdf(html: str, *, url_fetcher=None, processes: int | None = None) -> 
         return render_part(html, url_fetcher)
     if url_fetcher is not None:
         return merge(render_part(body, url_fetcher), render_part(appendix, url_fetcher))
-    return render_pdf_of_parts(appendix, lambda: body, processes=processes)
-
-
-def render_pdf_of_parts(appendix: str | None, body: Callable[[], str], *, processes: int | None = None) -> bytes:
-    """The PDF of a report given as its appendix's document (:func:`split_appendix`; None where it has
-    none) and a function that makes the body's document: the appendix is laid out in a second process
-    while ``body()`` makes the body (the report's figures, the slow part of its HTML) and this process lays
-    it out, so that the appendix's layout overlaps the figures' drawing as well as the body's layout. Where
-    ``processes`` (default: 2 where the machine has a second core, else 1) is 1, the one after the other.
-    The bytes are those of :func:`render_pdf` on the whole report's HTML either way.
-    """
-    if appendix is None:
-        return render_part(body())
     if (processes if processes is not None else (2 if second_core() else 1)) < 2:
-        return merge(render_part(body()), render_part(appendix))
+        return merge(render_part(body), render_part(appendix))
     return merge(*_lay_out_parts(body, appendix))
 
 
-def _lay_out_parts(body: Callable[[], str], appendix: str) -> tuple[bytes, bytes]:
-    """The PDFs of ``body()`` (made and laid out here) and ``appendix`` (meanwhile, in a second process: a
+def _lay_out_parts(body: str, appendix: str) -> tuple[bytes, bytes]:
+    """The PDFs of ``body`` (laid out here) and ``appendix`` (meanwhile, in a second process: a
     :class:`concurrent.futures.ProcessPoolExecutor` of one fresh interpreter, 'spawn').
 
     The second process starts with Ctrl-C blocked (:func:`_interrupts_held`): an interrupt is this
@@ -208,7 +194,7 @@ def _lay_out_parts(body: Callable[[], str], appendix: str) -> tuple[bytes, bytes
     try:
         with _interrupts_held():
             elsewhere = pool.submit(_lay_out_appendix, appendix)
-        body_pdf = render_part(body())
+        body_pdf = render_part(body)
         try:
             return body_pdf, elsewhere.result()
         except BrokenProcessPool:

@@ -34,7 +34,6 @@ from assess.report.costs import costs_context
 from assess.report.curve import curve_context
 from assess.report.method import floor_motion_route
 from assess.report.pdf import RefusedURLError, data_only_url_fetcher, decode_data_uri, render_pdf  # noqa: F401
-from assess.report.pdf import render_pdf_of_parts, split_appendix
 from assess.report.references import reference_rows
 from assess.report.sentences import (
     DASH, action_groups, after_text, case_outcomes, changes, class_rule_paragraph, cm_interval_text, finite,
@@ -566,32 +565,19 @@ def render_html(result) -> str:
     """The risk report of ``result`` as one self-contained HTML document (its advice in words,
     :func:`assess.report.advice.with_words`)."""
     result = with_words(result)
-    return report_template().render(report_context(result, with_figures=False), figures=report_figures(result),
-                                    appendix_only=False)
+    return report_template().render(report_context(result, with_figures=False), figures=report_figures(result))
 
 
 def report_files(result, *, html: bool = True, pdf: bool = True, pdf_processes: int | None = None
                  ) -> dict[str, bytes]:
-    """``report.html`` and/or ``report.pdf`` of ``result``, by name.
-
-    The PDF's appendix (Appendix A, item by item) needs none of the figures, so its document is made
-    first and laid out while the figures are drawn and the body is laid out
-    (:func:`assess.report.pdf.render_pdf_of_parts`); ``report.pdf`` is the same bytes as
-    ``render_pdf(render_html(result))``. ``pdf_processes``: as :func:`assess.report.pdf.render_pdf` takes its
-    ``processes`` (1 on a cluster's worker, which may start no process).
+    """``report.html`` and/or ``report.pdf`` of ``result``, by name: the report's HTML
+    (:func:`render_html`) and its PDF (:func:`assess.report.pdf.render_pdf`). ``pdf_processes``: as
+    ``render_pdf`` takes its ``processes`` (1 on a cluster's worker, which may start no process).
     """
-    if not pdf:
-        return {"report.html": render_html(result).encode()} if html else {}
-    context = report_context(result, with_figures=False)
-    template = report_template()
-    appendix = split_appendix(template.render(context, figures=None, appendix_only=True))[1]
-    whole = []
-
-    def body() -> str:
-        whole.append(template.render(context, figures=report_figures(result), appendix_only=False))
-        return split_appendix(whole[0])[0]
-
-    files = {"report.pdf": render_pdf_of_parts(appendix, body, processes=pdf_processes)}
-    if html:
-        files = {"report.html": whole[0].encode(), **files}
+    if not (html or pdf):
+        return {}
+    text = render_html(result)
+    files = {"report.html": text.encode()} if html else {}
+    if pdf:
+        files["report.pdf"] = render_pdf(text, processes=pdf_processes)
     return files

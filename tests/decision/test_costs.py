@@ -160,7 +160,7 @@ def test_the_report_without_costs_is_the_report_without_the_costs_include():
     html = render_html(result)
     without = template_text("report.html.j2").replace('  {% include "_costs.html.j2" %}\n', "")
     assert without != template_text("report.html.j2")  # the include was there to take out
-    assert make_environment().from_string(without).render(report_context(result), appendix_only=False) == html
+    assert make_environment().from_string(without).render(report_context(result)) == html
     # and the summary without the cost columns renders the same bytes
     bare = dataclasses.replace(result, summary=result.summary.drop(columns=COST_COLUMNS))
     assert render_html(bare) == html

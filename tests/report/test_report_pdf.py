@@ -35,9 +35,8 @@ def test_the_bytes_do_not_depend_on_the_processes_that_drew_them(html, pdf):
     assert multiprocessing.active_children() == []  # the second process ended with the PDF
 
 
-def test_the_report_files_are_the_html_and_its_pdf_whatever_was_laid_out_first(result, html, pdf):
-    """report_files lays the appendix out before the figures are drawn: the same report.html, and the PDF
-    of that HTML, byte for byte; in one process too."""
+def test_the_report_files_are_the_html_and_its_pdf(result, html, pdf):
+    """report_files, what the command writes: report.html and the PDF of that HTML, byte for byte."""
     from assess.report import report_files
 
     files = report_files(result)
@@ -46,15 +45,6 @@ def test_the_report_files_are_the_html_and_its_pdf_whatever_was_laid_out_first(r
     assert report_files(result, pdf=False) == {"report.html": html.encode()}
     assert set(report_files(result, html=False)) == {"report.pdf"}
     assert multiprocessing.active_children() == []
-
-
-def test_the_appendix_alone_is_the_appendix_of_the_whole_report(result, html):
-    """The appendix's document, made from the template without the figures, is the one split from the whole
-    report's HTML: what makes report_files' PDF that of report.html."""
-    from assess.report.render import report_context, report_template
-
-    alone = report_template().render(report_context(result, with_figures=False), figures=None, appendix_only=True)
-    assert split_appendix(alone)[1] == split_appendix(html)[1] is not None
 
 
 def test_the_pdf_is_the_body_then_the_appendix_each_laid_out_alone(html, pdf):
