@@ -200,10 +200,13 @@ def _lay_out_parts(body: str, appendix: str) -> tuple[bytes, bytes]:
         except BrokenProcessPool:
             return body_pdf, render_part(appendix)
     finally:
-        pool.shutdown(wait=False, cancel_futures=True)
-        for child in set(multiprocessing.active_children()) - started:  # the pool's process, done or not
-            child.terminate()
-            child.join()
+        with _interrupts_held():  # a Ctrl-C now waits until the pool's process is ended and reaped
+            ours = set(multiprocessing.active_children()) - started  # the pool's process, done or not
+            for child in ours:
+                child.terminate()
+            pool.shutdown(wait=True, cancel_futures=True)  # its thread, which reaps the process too, ended
+            for child in ours:
+                child.join()
 
 
 def _lay_out_appendix(appendix: str) -> bytes:
@@ -216,10 +219,14 @@ def _interrupts_held():
     """Ctrl-C held back while a second process starts, then acted on: the new process inherits this thread's
     blocked SIGINT, so Ctrl-C at the terminal (sent to every process of the foreground group) never
     interrupts it; and this process, whose handler another thread may run, finishes starting it first
-    rather than leave it half-told what to run (it would print "EOFError: Ran out of input"). Nothing off
-    the main thread (its handler is the main thread's) or where the system has no signal masks."""
+    rather than leave it half-told what to run (it would print "EOFError: Ran out of input"). A Ctrl-C held
+    is taken from the process's queue of signals and acted on as the block ends (KeyboardInterrupt there), never
+    left to arrive at some later moment, inside a library that might drop it or in the middle of ending the
+    second process. Nothing off the main thread (its handler is the main thread's) or where the system has no
+    signal masks or no ``sigtimedwait`` (macOS)."""
     held = []
     try:
+        take_pending = signal.sigtimedwait  # (macOS has none: nothing is held there)
         previous = signal.signal(signal.SIGINT, lambda signum, frame: held.append(signum))
         mask = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
     except (AttributeError, ValueError):
@@ -228,9 +235,13 @@ def _interrupts_held():
     try:
         yield
     finally:
+        if take_pending({signal.SIGINT}, 0) is not None:  # one that came meanwhile, taken from the queue,
+            held.append(signal.SIGINT)                   # so that none is left to arrive later
         signal.pthread_sigmask(signal.SIG_SETMASK, mask)
         signal.signal(signal.SIGINT, previous)
-        if held:
+        if held and callable(previous):  # acted on here and now: raised later, it could land in a library
+            previous(signal.SIGINT, None)  # that drops it (WeasyPrint's cffi callbacks); Python's raises
+        elif held and previous == signal.SIG_DFL:
             signal.raise_signal(signal.SIGINT)
 
 
