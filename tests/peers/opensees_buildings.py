@@ -75,6 +75,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from peers.opensees_shear import GRAVITY_M_S2, load_opensees
+from peers.opensees_yielding import floor_histories, shear_chain, storey_spring
 
 FLOOR_MASS_KG = 1.0e5
 SUBSTEP_S = 0.001
@@ -181,65 +182,17 @@ def truth_response(building: TruthBuilding, ground_accel_g, dt_s):
     k0 = building.stiffness_n_m()
     weight = n * FLOOR_MASS_KG * GRAVITY_M_S2
     fy = building.yield_ratios() * weight
-    column = np.isfinite(building.column_alpha)
-    h = building.storey_height_m
-    if column:  # springs between floor i-1 (node 1000 + i, tied to it) and floor i; the column on nodes 0..n
-        ops.model("basic", "-ndm", 2, "-ndf", 3)
-        for i in range(n + 1):
-            ops.node(i, 0.0, i * h)
-        ops.fix(0, 1, 1, 1)
-        ops.geomTransf("Linear", 1)
-        for i in range(1, n + 1):
-            ops.fix(i, 0, 1, 0)
-            ops.element("elasticBeamColumn", 2000 + i, i - 1, i, 1e12, 1.0, building.bending_rigidity_n_m2(), 1)
-            ops.node(1000 + i, 0.0, i * h)
-            ops.fix(1000 + i, 0, 1, 1)
-            ops.equalDOF(i - 1, 1000 + i, 1)
-    else:
-        ops.model("basic", "-ndm", 1, "-ndf", 1)
-        for i in range(n + 1):
-            ops.node(i, 0.0)
-        ops.fix(0, 1)
+    column = shear_chain(ops, n, building.storey_height_m,
+                         building.bending_rigidity_n_m2() if np.isfinite(building.column_alpha) else None)
     for i in range(1, n + 1):
-        ops.mass(i, *([FLOOR_MASS_KG] + ([0.0, 0.0] if column else [])))
-        k, f, b = float(k0[i - 1]), float(fy[i - 1]), building.hardening
-        if building.law == "steel01":
-            ops.uniaxialMaterial("Steel01", i, f, k, b)
-        else:
-            dy = f / k
-            d3 = 100.0 * dy
-            f3 = f + b * k * (d3 - dy)
-            ops.uniaxialMaterial("Hysteretic", i, f, dy, f3, d3, -f, -dy, -f3, -d3, building.pinch_x,
-                                 building.pinch_y, 0.0, 0.0, building.beta)
-        ops.element("zeroLength", i, 1000 + i if column else i - 1, i, "-mat", i, "-dir", 1, "-doRayleigh", 1)
+        storey_spring(ops, i, FLOOR_MASS_KG, float(k0[i - 1]), float(fy[i - 1]), building.hardening,
+                      building.law == "steel01", (building.pinch_x, building.pinch_y, building.beta), column)
     omega = np.sqrt(np.linalg.eigvalsh((_chain(k0) + _column(building, k0)) / FLOOR_MASS_KG))[:2]
     if omega.size == 1:
         a0, a1 = 0.0, 2.0 * 0.05 / omega[0]
     else:
         a0, a1 = 0.05 * 2.0 * omega[0] * omega[1] / (omega[0] + omega[1]), 0.05 * 2.0 / (omega[0] + omega[1])
     ops.rayleigh(float(a0), 0.0, 0.0, float(a1))
-    ground = np.asarray(ground_accel_g, dtype=float)
-    ops.timeSeries("Path", 1, "-dt", float(dt_s), "-values", *(ground * GRAVITY_M_S2).tolist())
-    ops.pattern("UniformExcitation", 1, 1, "-accel", 1)
-    ops.constraints("Transformation" if column else "Plain")
-    ops.numberer("Plain")
-    ops.system("FullGeneral")
-    ops.test("NormDispIncr", 1e-10, 50)
-    ops.algorithm("Newton")
-    ops.integrator("Newmark", 0.5, 0.25)
-    ops.analysis("Transient")
     substeps = max(1, int(np.ceil(float(dt_s) / SUBSTEP_S - 1e-9)))
-    accel = np.zeros((n + 1, ground.size))
-    drift = np.zeros((n, ground.size))
-    accel[0] = ground
-    for step in range(1, ground.size):
-        if ops.analyze(substeps, float(dt_s) / substeps) != 0:
-            raise RuntimeError(f"OpenSees failed at step {step} of {building.name}")
-        below = 0.0
-        for k in range(1, n + 1):
-            accel[k, step] = ground[step] + ops.nodeAccel(k, 1) / GRAVITY_M_S2
-            u = ops.nodeDisp(k, 1)
-            drift[k - 1, step] = u - below
-            below = u
-    ops.wipe()
+    accel, drift = floor_histories(ops, n, ground_accel_g, dt_s, substeps, 1e-10, column, building.name)
     return accel, drift, fy / k0

@@ -15,6 +15,77 @@ import numpy as np
 from peers.opensees_shear import GRAVITY_M_S2, load_opensees
 
 
+def shear_chain(ops, storeys, storey_height_m, bending_rigidity_n_m2=None):
+    """The floors' nodes: a 1-D chain, or (with ``bending_rigidity_n_m2``) an axially rigid elastic column on
+    nodes 0..n, each spring running from node 1000 + i (tied to floor i - 1) to floor i. Returns whether the
+    column is there."""
+    column = bending_rigidity_n_m2 is not None
+    if column:
+        ops.model("basic", "-ndm", 2, "-ndf", 3)
+        for i in range(storeys + 1):
+            ops.node(i, 0.0, i * storey_height_m)
+        ops.fix(0, 1, 1, 1)
+        ops.geomTransf("Linear", 1)
+        for i in range(1, storeys + 1):
+            ops.fix(i, 0, 1, 0)
+            ops.element("elasticBeamColumn", 2000 + i, i - 1, i, 1e12, 1.0, float(bending_rigidity_n_m2), 1)
+            ops.node(1000 + i, 0.0, i * storey_height_m)
+            ops.fix(1000 + i, 0, 1, 1)
+            ops.equalDOF(i - 1, 1000 + i, 1)
+    else:
+        ops.model("basic", "-ndm", 1, "-ndf", 1)
+        for i in range(storeys + 1):
+            ops.node(i, 0.0)
+        ops.fix(0, 1)
+    return column
+
+
+def storey_spring(ops, i, mass_kg, k0, fy, hardening, bilinear, pinch=(0.0, 0.0, 0.0), column=False):
+    """Floor i's mass and the spring of storey i: ``Steel01`` (bilinear) or ``Hysteretic`` with a bilinear
+    backbone to 100 yield drifts and ``pinch`` = (pinchX, pinchY, β)."""
+    ops.mass(i, *([mass_kg] + ([0.0, 0.0] if column else [])))
+    if bilinear:
+        ops.uniaxialMaterial("Steel01", i, fy, k0, hardening)
+    else:
+        dy = fy / k0
+        d3 = 100.0 * dy
+        f3 = fy + hardening * k0 * (d3 - dy)
+        pinch_x, pinch_y, beta = pinch
+        ops.uniaxialMaterial("Hysteretic", i, fy, dy, f3, d3, -fy, -dy, -f3, -d3, pinch_x, pinch_y, 0.0, 0.0,
+                             beta)
+    ops.element("zeroLength", i, 1000 + i if column else i - 1, i, "-mat", i, "-dir", 1, "-doRayleigh", 1)
+
+
+def floor_histories(ops, storeys, ground_accel_g, dt_s, substeps, tolerance_m, column, name=""):
+    """Newmark average acceleration with Newton iterations under the ground motion, ``substeps`` a sample;
+    (absolute floor accelerations [g] (n + 1, samples), storey drifts [m] (n, samples)). Wipes the model."""
+    ground = np.asarray(ground_accel_g, dtype=float)
+    ops.timeSeries("Path", 1, "-dt", float(dt_s), "-values", *(ground * GRAVITY_M_S2).tolist())
+    ops.pattern("UniformExcitation", 1, 1, "-accel", 1)
+    ops.constraints("Transformation" if column else "Plain")
+    ops.numberer("Plain")
+    ops.system("FullGeneral")
+    ops.test("NormDispIncr", tolerance_m, 50)
+    ops.algorithm("Newton")
+    ops.integrator("Newmark", 0.5, 0.25)
+    ops.analysis("Transient")
+    accel = np.zeros((storeys + 1, ground.size))
+    drift = np.zeros((storeys, ground.size))
+    accel[0] = ground
+    step = float(dt_s) / substeps
+    for i in range(1, ground.size):
+        if ops.analyze(substeps, step) != 0:
+            raise RuntimeError(f"OpenSees failed at step {i}" + (f" of {name}" if name else ""))
+        below = 0.0
+        for k in range(1, storeys + 1):
+            accel[k, i] = ops.nodeAccel(k, 1) / GRAVITY_M_S2 + ground[i]
+            u = ops.nodeDisp(k, 1)
+            drift[k - 1, i] = u - below
+            below = u
+    ops.wipe()
+    return accel, drift
+
+
 def yielding_floor_accelerations(stick, ground_accel_g, dt_s, substeps):
     """(absolute floor accelerations [g] (n + 1, samples), storey drifts [m] (n, samples)) from OpenSees."""
     ops, why = load_opensees()
@@ -22,65 +93,15 @@ def yielding_floor_accelerations(stick, ground_accel_g, dt_s, substeps):
         raise RuntimeError(why)
     ops.wipe()
     n = stick.storeys
-    column = stick.bending_rigidity_n_m2 is not None
-    height = float(np.mean(stick.storey_heights_m))
-    if column:  # the elastic column beside the springs, as peers.opensees_shear._stick
-        ops.model("basic", "-ndm", 2, "-ndf", 3)
-        for i in range(n + 1):
-            ops.node(i, 0.0, i * height)
-        ops.fix(0, 1, 1, 1)
-        ops.geomTransf("Linear", 1)
-        for i in range(1, n + 1):
-            ops.fix(i, 0, 1, 0)
-            ops.element("elasticBeamColumn", 2000 + i, i - 1, i, 1e12, 1.0, float(stick.bending_rigidity_n_m2), 1)
-            ops.node(1000 + i, 0.0, i * height)
-            ops.fix(1000 + i, 0, 1, 1)
-            ops.equalDOF(i - 1, 1000 + i, 1)
-    else:
-        ops.model("basic", "-ndm", 1, "-ndf", 1)
-        for i in range(n + 1):
-            ops.node(i, 0.0)
-        ops.fix(0, 1)
+    column = shear_chain(ops, n, float(np.mean(stick.storey_heights_m)), stick.bending_rigidity_n_m2)
     for i in range(1, n + 1):
-        k0, fy = float(stick.stiffness_n_m[i - 1]), float(stick.yield_force_n[i - 1])
-        b = float(np.broadcast_to(stick.hardening, (n,))[i - 1])
-        ops.mass(i, *([float(stick.floor_masses_kg[i - 1])] + ([0.0, 0.0] if column else [])))
-        if stick.law == "bilinear":
-            ops.uniaxialMaterial("Steel01", i, fy, k0, b)
-        else:
-            dy = fy / k0
-            d3 = 100.0 * dy
-            f3 = fy + b * k0 * (d3 - dy)
-            ops.uniaxialMaterial("Hysteretic", i, fy, dy, f3, d3, -fy, -dy, -f3, -d3,
-                                 float(stick.pinch_x), float(stick.pinch_y), 0.0, 0.0, float(stick.unloading_beta))
-        ops.element("zeroLength", i, 1000 + i if column else i - 1, i, "-mat", i, "-dir", 1, "-doRayleigh", 1)
+        storey_spring(ops, i, float(stick.floor_masses_kg[i - 1]), float(stick.stiffness_n_m[i - 1]),
+                      float(stick.yield_force_n[i - 1]), float(np.broadcast_to(stick.hardening, (n,))[i - 1]),
+                      stick.law == "bilinear",
+                      (float(stick.pinch_x), float(stick.pinch_y), float(stick.unloading_beta)), column)
     a0, a1 = stick.rayleigh
     if stick.damping_stiffness == "initial":
         ops.rayleigh(float(a0), 0.0, float(a1), 0.0)
     else:
         ops.rayleigh(float(a0), 0.0, 0.0, float(a1))
-    ground = np.asarray(ground_accel_g, dtype=float)
-    ops.timeSeries("Path", 1, "-dt", float(dt_s), "-values", *(ground * GRAVITY_M_S2).tolist())
-    ops.pattern("UniformExcitation", 1, 1, "-accel", 1)
-    ops.constraints("Transformation" if column else "Plain")
-    ops.numberer("Plain")
-    ops.system("FullGeneral")
-    ops.test("NormDispIncr", 1e-12, 50)
-    ops.algorithm("Newton")
-    ops.integrator("Newmark", 0.5, 0.25)
-    ops.analysis("Transient")
-    accel = np.zeros((n + 1, ground.size))
-    drift = np.zeros((n, ground.size))
-    accel[0] = ground
-    step = float(dt_s) / substeps
-    for i in range(1, ground.size):
-        if ops.analyze(substeps, step) != 0:
-            raise RuntimeError(f"OpenSees failed at step {i}")
-        below = 0.0
-        for k in range(1, n + 1):
-            accel[k, i] = ops.nodeAccel(k, 1) / GRAVITY_M_S2 + ground[i]
-            u = ops.nodeDisp(k, 1)
-            drift[k - 1, i] = u - below
-            below = u
-    ops.wipe()
-    return accel, drift
+    return floor_histories(ops, n, ground_accel_g, dt_s, substeps, 1e-12, column)
