@@ -5,33 +5,23 @@
 """
 from __future__ import annotations
 
-import matplotlib
 import numpy as np
-from matplotlib.figure import Figure
-from matplotlib.backends.backend_agg import FigureCanvasAgg
-from assess.report import figures
+
+from tests.report.test_figure_labels import draw
 
 
 def test_placed_labels_lie_inside_and_apart():
     rng = np.random.default_rng(3)
     points = list(zip(rng.uniform(0, 7, 40), rng.uniform(0, 1, 40)))
     labels = [f"ITEM-{i:02d}" for i in range(40)]
-    with matplotlib.rc_context(figures._RC):
-        figure = Figure(figsize=(6.6, 3.5))
-        FigureCanvasAgg(figure)
-        axes = figure.add_subplot()
-        axes.scatter(*zip(*points))
-        axes.set_xlim(-0.5, 7.5)
-        axes.set_ylim(-0.1, 1.1)
-        figures._place_labels(axes, points, labels, ["#000000"] * 40)
-        renderer = figure.canvas.get_renderer()
-        frame = axes.get_window_extent(renderer)
-        texts = [child for child in axes.texts]
-        assert 10 <= len(texts) <= 40  # most labels find a place, none is drawn twice
-        assert len({t.get_text() for t in texts}) == len(texts)
-        boxes = [t.get_window_extent(renderer) for t in texts]  # the text alone, as matplotlib draws it
-        for i, box in enumerate(boxes):
-            assert frame.x0 - 0.5 <= box.x0 and box.x1 <= frame.x1 + 0.5
-            assert frame.y0 - 0.5 <= box.y0 and box.y1 <= frame.y1 + 0.5
-            for other in boxes[i + 1:]:
-                assert not box.overlaps(other)
+    axes, renderer = draw(points, labels)  # the fragility figure's axes, labelled by the placer
+    frame = axes.get_window_extent(renderer)
+    texts = [child for child in axes.texts]
+    assert 10 <= len(texts) <= 40  # most labels find a place, none is drawn twice
+    assert len({t.get_text() for t in texts}) == len(texts)
+    boxes = [t.get_window_extent(renderer) for t in texts]  # the text alone, as matplotlib draws it
+    for i, box in enumerate(boxes):
+        assert frame.x0 - 0.5 <= box.x0 and box.x1 <= frame.x1 + 0.5
+        assert frame.y0 - 0.5 <= box.y0 and box.y1 <= frame.y1 + 0.5
+        for other in boxes[i + 1:]:
+            assert not box.overlaps(other)
