@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
-from assess.inventory.units import CM_PER_IN, KG_PER_LB, N_PER_LBF  # noqa: F401 (the report's conversions)
+from assess.inventory.units import CM_PER_IN, KG_PER_LB, M_PER_FT, N_PER_LBF  # noqa: F401 (the report's conversions)
 
 if TYPE_CHECKING:  # the annotations only
     from assess.inventory.settings import Settings
@@ -105,7 +105,7 @@ def moment_text(value_knm: float, system="si") -> str:
         return "-"
     if system_of(system) != "us":
         return f"{float(value_knm):.3g} kN·m"
-    kip_ft = float(value_knm) * 1000.0 / N_PER_LBF / 1000.0 / 0.3048
+    kip_ft = float(value_knm) * 1000.0 / N_PER_LBF / 1000.0 / M_PER_FT
     return f"{kip_ft:.3g} kip·ft"
 
 

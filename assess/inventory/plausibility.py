@@ -36,6 +36,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from assess.errors import Problem
+from assess.inventory.units import M_PER_FT
 from assess.inventory.schema import quote
 
 #: Taller than this [m]: a warning.
@@ -47,7 +48,6 @@ DENSITY_RANGE_KG_M3 = (20.0, 3000.0)
 #: The code of the flag an item with a warning carries (summary.csv ``flags``).
 FLAG_CODE = "implausible_input"
 
-_M_PER_FT = 0.3048
 
 
 @dataclass(frozen=True)
@@ -71,7 +71,7 @@ def bounding_box_density_kg_m3(mass_kg, height_m, width_m, depth_m):
 
 
 def _length_text(value_m: float) -> str:
-    return f"{value_m:.2f} m ({value_m / _M_PER_FT:.1f} ft)"
+    return f"{value_m:.2f} m ({value_m / M_PER_FT:.1f} ft)"
 
 
 def _unit_hint(header) -> str:

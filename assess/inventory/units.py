@@ -22,6 +22,8 @@ CM_PER_IN = conversion_factor("inch", "centimeter")
 #: pint's factors to the last bit but one (tests/inventory/test_unit_constants.py).
 N_PER_LBF = 4.4482216152605
 KG_PER_LB = 0.45359237
+#: Metres per foot, as defined (1 ft = 0.3048 m).
+M_PER_FT = 0.3048
 
 
 @dataclass(frozen=True)

@@ -19,7 +19,7 @@ import zipfile
 import numpy as np
 import pandas as pd
 
-from assess.inventory.units import CM_PER_IN, N_PER_LBF
+from assess.inventory.units import CM_PER_IN, M_PER_FT, N_PER_LBF
 from assess.report.tables import neutralise_formulas
 
 #: The date written into a workbook's document properties and zip entries: no time of day goes into a file,
@@ -41,7 +41,7 @@ def sheet_name(label: str) -> str:
 #: SI column suffix -> (US suffix, factor from the SI unit to the US one): cm -> in, kN -> kip, kN·m -> kip·ft
 #: (exact: 1 in = 2.54 cm, 1 lbf = 4.4482216152605 N, 1 ft = 0.3048 m).
 US_COLUMNS = {"_cm": ("_in", 1.0 / CM_PER_IN), "_kn": ("_kip", 1.0 / N_PER_LBF),
-              "_knm": ("_kip_ft", 1.0 / N_PER_LBF / 0.3048)}
+              "_knm": ("_kip_ft", 1.0 / N_PER_LBF / M_PER_FT)}
 
 
 def with_us_units(summary: pd.DataFrame) -> pd.DataFrame:
