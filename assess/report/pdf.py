@@ -4,9 +4,9 @@ The risk report ends in an appendix (the item-by-item blocks, between the
 ``<!-- appendix -->`` and ``<!-- /appendix -->`` markers of the template)
 whose pages are numbered A-1, A-2 … as engineering reports number theirs.
 The body and the appendix are laid out as two documents, each with its own
-page numbers: the appendix in a second process while this one lays out the
-body, where the machine has a second core (:func:`render_pdf`), the one after
-the other where it has not. The two PDFs are then joined (:func:`merge`):
+page numbers: the body in a second process, started while the report's
+figures are drawn, and the appendix in this one, where the machine has a second
+core (:func:`report_pdf`), the one after the other where it has not. The two PDFs are then joined (:func:`merge`):
 the pages keep their labels (1, 2 … then A-1, A-2 …, as a PDF viewer shows
 them), the body's links to an item's block in the appendix are made to point
 there, and the bookmarks of both follow one another. The bytes depend on the
@@ -164,41 +164,59 @@ def second_core() -> bool:
 def render_pdf(html: str, *, url_fetcher=None, processes: int | None = None) -> bytes:
     """The PDF of a report's HTML, fetching nothing from the network or the disk.
 
-    A report with an appendix is laid out as two documents and joined (:func:`merge`): the appendix in a
-    second process while this one lays out the body where ``processes`` (default: 2 where the machine has a
-    second core, else 1) is 2 (:func:`_lay_out_parts`); the bytes are the same either way.
+    A report with an appendix is laid out as two documents and joined (:func:`merge`): the body in a
+    second process while this one lays out the appendix where ``processes`` (default: 2 where the machine has
+    a second core, else 1) is 2 (:func:`report_pdf`); the bytes are the same either way.
     ``url_fetcher`` defaults to :func:`data_only_url_fetcher`; pass one to inspect its ``refused`` list
     afterwards (both parts are then laid out in this process, with it).
     """
-    body, appendix = split_appendix(html)
-    if appendix is None:
-        return render_part(html, url_fetcher)
-    if url_fetcher is not None:
-        return merge(render_part(body, url_fetcher), render_part(appendix, url_fetcher))
-    if (processes if processes is not None else (2 if second_core() else 1)) < 2:
-        return merge(render_part(body), render_part(appendix))
-    return merge(*_lay_out_parts(body, appendix))
+    return report_pdf(lambda: html, url_fetcher=url_fetcher, processes=processes)[1]
 
 
-def _lay_out_parts(body: str, appendix: str) -> tuple[bytes, bytes]:
-    """The PDFs of ``body`` (laid out here) and ``appendix`` (meanwhile, in a second process: a
-    :class:`concurrent.futures.ProcessPoolExecutor` of one fresh interpreter, 'spawn').
+def report_pdf(make_html, *, url_fetcher=None, processes: int | None = None) -> tuple[str, bytes]:
+    """``(html, pdf)``: the report's HTML, made by ``make_html()``, and its PDF (as :func:`render_pdf`).
+
+    Where a second process lays out a part (``processes`` 2, the default on a machine with a second core),
+    it is started before ``make_html`` runs, so that it has imported WeasyPrint by the time the HTML is
+    made (the figures take about as long): it then lays out the body, the larger part, while this process
+    lays out the appendix (:func:`_lay_out_parts`).
+    """
+    two = url_fetcher is None and (processes if processes is not None else (2 if second_core() else 1)) >= 2
+    if not two:
+        html = make_html()
+        body, appendix = split_appendix(html)
+        if appendix is None:
+            return html, render_part(html, url_fetcher)
+        return html, merge(render_part(body, url_fetcher), render_part(appendix, url_fetcher))
+    return _lay_out_parts(make_html)
+
+
+def _lay_out_parts(make_html) -> tuple[str, bytes]:
+    """``(html, pdf)`` with a second process: a :class:`concurrent.futures.ProcessPoolExecutor` of one fresh
+    interpreter ('spawn'), started before ``make_html()`` runs; it imports WeasyPrint meanwhile
+    (:func:`_ready`), then lays out the body while this process lays out the appendix.
 
     The second process starts with Ctrl-C blocked (:func:`_interrupts_held`): an interrupt is this
     process's to act on, and it ends the other on leaving, whatever the reason (it holds nothing to save).
-    A second process that ends without the appendix (killed, out of memory) only means that this one lays
-    the appendix out itself.
+    A second process that ends without the body (killed, out of memory) only means that this one lays
+    the body out itself.
     """
     started = set(multiprocessing.active_children())
     pool = ProcessPoolExecutor(max_workers=1, mp_context=multiprocessing.get_context("spawn"))
     try:
         with _interrupts_held():
-            elsewhere = pool.submit(_lay_out_appendix, appendix)
-        body_pdf = render_part(body)
+            pool.submit(_ready)  # starts the process, which imports WeasyPrint while the HTML is made
+        html = make_html()
+        body, appendix = split_appendix(html)
+        if appendix is None:
+            return html, render_part(html)
+        elsewhere = pool.submit(_lay_out_body, body)
+        appendix_pdf = render_part(appendix)
         try:
-            return body_pdf, elsewhere.result()
+            body_pdf = elsewhere.result()
         except BrokenProcessPool:
-            return body_pdf, render_part(appendix)
+            body_pdf = render_part(body)
+        return html, merge(body_pdf, appendix_pdf)
     finally:
         with _interrupts_held():  # a Ctrl-C now waits until the pool's process is ended and reaped
             ours = set(multiprocessing.active_children()) - started  # the pool's process, done or not
@@ -209,9 +227,14 @@ def _lay_out_parts(body: str, appendix: str) -> tuple[bytes, bytes]:
                 child.join()
 
 
-def _lay_out_appendix(appendix: str) -> bytes:
-    """:func:`render_part` of the appendix, in the second process (:func:`_lay_out_parts`)."""
-    return render_part(appendix)
+def _ready() -> None:
+    """In the second process (:func:`_lay_out_parts`): import WeasyPrint before there is anything to lay out."""
+    _weasyprint()
+
+
+def _lay_out_body(body: str) -> bytes:
+    """:func:`render_part` of the body, in the second process (:func:`_lay_out_parts`)."""
+    return render_part(body)
 
 
 @contextlib.contextmanager

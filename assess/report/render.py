@@ -33,7 +33,7 @@ from assess.report.building import building_context
 from assess.report.costs import costs_context
 from assess.report.curve import curve_context
 from assess.report.method import floor_motion_route
-from assess.report.pdf import RefusedURLError, data_only_url_fetcher, decode_data_uri, render_pdf  # noqa: F401
+from assess.report.pdf import RefusedURLError, data_only_url_fetcher, decode_data_uri, render_pdf, report_pdf  # noqa: F401
 from assess.report.references import reference_rows
 from assess.report.sentences import (
     DASH, action_groups, after_text, case_outcomes, changes, class_rule_paragraph, cm_interval_text, finite,
@@ -576,8 +576,9 @@ def report_files(result, *, html: bool = True, pdf: bool = True, pdf_processes: 
     """
     if not (html or pdf):
         return {}
-    text = render_html(result)
+    if not pdf:
+        return {"report.html": render_html(result).encode()}
+    text, pdf_bytes = report_pdf(lambda: render_html(result), processes=pdf_processes)
     files = {"report.html": text.encode()} if html else {}
-    if pdf:
-        files["report.pdf"] = render_pdf(text, processes=pdf_processes)
+    files["report.pdf"] = pdf_bytes
     return files
