@@ -9,6 +9,7 @@ actions' what-if) and the worst run of each item again with its time history (:f
 """
 from __future__ import annotations
 
+from collections import Counter
 from dataclasses import dataclass
 from typing import Callable
 
@@ -90,11 +91,12 @@ def _case_block(case, calibration=None) -> Block:
     return case_block(block, case.id, calibration)  # the calibration's effect, where it applies
 
 
-def _majority_mode(modes: pd.Series) -> str:
-    """The most frequent mode; a tie goes to the more severe."""
-    counts = modes.value_counts()
-    tied = counts[counts == counts.max()].index
-    return max(tied, key=lambda mode: MODE_SEVERITY[mode])
+def majority_modes(case: np.ndarray, mode) -> pd.Series:
+    """Each case's most frequent mode over its runs (a tie goes to the more severe), by case in order."""
+    counts: dict[int, Counter] = {}
+    for k, m in zip(case.tolist(), mode):
+        counts.setdefault(k, Counter())[m] += 1
+    return pd.Series({k: max(c, key=lambda m: (c[m], MODE_SEVERITY[m])) for k, c in sorted(counts.items())})
 
 
 def simulate_cases(cases: pd.DataFrame, motions: dict[int, list[tuple[Record, str]]],
@@ -151,7 +153,7 @@ def simulate_cases(cases: pd.DataFrame, motions: dict[int, list[tuple[Record, st
         "sim_theta_max_over_alpha": grouped["theta_max_over_alpha"].median(),
         "sim_overturn_share": grouped["overturned"].mean(),
         "sim_uplift": grouped["uplift"].any(),
-        "sim_mode": grouped["mode"].agg(_majority_mode),
+        "sim_mode": majority_modes(run_case, peaks.mode),
         "sim_solver": grouped["solver"].agg(lambda s: " | ".join(sorted(set(s)))),
     })
     summary["sim_overturned"] = summary["sim_overturn_share"] >= 0.5

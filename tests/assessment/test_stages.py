@@ -104,3 +104,14 @@ def test_an_item_whose_class_changes_over_its_mu_range_says_so():
                                       "60% chance of sliding past its room", "0% chance of overturning")
     assert decided["mu_range_note"] == sentence and decided["demand_note"] == f"From 3 motions. {sentence}"
     assert np.isnan(decisions.NO_MU_RANGE["mu_low"]) and decisions.NO_MU_RANGE["risk_mu_low"] == ""
+
+
+def test_a_cases_mode_is_its_most_frequent_and_a_tie_goes_to_the_more_severe():
+    import numpy as np
+
+    from assess.assessment.run import majority_modes
+    from assess.mechanics.modes import REST, ROCK, SLIDE, SLIDE_ROCK
+
+    case = np.array([2, 0, 0, 0, 1, 1, 2, 2, 1, 1])
+    mode = [SLIDE, REST, SLIDE, REST, ROCK, SLIDE, SLIDE_ROCK, SLIDE_ROCK, SLIDE, ROCK]
+    assert majority_modes(case, mode).to_dict() == {0: REST, 1: ROCK, 2: SLIDE_ROCK}
