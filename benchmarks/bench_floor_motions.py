@@ -22,7 +22,10 @@ Routes, each through ``assess.mechanics.engine.simulate_cases`` as the truth is:
 * ``shear building``: the user gives storeys, storey height, T_1 and damping; the modal
   route with the uniform shear building (α = ∞), every mode;
 * ``steel moment frame``: the same with the shape ``system = steel moment frame`` implies
-  (α = 12, shear-flexural);
+  (α = 12, shear-flexural), with uniform storeys;
+* ``steel moment frame, design profile``: the same with the storey stiffness a building sheet of that
+  system now takes by default (in proportion to the ASCE 7-22 design storey shear,
+  ``assess.building.design.design_storey_stiffness``);
 * ``shear wall``: the shape ``system = shear wall`` implies (α = 1);
 * ``ground x (1 + 2z/h)``: the ground record scaled by ASCE 7-16's floor factor (the
   former ``--derive-floors``), for context.
@@ -48,6 +51,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tests"))
 
 from assess.building import building_modes, floor_accelerations, height_factor  # noqa: E402
+from assess.building.design import design_storey_stiffness  # noqa: E402
 from assess.hazard.records import read_record  # noqa: E402
 from assess.mechanics.block import Block  # noqa: E402
 from assess.mechanics.engine import simulate_cases  # noqa: E402
@@ -117,7 +121,12 @@ def route_floors(route, storeys, period_s, suite):
         return [np.outer(factors, ground) for _, ground, _ in suite]
     alpha = np.inf if route == "shear building" else None
     system = "shear wall" if route == "shear wall" else "steel moment frame"
-    modes = building_modes(storeys, STOREY_HEIGHT_M, system=system, period_s=period_s, damping=DAMPING, alpha=alpha)
+    stiffness = None
+    if route == "steel moment frame, design profile":
+        stiffness = design_storey_stiffness(system, np.ones(storeys), STOREY_HEIGHT_M * np.arange(1, storeys + 1),
+                                            period_s)
+    modes = building_modes(storeys, STOREY_HEIGHT_M, system=system, period_s=period_s, damping=DAMPING, alpha=alpha,
+                           storey_stiffness=stiffness)
     return [floor_accelerations(modes, ground, dt) for _, ground, dt in suite]
 
 
@@ -197,7 +206,8 @@ def main():
     truth_floors = {p: [opensees_floors(n, t, p, suite, args.cache) for n, t in BUILDINGS] for p in PROFILES}
     print(f"OpenSees floor histories: {time.perf_counter() - start:.0f} s")
     start = time.perf_counter()
-    routes = ("shear building", "steel moment frame", "shear wall", "ground x (1 + 2z/h)")
+    routes = ("shear building", "steel moment frame", "steel moment frame, design profile", "shear wall",
+              "ground x (1 + 2z/h)")
     route_floors_ = {r: [route_floors(r, n, t, suite) for n, t in BUILDINGS] for r in routes}
     print(f"modal floor histories, {len(routes)} routes x 3 buildings x {len(suite)} records: "
           f"{time.perf_counter() - start:.2f} s")
@@ -230,12 +240,13 @@ def main():
         pga = np.array([np.abs(h[0]).max() for h in truth_floors["uniform"][b]])
         print(f"{storeys} storeys, T1 {period} s:")
         print("| floor | z/h | OpenSees uniform | OpenSees 1/4 at roof | OpenSees wall-frame | shear building | "
-              "steel moment frame | shear wall | H_f |")
-        print("|---|---|---|---|---|---|---|---|---|")
+              "steel moment frame | steel moment frame, design profile | shear wall | H_f |")
+        print("|---|---|---|---|---|---|---|---|---|---|")
         for k in range(storeys + 1):
             means = [np.mean([np.abs(h[k]).max() for h in source[b]] / pga) for source in
                      (truth_floors["uniform"], truth_floors["quarter at the roof"], truth_floors["wall-frame"],
                       route_floors_["shear building"], route_floors_["steel moment frame"],
+                      route_floors_["steel moment frame, design profile"],
                       route_floors_["shear wall"])]
             print(f"| {k} | {k / storeys:.2f} | " + " | ".join(f"{m:.2f}" for m in means)
                   + f" | {float(height_factor(k / storeys, period)):.2f} |")

@@ -1,7 +1,7 @@
 """Equipment demand on the floors of yielding buildings: the tool's yielding route against OpenSees buildings.
 
 Run: python benchmarks/bench_yielding_equipment.py [--levels DE,MCE_R] [--buildings smf4,smf8,wall6]
-     [--motions 11] [--overstrengths 1.5,2,3]      (needs openseespy and pyslammer; about 2 minutes)
+     [--motions 11] [--overstrengths 1.5,2,3] [--truth-profile]      (needs openseespy and pyslammer; about 2 minutes)
 
 The truth: three yielding OpenSeesPy buildings of our own (tests/peers/opensees_buildings.py: steel
 special moment frames of 4 and 8 storeys with a continuous elastic column, a pinching concrete shear wall
@@ -21,7 +21,10 @@ a ``building`` sheet of the building's storeys, height, system and T_1): only th
   yield (its first storey's yield shear over the weight);
 * ``design x Ω``: ``response: yielding`` from the design data only (ASCE 7-22 §12.8) with
   ``overstrength`` Ω (2 is the default);
-* ``elastic``: ``response: elastic``, today's modal route.
+* ``elastic``: ``response: elastic``, today's modal route;
+* ``given + truth's stiffness`` (``--truth-profile``): ``given`` with the OpenSees building's storey
+  stiffnesses in ``storey_stiffness`` (what an engineer who knows the building would write); the
+  other routes take the system's design profile.
 
 Columns, each route against the truth over the (item, motion, direction) cases: PFA tool/truth at the
 mid-height floor and the roof (median over the motions), sliding: geometric mean and σ of
@@ -67,6 +70,9 @@ def main(argv=None):
     parser.add_argument("--buildings", default="smf4,smf8,wall6")
     parser.add_argument("--motions", type=int, default=11)
     parser.add_argument("--overstrengths", default="1.5,2,3")
+    parser.add_argument("--truth-profile", action="store_true",
+                        help="add the route 'given + truth's stiffness': yield_base_shear_g and the OpenSees "
+                             "building's storey stiffnesses in storey_stiffness")
     args = parser.parse_args(argv)
     rows, ratios = [], []
     start = time.perf_counter()
@@ -78,6 +84,9 @@ def main(argv=None):
                 folder = Path(tmp)
                 given = round(truth.yield_base_shear_g, 6)
                 routes = {"given": [["response", "yielding"], ["yield_base_shear_g", given]]}
+                if args.truth_profile:
+                    profile = ", ".join(f"{k:g}" for k in truth.stiffness_profile)
+                    routes["given + truth's stiffness"] = routes["given"] + [["storey_stiffness", profile]]
                 for omega in args.overstrengths.split(","):
                     routes[f"design x {omega}"] = [["response", "yielding"], ["overstrength", float(omega)]]
                 routes["elastic"] = [["response", "elastic"]]

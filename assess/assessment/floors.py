@@ -21,7 +21,9 @@ import numpy as np
 import pandas as pd
 
 from assess.building import BuildingModes, building_modes
+from assess.building.design import design_storey_stiffness
 from assess.building.floors import floors_table
+from assess.building.period import approximate_period
 from assess.building.response import floor_records
 from assess.building.yielding import (YieldingBuilding, building_floor_records, storey_table, yielding_building,
                                       yielding_histories)
@@ -59,10 +61,24 @@ class SiteSuite:
     periods_s: np.ndarray
 
 
+def storey_stiffness_of(building: BuildingSheet) -> np.ndarray:
+    """The storeys' relative stiffnesses, the first storey to the roof: the sheet's ``storey_stiffness``, else
+    the system's design profile (:func:`assess.building.design.design_storey_stiffness`, equal floor weights,
+    at T_1: given, or ASCE 7 Table 12.8-2's estimate)."""
+    if building.storey_stiffness is not None:
+        return np.asarray(building.storey_stiffness, dtype=float)
+    heights = building.height_m / building.storeys * np.arange(1, building.storeys + 1)
+    period_s = building.period_s if building.period_s is not None else approximate_period(heights[-1],
+                                                                                           building.system)
+    return design_storey_stiffness(building.system, np.ones(building.storeys), heights, period_s)
+
+
 def building_modes_of(building: BuildingSheet) -> BuildingModes:
-    """The building sheet's modes (:func:`assess.building.building_modes`), every mode kept."""
+    """The building sheet's modes (:func:`assess.building.building_modes`), every mode kept, with the storeys'
+    stiffness profile of :func:`storey_stiffness_of`."""
     return building_modes(building.storeys, building.height_m / building.storeys, system=building.system,
-                          period_s=building.period_s, damping=building.damping)
+                          period_s=building.period_s, damping=building.damping,
+                          storey_stiffness=storey_stiffness_of(building))
 
 
 def building_model_of(building: BuildingSheet, site: SiteSheet | None, modes: BuildingModes | None = None,
@@ -195,10 +211,12 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
     modes = building.modes if isinstance(building, YieldingBuilding) else building
     source = "given" if sheet.period_s is not None else "ASCE 7 Table 12.8-2's estimate"
     which = f"Floor{'s' if len(floors) > 1 else ''} {floors_text(floors, numbering)}"
+    stiffness = stiffness_note(modes, sheet)
     if isinstance(building, YieldingBuilding):
         strength = building.strength
         text = (f"{which}: each ground motion through the building, modelled as yielding ({sheet.storeys} storeys, "
-                f"{sheet.system}, T1 {modes.periods_s[0]:.2f} s ({source}), {sheet.damping:.0%} Rayleigh damping; "
+                f"{sheet.system}, T1 {modes.periods_s[0]:.2f} s ({source}), {stiffness}, "
+                f"{sheet.damping:.0%} Rayleigh damping; "
                 f"{building.stick.law} storey springs"
                 + (", with P-Delta" if building.p_delta else "") + "): the floor's absolute acceleration in time "
                 f"(floors.csv). Its storeys yield at a base shear of {strength.yield_base_shear_g:.3g} W: "
@@ -206,7 +224,7 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
                 "modes' ones. The building's own collapse is not assessed.")
     else:
         text = (f"{which}: each ground motion through the building's elastic modes "
-                f"({sheet.storeys} storeys, {sheet.system}, T1 {modes.periods_s[0]:.2f} s ({source}), "
+                f"({sheet.storeys} storeys, {sheet.system}, T1 {modes.periods_s[0]:.2f} s ({source}), {stiffness}, "
                 f"{sheet.damping:.0%} damping, {modes.n_modes} modes): the floor's absolute acceleration in time "
                 "(floors.csv). The building is taken as elastic: a building that yields has lower peak floor "
                 "accelerations than these, at longer periods; floor motions a structural engineer gives in the "
@@ -214,6 +232,26 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
     if derive_floors_roof is not None:
         text += " --derive-floors gives way to the building sheet."
     return text
+
+
+def stiffness_note(modes: BuildingModes, sheet: BuildingSheet) -> str:
+    """The storeys' stiffness profile the model used, in words for the report.
+
+    >>> from assess.building import building_modes
+    >>> sheet = BuildingSheet(storeys=2, height_m=8.0, system="steel moment frame")
+    >>> stiffness_note(building_modes(2, 4.0, storey_stiffness=[1.0, 0.5]), sheet)
+    "storey stiffness from the base to the roof falling with the design's storey shears to 0.5 of the first storey's"
+    >>> stiffness_note(building_modes(2, 4.0), BuildingSheet(storeys=2, height_m=8.0, storey_stiffness=(1.0, 1.0)))
+    'uniform storey stiffness (given)'
+    """
+    relative = modes.storey_stiffness
+    given = " (given)" if sheet.storey_stiffness is not None else ""
+    if np.allclose(relative, relative[0]):
+        return f"uniform storey stiffness{given}"
+    if given:
+        return f"the storey stiffnesses given (the top storey {relative[-1]:.2g} of the first storey's)"
+    return ("storey stiffness from the base to the roof falling with the design's storey shears to "
+            f"{relative[-1]:.2g} of the first storey's")
 
 
 def roof_note(freestanding: pd.DataFrame, building: BuildingSheet, numbering: str = "ground_0") -> str | None:

@@ -46,13 +46,18 @@ References
 ----------
 .. [1] ASCE/SEI 7-22 (2022). Minimum Design Loads and Associated Criteria for
    Buildings and Other Structures. Table 1.5-2; Table 12.2-1; §12.8.1.1 (Eqs.
-   12.8-2 to 12.8-6); §12.8.2 (Table 12.8-1); §12.8.3 (Eqs. 12.8-11, 12.8-12).
+   12.8-2 to 12.8-6); §12.8.2 (Table 12.8-1); §12.8.3 (Eqs. 12.8-11, 12.8-12); §12.12.1 (storey drift limit).
 .. [2] FEMA P-750 (2009). NEHRP Recommended Seismic Provisions, Part 2
    (Commentary), §C12.1.1 on the meaning of R and Ω_0.
 .. [3] FEMA P-695 (2009). Quantification of Building Seismic Performance Factors.
    Chapter 9 and Appendix F (archetype pushover overstrength).
 .. [4] NIST GCR 10-917-8 (2010). Evaluation of the FEMA P-695 Methodology for
    Quantification of Building Seismic Performance Factors.
+.. [5] Miranda, E. and Reyes, C. J. (2002). Approximate lateral drift demands in multistory
+   buildings with nonuniform stiffness. J. Struct. Eng. 128(7):840-849 (as recalled: its text could
+   not be read here; the storey-shear rule itself follows from §12.12.1's uniform drift limit).
+.. [6] Paulay, T. and Priestley, M. J. N. (1992). Seismic Design of Reinforced Concrete and Masonry
+   Buildings. Wiley. Ch. 5 (cantilever walls).
 """
 from __future__ import annotations
 
@@ -173,6 +178,53 @@ def storey_shear_ratios(floor_weights, floor_heights_m, period_s):
     """
     distribution = vertical_distribution(floor_weights, floor_heights_m, period_s)
     return np.cumsum(distribution[::-1])[::-1]
+
+
+#: The storeys' stiffness profile each system's design gives by default (:func:`design_storey_stiffness`):
+#: ``"storey shear"`` (each storey's stiffness in proportion to its design storey shear) for the frames,
+#: whose storeys are sized storey by storey for the code's forces; ``"uniform"`` for walls (a wall keeps its
+#: section up the height) and ``other``.
+STIFFNESS_PROFILE_BY_SYSTEM = {
+    "steel moment frame": "storey shear",
+    "concrete moment frame": "storey shear",
+    "eccentrically braced frame": "storey shear",
+    "braced frame": "storey shear",
+    "shear wall": "uniform",
+    "other": "uniform",
+}
+
+
+def design_storey_stiffness(system, floor_weights, floor_heights_m, period_s):
+    """Each storey's stiffness relative to the first storey's, as the system's design makes it [-].
+
+    A frame's storeys are sized one by one for the code's forces. Where drift governs (moment frames
+    in high-seismic sites), each storey is made stiff enough to keep its drift ratio within ASCE 7-22
+    §12.12.1's limit, which is the same for every storey: designed to that limit under the equivalent
+    lateral forces, storey x's drift ratio V_x/(k_x h_x) is the same at every storey, so
+    k_x ∝ V_x/h_x (the *uniform drift* design of displacement-controlled frames; the stiffness falls
+    with the storey shear from the base to the roof, as in Miranda & Reyes' buildings of lateral
+    stiffness decreasing with height [5]_). Where strength governs (braced frames: the braces are sized
+    for the storey shear, and their area sets the storey's stiffness), k_x ∝ V_x as well for equal
+    storeys. A wall keeps its section up the height (a constant wall is the norm, Paulay & Priestley
+    [6]_ ch. 5), and nothing is known of ``other``: both uniform
+    (:data:`STIFFNESS_PROFILE_BY_SYSTEM`). V_x follows the code's vertical distribution at T_1
+    (:func:`storey_shear_ratios`).
+
+    Examples
+    --------
+    Two equal storeys of 3 m at T_1 0.4 s (k = 1): V = 1, 2/3 (see :func:`storey_shear_ratios`):
+
+    >>> design_storey_stiffness("steel moment frame", [1.0, 1.0], [3.0, 6.0], 0.4).round(4).tolist()
+    [1.0, 0.6667]
+    >>> design_storey_stiffness("shear wall", [1.0, 1.0], [3.0, 6.0], 0.4).tolist()
+    [1.0, 1.0]
+    """
+    heights = np.asarray(floor_heights_m, dtype=float)
+    if STIFFNESS_PROFILE_BY_SYSTEM[system] == "uniform":
+        return np.ones(heights.size)
+    storey_heights = np.diff(np.concatenate([[0.0], heights]))
+    stiffness = storey_shear_ratios(floor_weights, heights, period_s) / storey_heights
+    return stiffness / stiffness[0]
 
 
 @dataclass(frozen=True)

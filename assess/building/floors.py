@@ -73,7 +73,8 @@ def floors_table(modes: BuildingModes, floors: Mapping[int, Sequence[Record]], l
     DataFrame
         Columns ``level, floor, height_m, z_over_h``; the building's ``period_1_s`` ..
         ``period_3_s``, ``modes_used``, ``mass_used`` (share of the mass in the modes used),
-        ``alpha``, ``damping``, ``period_source``; the floor's ``gamma_phi_1`` .. ``gamma_phi_3``
+        ``alpha``, ``damping``, ``period_source``, ``storey_stiffness`` (the storey below the floor's
+        stiffness over the first storey's, empty at the ground); the floor's ``gamma_phi_1`` .. ``gamma_phi_3``
         (Γ_j φ_j at the floor); over the suite, ``motions``, ``pfa_median_g``, ``pfa_min_g``,
         ``pfa_max_g``, ``pfa_over_pga_median``, ``pfa_over_pga_min``, ``pfa_over_pga_max``
         (each motion's PFA over its own PGA), ``pfa_over_pga_mean``; and ``hf_asce7_22``,
@@ -92,7 +93,8 @@ def floors_table(modes: BuildingModes, floors: Mapping[int, Sequence[Record]], l
         for j in range(MODES_SHOWN):
             row[f"period_{j + 1}_s"] = modes.periods_s[j] if j < modes.n_modes else np.nan
         row.update(modes_used=modes.n_modes, mass_used=float(modes.effective_mass_ratio.sum()),
-                   alpha=modes.alpha, damping=float(modes.damping[0]), period_source=modes.period_source)
+                   alpha=modes.alpha, damping=float(modes.damping[0]), period_source=modes.period_source,
+                   storey_stiffness=float(modes.storey_stiffness[k - 1]) if k > 0 else np.nan)
         for j in range(MODES_SHOWN):
             row[f"gamma_phi_{j + 1}"] = contributions[k, j] if j < modes.n_modes else np.nan
         row.update(motions=pfa.size, pfa_median_g=float(np.median(pfa)), pfa_min_g=float(pfa.min()),

@@ -302,6 +302,9 @@ class BuildingModes:
         Lateral stiffness ratio of the model (inf: shear building).
     period_source : str
         Where T_1 came from (``given`` or the code's estimate).
+    storey_stiffness : ndarray, (storeys,)
+        The shear beam's storey stiffnesses relative to the first storey's, floor 1 to the roof
+        (all 1: uniform); the yielding stick starts from the same profile.
     """
 
     floor_heights_m: np.ndarray
@@ -312,6 +315,11 @@ class BuildingModes:
     damping: np.ndarray
     alpha: float
     period_source: str
+    storey_stiffness: np.ndarray = None
+
+    def __post_init__(self):
+        if self.storey_stiffness is None:
+            object.__setattr__(self, "storey_stiffness", np.ones(self.floor_heights_m.size - 1))
 
     @property
     def storeys(self) -> int:
@@ -330,7 +338,7 @@ class BuildingModes:
         keep = slice(0, int(n_modes))
         return BuildingModes(self.floor_heights_m, self.periods_s[keep], self.shapes[:, keep],
                              self.participation[keep], self.effective_mass_ratio[keep],
-                             self.damping[keep], self.alpha, self.period_source)
+                             self.damping[keep], self.alpha, self.period_source, self.storey_stiffness)
 
 
 def modes_for_mass(effective_mass_ratio, mass_fraction=DEFAULT_MASS_FRACTION) -> int:
@@ -437,7 +445,8 @@ def building_modes(storeys, storey_height_m, *, system="other", period_s=None, d
         source = "given"
     alpha = ALPHA_BY_SYSTEM[system] if alpha is None else float(alpha)
     masses = np.ones(n) if floor_masses is None else np.asarray(floor_masses, dtype=float)
-    stiffness = stiffness_matrix(n, float(np.mean(heights)), alpha, storey_stiffness)
+    relative = np.ones(n) if storey_stiffness is None else np.asarray(storey_stiffness, dtype=float)
+    stiffness = stiffness_matrix(n, float(np.mean(heights)), alpha, relative)
     periods, shapes, participation, effective = lumped_modes(stiffness, masses, period_s)
     if n_modes is None:
         n_modes = n if mass_fraction is None else max(modes_for_mass(effective, mass_fraction), min(3, n))
@@ -448,4 +457,5 @@ def building_modes(storeys, storey_height_m, *, system="other", period_s=None, d
         raise ValueError("damping must be between 0 and 1, one value or one per mode kept")
     return BuildingModes(floor_heights_m=floor_heights, periods_s=periods[:n_modes], shapes=shapes[:, :n_modes],
                          participation=participation[:n_modes], effective_mass_ratio=effective[:n_modes],
-                         damping=zeta, alpha=alpha, period_source=source)
+                         damping=zeta, alpha=alpha, period_source=source,
+                         storey_stiffness=relative / relative[0])

@@ -4,10 +4,11 @@ The building sheet's ``response: yielding`` (by default wherever the storeys' st
 docs/workbook.md) passes each ground motion through a stick of yielding storey springs
 (:func:`~assess.building.nonlinear.yielding_stick`: bilinear springs for steel frames and braces,
 pinching, stiffness-degrading ones for concrete; Rayleigh damping on the tangent stiffness), started
-from the building's elastic model (:func:`~assess.building.modes.building_modes`: the same T_1 and
-stiffness profile) with each storey's strength from ``yield_base_shear_g`` or the code's design times an
-overstrength (:func:`~assess.building.design.design_strength`), raised above the code's distribution where
-the system's design makes a storey stronger (:data:`~assess.building.nonlinear.STRENGTH_BY_SYSTEM`). A
+from the building's elastic model (:func:`~assess.building.modes.building_modes`: the same T_1, α and
+storeys' stiffness profile, ``modes.storey_stiffness``) with each storey's strength from
+``yield_base_shear_g`` or the code's design times an overstrength
+(:func:`~assess.building.design.design_strength`), raised above the code's distribution where the
+system's design makes a storey stronger (:data:`~assess.building.nonlinear.STRENGTH_BY_SYSTEM`). A
 ground motion under which no storey yields (every storey's ductility below 1) gives the elastic route's
 floor histories themselves (:func:`~assess.building.response.floor_records`): a building strong enough to
 stay elastic is assessed exactly as the elastic route assesses it. The two models are not the same building at the
@@ -165,7 +166,8 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
     strength = design_strength(system, np.ones(modes.storeys), heights, period_s, sds_g=sds_g, sd1_g=sd1_g,
                                tl_s=tl_s, s1_g=s1_g, risk_category=risk_category, overstrength=overstrength,
                                yield_base_shear_g=yield_base_shear_g)
-    arguments = dict(system=system, period_s=period_s, alpha=modes.alpha, damping=damping, p_delta=p_delta)
+    arguments = dict(system=system, period_s=period_s, alpha=modes.alpha, storey_stiffness=modes.storey_stiffness,
+                     damping=damping, p_delta=p_delta)
     stick = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, **arguments)
     code = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, strength_profile="code",
                           **arguments)

@@ -40,6 +40,8 @@ RESPONSES = ("elastic", "yielding")
 #: Bounds of the building sheet's ``yield_base_shear_g`` (base shear at yield over the weight) and ``overstrength``.
 YIELD_BASE_SHEAR_RANGE_G = (0.01, 3.0)
 OVERSTRENGTH_RANGE = (1.0, 6.0)
+#: The largest ratio of one storey's stiffness to another's that the building sheet's ``storey_stiffness`` may give.
+STOREY_STIFFNESS_SPREAD = 20.0
 _YES, _NO = ("yes", "y", "true", "1"), ("no", "n", "false", "0")
 
 _ROMAN = {"1": "I", "2": "II", "3": "III", "4": "IV"}
@@ -126,6 +128,10 @@ class BuildingSheet:
         :mod:`assess.building.design`).
     p_delta : bool
         Whether the yielding stick carries the gravity loads' P-Delta stiffness.
+    storey_stiffness : tuple of float or None
+        The storeys' relative stiffnesses, the first storey to the roof (``uniform``: all 1), where the
+        engineer gives them; None: the system's design profile
+        (:func:`assess.building.design.design_storey_stiffness`).
     rows : dict
         The sheet row of each key given.
     sheet : str
@@ -141,6 +147,7 @@ class BuildingSheet:
     yield_base_shear_g: float | None = None
     overstrength: float | None = None
     p_delta: bool = False
+    storey_stiffness: tuple | None = None
     rows: dict = field(default_factory=dict, compare=False)
     sheet: str = "building"
 
@@ -198,6 +205,7 @@ _BUILDING_KEYS = {
     "overstrength": Column("overstrength", "number", low=OVERSTRENGTH_RANGE[0], high=OVERSTRENGTH_RANGE[1],
                            positive=True),
     "p_delta": Column("p_delta", "text", max_chars=10),
+    "storey_stiffness": Column("storey_stiffness", "text", max_chars=2000),
 }
 
 
@@ -392,6 +400,11 @@ def read_building(table, report) -> BuildingSheet | None:
                   "overstrength: the overstrength multiplies the code's design strength, which a given base "
                   "shear at yield replaces.", "keep yield_base_shear_g (from a pushover or an evaluation) or "
                   "overstrength, not both.")
+    stiffness = None
+    if "storey_stiffness" in out and "storeys" in out:
+        stiffness, problem = storey_stiffness_of(out["storey_stiffness"], int(out["storeys"]))
+        if problem is not None:
+            report.at(values["storey_stiffness"][1], value_header, *problem)
     if len(report.problems) > before:
         return None
     storeys = int(out["storeys"])
@@ -405,8 +418,55 @@ def read_building(table, report) -> BuildingSheet | None:
     return BuildingSheet(storeys=storeys, height_m=float(height_m), system=system,
                          period_s=out.get("period"), damping=float(out.get("damping", DEFAULT_DAMPING)),
                          response=response, yield_base_shear_g=out.get("yield_base_shear"),
-                         overstrength=out.get("overstrength"), p_delta=p_delta,
+                         overstrength=out.get("overstrength"), p_delta=p_delta, storey_stiffness=stiffness,
                          rows={name: row for name, (_, row) in values.items()}, sheet=table.title)
+
+
+def storey_stiffness_of(text, storeys: int):
+    """``(stiffnesses, None)`` from the building sheet's ``storey_stiffness``, or ``(None, (message, fix))``.
+
+    The value is ``uniform`` or one positive number per storey, the first storey to the roof, separated by
+    commas or semicolons: the storeys' stiffnesses in any unit (a model's storey stiffness table), only
+    their ratios count (the building's T_1 sets the scale).
+
+    >>> storey_stiffness_of("1, 0.9; 0.78", 3)
+    ((1.0, 0.9, 0.78), None)
+    >>> storey_stiffness_of("uniform", 2)
+    ((1.0, 1.0), None)
+    >>> storey_stiffness_of("1, 0.9", 3)[1][0]
+    'storey_stiffness gives 2 values for 3 storeys.'
+    """
+    how = (f"write {storeys} positive number{'s' if storeys > 1 else ''}, the storeys' stiffnesses from the "
+           "first storey to the roof separated by commas (e.g. 1, 0.9, 0.8 from a model's storey stiffness "
+           "table; only their ratios count), or uniform, or delete the row for the system's design profile.")
+    word = str(text).strip().lower()
+    if word == "uniform":
+        return (1.0,) * storeys, None
+    parts = [part.strip() for part in re.split(r"[,;]", word)]
+    try:
+        values = tuple(float(part) for part in parts)
+    except ValueError:
+        bad = next(part for part in parts if not _is_number(part))
+        return None, (f"storey_stiffness {schema.quote(text)}: {schema.quote(bad)} is not a number.", how)
+    if len(values) != storeys:
+        return None, (f"storey_stiffness gives {len(values)} value{'s' if len(values) != 1 else ''} for "
+                      f"{storeys} storey{'s' if storeys != 1 else ''}.", how)
+    if not all(v > 0.0 and v < float("inf") for v in values):
+        return None, (f"storey_stiffness {schema.quote(text)} has a value that is not greater than 0.", how)
+    if max(values) > STOREY_STIFFNESS_SPREAD * min(values):
+        return None, (f"storey_stiffness {schema.quote(text)}: the stiffest storey is {max(values) / min(values):.3g} "
+                      f"times the softest; the stick takes at most {STOREY_STIFFNESS_SPREAD:g} times.",
+                      "check the values (one per storey, the same unit for all); a storey that soft is a "
+                      "soft storey, which this model of the building does not assess.")
+    return values, None
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
 
 
 def check_building_strength(table, building: BuildingSheet, site: SiteSheet | None, report) -> None:

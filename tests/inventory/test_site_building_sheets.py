@@ -5,6 +5,7 @@ import pytest
 
 from assess.errors import InputError
 from assess.inventory import read_workbook
+from assess.inventory.site_building import storey_stiffness_of
 from workbooks import good_sheets
 
 
@@ -186,4 +187,46 @@ def test_the_command_exits_2_on_a_bad_response_and_writes_nothing(make_workbook,
     assert cli.main([str(path), "--hazard", "DE", "--out", str(out)]) == 2
     err = capsys.readouterr().err
     assert "building" in err and "B4" in err and "Traceback" not in err
+    assert not out.exists() or not any(out.iterdir())
+
+
+# ---------------------------------------------------------------- the storeys' stiffness profile
+
+def test_storey_stiffness_is_read_as_one_number_per_storey(make_workbook):
+    building = read_workbook(make_workbook(_sheets(building=[
+        ("storeys", 4), ("height_m", 16), ("storey_stiffness", "100; 90, 78 ,62")]))).building
+    assert building.storey_stiffness == (100.0, 90.0, 78.0, 62.0)
+    uniform = read_workbook(make_workbook(_sheets(building=[
+        ("storeys", 3), ("height_m", 12), ("storey_stiffness", " Uniform")]))).building
+    assert uniform.storey_stiffness == (1.0, 1.0, 1.0)
+    assert storey_stiffness_of(2.5, 1) == ((2.5,), None)   # a one-storey building's number cell
+    assert read_workbook(make_workbook(_sheets(building=[("storeys", 3), ("height_m", 12)]))) \
+        .building.storey_stiffness is None
+
+
+@pytest.mark.parametrize("value, words", [
+    ("1, 0.9", "gives 2 values for 3 storeys"),
+    ("1, 0.9, 0.8, 0.7", "gives 4 values for 3 storeys"),
+    ("1, stiff, 0.8", "'stiff' is not a number"),
+    ("1, 0, 0.8", "not greater than 0"),
+    ("1, -0.5, 0.8", "not greater than 0"),
+    ("1, nan, 0.8", "not greater than 0"),
+    ("1, 0.9, 0.01", "100 times the softest"),
+    ("linear", "'linear' is not a number"),
+])
+def test_a_bad_storey_stiffness_is_refused_at_its_cell(make_workbook, value, words):
+    problems = _problems(make_workbook, building=[("storeys", 3), ("height_m", 12), ("storey_stiffness", value)])
+    located = _located(problems, "building", "B4")
+    assert located and words in located[0].message, [(p.cell, p.message) for p in problems]
+    assert "first storey to the roof" in located[0].fix or "soft storey" in located[0].fix
+
+
+def test_the_command_exits_2_on_a_bad_storey_stiffness_and_writes_nothing(make_workbook, tmp_path, capsys):
+    from assess import cli
+    path = make_workbook(_sheets(site=DESIGN_SITE, building=[("storeys", 3), ("height_m", 12),
+                                                             ("storey_stiffness", "1, 0.5")]))
+    out = tmp_path / "out"
+    assert cli.main([str(path), "--hazard", "DE", "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert "building" in err and "B4" in err and "storey_stiffness" in err and "Traceback" not in err
     assert not out.exists() or not any(out.iterdir())
