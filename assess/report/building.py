@@ -73,7 +73,7 @@ def building_context(result) -> dict | None:
         rows.append({
             "storey": k,
             "floors": f"{floor_text(k - 1, numbering)}–{floor_text(k, numbering)}",
-            "yield_ratio": f"{row['storey_yield_ratio']:.3g}",
+            "yield_ratio": f"{row['storey_yield_ratio']:.3f}",  # one precision down the column
             "drift": _percent(row["drift_ratio_median"]),
             "drift_range": _drift_range(row["drift_ratio_min"], row["drift_ratio_max"]),
             "ductility": _number(row["ductility_median"]),
@@ -83,7 +83,7 @@ def building_context(result) -> dict | None:
             "hf": f"{row['hf_asce7_22']:.2f}",
         })
     lead = (f"The upper floors' motions come from a model of the building that yields: its storeys yield at a "
-            f"base shear of {float(table['yield_base_shear_g'].iloc[0]):.3g} times its weight (the notes at the top "
+            f"base shear of {float(table['yield_base_shear_g'].iloc[0]):.3f} times its weight (the notes at the top "
             f"say where that comes from). {yielded} of the {motions} ground motions yielded at least one storey"
             + (" (the others gave the elastic modes' floor motions)." if yielded < motions else ".")
             + " Each storey's peak drift (over its height) and ductility (peak drift over the drift at which it "

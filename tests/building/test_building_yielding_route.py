@@ -177,3 +177,17 @@ def test_p_delta_adds_the_gravity_loads_geometric_stiffness():
                                rtol=1e-12)
     np.testing.assert_array_equal(with_p_delta.stick.yield_force_n, plain.stick.yield_force_n)
     assert with_p_delta.p_delta and not plain.p_delta
+
+
+def test_the_storey_table_gives_every_yield_shear_to_one_precision(weak):
+    """The storeys' yield shears down the column, and the lead's base shear, are printed to the same three
+    decimals (a general format dropped trailing zeros: 0.66 above 0.678)."""
+    import re
+
+    from assess.report.building import building_context
+
+    section = building_context(weak)
+    ratios = weak.floors.set_index("floor").loc[1:, "storey_yield_ratio"].to_numpy()
+    assert [row["yield_ratio"] for row in section["rows"]] == [f"{r:.3f}" for r in ratios]
+    assert all(re.fullmatch(r"\d\.\d{3}", row["yield_ratio"]) for row in section["rows"])
+    assert "a base shear of 0.050 times its weight" in section["lead"]
