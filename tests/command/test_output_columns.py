@@ -14,8 +14,8 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from assess.data import output_columns
-from assess.report.tables import UndeclaredColumn, as_declared, declared_csv_text
+from assess.data import UndeclaredColumn, as_declared, output_columns
+from assess.report.tables import declared_csv_text
 from commands import run
 from workbooks import write_workbook
 
