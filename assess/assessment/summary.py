@@ -15,6 +15,7 @@ import pandas as pd
 from assess.assessment.motions import MEMORY
 from assess.assessment.result import MOTION_COLUMNS, RegressionRecord
 from assess.inventory.settings import Settings
+from assess.inventory.units import CM_PER_M
 from assess.decision import actions, decisions
 from assess.fragility.regression import RegressionConstants
 from assess.fragility.suite import PULSE_SHARE_MIN
@@ -152,7 +153,7 @@ def inventory_piece(item) -> dict:
     return {"id": item.id, "name": item.name, "room": item.room, "floor": item.floor, "quantity": item.quantity,
             "consequence": decisions.item_consequence(item), "mu": item.mu,
             "contents": str(getattr(item, "contents", "") or actions.DEFAULT_CONTENTS),
-            "mu_source": getattr(item, "mu_source", "workbook"), "clearance_cm": item.clearance_m * 100.0}
+            "mu_source": getattr(item, "mu_source", "workbook"), "clearance_cm": item.clearance_m * CM_PER_M}
 
 
 def anchored_piece(item) -> dict:
@@ -177,7 +178,7 @@ def demand_piece(governing, origin: str) -> dict:
 def motion_table(cases: pd.DataFrame) -> pd.DataFrame:
     """``motions.csv``: one row per case at the workbook's μ, in workbook order (:data:`MOTION_COLUMNS`)."""
     table = cases.assign(
-        vp_cm_s=cases["vp_m_s"] * 100.0,
+        vp_cm_s=cases["vp_m_s"] * CM_PER_M,
         flags=np.where(cases["im_outside_fit"], "im_outside_fit", ""),
     )
     table["flags"] = np.where(table["mode"].isin(UPLIFT_MODES),

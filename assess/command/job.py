@@ -38,7 +38,7 @@ from assess.mechanics.runner import LocalRunner
 from assess.quantity_text import system_of
 from assess.report import advice
 from assess.report.calibration import render_calibration_html
-from assess.report.tables import csv_text, restore_text, summary_text
+from assess.report.tables import declared_csv_text, restore_text, summary_text
 
 Say = Callable[[str], None]
 #: What the main job writes besides the CSV files: the report and summary.xlsx.
@@ -277,7 +277,7 @@ def run_calibrate(workbook: Path, measured_path: Path, out: Path | None, formats
                                   .add_suffix("_before")).join(
         result.residuals_after.drop(columns=["specimen", "motion", "direction"]).add_suffix("_after"))
     files = {"calibration.json": (json.dumps(result.as_json(), indent=2) + "\n").encode(),
-             "calibration_tests.csv": csv_text(tests).encode()}
+             "calibration_tests.csv": declared_csv_text("calibration_tests.csv", tests).encode()}
     if formats:
         html = render_calibration_html(result, workbook.name, measured_path.name)
         if "html" in formats:

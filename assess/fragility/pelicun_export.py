@@ -101,6 +101,7 @@ from pathlib import Path
 import pandas as pd
 
 from assess import __version__
+from assess.data import as_declared
 from assess.fragility.msa import FragilityFit
 
 DEMAND_TYPE = "Peak Floor Acceleration"
@@ -310,9 +311,11 @@ def pelicun_fragility_files(items, directional=True, demand="PFA") -> dict[str, 
     """``fragility.csv``, ``fragility.json`` and ``cmp_marginals.csv`` as bytes, by name (nothing written);
     ``demand``: ``PFA`` or ``PGA``, the acceleration the fragilities are in (:data:`DEMAND_TYPES`)."""
     items = list(items)
-    csv_text = fragility_table(items, directional, demand).to_csv(index=False, lineterminator="\n")
+    csv_text = as_declared(f"fragility/{CSV_NAME}", fragility_table(items, directional, demand)).to_csv(
+        index=False, lineterminator="\n")
     json_text = json.dumps(fragility_metadata(items, directional, demand), indent=2, ensure_ascii=False) + "\n"
-    components = component_table(items).to_csv(index=False, lineterminator="\n")
+    components = as_declared(f"fragility/{COMPONENTS_NAME}", component_table(items)).to_csv(
+        index=False, lineterminator="\n")
     return {CSV_NAME: csv_text.encode("utf-8"), JSON_NAME: json_text.encode("utf-8"),
             COMPONENTS_NAME: components.encode("utf-8")}
 

@@ -63,6 +63,7 @@ import numpy as np
 import pandas as pd
 from scipy import stats
 
+from assess.data import as_declared
 from assess.fragility.agreement import AT_LEVEL_COLUMNS, level_comparison_sentence
 from assess.fragility.msa import FITTED, FragilityFit, fit_lognormal_fragilities
 from assess.hazard.openquake import OpenQuakeHazard
@@ -649,6 +650,6 @@ def fragility_files(curve: CurveRisk, summary: pd.DataFrame) -> dict[str, bytes]
              for name, content in pelicun_fragility_files(export_items(curve, summary),
                                                           demand=curve.intensity).items()}
     stripes = curve.stripes if curve.intensity == "PFA" else curve.stripes.rename(columns={"pfa_g": "pga_g"})
-    files["fragility/stripes.csv"] = stripes.to_csv(index=False, float_format="%.6g",
-                                                    lineterminator="\n").encode()
+    files["fragility/stripes.csv"] = as_declared("fragility/stripes.csv", stripes).to_csv(
+        index=False, float_format="%.6g", lineterminator="\n").encode()
     return files

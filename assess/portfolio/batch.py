@@ -63,7 +63,7 @@ from assess.inventory import read_workbook, schema, xlsx
 from assess.inventory.schema import Column, SheetSpec
 from assess.inventory.workbook import SheetReport, open_book, read_table, same_name_sheets, sheet_cells
 from assess.portfolio.report import building_row, changes_between, portfolio_html
-from assess.report.tables import csv_text, restore_text
+from assess.report.tables import declared_csv_text, restore_text
 
 #: The sheet of a portfolio workbook (docs/workbook.md).
 BUILDINGS = SheetSpec("buildings", (
@@ -568,8 +568,8 @@ def run_portfolio(prepared: list[PreparedBuilding], out_dir: Path, *, runner, se
             {name.lower(): name for name in [p[0] for p in previous.values()] + list(current)})
         staged.cases_simulated = int(staged.summary["cases_simulated"].sum()) if rows else 0
         staged.cases_reused = int(staged.summary["cases_reused"].sum()) if rows else 0
-        files = {"portfolio.csv": csv_text(staged.summary).encode(),
-                 "changes.csv": csv_text(staged.changes).encode(),
+        files = {"portfolio.csv": declared_csv_text("portfolio.csv", staged.summary).encode(),
+                 "changes.csv": declared_csv_text("changes.csv", staged.changes).encode(),
                  "portfolio.html": portfolio_html(staged, bool(previous)).encode(),
                  MANIFEST: (json.dumps(manifest, indent=1, sort_keys=True) + "\n").encode()}
         for name, data in previous.values():

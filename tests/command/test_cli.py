@@ -22,6 +22,7 @@ import pytest
 from assess import cli
 from commands import LAB, ROOT, assert_refused, child_env, location, run
 from conftest import RECORD_TEXT
+from declared import check_file
 from workbooks import RECORD_FILE, job_sheets, write_workbook
 
 CURVE = ROOT / "tests" / "data" / "openquake" / "case_14-hazard_curve-rlz-000_PGA.csv"
@@ -327,6 +328,7 @@ def test_calibrate_the_papers_loop_writes_spec_json(tmp_path):
     assert result["error_after"]["objective"] <= result["error_before"]["objective"] + 1e-12
     tests = pd.read_csv(tmp_path / "cal" / "calibration_tests.csv")
     assert len(tests) == 27 and {"im", "omega_p_over_p", "sliding_log_ratio_before"} <= set(tests.columns)
+    check_file(tmp_path / "cal" / "calibration_tests.csv", "calibration_tests.csv")
     assert "Calibration against measured tests" in (tmp_path / "cal" / "report.html").read_text()
 
 

@@ -3,20 +3,20 @@
 Each CSV a run writes is read back with pandas, not with the writer's code: every column it has is declared
 for it, in the declared order, and its values are of the declared dtype. The runs: the sample lab as a user
 runs it (SI), and a small site-and-building workbook in US units against a previous summary, which writes
-every other file the table declares (US columns, comparison, ground motions, spectrum, floors). The writer
-refuses, as a bug, a column the table does not declare or values of another kind.
+every other file of an assessment (US columns, comparison, ground motions, spectrum, floors); the files of
+the fragility folder, the calibration and ``assess batch`` are checked the same way (tests/declared.py) where
+the tests of those commands make them. The writer refuses, as a bug, a column the table does not declare or
+values of another kind.
 """
 from __future__ import annotations
 
-import re
-
-import numpy as np
 import pandas as pd
 import pytest
 
-from assess.data import output_columns
-from assess.report.tables import UndeclaredColumn, as_declared, declared_csv_text
+from assess.data import UndeclaredColumn, as_declared, output_columns
+from assess.report.tables import declared_csv_text
 from commands import run
+from declared import check_file
 from workbooks import write_workbook
 
 EQUIPMENT = [
@@ -29,48 +29,6 @@ EQUIPMENT = [
 ]
 SITE = [["key", "value"], ["sds_g", 1.0], ["sd1_g", 0.6], ["suite_size", 3], ["risk_category", "IV"]]
 BUILDING = [["key", "value"], ["storeys", 2], ["storey_height_m", 4.0], ["period_s", 0.3]]
-
-
-def _declared(file: str) -> pd.DataFrame:
-    table = output_columns()
-    return table[table["file"] == file].reset_index(drop=True)
-
-
-def _pattern(name: str) -> re.Pattern:
-    return re.compile(re.escape(name).replace(re.escape("<T>"), r"[0-9.eE+-]+"))
-
-
-def _read_back_matches(dtype: str, column: pd.Series) -> bool:
-    """What pandas reads back from a column of the declared dtype (empty cells aside): numbers for float64
-    (whole ones read as int64), whole numbers for int64, True/False for bool, anything for str (a text
-    column of numbers, such as a floor label, reads back as numbers)."""
-    values = column.dropna()
-    if not len(values) or dtype == "str":
-        return True
-    if dtype == "bool":
-        return set(values.astype(str)) <= {"True", "False"}
-    if not pd.api.types.is_numeric_dtype(values) or pd.api.types.is_bool_dtype(values):
-        return False
-    return dtype == "float64" or bool(np.all(np.mod(values.to_numpy(dtype=float), 1.0) == 0.0))
-
-
-def check_file(path, file: str) -> list[str]:
-    """Every column of the CSV at ``path`` declared for ``file``, in the declared order, of its dtype."""
-    written = pd.read_csv(path, keep_default_na=True)
-    declared = _declared(file)
-    patterns = [_pattern(name) for name in declared["column"]]
-    positions = []
-    for column in written.columns:
-        matches = [k for k, pattern in enumerate(patterns) if pattern.fullmatch(column)]
-        assert matches, f"{file}: {column} is not declared in assess/data/columns.csv"
-        positions.append(matches[0])
-        dtype = declared.loc[matches[0], "dtype"]
-        assert _read_back_matches(dtype, written[column]), (
-            f"{file}: {column} is declared {dtype}, read {written[column].dtype}")
-    assert positions == sorted(positions), f"{file}: the columns are not in the declared order"
-    always = declared[(declared["when"] == "") & (declared["stage"] != "report units")]
-    assert set(always["column"]) <= set(written.columns), f"{file}: a column written always is missing"
-    return list(written.columns)
 
 
 def test_the_lab_s_files_have_the_declared_columns(lab_run):
@@ -124,3 +82,27 @@ def test_the_writer_puts_the_columns_in_the_declared_order():
     assert list(as_declared("floors.csv", table).columns) == ["level", "floor", "motions"]
     spectra = pd.DataFrame({"sa_0.1s_g": [0.5], "level": ["DE"], "sa_1s_g": [0.2]})
     assert list(as_declared("ground_motions.csv", spectra).columns) == ["level", "sa_0.1s_g", "sa_1s_g"]
+
+
+def test_every_csv_a_run_writes_is_declared_and_every_declared_file_is_one():
+    """The CSVs the code names as its outputs (the output folder's, ``assess batch``'s, the fragility folder's)
+    are the files of assess/data/columns.csv: a new file is declared, and a declared file is still written."""
+    from assess.command.folders import OUTPUT_NAMES
+    from assess.fragility import pelicun_export
+    from assess.portfolio.batch import PORTFOLIO_FILES
+
+    written = {name for name in OUTPUT_NAMES | set(PORTFOLIO_FILES) if name.endswith(".csv")}
+    written |= {f"fragility/{pelicun_export.CSV_NAME}", f"fragility/{pelicun_export.COMPONENTS_NAME}",
+                "fragility/stripes.csv"}
+    assert written == set(output_columns()["file"])
+
+
+def test_the_fragility_writers_refuse_an_undeclared_column():
+    """The fragility folder's files go through the same check (pelicun's columns are declared as pelicun
+    names them)."""
+    stripes = pd.DataFrame({"id": ["S1"], "mode": ["overturn"], "pfa_g": [0.3], "trials": [10], "failures": [2]})
+    assert list(as_declared("fragility/stripes.csv", stripes.iloc[:, ::-1]).columns) == list(stripes.columns)
+    with pytest.raises(UndeclaredColumn, match="'pfa_ms2'"):
+        as_declared("fragility/stripes.csv", stripes.rename(columns={"pfa_g": "pfa_ms2"}))
+    with pytest.raises(UndeclaredColumn, match="'Theta_0' is declared int64"):
+        as_declared("fragility/cmp_marginals.csv", pd.DataFrame({"ID": ["S1"], "Theta_0": [1.5]}))

@@ -22,6 +22,7 @@ from assess.inventory import read_workbook
 from assess.mechanics.runner import LocalRunner
 
 import commands
+from declared import check_file
 from workbooks import write_workbook
 
 REPO = Path(__file__).resolve().parents[2]
@@ -112,6 +113,11 @@ def test_anchored_items_have_no_fragility_and_the_export_says_why(rect_run, tmp_
     assert (table["Incomplete"] == 1).all()  # a step has no lognormal: no numbers invented
     stripes = pd.read_csv(pd.io.common.BytesIO(files["fragility/stripes.csv"]))
     assert set(stripes["mode"]) == {"beyond_clearance", "overturn"}
+    csv_files = [name for name in files if name.endswith(".csv")]
+    assert len(csv_files) == 3  # stripes, fragility, cmp_marginals: each declared, in order, of its dtype
+    for name in csv_files:
+        check_file(files[name], name)
+    assert "pfa_g" in stripes.columns  # stripes of floor acceleration
 
 
 @pytest.fixture(scope="module")

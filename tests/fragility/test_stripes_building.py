@@ -29,6 +29,7 @@ from assess.hazard.records import Record
 from assess.inventory import read_workbook
 from assess.command.cache import CachingRunner
 from assess.mechanics.gateway import PEAKS, LocalRunner, RunnerBase
+from declared import check_file
 from tests.assessment.test_floor_motions import BUILDING, EQUIPMENT, SITE
 from workbooks import write_workbook
 
@@ -153,6 +154,8 @@ def test_the_fragility_is_in_pga_and_exported_as_pelicuns_peak_ground_accelerati
     comments = [meta[c]["Comments"] for c in meta if c != "_GeneralInformation"]
     assert comments and all("Fragility in PGA (ground), through the building" in c for c in comments)
     assert files["fragility/stripes.csv"].startswith(b"id,mode,pga_g,")
+    for name in [name for name in files if name.endswith(".csv")]:
+        check_file(files[name], name)  # pga_g declared, and the PGA offsets as whole numbers
 
 
 def _updated_curve(folder: Path) -> Path:

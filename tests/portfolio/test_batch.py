@@ -15,6 +15,8 @@ import pytest
 
 from assess import cli
 from assess.portfolio import report as portfolio_report
+from assess.portfolio.batch import PORTFOLIO_FILES
+from declared import check_file
 from workbooks import write_workbook
 
 #: A 4 s record: 2 s of a 1.5 Hz sine of 0.6 g, then rest (every item below slides).
@@ -85,6 +87,8 @@ def test_first_run_writes_each_building_and_counts_its_cases(first_run):
         assert row["units"] == sum(2 if i[0].endswith("1") else 1 for i in items)
     changes = _csv(out / "changes.csv")
     assert sorted(changes["change"]) == ["building added"] * len(ITEMS)
+    for name in [name for name in PORTFOLIO_FILES if name.endswith(".csv")]:
+        check_file(out / name, name)  # declared in assess/data/columns.csv, in order, of its dtype
     html = (out / "portfolio.html").read_text()
     assert "No previous run" in html and "alpha/report.html" in html
     assert not list(out.parent.glob(".out-*"))  # no staging folder left
@@ -394,6 +398,8 @@ def test_a_curve_update_reintegrates_without_simulating(tmp_path):
     table = pd.read_csv(out / "portfolio.csv").set_index("building")
     assert table.at["alpha", "cases_simulated"] == 0
     assert (_csv(out / "changes.csv")["field"] == "annual_rate_beyond_clearance").any()
+    assert "annual_rate_beyond_clearance_units_total" in check_file(out / "portfolio.csv", "portfolio.csv")
+    check_file(out / "changes.csv", "changes.csv")
 
 
 def test_an_edited_record_reassesses_its_building(first_run):

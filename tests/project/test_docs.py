@@ -12,6 +12,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+import pandas as pd
 import pytest
 
 from assess import cli
@@ -73,7 +74,17 @@ OUTPUT_TABLES = {
     "ground_motions.csv": ("With a `site` sheet: `ground_motions.csv` and `spectrum.csv`", 0),
     "spectrum.csv": ("With a `site` sheet: `ground_motions.csv` and `spectrum.csv`", 1),
     "floors.csv": ("With a `building` sheet: `floors.csv`", None),
+    "fragility/stripes.csv": ("`fragility/stripes.csv`", None),
+    "fragility/fragility.csv": ("`fragility/fragility.csv`", None),
+    "fragility/cmp_marginals.csv": ("`fragility/cmp_marginals.csv`", None),
+    "calibration_tests.csv": ("`calibration_tests.csv`", None),
+    "portfolio.csv": ("`portfolio.csv`", None),
+    "changes.csv": ("`changes.csv`", None),
 }
+
+
+def test_every_declared_file_has_its_table_on_the_page():
+    assert set(OUTPUT_TABLES) == set(output_columns()["file"])
 
 
 def table_rows(text: str) -> list[dict]:
@@ -139,6 +150,32 @@ def test_the_declared_columns_are_the_code_s_columns_in_its_order():
         assert list(declared.loc[declared["file"] == file, "column"]) == list(columns), file
     curve = declared[(declared["file"] == "summary.csv") & (declared["when"] == "hazard curve")]
     assert list(curve["column"]) == list(CURVE_COLUMNS)
+
+
+def test_the_declared_columns_of_the_other_files_are_the_code_s_in_its_order():
+    """The fragility folder's (pelicun's columns, as its library and ``load_cmp_model`` name them), the
+    calibration's and ``assess batch``'s: the lists the code selects them by, and a portfolio row as the code
+    makes it (every risk class and action kind, and the curve's columns)."""
+    from assess.calibration import DIAGNOSIS_COLUMNS, RESIDUAL_COLUMNS
+    from assess.fragility import pelicun_export
+    from assess.portfolio.report import CHANGE_COLUMNS, CURVE_FIELDS, building_row
+
+    declared = output_columns()
+
+    def columns(file):
+        return list(declared.loc[declared["file"] == file, "column"])
+
+    assert columns("fragility/fragility.csv") == list(pelicun_export.COLUMNS)
+    assert columns("fragility/cmp_marginals.csv") == list(pelicun_export.COMPONENT_COLUMNS)
+    assert columns("fragility/stripes.csv") == ["id", "mode", "pfa_g", "pga_g", "trials", "failures"]
+    residuals = [c for c in RESIDUAL_COLUMNS if c not in ("specimen", "motion", "direction")]
+    assert columns("calibration_tests.csv") == (DIAGNOSIS_COLUMNS + [f"{c}_before" for c in residuals]
+                                                + [f"{c}_after" for c in residuals])
+    assert columns("changes.csv") == CHANGE_COLUMNS
+    summary = pd.DataFrame({"quantity": [2], "risk": ["high"], "action_kind": ["anchor"],
+                            **{field: ["0.01"] for field in CURVE_FIELDS}})
+    row = building_row("b", "b.xlsx", "2in50", "curve.csv", summary, simulated=4, reused=0)
+    assert columns("portfolio.csv") == list(row)
 
 
 def test_the_us_columns_follow_their_si_column():
