@@ -30,7 +30,11 @@ storey's at the top, where this truth's shear building keeps 42 %; with the trut
 tool's wall gives gm 1.10/1.11, σ ln 0.15/0.14. Its capacity-designed upper storeys matter next (with the
 code's shares instead, 1.00/1.02, but then its top storey yields to ductility 7-9 where the truth's stays
 near 1 and the roof's PFA falls to 0.73-0.78 of the truth's); the truth's pinching and hardening
-(1.28/1.16) and Rayleigh damping at modes 1 and 2 (1.29/1.27) barely move it.
+(1.28/1.16) and Rayleigh damping at modes 1 and 2 (1.29/1.27) barely move it. The truth is a shear building,
+where a slender wall bends: against a bending wall of the same T_1 and yield base shear (an elastic cantilever
+on a pinching base hinge, benchmarks/bench_wall_flexural_truth.py) the tool's wall gives 0.99-1.33 at DE and
+0.99-1.25 at MCE_R as the hinge's elastic stiffness goes from 100 to 10 EI/H. The literature used here does not
+say the tool's wall should move toward wall6, so the tool is unchanged.
 
 Skipped, with the reason, where openseespy or pyslammer is not importable.
 """
@@ -60,7 +64,8 @@ def measured(tmp_path_factory):
         folder = tmp_path_factory.mktemp(name)
         with opensees_floors(truth, suite):
             reference = assess(workbook(folder, truth, suite, "DE", [["response", "yielding"]]), "DE")
-        routes = {"given": [["response", "yielding"], ["yield_base_shear_g", round(pushover_yield_base_shear_g(truth), 6)]],
+        given = round(pushover_yield_base_shear_g(truth), 6)
+        routes = {"given": [["response", "yielding"], ["yield_base_shear_g", given]],
                   "elastic": [["response", "elastic"]]}
         routes.update({f"design x {o:g}": [["response", "yielding"], ["overstrength", o]] for o in OVERSTRENGTHS})
         results = {route: assess(workbook(folder, truth, suite, "DE", rows), "DE") for route, rows in routes.items()}
