@@ -17,8 +17,9 @@ scaled ground records at floor 0, with a ``site`` sheet of the same design value
 a ``building`` sheet of the building's storeys, height, system and T_1): only the floor histories differ.
 
 * ``truth``: the OpenSees floor histories (the yielding route's stick swapped for OpenSees);
-* ``given``: ``response: yielding`` with ``yield_base_shear_g`` the OpenSees building's base shear at
-  yield (its first storey's yield shear over the weight);
+* ``given``: ``response: yielding`` with ``yield_base_shear_g`` from a static pushover of the OpenSees
+  building under the ELF pattern: the base shear, column included, when its first storey yields, over the
+  weight (``peers.opensees_buildings.pushover_yield_base_shear_g``);
 * ``design x Ω``: ``response: yielding`` from the design data only (ASCE 7-22 §12.8) with
   ``overstrength`` Ω (2 is the default);
 * ``elastic``: ``response: elastic``, today's modal route;
@@ -29,8 +30,13 @@ a ``building`` sheet of the building's storeys, height, system and T_1): only th
 Columns, each route against the truth over the (item, motion, direction) cases: PFA tool/truth at the
 mid-height floor and the roof (median over the motions), sliding: geometric mean and σ of
 ln(tool/truth) over the cases where the truth slides 1 cm or more and neither overturns (tool floored at
-0.1 cm); overturn verdicts: the share of cases where either overturns on which both agree (and over all
-cases); risk class: the share of items whose class is the same. Then each floor's PFA/PGA (median over
+0.1 cm); overturn verdicts, two ways: per case, the share of the (item, motion, direction) cases where
+either overturns on which both agree (``overturn_agree``; and over all cases, ``overturn_agree_all``), and
+per item, the share of the items whose overturning verdict is the same (``overturn_class_agree``: low,
+moderate or high from ``p_overturn`` and the default ``risk_overturn_moderate``/``risk_overturn_high``, the
+part of ``risk`` that overturning decides: the verdict a user reads, each item counted once, where the
+per-case share rests on the 5-20 cases where either overturns, many on the edge of overturning);
+risk class: the share of items whose class is the same. Then each floor's PFA/PGA (median over
 the motions) beside ASCE 7-22 §13.3.1's H_f/R_μ (R_μ = max(√(1.1 R/(I_e Ω_0)), 1.3), eq. 13.3-6): a
 sanity check, not a target; with the largest storey ductility over the storeys and the motions, and the
 top storey's (median and largest over the motions). Nothing is fitted here.
@@ -50,7 +56,7 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path[:0] = [str(REPO / "tests")]
 
 from assess.building.floors import height_factor  # noqa: E402
-from peers.opensees_buildings import BUILDINGS  # noqa: E402
+from peers.opensees_buildings import BUILDINGS, pushover_yield_base_shear_g  # noqa: E402
 from peers.yielding_equipment import (LEVELS, SYSTEM_R, assess, compare, ground_suite,  # noqa: E402
                                       opensees_floors, workbook)
 
@@ -82,7 +88,7 @@ def main(argv=None):
             suite = ground_suite(args.motions, truth.period_s, LEVELS[level])
             with tempfile.TemporaryDirectory() as tmp:
                 folder = Path(tmp)
-                given = round(truth.yield_base_shear_g, 6)
+                given = round(pushover_yield_base_shear_g(truth), 6)
                 routes = {"given": [["response", "yielding"], ["yield_base_shear_g", given]]}
                 if args.truth_profile:
                     profile = ", ".join(f"{k:g}" for k in truth.stiffness_profile)
@@ -120,6 +126,7 @@ def main(argv=None):
         pooled.append({"route": route, "gm (range over buildings)": f"{group['gm'].min():.2f}-{group['gm'].max():.2f}",
                        "sigma_ln max": round(group["sigma_ln"].max(), 2),
                        "overturn agree min": round(group["overturn_agree"].min(), 2),
+                       "overturn class agree min": round(group["overturn_class_agree"].min(), 2),
                        "class agree min": round(group["class_agree"].min(), 2)})
     print(markdown(pd.DataFrame(pooled)))
     print()

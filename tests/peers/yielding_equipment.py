@@ -15,11 +15,13 @@ from contextlib import contextmanager
 from pathlib import Path
 
 import numpy as np
+import pandas as pd
 
 from assess.assessment.pipeline import run_assessment
 from assess.building import yielding as yielding_module
 from assess.hazard.records import read_record
 from assess.inventory import read_workbook
+from assess.inventory.settings import Settings
 from assess.site.asce7 import design_spectral_acceleration_g
 from assess.site.spectrum import pseudo_acceleration_spectrum
 from peers.opensees_buildings import truth_response
@@ -117,6 +119,16 @@ def assess(path, level):
     return result, motions.set_index(["id", "ground", "direction"]).sort_index()
 
 
+def overturn_class(p_overturn):
+    """Each item's overturning verdict as the summary's risk takes it from ``p_overturn`` alone: ``high`` from
+    ``risk_overturn_high``, ``moderate`` from ``risk_overturn_moderate`` (the defaults), else ``low``."""
+    settings = Settings()
+    p = np.asarray(p_overturn, dtype=float)
+    verdict = np.where(p >= settings.risk_overturn_high, "high",
+                       np.where(p >= settings.risk_overturn_moderate, "moderate", "low"))
+    return pd.Series(verdict, index=getattr(p_overturn, "index", None))
+
+
 def compare(tool, truth):
     """The route's numbers against the truth's (module text)."""
     (_, t), (_, r) = tool, truth
@@ -126,6 +138,8 @@ def compare(tool, truth):
     ratio = np.log(np.maximum(t.loc[slides, "sim_sliding_max_cm"], 0.1) / r.loc[slides, "sim_sliding_max_cm"])
     either = over_t | over_r
     classes = tool[0].summary.set_index("id")["risk"].align(truth[0].summary.set_index("id")["risk"], join="inner")
+    overturn_classes = [overturn_class(result[0].summary.set_index("id")["p_overturn"]) for result in (tool, truth)]
+    overturn_classes = overturn_classes[0].align(overturn_classes[1], join="inner")
     pfa = {}
     for where in ("mid", "roof"):
         floor_of = t.reset_index().groupby("id")["floor"].first()
@@ -139,4 +153,5 @@ def compare(tool, truth):
             "n_overturn": int(either.sum()),
             "overturn_agree": float((over_t[either] == over_r[either]).mean()) if either.any() else np.nan,
             "overturn_agree_all": float((over_t == over_r).mean()),
+            "overturn_class_agree": float((overturn_classes[0] == overturn_classes[1]).mean()),
             "class_agree": float((classes[0] == classes[1]).mean())}

@@ -5,30 +5,36 @@ special moment frames of 4 and 8 storeys with a continuous elastic column, a pin
 ASCE 7-22 ELF designs, tapering stiffness, an overstrength growing up the height; the sources are in that
 module), 11 of pyslammer's real records scaled to the design spectrum at T_1 (DE), six items on the
 mid-height floor and the roof, through the product itself (``run_assessment``) with only the floor histories
-differing (tests/peers/yielding_equipment.py). What is claimed, and checked:
+differing (tests/peers/yielding_equipment.py). The strength given to the tool is what an engineer would write:
+the truth building's own pushover (ELF pattern) base shear at first yield of any storey, column included
+(``pushover_yield_base_shear_g``: 0.305 and 0.144 for the frames, whose first storey spring alone yields at
+0.275 and 0.125 W; 0.36 for the wall). What is claimed, and checked:
 
-* with ``yield_base_shear_g`` the OpenSees building's, and with only the design data (the default
-  overstrength 2), the sliding's geometric mean tool/truth lies in [0.67, 1.5] and nearer 1 than today's
-  elastic route: on the wall, and on the 4-storey frame with the strength given. **Not** on the 8-storey
-  frame (measured 0.62 at DE, 0.83 at MCE_R, both routes; 0.42/0.56 with uniform storeys before the frames
-  took the design's stiffness profile, docs/workbook.md ``storey_stiffness``), nor on the 4-storey frame from
-  the design data (0.65 at DE, 0.76 at MCE_R; 0.61/0.72 before: its truth's base overstrength is 2.2, the
-  default 2): strict xfails (:data:`SHORT`), so that they say so until they pass. Its truth is uncertain
-  by about as much: with uniform storeys, the same measurement with the truth's column at α 12 (the tool's)
-  gave 0.51/0.67, at α 20 0.70/0.98 (Miranda & Taghavi's range for frames is 5-20; the truth takes 10).
-  Giving the tool the truth's own storey stiffnesses (``storey_stiffness``) gives 0.71/0.81 (4 storeys) and
-  0.48/0.70 (8 storeys) with the strength given: no nearer than the design profile;
+* with that ``yield_base_shear_g``, and with only the design data (the default overstrength 2), the
+  sliding's geometric mean tool/truth lies in [0.67, 1.5] and nearer 1 than today's elastic route. **Not**
+  from the design data on the frames (0.65 at DE, 0.76 at MCE_R on 4 storeys, whose truth's base
+  overstrength is 2.2 against the default 2; 0.62/0.83 on 8 storeys): strict xfails (:data:`SHORT`), so that
+  they say so until they pass;
 * a larger overstrength slides more (1.5, 2, 3: the design-data route's sensitivity);
-* the roof's PFA/PGA stays below ASCE 7-22's H_f (a sanity check).
+* the roof's PFA/PGA stays below ASCE 7-22's H_f (a sanity check);
+* issue 29's stricter targets with the given strength, per building: sliding gm in [0.8, 1.25] and σ ln
+  ≤ 0.45, met on both frames (DE: 0.91, σ 0.31 on 4 storeys; 0.82, σ 0.37 on 8; MCE_R 0.95/0.26 and
+  1.00/0.31), not on the wall (1.31, σ 0.47 at DE; 1.27, 0.36 at MCE_R); overturn verdicts ≥ 75 % of the
+  cases where either overturns and risk class ≥ 80 % of the items, met on no building at DE (overturn
+  verdicts 57 %, 73 %, 67 % of 7, 11 and 6 cases; risk class 83 %, 83 %, 58 %), on the 4-storey frame at
+  MCE_R (75 %, 100 %). The unmet ones are strict xfails with these numbers.
 
-The issue's stricter targets with the given strength (gm in [0.8, 1.25], σ ln ≤ 0.45, overturn verdicts
-≥ 75 % where either overturns, risk class ≥ 80 %) are **not** met (measured at DE and MCE_R: gm 0.62-1.31,
-σ ln 0.28-0.47, overturn verdicts 58-87 % where either overturns (98-99 % over all cases), risk class
-58-83 %; benchmarks/bench_yielding_equipment.py --levels DE,MCE_R prints the table): that test is a strict
-xfail. The 4-storey frame comes nearest (gm 0.76/0.86, σ ln 0.38/0.28); the 8-storey frame's roof slides
-too little at DE (above); the wall's too much (gm 1.31/1.27: the tool's capacity-designed upper wall,
-assess.building.nonlinear.capacity_design_strength, is stronger than this truth's, whose upper reinforcement
-is nearer its demand).
+The wall slides too much because of its stick, not its truth (measured with the strength given, DE/MCE_R):
+the tool's equivalent-shear springs of a flexural wall (α 1) soften up the height to 6 % of the first
+storey's at the top, where this truth's shear building keeps 42 %; with the truth's storey stiffnesses the
+tool's wall gives gm 1.10/1.11, σ ln 0.15/0.14. Its capacity-designed upper storeys matter next (with the
+code's shares instead, 1.00/1.02, but then its top storey yields to ductility 7-9 where the truth's stays
+near 1 and the roof's PFA falls to 0.73-0.78 of the truth's); the truth's pinching and hardening
+(1.28/1.16) and Rayleigh damping at modes 1 and 2 (1.29/1.27) barely move it. The truth is a shear building,
+where a slender wall bends: against a bending wall of the same T_1 and yield base shear (an elastic cantilever
+on a pinching base hinge, benchmarks/bench_wall_flexural_truth.py) the tool's wall gives 0.99-1.33 at DE and
+0.99-1.25 at MCE_R as the hinge's elastic stiffness goes from 100 to 10 EI/H. The literature used here does not
+say the tool's wall should move toward wall6, so the tool is unchanged.
 
 Skipped, with the reason, where openseespy or pyslammer is not importable.
 """
@@ -49,7 +55,7 @@ OVERSTRENGTHS = (1.5, 2.0, 3.0)
 @pytest.fixture(scope="module")
 def measured(tmp_path_factory):
     pytest.importorskip("pyslammer")
-    from peers.opensees_buildings import BUILDINGS
+    from peers.opensees_buildings import BUILDINGS, pushover_yield_base_shear_g
     from peers.yielding_equipment import assess, compare, ground_suite, opensees_floors, workbook
 
     out = {}
@@ -58,7 +64,8 @@ def measured(tmp_path_factory):
         folder = tmp_path_factory.mktemp(name)
         with opensees_floors(truth, suite):
             reference = assess(workbook(folder, truth, suite, "DE", [["response", "yielding"]]), "DE")
-        routes = {"given": [["response", "yielding"], ["yield_base_shear_g", round(truth.yield_base_shear_g, 6)]],
+        given = round(pushover_yield_base_shear_g(truth), 6)
+        routes = {"given": [["response", "yielding"], ["yield_base_shear_g", given]],
                   "elastic": [["response", "elastic"]]}
         routes.update({f"design x {o:g}": [["response", "yielding"], ["overstrength", o]] for o in OVERSTRENGTHS})
         results = {route: assess(workbook(folder, truth, suite, "DE", rows), "DE") for route, rows in routes.items()}
@@ -68,7 +75,7 @@ def measured(tmp_path_factory):
 
 
 #: (route, building) where the claim below is not met, with the measured gm (DE): strict xfails.
-SHORT = {("given", "smf8"): 0.62, ("design x 2", "smf8"): 0.62, ("design x 2", "smf4"): 0.65}
+SHORT = {("design x 2", "smf8"): 0.62, ("design x 2", "smf4"): 0.65}
 
 
 def _cases():
@@ -103,11 +110,26 @@ def test_the_roof_pfa_over_pga_stays_below_asce_7_22_hf(measured):
         assert roof["pfa_over_pga_median"] < float(height_factor(1.0, truth.period_s)), name
 
 
-@pytest.mark.xfail(strict=True, reason="issue 29's targets with the given strength are not met on these buildings: "
-                                       "gm 0.62-1.31, sigma ln up to 0.47, overturn verdicts 58-87 %, risk class "
-                                       "58-83 % at DE and MCE_R (module docstring)")
-def test_the_issue_targets_with_the_given_strength(measured):
-    for name, m in measured.items():
-        n = m["numbers"]["given"]
+#: Issue 29's targets with the given strength not met at DE, with the measured numbers: strict xfails.
+TARGETS_SHORT = {("sliding", "wall6"): "gm 1.31, sigma ln 0.47 (MCE_R 1.27, 0.36): the wall's stick (module docstring)",
+                 ("verdicts", "smf4"): "overturn verdicts 57 % of 7 cases where either overturns; risk class 83 %",
+                 ("verdicts", "smf8"): "overturn verdicts 73 % of 11 cases; risk class 83 %",
+                 ("verdicts", "wall6"): "overturn verdicts 67 % of 6 cases; risk class 58 %"}
+
+
+def _target_cases():
+    for target in ("sliding", "verdicts"):
+        for name in ("smf4", "smf8", "wall6"):
+            marks = ()
+            if (target, name) in TARGETS_SHORT:
+                marks = pytest.mark.xfail(strict=True, reason=f"{name}: {TARGETS_SHORT[target, name]}")
+            yield pytest.param(target, name, marks=marks, id=f"{target}-{name}")
+
+
+@pytest.mark.parametrize("target, name", list(_target_cases()))
+def test_the_issue_targets_with_the_given_strength(measured, target, name):
+    n = measured[name]["numbers"]["given"]
+    if target == "sliding":
         assert 0.8 <= n["gm"] <= 1.25 and n["sigma_ln"] <= 0.45, (name, n)
+    else:
         assert n["overturn_agree"] >= 0.75 and n["class_agree"] >= 0.8, (name, n)

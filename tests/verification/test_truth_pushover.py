@@ -1,0 +1,62 @@
+"""The OpenSees truth buildings' pushover: the ``yield_base_shear_g`` the equipment checks give the tool.
+
+An engineer writes in the building sheet the base shear at first yield from a pushover of the whole lateral
+system. The harness (tests/peers/opensees_buildings.py) takes it from a static pushover of the OpenSees building
+itself under ASCE 7-22 §12.8.3's forces. Checked here against the closed form of the same building: below first
+yield it is linear, K d = F with K the springs' chain plus the column's condensed Euler-Bernoulli stiffness
+(written out with numpy, not by OpenSees), so the base shear at first yield is the first storey spring's force
+plus the column's base shear at the drifts where the first storey to yield reaches its yield drift. In these
+frames that is not the first storey: their overstrength grows up the height more slowly than their column
+relieves the first storey, so storey 2 (4 storeys, at 0.305 W; storey 1 at 0.408 W) and storey 3 (8 storeys,
+at 0.144 W; storey 1 at 0.278 W) yield first.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from peers.opensees_shear import GRAVITY_M_S2, load_opensees
+
+OPS, WHY = load_opensees()
+pytestmark = pytest.mark.skipif(OPS is None, reason=str(WHY))
+
+
+def _closed_form(truth):
+    from peers.opensees_buildings import FLOOR_MASS_KG, _chain, _column, elf_pattern
+    n = truth.storeys
+    weight = n * FLOOR_MASS_KG * GRAVITY_M_S2
+    k = truth.stiffness_n_m()
+    column = _column(truth, truth.stiffness_profile) * (k[0] / truth.stiffness_profile[0])
+    forces = elf_pattern(truth) * weight  # base shear W
+    displacement = np.linalg.solve(_chain(k) + column, forces)
+    drift = np.diff(np.concatenate([[0.0], displacement]))
+    yield_drift = truth.yield_ratios() * weight / k
+    scale = float(np.min(yield_drift / drift))  # the first storey to yield sets it
+    spring = k[0] * drift[0] * scale
+    column_base_shear = float(np.sum(column @ displacement)) * scale
+    return spring, column_base_shear, int(np.argmin(yield_drift / drift)), weight
+
+
+@pytest.mark.parametrize("name, first_to_yield", [("smf4", 1), ("smf8", 2)])
+def test_the_pushover_base_shear_at_first_yield_is_the_spring_plus_the_column(name, first_to_yield):
+    from peers.opensees_buildings import BUILDINGS, pushover_yield_base_shear_g
+    truth = BUILDINGS[name]
+    spring, column, first, weight = _closed_form(truth)
+    assert first == first_to_yield
+    assert spring < truth.yield_base_shear_g * weight  # the first storey's spring is still elastic
+    assert column > 0.3 * (spring + column)  # the column carries a third (4 storeys) to a half (8) of it
+    assert pushover_yield_base_shear_g(truth) == pytest.approx((spring + column) / weight, rel=1e-6)
+
+
+def test_the_wall_pushover_gives_its_first_storey_spring():
+    from peers.opensees_buildings import BUILDINGS, pushover_yield_base_shear_g
+    truth = BUILDINGS["wall6"]
+    assert pushover_yield_base_shear_g(truth) == pytest.approx(truth.yield_base_shear_g, rel=1e-6)
+
+
+def test_the_pushover_yields_past_first_yield():
+    """The pushover goes on past first yield: its secant stiffness falls (not a linear analysis relabelled)."""
+    from peers.opensees_buildings import BUILDINGS, pushover
+    shear, drifts = pushover(BUILDINGS["smf4"])
+    roof = drifts.sum(axis=1)
+    assert shear[-1] / roof[-1] < 0.5 * shear[0] / roof[0]
