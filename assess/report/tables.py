@@ -108,7 +108,8 @@ def declared_columns(file: str) -> tuple[tuple[str, str], ...]:
 
 @functools.cache
 def _patterns(file: str) -> tuple[tuple[re.Pattern, str], ...]:
-    return tuple((re.compile(re.escape(name).replace(re.escape("<T>"), r"[0-9.eE+-]+")), dtype)
+    return tuple((re.compile(re.escape(name).replace(re.escape("<T>"), r"[0-9.eE+-]+")
+                             .replace(re.escape("<unit>"), "(?:kN|kip)")), dtype)
                  for name, dtype in declared_columns(file))
 
 

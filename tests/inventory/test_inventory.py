@@ -42,7 +42,8 @@ def test_good_workbook_reads_to_documented_si_columns(make_workbook):
     equipment = inventory.equipment
     assert list(equipment.columns) == [
         "id", "name", "room", "floor", "height_m", "width_m", "depth_m", "mass_kg", "mu",
-        "mu_static", "clearance_m", "cg_height_m", "anchored", "casters", "quantity", "consequence", "component_type", "contents", "equipment_kind", "ip",
+        "mu_static", "clearance_m", "cg_height_m", "anchored", "casters", "quantity", "consequence", "component_type", "contents", "equipment_kind",
+            "type_source", "connections", "connections_assumed", "ip",
         "mu_low", "mu_high", "value", "mitigation_cost", "base", "floor_finish", "mu_source", "row"]
     assert list(equipment["id"]) == ["INC-1", "FRZ-2", "BSC-3"]
     assert list(equipment["row"]) == [2, 3, 5]  # blank row 4 skipped
