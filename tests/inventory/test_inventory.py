@@ -462,3 +462,17 @@ def test_zip_that_is_not_a_workbook(tmp_path):
     problem = only_problem(path)
     assert problem.file == str(path) and problem.sheet is None
     assert_mentions(problem, "photos.xlsx: the workbook cannot be read", "damaged")
+
+
+def test_connections_are_read_in_any_order_and_a_bad_one_names_its_cell(make_workbook):
+    """connections: gas, fluid, both (comma or semicolon, any case) or none; empty: from the item's kind
+    (docs/workbook.md); a word not in the list is a problem naming the cell, the column and the words to write."""
+    sheets = good_sheets()
+    sheets["equipment"][0]["connections"] = "Fluid; GAS"
+    sheets["equipment"][1]["connections"] = "none"
+    equipment = read_workbook(make_workbook(sheets)).equipment
+    assert list(equipment["connections"]) == ["gas, fluid", "none", "none"]
+    assert list(equipment["connections_assumed"]) == [False, False, False]
+    sheets["equipment"][1]["connections"] = "steam"
+    assert_mentions(only_problem(make_workbook(sheets)), "column 'connections'",
+                    "'steam' is not a list of connections", "gas", "fluid", "none")
