@@ -205,7 +205,7 @@ def code_sentences(action, row, settings: Settings) -> tuple[str, str]:
         alone = f"the analysis alone would {analysis}: {sentence.split(': ', 1)[-1]}"
     if action.type_source == "name":
         action_text += (f". Its kind ({code.equipment}) was read from its name: confirm it, or write its "
-                        "component_type in the workbook")
+                        "component_type in the workbook.")
     what_if = (f"Restrained as the code asks (assumed to hold), it would neither slide nor overturn: 0% for both; "
                f"{alone}.")
     return action_text, what_if
@@ -228,8 +228,9 @@ def connection_sentence(action) -> str:
     rules = action.connection_rules()
     if not rules:
         return ""
-    text = " ".join(f"Its {LINE_WORDS.get(rule.connection, rule.connection)}: {rule.detail} "
-                    f"(Reference: {rule.reference})." for rule in rules)
+    references = "; ".join(dict.fromkeys(rule.reference for rule in rules))
+    text = " ".join(f"Its {LINE_WORDS.get(rule.connection, rule.connection)}: {rule.detail}." for rule in rules)
+    text = f"{text[:-1]} (Reference: {references})."
     if action.connections_assumed:
         read = " (read from its name)" if action.type_source == "name" else ""
         text += (f" Its {' and '.join(LINE_WORDS.get(r.connection, r.connection) for r in rules)} are assumed from "
