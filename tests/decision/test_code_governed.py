@@ -91,6 +91,11 @@ def test_page_one_gathers_the_code_governed_items_first():
     groups = action_groups(rows)
     assert [(g["kind"], [r["id"] for r in g["rows"]]) for g in groups] == [
         ("code", ["WH", "SH"]), ("anchor", ["FR"]), ("none", ["OK"])]
+    assert "read from" not in groups[0]["why"]
+    rows[0]["type_source"] = "name"  # the water heater's kind read from its name: page 1 asks to confirm it
+    assert groups[0]["why"] != action_groups(rows)[0]["why"]
+    assert action_groups(rows)[0]["why"].endswith("the kind of 1 of them was read from its name: confirm it, or "
+                                                  "write component_type in the workbook")
 
 
 # ---------------------------------------------------------------- the kind read from the name (no component_type)
