@@ -164,8 +164,9 @@ def action_groups(rows: list[dict]) -> list[dict]:
         if members:
             named = [r for r in members if kind == "code" and r.get("type_source") == "name"]
             if named:
-                why += (f"; the kind of {len(named)} of them was read from {'its' if len(named) == 1 else 'their'} "
-                        "name: confirm it, or write component_type in the workbook")
+                whose = "its name" if len(named) == 1 else "their names"
+                why += (f"; the kind of {len(named)} of them was read from {whose}: confirm it, or write "
+                        "component_type in the workbook")
             groups.append({"kind": kind, "title": title, "why": why, "rows": members})
     return groups
 
