@@ -124,3 +124,14 @@ def test_the_writer_puts_the_columns_in_the_declared_order():
     assert list(as_declared("floors.csv", table).columns) == ["level", "floor", "motions"]
     spectra = pd.DataFrame({"sa_0.1s_g": [0.5], "level": ["DE"], "sa_1s_g": [0.2]})
     assert list(as_declared("ground_motions.csv", spectra).columns) == ["level", "sa_0.1s_g", "sa_1s_g"]
+
+
+def test_the_anchorage_sheet_of_summary_xlsx_has_the_declared_columns(us_site_run):
+    """summary.xlsx's `anchorage DE` sheet, read back with pandas (openpyxl): every column declared for
+    `summary.xlsx anchorage` (`<unit>` the report's force unit: kip in this US run), in the declared order."""
+    sheet = pd.read_excel(us_site_run / "summary.xlsx", sheet_name="anchorage DE")
+    declared = _declared("summary.xlsx anchorage")
+    names = [name.replace("<unit>", "kip") for name in declared["column"]]
+    assert [column for column in names if column in sheet.columns] == list(sheet.columns)
+    assert {"W_p (kip)", "F_p (kip)", "T with Omega_0 (kip)", "connections"} <= set(sheet.columns)
+    assert set(sheet["connections"]) == {"none"}
