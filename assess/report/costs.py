@@ -70,7 +70,7 @@ def left_out_sentence(more: int, unvalued: list) -> str:
     with an action but no ``value`` (nothing to rank them by), by id; "" where nothing is left out.
 
     >>> left_out_sentence(0, ["LB-1", "ED-2"])
-    'Not ranked, without a value: LB-1, ED-2 (their actions are in the tables above).'
+    'Not ranked, without a value: LB-1, ED-2 (their actions are listed above).'
     >>> left_out_sentence(3, [])
     '3 more actions ranked in summary.csv (benefit_cost_ratio, loss_avoided_per_cost).'
     """
@@ -79,7 +79,7 @@ def left_out_sentence(more: int, unvalued: list) -> str:
         parts.append(f"{more} more action{'s' if more != 1 else ''} ranked in summary.csv "
                      "(benefit_cost_ratio, loss_avoided_per_cost).")
     if unvalued:
-        parts.append(f"Not ranked, without a value: {', '.join(unvalued)} (their actions are in the tables above).")
+        parts.append(f"Not ranked, without a value: {', '.join(unvalued)} (their actions are listed above).")
     return " ".join(parts)
 
 
