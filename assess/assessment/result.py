@@ -32,7 +32,7 @@ SUMMARY_COLUMNS = [
     "anchor_moment_kip_ft", "anchor_tension_kn", "anchor_tension_kip", "anchor_omega0", "anchor_shear_omega_kn",
     "anchor_shear_omega_kip", "anchor_tension_omega_kn", "anchor_tension_omega_kip", "anchor_basis", "what_if",
     "p_overturn_after", "p_beyond_clearance_after", "action_mode", "action_analysis", "action_detail",
-    "action_reference", "contents",
+    "action_reference", "contents", "type_source", "connections", "connection_detail", "connection_reference",
     "demand_planar", "mu_low", "mu_high", "risk_mu_low", "risk_mu_high", "p_beyond_clearance_mu_low",
     "p_beyond_clearance_mu_high", "mu_range_note", "mu_source",
     "p_rocking_harm", "p_rocking_harm_low", "p_rocking_harm_high", "performance_objective", "risk_reason",

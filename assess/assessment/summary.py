@@ -153,6 +153,8 @@ def inventory_piece(item) -> dict:
     return {"id": item.id, "name": item.name, "room": item.room, "floor": item.floor, "quantity": item.quantity,
             "consequence": decisions.item_consequence(item), "mu": item.mu,
             "contents": str(getattr(item, "contents", "") or actions.DEFAULT_CONTENTS),
+            "type_source": str(getattr(item, "type_source", "") or "default"),
+            "connections": str(getattr(item, "connections", "") or "none"),
             "mu_source": getattr(item, "mu_source", "workbook"), "clearance_cm": item.clearance_m * CM_PER_M}
 
 

@@ -15,7 +15,7 @@ from assess.report import advice
 from assess.report.anchorage_table import anchorage_rows
 from assess.report.spreadsheet import summary_workbook, with_us_units
 from assess.report.tables import (  # noqa: F401 (re-exported)
-    csv_text, declared_csv_text, neutralise_formulas, restore_text, summary_text,
+    as_declared, csv_text, declared_csv_text, neutralise_formulas, restore_text, summary_text,
 )
 
 
@@ -56,7 +56,7 @@ def _tables(result: AssessmentResult, formats: tuple[str, ...], units: str | Non
         for level in (result, *other_levels):  # the anchorage an engineer checks, a sheet per level
             table = anchorage_rows(level)
             if len(table):
-                sheets[f"anchorage {level.level_label}"] = table
+                sheets[f"anchorage {level.level_label}"] = as_declared("summary.xlsx anchorage", table)
         files["summary.xlsx"] = summary_workbook(sheets, units=units)
     if result.curve_risk is not None:
         files.update(fragility_files(result.curve_risk, result.summary))

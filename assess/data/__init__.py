@@ -30,7 +30,7 @@ def output_columns() -> pd.DataFrame:
     """Every column of the tables a run writes (``columns.csv``), one row each, in the order the files show them.
 
     Columns (all text): ``file`` (``summary.csv``, ``motions.csv``, ...), ``column`` (its name; ``<T>`` stands for
-    a number, as in ``sa_<T>s_g``), ``unit`` (SI, ``–`` for a pure number, ``text``, ```True`/`False```;
+    a number, as in ``sa_<T>s_g``, and ``<unit>`` for the report's force unit, ``kN`` or ``kip``), ``unit`` (SI, ``–`` for a pure number, ``text``, ```True`/`False```;
     "(per report units)" where the column is converted when the file is written), ``dtype`` (``str``,
     ``float64``, ``int64`` or ``bool``: the kind of its values, empty cells aside), ``stage`` (the stage whose
     output it is: ``inventory``, ``demand``, ``decision``, ``anchorage``, ``costs``, ``curve``, ``report``
@@ -59,7 +59,8 @@ def declared_columns(file: str) -> tuple[tuple[str, str], ...]:
 
 @functools.cache
 def _patterns(file: str) -> tuple[tuple[re.Pattern, str], ...]:
-    return tuple((re.compile(re.escape(name).replace(re.escape("<T>"), r"[0-9.eE+-]+")), dtype)
+    return tuple((re.compile(re.escape(name).replace(re.escape("<T>"), r"[0-9.eE+-]+")
+                             .replace(re.escape("<unit>"), "(?:kN|kip)")), dtype)
                  for name, dtype in declared_columns(file))
 
 

@@ -33,7 +33,7 @@ import numpy as np
 import pandas as pd
 
 from assess.quantity_text import floor_text
-from assess.decision.code_governed import CodeRule, code_rule
+from assess.decision.code_governed import CodeRule, code_rule, connection_rules
 from assess.decision.risk_classes import Chances, deciding_mode, mode_classes
 from assess.inventory.units import CM_PER_M  # noqa: F401 (the decisions' too)
 from assess.inventory.settings import Settings
@@ -88,7 +88,11 @@ class ActionDecision:
     (``overturn``, ``beyond_clearance``, ``rocking_harm``; "" for none); ``contents``: what its contents can
     do (``movable``, ``fixed``, ``none``); ``code``: the rule of :mod:`assess.decision.code_governed` that
     prescribes ``kind`` whatever the analysis says (None: the analysis chose it); ``analysis_kind``: the
-    action the analysis alone chooses (:func:`choose_action`).
+    action the analysis alone chooses (:func:`choose_action`); ``type_source``: where the item's type comes from
+    (``typed``, ``name``, ``default``: the report asks to confirm a type read from the name);
+    ``connections``: its lines (``gas``, ``fluid``), each taking a flexible connection beside the action
+    (:func:`assess.decision.code_governed.connection_rules`); ``connections_assumed``: they were not written
+    but follow from its type (the report says so).
     """
 
     kind: ActionKind
@@ -102,14 +106,33 @@ class ActionDecision:
     contents: str = DEFAULT_CONTENTS
     code: CodeRule | None = None
     analysis_kind: ActionKind | None = None
+    type_source: str = "default"
+    connections: tuple[str, ...] = ()
+    connections_assumed: bool = False
+
+    def connection_rules(self) -> tuple:
+        """The flexible connections its lines take (:class:`~assess.decision.code_governed.ConnectionRule` s)."""
+        rules = connection_rules()
+        return tuple(rules[line] for line in self.connections if line in rules)
 
     def columns(self) -> dict:
-        """Its columns of summary.csv that are numbers and kinds (and the code's detail and reference)."""
+        """Its columns of summary.csv that are numbers and kinds (and the code's detail and reference, and its
+        lines' flexible connections)."""
         code = self.code
+        lines = self.connection_rules()
         return {"action_kind": self.kind.value, "p_overturn_after": self.p_overturn_after,
                 "p_beyond_clearance_after": self.p_beyond_clearance_after, "action_mode": self.mode,
                 "action_analysis": (self.analysis_kind or self.kind).value,
-                "action_detail": code.detail if code else "", "action_reference": code.reference if code else ""}
+                "action_detail": code.detail if code else "", "action_reference": code.reference if code else "",
+                "connection_detail": "; ".join(f"{rule.connection}: {rule.detail}" for rule in lines),
+                "connection_reference": "; ".join(dict.fromkeys(rule.reference for rule in lines))}
+
+
+def item_connections(item) -> tuple[str, ...]:
+    """The lines of ``item`` (its ``connections``: ``"gas, fluid"``, ``"none"`` or empty) as a tuple."""
+    text = getattr(item, "connections", "") or ""
+    text = text if isinstance(text, str) else ""
+    return tuple(line for line in (part.strip() for part in text.split(",")) if line and line != "none")
 
 
 def room_to_gain_cm(row: dict) -> float:
@@ -236,7 +259,10 @@ def decide_action(item, row: dict, uplift: bool, lowered: LoweredDemand | None, 
     p_overturn_after, p_beyond_after = residual_chances(kind, row, lowered, settings)
     return ActionDecision(kind, p_overturn_after, p_beyond_after, uplift=bool(uplift), casters=casters,
                           lowered=lowered, room_to_gain_cm=room_to_gain_cm(row), mode=action_mode(row, settings),
-                          contents=contents, code=code, analysis_kind=analysis)
+                          contents=contents, code=code, analysis_kind=analysis,
+                          type_source=str(getattr(item, "type_source", "") or "default"),
+                          connections=item_connections(item),
+                          connections_assumed=bool(getattr(item, "connections_assumed", False)))
 
 
 # ---------------------------------------------------------------- the what-if run: heavy contents low
@@ -272,7 +298,7 @@ def lowered_rows(equipment: pd.DataFrame, rows: dict, uplift: dict, settings: Se
 
 #: Columns of work_orders.csv (docs/outputs.md).
 WORK_ORDER_COLUMNS = ["floor", "floor_label", "room", "action", "items", "names", "count", "detail", "reference",
-                      "force_kn", "unit_cost", "total_cost"]
+                      "connection_detail", "connection_reference", "force_kn", "unit_cost", "total_cost"]
 
 
 def _joined(values) -> str:
@@ -289,7 +315,8 @@ def work_orders(summary: pd.DataFrame, numbering: str = "ground_0") -> pd.DataFr
     number, ``floor_label`` as the report labels it (``numbering``: :func:`assess.quantity_text.floor_text`),
     ``items`` the ids and ``names`` their names (in id order), ``count`` the units (``quantity`` summed),
     ``detail`` and ``reference`` what a code prescribes (``action_detail``, ``action_reference``; empty where
-    the analysis chose the action), ``force_kn`` the largest design force F_p per unit among them (the
+    the analysis chose the action), ``connection_detail`` and ``connection_reference`` the flexible
+    connections of their gas or fluid lines (empty without), ``force_kn`` the largest design force F_p per unit among them (the
     force the anchor, tether, strap, chain or restraint resists; ``anchor_force_kn``), ``total_cost`` Σ
     ``mitigation_cost`` × ``quantity`` (empty where an item has no cost) and ``unit_cost`` that over
     ``count``. Items that need no action and anchored items are left out (and a row without a known action
@@ -306,18 +333,20 @@ def work_orders(summary: pd.DataFrame, numbering: str = "ground_0") -> pd.DataFr
     cost = pd.to_numeric(column("mitigation_cost", np.nan), errors="coerce") * acts["quantity"]
     acts = acts.assign(room=acts["room"].fillna("").astype(str), _order=acts["action_kind"].map(ACTION_KINDS.index),
                        id=acts["id"].astype(str), _detail=text("action_detail"),
-                       _reference=text("action_reference"), _cost=cost,
+                       _reference=text("action_reference"), _lines=text("connection_detail"),
+                       _lines_reference=text("connection_reference"), _cost=cost,
                        _force=pd.to_numeric(column("anchor_force_kn", np.nan), errors="coerce"),
                        _name=text("name"))
-    grouped = acts.sort_values("id", kind="stable").groupby(["floor", "room", "_order", "action_kind", "_detail"],
+    grouped = acts.sort_values("id", kind="stable").groupby(["floor", "room", "_order", "action_kind", "_detail", "_lines"],
                                                             sort=True)
     table = grouped.agg(items=("id", lambda ids: ", ".join(ids)),
                         names=("_name", lambda names: "; ".join(name for name in names if name)),
                         count=("quantity", "sum"), reference=("_reference", _joined),
+                        connection_reference=("_lines_reference", _joined),
                         force_kn=("_force", "max"),
                         total_cost=("_cost", lambda costs: costs.sum() if costs.notna().all() else np.nan)
                         ).reset_index()
-    table = table.rename(columns={"action_kind": "action", "_detail": "detail"})
+    table = table.rename(columns={"action_kind": "action", "_detail": "detail", "_lines": "connection_detail"})
     table["floor"] = table["floor"].astype(int)
     table["count"] = table["count"].astype(int)
     table["unit_cost"] = table["total_cost"] / table["count"]

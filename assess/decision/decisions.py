@@ -50,6 +50,15 @@ ANCHORED = {"mode": "", "risk": "anchored", "action_kind": ActionKind.ANCHORED.v
 ANCHORED_ACTION = ActionDecision(ActionKind.ANCHORED, np.nan, np.nan)
 
 
+def anchored_action(item) -> ActionDecision:
+    """The action of an anchored item (:data:`ANCHORED_ACTION`) with its type's source and its lines, whose
+    flexible connections it takes all the same."""
+    return ActionDecision(ActionKind.ANCHORED, np.nan, np.nan,
+                          type_source=str(getattr(item, "type_source", "") or "default"),
+                          connections=actions.item_connections(item),
+                          connections_assumed=bool(getattr(item, "connections_assumed", False)))
+
+
 @dataclass(frozen=True)
 class ItemDecision:
     """What was decided for one item, in numbers and kinds (SI): the words a reader sees are made from it
@@ -100,8 +109,10 @@ def decide(equipment: pd.DataFrame, governing: dict, uplift: dict, cases: pd.Dat
         if item.anchored:
             consequence = item_consequence(item)
             anchorage = item_anchorage(item, consequence, ANCHORED["action_kind"], site)
-            items[item.id] = ItemDecision(item.id, "anchored", consequence, None, ANCHORED_ACTION, anchorage)
-            by_item[item.id] = {**ANCHORED, **decided, **anchorage.columns()}
+            action = anchored_action(item)
+            items[item.id] = ItemDecision(item.id, "anchored", consequence, None, action, anchorage)
+            lines = {key: value for key, value in action.columns().items() if key.startswith("connection_")}
+            by_item[item.id] = {**ANCHORED, **decided, **lines, **anchorage.columns()}
             continue
         row = {"consequence": item_consequence(item), "clearance_cm": item.clearance_m * actions.CM_PER_M,
                "cg_height_cm": item.cg_height_m * actions.CM_PER_M, **governing[item.id]}

@@ -28,7 +28,10 @@ class Inventory:
         ``consequence`` (str, one of
         :data:`~assess.inventory.schema.CONSEQUENCES`, ``ordinary`` when not given), ``contents`` (str:
         ``movable``, ``fixed`` or ``none``; when not given ``movable`` for shelving and cabinets, ``none``
-        otherwise: :func:`assess.inventory.workbook.default_contents`),
+        otherwise: :func:`assess.inventory.kinds.default_contents`), ``component_type`` (the workbook's, else
+        the type its name selects, else ""), ``equipment_kind``, ``type_source`` (``typed``, ``name``,
+        ``default``), ``connections`` (``"gas, fluid"``, ``"none"``...) and ``connections_assumed``
+        (:func:`assess.inventory.kinds.item_type`),
         ``mu_low``, ``mu_high`` (the range μ may take, NaN when not given; both or neither,
         ``mu_low <= mu <= mu_high``), ``value`` and ``mitigation_cost`` (per unit, in the settings'
         ``currency``, NaN when not given; :mod:`assess.decision.costs`), ``base`` and ``floor_finish`` (str, "" when

@@ -148,6 +148,8 @@ EQUIPMENT = SheetSpec("equipment", (
     # what its contents can do: movable (they can be moved to low shelves), fixed (built in), none; empty:
     # movable for shelving and cabinets (component type storage shelving), none otherwise
     Column("contents", "contents", default=""),
+    # the lines it has: gas, fluid (both: "gas, fluid"), none; empty: from its type (a water heater: fluid)
+    Column("connections", "connections", default=""),
     # the row of ASCE 7 Table 13.5-1 / 13.6-1 for the anchorage force (empty: laboratory equipment)
     Column("component_type", "component_type", default=""),
     # I_p of ASCE 7 section 13.1.3, 1.0 or 1.5 (empty: from the consequence and the Risk Category)
@@ -521,9 +523,30 @@ def parse_contents(value: object, column: Column) -> str:
     if text not in CONTENTS:
         raise CellError(f"{quote(value)} is not a kind of contents.",
                         "write movable (contents that can be moved to the lowest shelves), fixed (built in or "
-                        "fastened) or none, or leave the cell empty: movable for shelving and cabinets, none "
-                        "otherwise.")
+                        "fastened) or none, or leave the cell empty: from the item's type (movable for shelving "
+                        "and storage cabinets, none otherwise).")
     return text
+
+
+#: The lines an item may have (docs/workbook.md, ``connections``; assess/data/connections.csv), and ``none``.
+CONNECTIONS = ("gas", "fluid")
+
+
+def parse_connections(value: object, column: Column) -> str:
+    """The lines an item has: words of :data:`CONNECTIONS` separated by commas or semicolons, in any case and
+    order, as ``"gas, fluid"`` (in that order); ``"none"`` for none.
+
+    >>> parse_connections(" Fluid; GAS ", None), parse_connections("none", None)
+    ('gas, fluid', 'none')
+    """
+    words = [word.strip().lower() for word in re.split(r"[,;]", str(value)) if word.strip()]
+    unknown = [word for word in words if word not in (*CONNECTIONS, "none")]
+    if unknown or not words or ("none" in words and len(words) > 1):
+        raise CellError(f"{quote(value)} is not a list of connections.",
+                        "write gas (a fuel or medical gas line), fluid (water, drain or other liquid lines), "
+                        "both as 'gas, fluid', or none; or leave the cell empty: from the item's type (a water "
+                        "heater has fluid lines, and a gas line where its name says gas).")
+    return ", ".join(line for line in CONNECTIONS if line in words) or "none"
 
 
 def parse_component_type(value: object, column: Column) -> str:
@@ -584,6 +607,7 @@ PARSERS = {
     "consequence": parse_consequence,
     "component_type": parse_component_type,
     "contents": parse_contents,
+    "connections": parse_connections,
     "importance": parse_importance,
     "level": parse_level_cell,
     "raw": parse_raw,

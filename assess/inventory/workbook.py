@@ -31,6 +31,7 @@ import pandas as pd
 from assess.data import default_settings
 from assess.errors import InputError, Problem
 from assess.inventory import friction, plausibility, schema, units, xlsx
+from assess.inventory.kinds import default_contents, equipment_kind, item_type  # noqa: F401 (re-exported)
 from assess.inventory.model import Inventory
 from assess.inventory.settings import Settings
 from assess.inventory.schema import (BUILDING, EQUIPMENT, HAZARD, SETTINGS, SITE, UNUSABLE, CellError,
@@ -298,39 +299,8 @@ def _check_equipment(table: Table, report: SheetReport) -> list[dict]:
                           "with a quantity).")
             else:
                 first_row_of[item_id] = row.number
-    return [{**{c.output: row.values.get(c.name) for c in EQUIPMENT.columns},
-             "contents": default_contents(row.values.get("contents"), row.values.get("component_type")),
-             "equipment_kind": equipment_kind(row.raw.get("component_type")),
+    return [{**{c.output: row.values.get(c.name) for c in EQUIPMENT.columns}, **item_type(row.values, row.raw),
              "mu_source": row.values.get("mu_source", ""), "row": row.number} for row in table.rows]
-
-
-#: Component types whose contents are movable where the workbook does not say (shelving and cabinets).
-MOVABLE_CONTENTS_TYPES = ("storage shelving",)
-
-
-def equipment_kind(written) -> str:
-    """The workbook's ``component_type`` as written (an alias such as ``water heater`` names more than the
-    table's type), in lower case with single spaces; "" where empty. :mod:`assess.decision.code_governed`
-    reads it.
-
-    >>> equipment_kind(" Gas_Water  Heater "), equipment_kind(None)
-    ('gas water heater', '')
-    """
-    if written is None or (isinstance(written, float) and written != written):
-        return ""
-    return " ".join(str(written).strip().lower().replace("_", " ").replace("-", " ").split())
-
-
-def default_contents(contents, component_type) -> str:
-    """An item's ``contents`` as written, else ``movable`` for shelving and cabinets
-    (:data:`MOVABLE_CONTENTS_TYPES`) and ``none`` otherwise.
-
-    >>> default_contents("", "storage shelving"), default_contents(None, ""), default_contents("fixed", "storage shelving")
-    ('movable', 'none', 'fixed')
-    """
-    if contents:
-        return str(contents)
-    return "movable" if component_type in MOVABLE_CONTENTS_TYPES else "none"
 
 
 def _check_item(row: Row, headers: dict[str, Header], report: SheetReport) -> None:
@@ -757,6 +727,7 @@ _EQUIPMENT_TYPES = {"id": "str", "name": "str", "room": "str", "floor": "int64",
                     "mass_kg": "float64", "mu": "float64", "mu_static": "float64",
                     "clearance_m": "float64", "cg_height_m": "float64", "anchored": "bool",
                     "casters": "bool", "quantity": "int64", "consequence": "str", "component_type": "str", "contents": "str", "equipment_kind": "str",
+                    "type_source": "str", "connections": "str", "connections_assumed": "bool",
                     "ip": "float64",
                     "mu_low": "float64", "mu_high": "float64", "value": "float64", "mitigation_cost": "float64",
                     "base": "str", "floor_finish": "str", "mu_source": "str", "row": "int64"}

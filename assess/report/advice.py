@@ -203,9 +203,47 @@ def code_sentences(action, row, settings: Settings) -> tuple[str, str]:
         sentence = action_sentence(action.analysis_kind.value, row, action.uplift, action.lowered, settings,
                                    action.mode)
         alone = f"the analysis alone would {analysis}: {sentence.split(': ', 1)[-1]}"
+    if action.type_source == "name":
+        action_text += (f". Its kind ({code.equipment}) was read from its name: confirm it, or write its "
+                        "component_type in the workbook.")
     what_if = (f"Restrained as the code asks (assumed to hold), it would neither slide nor overturn: 0% for both; "
                f"{alone}.")
     return action_text, what_if
+
+
+#: A line in words, by connection (assess/data/connections.csv).
+LINE_WORDS = {"gas": "gas line", "fluid": "water or fluid lines"}
+
+
+def connection_sentence(action) -> str:
+    """What the item's lines take beside its action (``action``:
+    :class:`~assess.decision.actions.ActionDecision`): each line's flexible connection and its reference, and
+    where the lines were not written, that they follow from its kind (read from its name where it was); ""
+    without lines.
+
+    >>> from assess.decision.actions import ActionDecision, ActionKind
+    >>> connection_sentence(ActionDecision(ActionKind.NONE, 0.0, 0.0, connections=("gas",))).split(" between")[0]
+    'Its gas line: a flexible connector (braided or corrugated)'
+    """
+    rules = action.connection_rules()
+    if not rules:
+        return ""
+    references = "; ".join(dict.fromkeys(rule.reference for rule in rules))
+    text = " ".join(f"Its {LINE_WORDS.get(rule.connection, rule.connection)}: {rule.detail}." for rule in rules)
+    text = f"{text[:-1]} (Reference: {references})."
+    if action.connections_assumed:
+        read = " (read from its name)" if action.type_source == "name" else ""
+        text += (f" Its {' and '.join(LINE_WORDS.get(r.connection, r.connection) for r in rules)} are assumed from "
+                 f"its kind{read}: write connections in the workbook if it has other lines or none.")
+    return text
+
+
+def _with_lines(text: str, action) -> str:
+    """``text`` (an action sentence) with its lines' flexible connections after it (:func:`connection_sentence`)."""
+    lines = connection_sentence(action)
+    if not lines:
+        return text
+    return f"{str(text).rstrip('.')}. {lines}"
 
 
 # ---------------------------------------------------------------- why the item is in its class
@@ -338,14 +376,14 @@ def item_words(decision, settings: Settings) -> dict:
     words = anchorage_columns(decision.anchorage, system)
     action = decision.action
     if action.kind == ActionKind.ANCHORED:
-        return {**words, **ANCHORED_WORDS}
+        return {**words, **ANCHORED_WORDS, "action": _with_lines(ANCHORED_WORDS["action"], action)}
     row = decision.demand
     if action.code is not None:
         action_text, what_if = code_sentences(action, row, settings)
-        return {**words, "action": action_text, "what_if": what_if,
+        return {**words, "action": _with_lines(action_text, action), "what_if": what_if,
                 "risk_reason": risk_reason(decision.chances, decision.consequence, settings)}
-    return {**words, "action": action_sentence(action.kind, row, action.uplift, action.lowered, settings,
-                                               action.mode),
+    return {**words, "action": _with_lines(action_sentence(action.kind, row, action.uplift, action.lowered,
+                                                           settings, action.mode), action),
             "what_if": what_if_sentence(action.kind, row, action.lowered, settings, action.mode, action.contents),
             "risk_reason": risk_reason(decision.chances, decision.consequence, settings)}
 
@@ -381,6 +419,8 @@ def _order_sentence(order, system: str, currency: str) -> str:
             f"({_plural(int(order.count), 'unit')}{names})")
     if getattr(order, "detail", ""):
         text += f" — {order.detail} ({order.reference})"
+    if getattr(order, "connection_detail", ""):
+        text += f"; flexible connections — {order.connection_detail} ({order.connection_reference})"
     force = getattr(order, "force_kn", math.nan)
     if force is not None and math.isfinite(float(force)):
         text += f"; force to resist up to {force_text(force, system)} per unit"

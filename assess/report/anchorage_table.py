@@ -31,7 +31,8 @@ def anchorage_rows(result) -> pd.DataFrame:
     """The anchorage table of ``result`` (its ``decisions``): one row per item with a design force, in its
     summary's order, forces in the units of its settings (kN or kip per unit of the item).
 
-    Columns: ``id``, ``name``, ``floor``, ``action``, ``component type``, ``edition``, ``W_p``, ``z/h``,
+    Columns (``assess/data/columns.csv``, file ``summary.xlsx anchorage``): ``id``, ``name``, ``floor``,
+    ``action``, ``connections`` (its lines: ``gas, fluid``, ``none``), ``component type``, ``edition``, ``W_p``, ``z/h``,
     ``H_f``, ``R_mu``, ``C_AR``, ``R_po`` (ASCE 7-22; ``a_p``, ``R_p`` under 7-16), ``I_p``, ``F_p``,
     ``F_p/W_p``, ``governs`` (eq. 13.3-1, or its minimum or maximum), ``V`` (the shear at the base, F_p),
     ``T`` (the tension of the anchor line on the far edge of its narrower base, 0.9D − 1.0E), ``Omega_0``,
@@ -51,7 +52,8 @@ def anchorage_rows(result) -> pd.DataFrame:
         seven_16 = forces.edition == "ASCE 7-16"
         rows.append({
             "id": item_id, "name": listed.at[item_id, "name"], "floor": int(listed.at[item_id, "floor"]),
-            "action": decision.action.kind.value, "component type": forces.component_type,
+            "action": decision.action.kind.value, "connections": ", ".join(decision.action.connections) or "none",
+            "component type": forces.component_type,
             "edition": forces.edition, f"W_p ({unit})": _force(forces.weight_n, system), "z/h": forces.z_over_h,
             "H_f": math.nan if seven_16 else forces.height_factor,
             "R_mu": math.nan if seven_16 else forces.ductility_reduction,
@@ -77,7 +79,7 @@ def anchorage_rows(result) -> pd.DataFrame:
 PAGE_HEADERS = {"component type": "type", "Omega_0": "Ω0", "V with Omega_0": "V·Ω0", "T with Omega_0": "T·Ω0",
                 "R_mu": "Rμ", "confirmed": "checked"}
 #: The columns summary.xlsx has that the report's page leaves out (they are in its method's table of types).
-PAGE_LEAVES_OUT = ("name", "edition", "table row")
+PAGE_LEAVES_OUT = ("name", "edition", "table row", "connections")
 
 
 def anchorage_context(result) -> dict | None:

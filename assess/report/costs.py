@@ -60,9 +60,34 @@ def ranked(summary: pd.DataFrame) -> pd.DataFrame:
     return acting.loc[order]
 
 
+#: The most actions page 1's cost table ranks (the rest are in summary.csv), so that the table, its note and
+#: the benefit-cost sensitivity keep to page 1.
+MAX_COST_ROWS = 8
+
+
+def left_out_sentence(more: int, unvalued: list) -> str:
+    """What page 1's cost table leaves out: the ranked actions past :data:`MAX_COST_ROWS` and the items
+    with an action but no ``value`` (nothing to rank them by), by id; "" where nothing is left out.
+
+    >>> left_out_sentence(0, ["LB-1", "ED-2"])
+    'Not ranked, without a value: LB-1, ED-2 (their actions are listed above).'
+    >>> left_out_sentence(3, [])
+    '3 more actions ranked in summary.csv (benefit_cost_ratio, loss_avoided_per_cost).'
+    """
+    parts = []
+    if more:
+        parts.append(f"{more} more action{'s' if more != 1 else ''} ranked in summary.csv "
+                     "(benefit_cost_ratio, loss_avoided_per_cost).")
+    if unvalued:
+        parts.append(f"Not ranked, without a value: {', '.join(unvalued)} (their actions are listed above).")
+    return " ".join(parts)
+
+
 def costs_context(result, anchors: dict | None = None) -> dict | None:
     """What page 1 shows of costs; None where no item has a ``value`` (nothing changes in the report).
-    ``anchors``: each item's HTML anchor (id -> anchor), to link the rows to the items' blocks."""
+    ``anchors``: each item's HTML anchor (id -> anchor), to link the rows to the items' blocks. Its rows are
+    the actions of the items with a value, ranked (:func:`ranked`), at most :data:`MAX_COST_ROWS`;
+    ``left_out`` says what the table leaves out (:func:`left_out_sentence`)."""
     summary = result.summary
     if "value" not in summary or not pd.to_numeric(summary["value"], errors="coerce").notna().any():
         return None
@@ -70,7 +95,11 @@ def costs_context(result, anchors: dict | None = None) -> dict | None:
     currency = settings.currency
     has_curve = getattr(result, "curve_risk", None) is not None
     rows = []
-    for rank, (_, row) in enumerate(ranked(summary).iterrows(), start=1):
+    acting = ranked(summary)
+    valued = pd.to_numeric(acting["value"], errors="coerce").notna()
+    unvalued = acting.loc[~valued, "id"].astype(str).tolist()
+    shown, more = acting[valued].iloc[:MAX_COST_ROWS], max(int(valued.sum()) - MAX_COST_ROWS, 0)
+    for rank, (_, row) in enumerate(shown.iterrows(), start=1):
         quantity = finite(row.get("quantity"))
         rows.append({
             "rank": rank, "id": text(row.get("id")), "name": text(row.get("name")),
@@ -85,6 +114,7 @@ def costs_context(result, anchors: dict | None = None) -> dict | None:
             "note": text(row.get("cost_note")),
         })
     return {"currency": currency or "the workbook's currency", "has_curve": has_curve, "rows": rows,
+            "left_out": left_out_sentence(more, unvalued),
             "sensitivity": bcr_sensitivity(summary, settings) if has_curve else None,
             "lead": lead_sentence(summary, settings, has_curve),
             "basis": basis_sentence(settings, has_curve, "p_overturn_after" in summary),
@@ -125,7 +155,7 @@ def bcr_sensitivity(summary: pd.DataFrame, settings: Settings) -> dict | None:
              "ratios": [ratio_text(avoided * present_value_factor(rate, years) / cost) for years in lives]}
             for rate in rates]
     return {"lives": [f"{years:g}" for years in lives], "rows": rows, "own_life": f"{own_years:g}",
-            "own_rate": f"{100 * own_rate:g} %"}
+            "own_rate": f"{100 * own_rate:g} %", "own_index": lives.index(own_years)}
 
 
 def _total(summary: pd.DataFrame, column: str, where=None) -> float:

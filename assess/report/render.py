@@ -157,6 +157,7 @@ def _item_row(row: pd.Series, system: str = "si", numbering: str = "ground_0") -
         "risk_range": text(row.get("risk_range")),
         "action_kind": text(row.get("action_kind")),
         "action_reference": text(row.get("action_reference")),
+        "type_source": text(row.get("type_source")),
         "consequence": text(row.get("consequence")),
         "anchor_sentence": anchorage_sentence(row, system),
         "anchor_basis": text(row.get("anchor_basis")),

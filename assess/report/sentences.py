@@ -155,12 +155,18 @@ def after_text(row) -> str:
 
 def action_groups(rows: list[dict]) -> list[dict]:
     """The items of each action kind (``action_kind`` of the summary), in the page's order; the items whose
-    action a code prescribes (``action_reference``) in a group of their own, first."""
+    action a code prescribes (``action_reference``) in a group of their own, first, saying how many of them
+    had their kind read from their name (``type_source``)."""
     groups = []
     for kind, title, why in ACTION_GROUPS:
         members = [r for r in rows if (r.get("action_kind") == kind and not r.get("action_reference"))
                    or (kind == "code" and r.get("action_reference"))]
         if members:
+            named = [r for r in members if kind == "code" and r.get("type_source") == "name"]
+            if named:
+                whose = "its name" if len(named) == 1 else "their names"
+                why += (f"; the kind of {len(named)} of them was read from {whose}: confirm it, or write "
+                        "component_type in the workbook")
             groups.append({"kind": kind, "title": title, "why": why, "rows": members})
     return groups
 

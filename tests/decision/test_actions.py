@@ -163,7 +163,8 @@ def test_work_orders_group_the_actions_by_floor_and_room():
         "action_kind": ["anchor", "anchor", "tether", "room", "anchor", "none"]})
     orders = actions.work_orders(summary)
     assert list(orders.columns) == ["floor", "floor_label", "room", "action", "items", "names", "count", "detail",
-                                    "reference", "force_kn", "unit_cost", "total_cost"]
+                                    "reference", "connection_detail", "connection_reference", "force_kn", "unit_cost",
+                                    "total_cost"]
     assert orders[["floor", "floor_label", "room", "action", "items", "count"]].values.tolist() == [
         [0, "0", "0-01", "tether", "C", 3], [1, "1", "1-10", "anchor", "A, B", 3],
         [1, "1", "1-10", "room", "D", 1], [1, "1", "1-20", "anchor", "E", 1]]

@@ -91,3 +91,99 @@ def test_page_one_gathers_the_code_governed_items_first():
     groups = action_groups(rows)
     assert [(g["kind"], [r["id"] for r in g["rows"]]) for g in groups] == [
         ("code", ["WH", "SH"]), ("anchor", ["FR"]), ("none", ["OK"])]
+    assert "read from" not in groups[0]["why"]
+    rows[0]["type_source"] = "name"  # the water heater's kind read from its name: page 1 asks to confirm it
+    assert groups[0]["why"] != action_groups(rows)[0]["why"]
+    assert action_groups(rows)[0]["why"].endswith("the kind of 1 of them was read from its name: confirm it, or "
+                                                  "write component_type in the workbook")
+
+
+# ---------------------------------------------------------------- the kind read from the name (no component_type)
+
+from assess.inventory.kinds import default_connections, item_type, kind_from_name  # noqa: E402
+
+
+@pytest.mark.parametrize("name, kind", [
+    ("Gas water heater, 100 gal", "water heater"),
+    ("WATER-HEATER (electric), 50 gal", "water heater"),
+    ("Water heaters, pair", "water heater"),
+    ("Oxygen cylinder rack, 12 cylinders", "gas cylinders"),
+    ("Gas-cylinder rack, 4 cylinders, freestanding", "gas cylinders"),
+    ("Oxygen cylinder cart, 6 E-cylinders", "gas cylinder cart"),
+    ("Server rack, 42U, loaded", "computer rack"),
+    ("Network rack, 24U", "computer rack"),
+    ("Crash cart, 5 drawers", "medical cart"),
+    ("Anesthesia cart", "medical cart"),
+    ("Supply shelving, 6 shelves, loaded", "tall shelving"),
+    ("Bulk IV-fluid storage rack, 5 shelves", "tall shelving"),
+    ("Anesthesia supply cabinet", "tall shelving"),
+])
+def test_the_name_selects_the_kind_its_phrase_names(name, kind):
+    assert kind_from_name(name).equipment == kind
+
+
+@pytest.mark.parametrize("name", [
+    "Heater block, dry bath",          # "heater" without "water heater"
+    "Water bath heater",               # a water bath's heater, not a water heater
+    "Linen cart, covered",             # a bare cart is not a medical cart
+    "Supply cart, stainless, 3 shelves",  # nor are its shelves shelving
+    "Cartridge filter housing",        # "cart" inside a word
+    "Hydraulic cylinder press",        # a cylinder that holds no gas
+    "Rackmount UPS",                   # "rack" inside a word, no rack named
+    "Serverless kiosk",
+    "MRI gradient cabinet",            # a cabinet alone is not storage
+    "Biological safety cabinet, class II",
+    "Shelf-stable food freezer",       # "shelf" is not shelving
+    "Water heaterless sink",
+])
+def test_near_miss_names_select_nothing(name):
+    assert kind_from_name(name) is None
+
+
+def test_a_named_item_takes_the_kind_s_type_contents_and_lines_and_the_advice_asks_to_confirm_it():
+    """The lead's new-user check: without component_type the Seattle hospital's gas water heater got
+    "restrain", its oxygen rack "anchor", its server rack and crash cart nothing; now each gets its code's
+    action, with the type read from its name (and the water heater's gas line from its name) said in the advice."""
+    heater = item_type({"name": "Gas water heater, 100 gal", "component_type": "", "contents": ""}, {})
+    assert heater == {"component_type": "mechanical equipment", "equipment_kind": "water heater", "type_source": "name",
+                      "contents": "none", "connections": "gas, fluid", "connections_assumed": True}
+    rack = item_type({"name": "Server rack, 42U, loaded", "component_type": ""}, {})
+    assert (rack["component_type"], rack["contents"], rack["connections"]) == ("computer rack", "fixed", "none")
+    shelving = item_type({"name": "Spare-parts shelving", "component_type": ""}, {})
+    assert (shelving["component_type"], shelving["contents"]) == ("storage shelving", "movable")
+    # typed: the name is not read, whatever it says
+    typed = item_type({"name": "Gas water heater", "component_type": "laboratory equipment"},
+                      {"component_type": "lab"})
+    assert (typed["type_source"], typed["equipment_kind"], typed["connections"]) == ("typed", "lab", "none")
+    assert item_type({"name": "Chemistry analyser", "component_type": ""}, {})["type_source"] == "default"
+
+    item = SimpleNamespace(**heater, height_m=72 * 0.0254, casters=False, name="Gas water heater, 100 gal")
+    decided = actions.decide_action(item, _row(p_beyond=0.8, risk="high"), False, None, SETTINGS)
+    assert decided.kind == ActionKind.STRAP and decided.type_source == "name"
+    assert decided.connections == ("gas", "fluid") and decided.connections_assumed
+    action, _ = advice.code_sentences(decided, _row(p_beyond=0.8, risk="high"), SETTINGS)
+    assert "was read from its name: confirm it" in action
+    lines = advice.connection_sentence(decided)
+    assert lines.startswith("Its gas line: a flexible connector") and "FEMA E-74 (2012) §6.4" in lines
+    assert "Its water or fluid lines: flexible hoses" in lines
+    assert "assumed from its kind (read from its name)" in lines
+    columns = decided.columns()
+    assert columns["connection_detail"].startswith("gas: a flexible connector")
+    assert "§6.4.1.3" in columns["connection_reference"]
+
+
+@pytest.mark.parametrize("name, expected", [
+    ("Electric water heater", ("fluid",)),          # a water heater always has water lines
+    ("Gas water heater", ("gas", "fluid")),          # and a gas line where its name says gas
+    ("Gas-cylinder rack", ()),                       # "gas" in a cylinder rack's name is no line
+    ("Crash cart", ()),
+])
+def test_the_lines_of_a_kind_where_the_workbook_gives_none(name, expected):
+    assert default_connections(kind_from_name(name), name) == expected
+
+
+def test_a_bare_cart_type_is_no_code_rule():
+    """component_type `cart` is medical equipment for the force (components.csv) but selects no code rule:
+    a linen or supply cart is left to the analysis (tether or lock its casters); `crash cart` selects it."""
+    assert code_rule(_item("medical equipment", "cart", 1.1, casters=True)) is None
+    assert code_rule(_item("medical equipment", "crash cart", 1.1, casters=True)).equipment == "medical cart"

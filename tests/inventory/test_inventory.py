@@ -42,7 +42,8 @@ def test_good_workbook_reads_to_documented_si_columns(make_workbook):
     equipment = inventory.equipment
     assert list(equipment.columns) == [
         "id", "name", "room", "floor", "height_m", "width_m", "depth_m", "mass_kg", "mu",
-        "mu_static", "clearance_m", "cg_height_m", "anchored", "casters", "quantity", "consequence", "component_type", "contents", "equipment_kind", "ip",
+        "mu_static", "clearance_m", "cg_height_m", "anchored", "casters", "quantity", "consequence", "component_type", "contents", "equipment_kind",
+            "type_source", "connections", "connections_assumed", "ip",
         "mu_low", "mu_high", "value", "mitigation_cost", "base", "floor_finish", "mu_source", "row"]
     assert list(equipment["id"]) == ["INC-1", "FRZ-2", "BSC-3"]
     assert list(equipment["row"]) == [2, 3, 5]  # blank row 4 skipped
@@ -461,3 +462,17 @@ def test_zip_that_is_not_a_workbook(tmp_path):
     problem = only_problem(path)
     assert problem.file == str(path) and problem.sheet is None
     assert_mentions(problem, "photos.xlsx: the workbook cannot be read", "damaged")
+
+
+def test_connections_are_read_in_any_order_and_a_bad_one_names_its_cell(make_workbook):
+    """connections: gas, fluid, both (comma or semicolon, any case) or none; empty: from the item's kind
+    (docs/workbook.md); a word not in the list is a problem naming the cell, the column and the words to write."""
+    sheets = good_sheets()
+    sheets["equipment"][0]["connections"] = "Fluid; GAS"
+    sheets["equipment"][1]["connections"] = "none"
+    equipment = read_workbook(make_workbook(sheets)).equipment
+    assert list(equipment["connections"]) == ["gas, fluid", "none", "none"]
+    assert list(equipment["connections_assumed"]) == [False, False, False]
+    sheets["equipment"][1]["connections"] = "steam"
+    assert_mentions(only_problem(make_workbook(sheets)), "column 'connections'",
+                    "'steam' is not a list of connections", "gas", "fluid", "none")

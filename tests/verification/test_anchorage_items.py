@@ -196,7 +196,10 @@ def test_the_sample_hospital_workbook():
     inventory = read_workbook(folder / "hospital.xlsx")
     site = anchorage_site(inventory.site, inventory.building, inventory.settings)
     assert (site.edition, site.risk_category, site.sds_g, site.storeys) == ("ASCE 7-22", "IV", 1.2, 4.0)
-    typed = {row.id: row.component_type for row in inventory.equipment.itertuples() if row.component_type}
+    typed = {row.id: row.component_type for row in inventory.equipment.itertuples() if row.type_source == "typed"}
+    # a type read from the name (no component_type): the crash cart is a medical cart (code_governed.csv)
+    named = {row.id: row.component_type for row in inventory.equipment.itertuples() if row.type_source == "name"}
+    assert named == {"ED-0-01": "medical equipment"}
     assert typed == {"ED-0-02": "storage shelving", "LB-1-01": "refrigeration", "LB-1-02": "refrigeration",
                      "LB-1-03": "laboratory equipment", "RX-2-01": "medical equipment",
                      "RX-2-02": "storage shelving", "RX-2-03": "refrigeration", "IT-3-01": "computer rack",
@@ -206,7 +209,7 @@ def test_the_sample_hospital_workbook():
         out = item_anchorage(item, item_consequence(item), "anchor", site)
         expected_ip = 1.5 if item_consequence(item) in ("critical", "hazardous", "life-safety") else 1.0
         assert out["ip"] == expected_ip, item.id
-        assert out["component_type"] == (typed.get(item.id) or "laboratory equipment")
+        assert out["component_type"] == (typed.get(item.id) or named.get(item.id) or "laboratory equipment")
         if item.floor == 4:
             assert "z/h 1.00" in out["anchor_basis"]
 
