@@ -17,7 +17,8 @@ from assessed import run_assessment
 from assess.hazard.usgs import read_hazard_curve_file
 from assess.inventory import read_workbook
 from assess.report import advice, costs
-from assess.report.render import report_files
+from assess.report.pdf import render_part, split_appendix
+from assess.report.render import render_html
 from workbooks import write_workbook
 
 pypdf = pytest.importorskip("pypdf")
@@ -54,8 +55,10 @@ def us_curve_result(tmp_path_factory):
 
 
 def _page_one(result) -> str:
-    pdf = report_files(result, html=False, pdf=True, pdf_processes=1)["report.pdf"]
-    return " ".join(pypdf.PdfReader(io.BytesIO(pdf)).pages[0].extract_text().split())
+    """The text of page 1 of the report's PDF: the body's first page (the body is laid out alone, as
+    :func:`assess.report.pdf.render_pdf` lays it out before it adds the appendix's pages after it)."""
+    body, _ = split_appendix(render_html(result))
+    return " ".join(pypdf.PdfReader(io.BytesIO(render_part(body))).pages[0].extract_text().split())
 
 
 def test_page_one_holds_the_costs_and_the_sensitivity_table(us_curve_result):
