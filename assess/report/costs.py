@@ -175,6 +175,8 @@ def lead_sentence(summary: pd.DataFrame, settings: Settings, has_curve: bool) ->
     'If this earthquake happens, the 3 freestanding units with a value are expected to lose USD 200 (USD 100 after the
     recommended actions, which cost USD 40 where a cost is given). No benefit-cost ratio: this level is one
     earthquake, not how often it happens; give a hazard curve (--oq-hazard: an OpenQuake or USGS curve) for one.'
+    >>> lead_sentence(table.assign(mitigation_cost=float("nan")), Settings(currency="USD"), False)[:196]
+    'If this earthquake happens, the 3 freestanding units with a value are expected to lose USD 200 (USD 100 after the recommended actions, whose costs the workbook does not give: the column mitigation_cost'
     """
     currency = settings.currency
     valued = pd.to_numeric(summary["expected_loss"], errors="coerce").notna()  # a value, and analysed
@@ -182,10 +184,13 @@ def lead_sentence(summary: pd.DataFrame, settings: Settings, has_curve: bool) ->
     loss, after = _total(summary, "expected_loss", valued), _total(summary, "expected_loss_after", valued)
     acting = valued & ~summary["action_kind"].astype(str).isin(NO_ACTION)
     cost = _total(summary, "mitigation_cost", acting)
+    costed = bool(pd.to_numeric(summary.loc[acting, "mitigation_cost"], errors="coerce").notna().any())
+    cost_words = (f"which cost {money_text(cost, currency)} where a cost is given" if costed or not acting.any()
+                  else "whose costs the workbook does not give: the column mitigation_cost, or the settings' "
+                       "mitigation_cost_<action>")
     sentence = (f"If this earthquake happens, the {units} freestanding unit{'s' if units != 1 else ''} with a value "
                 f"{'are' if units != 1 else 'is'} expected to lose {money_text(loss, currency)} "
-                f"({money_text(after, currency)} after the recommended actions, which cost "
-                f"{money_text(cost, currency)} where a cost is given).")
+                f"({money_text(after, currency)} after the recommended actions, {cost_words}).")
     if not has_curve:
         return (sentence + " No benefit-cost ratio: this level is one earthquake, not how often it happens; "
                 "give a hazard curve (--oq-hazard: an OpenQuake or USGS curve) for one.")
