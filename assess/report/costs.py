@@ -175,7 +175,7 @@ def lead_sentence(summary: pd.DataFrame, settings: Settings, has_curve: bool) ->
     'If this earthquake happens, the 3 freestanding units with a value are expected to lose USD 200 (USD 100 after the
     recommended actions, which cost USD 40 where a cost is given). No benefit-cost ratio: this level is one
     earthquake, not how often it happens; give a hazard curve (--oq-hazard: an OpenQuake or USGS curve) for one.'
-    >>> lead_sentence(table.assign(mitigation_cost=float("nan")), Settings(currency="USD"), False)[:196]
+    >>> lead_sentence(table.assign(mitigation_cost=float("nan")), Settings(currency="USD"), False)[:201]
     'If this earthquake happens, the 3 freestanding units with a value are expected to lose USD 200 (USD 100 after the recommended actions, whose costs the workbook does not give: the column mitigation_cost'
     """
     currency = settings.currency
