@@ -319,10 +319,14 @@ def work_orders(summary: pd.DataFrame, numbering: str = "ground_0") -> pd.DataFr
     connections of their gas or fluid lines (empty without), ``force_kn`` the largest design force F_p per unit among them (the
     force the anchor, tether, strap, chain or restraint resists; ``anchor_force_kn``), ``total_cost`` Σ
     ``mitigation_cost`` × ``quantity`` (empty where an item has no cost) and ``unit_cost`` that over
-    ``count``. Items that need no action and anchored items are left out (and a row without a known action
-    kind). Ordered by floor, room, then :data:`ACTION_KINDS`."""
+    ``count``. Items that need no action and anchored items are left out unless their gas or fluid lines need
+    flexible connections (their order's ``action`` is then ``none`` or ``anchored``: the connections are the
+    work), and so is a row without a known action kind. Ordered by floor, room, then :data:`ACTION_KINDS`."""
     kinds = summary["action_kind"] if "action_kind" in summary else pd.Series("", index=summary.index)
-    acts = summary[kinds.isin([k for k in ACTION_KINDS if k not in ("none", "anchored")])]
+    lines = (summary["connection_detail"] if "connection_detail" in summary
+             else pd.Series("", index=summary.index)).map(lambda value: bool(value) if isinstance(value, str) else False)
+    acts = summary[kinds.isin([k for k in ACTION_KINDS if k not in ("none", "anchored")])
+                   | (kinds.isin(["none", "anchored"]) & lines)]  # their lines' flexible connections, at least
     if not len(acts):
         return pd.DataFrame(columns=WORK_ORDER_COLUMNS)
     def column(name, default):

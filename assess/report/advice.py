@@ -34,6 +34,8 @@ WORK_ORDER_TEXT = {
     "lock_casters": "lock or chock the casters and keep room clear (each item's in its details)",
     "room": "give room (each item's in its details)",
     "relocate": "relocate",
+    "none": "no restraint needed, only the lines",  # an order for the flexible connections alone
+    "anchored": "already anchored, only the lines",
 }
 #: What an anchored item's words say (it is not analysed as freestanding).
 ANCHORED_WORDS = {"action": "None: anchored (not analysed as freestanding)",

@@ -206,6 +206,25 @@ def test_a_work_order_gives_the_crew_names_detail_force_and_cost():
     assert "cost USD 300 per unit, USD 900 in all" in chained
 
 
+def test_lines_that_need_flexible_connections_get_a_work_order_even_where_the_item_needs_no_restraint():
+    """A CO2 incubator that needs no restraint and an anchored analyser, both with lines, each get an order for
+    the connections alone (action none or anchored); an item with neither an action nor lines gets none."""
+    summary = pd.DataFrame({
+        "id": ["INC", "MS", "FR", "SH"], "name": ["incubator", "analyser", "freezer", "shelving"],
+        "floor": [1, 1, 1, 1], "room": ["lab"] * 4, "quantity": [2, 1, 1, 1],
+        "action_kind": ["none", "anchored", "none", "anchor"],
+        "connection_detail": ["gas: a flexible connector", "fluid: braided hoses", "", ""],
+        "connection_reference": ["FEMA E-74 (2012) §6.4"] * 2 + ["", ""]})
+    orders = actions.work_orders(summary)
+    assert orders[["action", "items", "count", "connection_detail"]].values.tolist() == [
+        ["anchor", "SH", 1, ""], ["none", "INC", 2, "gas: a flexible connector"],
+        ["anchored", "MS", 1, "fluid: braided hoses"]]
+    sentences = advice.work_order_sentences(orders)[0]["rooms"][0]["orders"]
+    assert sentences[1] == ("no restraint needed, only the lines: INC (2 units: incubator); flexible connections"
+                            " — gas: a flexible connector (FEMA E-74 (2012) §6.4)")
+    assert sentences[2].startswith("already anchored, only the lines: MS (1 unit: analyser)")
+
+
 def test_the_sample_workbooks_mark_their_mobile_items():
     folder = Path(__file__).resolve().parents[2] / "inventories"
     hospital = read_workbook(folder / "hospital.xlsx").equipment.set_index("id")["casters"]
