@@ -82,8 +82,8 @@ def test_a_portfolio_on_the_cluster_writes_what_one_machine_writes(cluster, tmp_
             assert all(after[w] > before[w] for w in after)  # both workers assessed buildings
         first = _files(out)
         shutil.copytree(edits, site, dirs_exist_ok=True)  # every building edited: all assessed again
-        assert cli.main(["batch", str(site / "portfolio.xlsx"), "--out", str(out), "--format", "xlsx,pdf", "--quiet",
-                         *extra]) == 0
+        assert cli.main(["batch", str(site / "portfolio.xlsx"), "--out", str(out), "--format", "xlsx", "--quiet",
+                         *extra]) == 0  # the update's tables (the first run compared the PDFs)
         outs[where] = first, _files(out)
     for run in (0, 1):
         here, there = outs["here"][run], outs["cluster"][run]
