@@ -29,7 +29,7 @@ WORK_ORDER_TEXT = {
     "tether": "tether or strap to the wall (on casters)",
     "strap": "strap to the wall (top and bottom thirds)",
     "chain": "chain each cylinder to the wall or a fastened rack",
-    "lower_contents": "move heavy contents to the lowest shelves",
+    "lower_contents": "move heavy contents to the lowest shelves or drawers",
     "restrain": "restrain (edge stops, bumpers or straps)",
     "lock_casters": "lock or chock the casters and keep room clear (each item's in its details)",
     "room": "give room (each item's in its details)",
@@ -130,7 +130,7 @@ def action_sentence(kind: str, row, uplift: bool, lowered: LoweredDemand | None,
     if kind == "tether":
         return f"Tether or strap it to the wall (it stands on casters): {_why(row, mode, system, settings)}"
     if kind == "lower_contents":
-        return (f"Move its heavy contents to the lowest shelves: as loaded {_why_overturn_or_rock(row)}; with its "
+        return (f"Move its heavy contents to the lowest shelves or drawers: as loaded {_why_overturn_or_rock(row)}; with its "
                 f"centre of mass at {float(lowered.cg_fraction):.0%} of its height the engine finds it still "
                 "under the same motions")
     if kind == "lock_casters":

@@ -103,7 +103,7 @@ def building_context(result) -> dict | None:
                   f"{_storeys_text(sorted(beyond))}) under up to {worst} of the {motions} motions: the floor motions "
                   "under those, and the items' results under them, are outside what it stands for.")
     return {"lead": lead, "rows": rows, "warning": warning, "notice": notice, "collapse": COLLAPSE_NOT_ASSESSED,
-            "limit": _percent(limit) if not math.isnan(limit) else ""}
+            "limit": _percent(limit).replace(" ", "\u00a0") if not math.isnan(limit) else ""}  # "4 %" on one line
 
 
 __all__ = ["COLLAPSE_NOT_ASSESSED", "building_context"]

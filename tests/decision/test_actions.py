@@ -113,7 +113,7 @@ def test_lowering_the_contents_is_the_action_only_where_the_engine_finds_the_ite
     decided = _decided(Item(), row, True, still, SETTINGS)
     assert decided["action_kind"] == "lower_contents"
     assert (decided["p_overturn_after"], decided["p_beyond_clearance_after"]) == (0.0, 0.0)
-    assert decided["action"].startswith("Move its heavy contents to the lowest shelves: as loaded it overturns under 40% of its 30")
+    assert decided["action"].startswith("Move its heavy contents to the lowest shelves or drawers: as loaded it overturns under 40% of its 30")
     assert "centre of mass at 40% of its height, 80 cm instead of 100 cm" in decided["what_if"]
     rocking = dataclasses.replace(still, p_overturn=0.1, uplift=True)
     decided = _decided(Item(), row, True, rocking, SETTINGS)
