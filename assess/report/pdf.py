@@ -5,12 +5,13 @@ The risk report ends in an appendix (the item-by-item blocks, between the
 whose pages are numbered A-1, A-2 … as engineering reports number theirs.
 The body and the appendix are laid out as two documents, each with its own
 page numbers: the body in a second process, started while the report's
-figures are drawn, and the appendix in this one, where the machine has a second
-core (:func:`report_pdf`), the one after the other where it has not. The two PDFs are then joined (:func:`merge`):
-the pages keep their labels (1, 2 … then A-1, A-2 …, as a PDF viewer shows
-them), the body's links to an item's block in the appendix are made to point
-there, and the bookmarks of both follow one another. The bytes depend on the
-HTML only, not on whether a second process drew the appendix.
+figures are drawn, and the appendix in this one, where the machine has a
+second core (:func:`report_pdf`), the one after the other where it has not.
+The two PDFs are then joined (:func:`merge`): the pages keep their labels
+(1, 2 … then A-1, A-2 …, as a PDF viewer shows them), the body's links to an
+item's block in the appendix are made to point there, and the bookmarks of
+both follow one another. The bytes depend on the HTML only, not on whether a
+second process drew the body.
 
 This module imports neither pandas nor matplotlib, so that the second process
 starts quickly (it imports this module, WeasyPrint and pypdf).
