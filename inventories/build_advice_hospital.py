@@ -15,10 +15,10 @@ is invented but typical; do not use it for a real building. Deterministic (same 
 """
 from __future__ import annotations
 
-import os
 from pathlib import Path
 
 from build_hospital import site_and_building_workbook
+from build_lab import write_replacing
 from build_pharmacy import item  # an item in inches and pounds
 from build_seattle_hospital import BUILDING, SITE
 
@@ -83,7 +83,5 @@ def build() -> bytes:
 
 
 if __name__ == "__main__":
-    tmp = OUT.with_suffix(".xlsx.tmp")
-    tmp.write_bytes(build())
-    os.replace(tmp, OUT)
+    write_replacing(OUT, build())
     print(f"wrote {OUT} ({len(EQUIPMENT)} items)")

@@ -20,12 +20,11 @@ curve and the spectra agree.
 """
 from __future__ import annotations
 
-import os
 from pathlib import Path
 
 from openpyxl import Workbook
 
-from build_lab import deterministic_bytes, write_sheet
+from build_lab import deterministic_bytes, write_replacing, write_sheet
 from build_pharmacy import item  # an item in inches and pounds, as the pharmacy writes them
 
 OUT = Path(__file__).resolve().parent / "hospital.xlsx"
@@ -160,8 +159,6 @@ def build() -> bytes:
 
 
 if __name__ == "__main__":
-    tmp = OUT.with_suffix(".xlsx.tmp")
-    tmp.write_bytes(build())
-    os.replace(tmp, OUT)
+    write_replacing(OUT, build())
     UHS.write_text(uhs_text())
     print(f"wrote {OUT} ({len(EQUIPMENT)} items)")

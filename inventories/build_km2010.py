@@ -23,12 +23,11 @@ paper and do not enter the results (direction 1, mass-free rigid block).
 from __future__ import annotations
 
 import csv
-import os
 from pathlib import Path
 
 from openpyxl import Workbook
 
-from build_lab import deterministic_bytes, write_sheet
+from build_lab import deterministic_bytes, write_replacing, write_sheet
 
 HERE = Path(__file__).resolve().parent
 TABLE3 = HERE.parent / "assess" / "data" / "km2010_table3.csv"
@@ -94,8 +93,5 @@ if __name__ == "__main__":
     rows = table3_rows()
     for filename, content in (("km2010-prototypes.xlsx", workbook_bytes(rows)),
                               ("km2010-measured.xlsx", measured_bytes(rows))):
-        target = HERE / filename
-        tmp = target.with_suffix(".xlsx.tmp")
-        tmp.write_bytes(content)
-        os.replace(tmp, target)
-        print(f"wrote {target}")
+        write_replacing(HERE / filename, content)
+        print(f"wrote {HERE / filename}")

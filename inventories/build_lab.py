@@ -301,6 +301,14 @@ def deterministic_bytes(wb: Workbook, creator: str) -> bytes:
     return spreadsheet.deterministic_bytes(wb, creator, FIXED_DATE)
 
 
+def write_replacing(path: Path, content: bytes) -> None:
+    """Write ``content`` to ``path`` through a temporary file renamed over it: no half-written workbook if
+    anything fails."""
+    tmp = path.with_suffix(path.suffix + ".tmp")
+    tmp.write_bytes(content)
+    os.replace(tmp, path)
+
+
 def build() -> bytes:
     wb = Workbook()
     write_sheet(wb.active, list(EQUIPMENT[0]), EQUIPMENT)
@@ -315,7 +323,5 @@ def build() -> bytes:
 if __name__ == "__main__":
     ids = [row["id"] for row in EQUIPMENT]
     assert len(ids) == len(set(ids)), "duplicate equipment id"
-    tmp = OUT.with_suffix(".xlsx.tmp")
-    tmp.write_bytes(build())
-    os.replace(tmp, OUT)  # no half-written workbook if anything fails
+    write_replacing(OUT, build())
     print(f"wrote {OUT} ({len(EQUIPMENT)} items)")

@@ -13,12 +13,11 @@ building. Deterministic (same bytes each run), like build_lab.py.
 """
 from __future__ import annotations
 
-import os
 from pathlib import Path
 
 from openpyxl import Workbook
 
-from build_lab import deterministic_bytes, write_sheet
+from build_lab import deterministic_bytes, write_replacing, write_sheet
 
 OUT = Path(__file__).resolve().parent / "pharmacy.xlsx"
 
@@ -98,7 +97,5 @@ def build() -> bytes:
 
 
 if __name__ == "__main__":
-    tmp = OUT.with_suffix(".xlsx.tmp")
-    tmp.write_bytes(build())
-    os.replace(tmp, OUT)
+    write_replacing(OUT, build())
     print(f"wrote {OUT} ({len(EQUIPMENT)} items)")

@@ -13,10 +13,10 @@ real building. Deterministic (same bytes each run), like build_lab.py.
 """
 from __future__ import annotations
 
-import os
 from pathlib import Path
 
 from build_hospital import site_and_building_workbook
+from build_lab import write_replacing
 from build_pharmacy import item  # an item in inches and pounds
 
 OUT = Path(__file__).resolve().parent / "seattle-hospital.xlsx"
@@ -82,7 +82,5 @@ def build() -> bytes:
 
 
 if __name__ == "__main__":
-    tmp = OUT.with_suffix(".xlsx.tmp")
-    tmp.write_bytes(build())
-    os.replace(tmp, OUT)
+    write_replacing(OUT, build())
     print(f"wrote {OUT} ({len(EQUIPMENT)} items)")
