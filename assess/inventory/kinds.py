@@ -68,11 +68,16 @@ def _listed(text: str) -> tuple[str, ...]:
     return tuple(_key(part) for part in str(text).split(";") if part.strip())
 
 
+def _text_table(name: str) -> pd.DataFrame:
+    """A CSV of the package data (``#`` lines are its notes), every cell as text ("" where empty)."""
+    with resources.files("assess.data").joinpath(name).open("r", encoding="utf-8") as handle:
+        return pd.read_csv(handle, comment="#", dtype=str, keep_default_na=False)
+
+
 @lru_cache(maxsize=1)
 def code_rules() -> tuple[tuple[tuple[str, ...], CodeRule], ...]:
     """The table as (matched component types, :class:`CodeRule`) pairs, in its order."""
-    with resources.files("assess.data").joinpath(TABLE).open("r", encoding="utf-8") as handle:
-        table = pd.read_csv(handle, comment="#", dtype=str, keep_default_na=False)
+    table = _text_table(TABLE)
     rules = []
     for row in table.itertuples(index=False):
         height = float(row.min_height_cm) if row.min_height_cm.strip() else math.nan
@@ -121,8 +126,7 @@ def kind_rule(written) -> CodeRule | None:
 @lru_cache(maxsize=1)
 def connection_rules() -> dict[str, ConnectionRule]:
     """``assess/data/connections.csv`` by connection (``gas``, ``fluid``), in its order."""
-    with resources.files("assess.data").joinpath(CONNECTIONS_TABLE).open("r", encoding="utf-8") as handle:
-        table = pd.read_csv(handle, comment="#", dtype=str, keep_default_na=False)
+    table = _text_table(CONNECTIONS_TABLE)
     return {row.connection: ConnectionRule(row.connection, row.meaning, row.detail, row.reference)
             for row in table.itertuples(index=False)}
 
@@ -158,7 +162,7 @@ def equipment_kind(written) -> str:
     """
     if written is None or (isinstance(written, float) and written != written):
         return ""
-    return " ".join(str(written).strip().lower().replace("_", " ").replace("-", " ").split())
+    return _key(written)
 
 
 def default_contents(contents, component_type, kind_contents: str = "") -> str:
