@@ -33,6 +33,7 @@ sys.path[:0] = [str(REPO / "tests")]
 from assess.building import yielding as yielding_module  # noqa: E402
 from peers.opensees_buildings import BUILDINGS, FLOOR_MASS_KG, elf_pattern  # noqa: E402
 from peers.opensees_shear import GRAVITY_M_S2, load_opensees  # noqa: E402
+from peers.opensees_yielding import floor_histories  # noqa: E402
 from peers.yielding_equipment import LEVELS, _key, assess, compare, ground_suite, workbook  # noqa: E402
 
 WALL = BUILDINGS["wall6"]
@@ -89,30 +90,10 @@ class FlexuralWall:
         omega = np.sqrt(np.array(ops.eigen("-fullGenLapack", 2)))
         ops.rayleigh(float(0.05 * 2 * omega[0] * omega[1] / (omega[0] + omega[1])), 0.0, 0.0,
                      float(0.05 * 2 / (omega[0] + omega[1])))
-        ground = np.asarray(accel_g, dtype=float)
-        ops.timeSeries("Path", 1, "-dt", float(dt_s), "-values", *(ground * GRAVITY_M_S2).tolist())
-        ops.pattern("UniformExcitation", 1, 1, "-accel", 1)
-        ops.constraints("Transformation")
-        ops.numberer("Plain")
-        ops.system("FullGeneral")
-        ops.test("NormDispIncr", 1e-10, 50)
-        ops.algorithm("Newton")
-        ops.integrator("Newmark", 0.5, 0.25)
-        ops.analysis("Transient")
+        rotation = [0.0]  # the hinge's, after every sample
         substeps = max(1, int(np.ceil(dt_s / 0.001 - 1e-9)))
-        accel, drift, rotation = np.zeros((n + 1, ground.size)), np.zeros((n, ground.size)), np.zeros(ground.size)
-        accel[0] = ground
-        for k in range(1, ground.size):
-            if ops.analyze(substeps, dt_s / substeps) != 0:
-                raise RuntimeError(f"OpenSees failed at step {k}")
-            below = 0.0
-            for i in range(1, n + 1):
-                accel[i, k] = ops.nodeAccel(i, 1) / GRAVITY_M_S2 + ground[k]
-                u = ops.nodeDisp(i, 1)
-                drift[i - 1, k] = u - below
-                below = u
-            rotation[k] = ops.nodeDisp(100, 3)
-        ops.wipe()
+        accel, drift = floor_histories(ops, n, accel_g, dt_s, substeps, 1e-10, True,
+                                       each_sample=lambda ops: rotation.append(ops.nodeDisp(100, 3)))
         ductility = np.full(n, np.nan)
         ductility[0] = np.abs(rotation).max() / yield_rotation
         return yielding_module.StickHistory(accel, np.abs(drift).max(axis=1) / h, ductility, False)

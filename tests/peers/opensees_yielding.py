@@ -56,9 +56,10 @@ def storey_spring(ops, i, mass_kg, k0, fy, hardening, bilinear, pinch=(0.0, 0.0,
     ops.element("zeroLength", i, 1000 + i if column else i - 1, i, "-mat", i, "-dir", 1, "-doRayleigh", 1)
 
 
-def floor_histories(ops, storeys, ground_accel_g, dt_s, substeps, tolerance_m, column, name=""):
+def floor_histories(ops, storeys, ground_accel_g, dt_s, substeps, tolerance_m, column, name="", each_sample=None):
     """Newmark average acceleration with Newton iterations under the ground motion, ``substeps`` a sample;
-    (absolute floor accelerations [g] (n + 1, samples), storey drifts [m] (n, samples)). Wipes the model."""
+    (absolute floor accelerations [g] (n + 1, samples), storey drifts [m] (n, samples)). ``each_sample(ops)``,
+    where given, is called after every sample (to read more of the model). Wipes the model."""
     ground = np.asarray(ground_accel_g, dtype=float)
     ops.timeSeries("Path", 1, "-dt", float(dt_s), "-values", *(ground * GRAVITY_M_S2).tolist())
     ops.pattern("UniformExcitation", 1, 1, "-accel", 1)
@@ -82,6 +83,8 @@ def floor_histories(ops, storeys, ground_accel_g, dt_s, substeps, tolerance_m, c
             u = ops.nodeDisp(k, 1)
             drift[k - 1, i] = u - below
             below = u
+        if each_sample is not None:
+            each_sample(ops)
     ops.wipe()
     return accel, drift
 
