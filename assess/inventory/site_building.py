@@ -402,7 +402,7 @@ def read_building(table, report) -> BuildingSheet | None:
                   "overstrength, not both.")
     stiffness = None
     if "storey_stiffness" in out and "storeys" in out:
-        stiffness, problem = storey_stiffness_of(out["storey_stiffness"], int(out["storeys"]))
+        stiffness, problem = parse_storey_stiffness(out["storey_stiffness"], int(out["storeys"]))
         if problem is not None:
             report.at(values["storey_stiffness"][1], value_header, *problem)
     if len(report.problems) > before:
@@ -422,18 +422,18 @@ def read_building(table, report) -> BuildingSheet | None:
                          rows={name: row for name, (_, row) in values.items()}, sheet=table.title)
 
 
-def storey_stiffness_of(text, storeys: int):
+def parse_storey_stiffness(text, storeys: int):
     """``(stiffnesses, None)`` from the building sheet's ``storey_stiffness``, or ``(None, (message, fix))``.
 
     The value is ``uniform`` or one positive number per storey, the first storey to the roof, separated by
     commas or semicolons: the storeys' stiffnesses in any unit (a model's storey stiffness table), only
     their ratios count (the building's T_1 sets the scale).
 
-    >>> storey_stiffness_of("1, 0.9; 0.78", 3)
+    >>> parse_storey_stiffness("1, 0.9; 0.78", 3)
     ((1.0, 0.9, 0.78), None)
-    >>> storey_stiffness_of("uniform", 2)
+    >>> parse_storey_stiffness("uniform", 2)
     ((1.0, 1.0), None)
-    >>> storey_stiffness_of("1, 0.9", 3)[1][0]
+    >>> parse_storey_stiffness("1, 0.9", 3)[1][0]
     'storey_stiffness gives 2 values for 3 storeys.'
     """
     how = (f"write {storeys} positive number{'s' if storeys > 1 else ''}, the storeys' stiffnesses from the "
