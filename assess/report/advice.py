@@ -191,13 +191,35 @@ ANALYSIS_WORDS = {"anchor": "anchor it", "tether": "tether it", "lower_contents"
                   "room": "give it room", "none": "no action", "relocate": "relocate it"}
 
 
+#: What closes the head of a code-prescribed action's sentence, before its detail (:func:`brief_action`).
+CODE_REQUIRED = ": required whatever the analysis says)"
+
+
+def brief_action(action: str, type_source: str = "") -> str:
+    """An item's action for the tables that list many items (what to do first, all items): a code-prescribed
+    action's head, the detail and its reference left to the work orders and Appendix A (they fill a narrow
+    column many lines deep), its kind read from the name said; any other action whole.
+
+    >>> brief_action("Chain it (gas cylinders: required whatever the analysis says): each cylinder chained. "
+    ...              "Reference: NFPA 99 (2021) ch. 11. Its kind (gas cylinders) was read ...", "name")
+    'Chain it (gas cylinders: required whatever the analysis says): the detail and its reference are in the work orders and Appendix A; its kind was read from its name: confirm it.'
+    >>> brief_action("Give it room: it needs 18 cm.")
+    'Give it room: it needs 18 cm.'
+    """
+    head, required, _ = action.partition(CODE_REQUIRED)
+    if not required:
+        return action
+    read = "; its kind was read from its name: confirm it" if type_source == "name" else ""
+    return f"{head}{required}: the detail and its reference are in the work orders and Appendix A{read}."
+
+
 def code_sentences(action, row, settings: Settings) -> tuple[str, str]:
     """The action and what-if of an item whose action a code prescribes (``action.code``:
     :class:`~assess.decision.code_governed.CodeRule`): the detail with its reference, and what the analysis
     alone finds and would do (its own numbers are the item's as ever)."""
     code = action.code
-    action_text = (f"{CODE_VERBS.get(action.kind.value, action.kind.value.capitalize())} ({code.equipment}: required "
-                   f"whatever the analysis says): {code.detail}. Reference: {code.reference}")
+    action_text = (f"{CODE_VERBS.get(action.kind.value, action.kind.value.capitalize())} ({code.equipment}"
+                   f"{CODE_REQUIRED}: {code.detail}. Reference: {code.reference}")
     analysis = ANALYSIS_WORDS.get(action.analysis_kind.value, action.analysis_kind.value)
     if action.analysis_kind.value == "none":
         alone = "the analysis alone asks for no action (it is low risk in this earthquake)"

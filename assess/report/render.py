@@ -24,7 +24,7 @@ from markupsafe import Markup
 
 import assess
 from assess.anchorage.method import anchorage_method
-from assess.report.advice import anchorage_sentence, with_words, work_order_sentences
+from assess.report.advice import anchorage_sentence, brief_action, with_words, work_order_sentences
 from assess.report.anchorage_table import anchorage_context
 from assess.decision.risk_classes import rule_text
 from assess.quantity_text import floor_numbering_of, length_unit, length_value, system_of
@@ -165,6 +165,7 @@ def _item_row(row: pd.Series, system: str = "si", numbering: str = "ground_0") -
         "after": after_text(row),
         "priority": integer_text(row.get("priority")),
         "action": text(row.get("action")) or DASH,
+        "action_brief": brief_action(text(row.get("action")), text(row.get("type_source"))) or DASH,
         "source": list_text(row.get("demand_source"), " + ") or DASH,
         "source_note": text(row.get("demand_note")),
         "demand_median": format_length(row.get("demand_median_cm"), system),

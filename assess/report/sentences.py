@@ -131,7 +131,7 @@ def what_happens(row: pd.Series) -> str:
 #: Page 1's groups of actions, in the order a manager takes them.
 ACTION_GROUPS = (
     ("code", "Restrain as the codes require", "a code or FEMA E-74 prescribes their restraint whatever the analysis "
-     "says: each item's detail and reference are beside it"),
+     "says: each item's detail and reference are in the work orders and Appendix A"),
     ("anchor", "Anchor", "they overturn or rock in this earthquake; moving them away from walls does not help"),
     ("tether", "Tether or strap", "they stand on casters and overturn, rock, or roll farther than a room can "
      "spare in this earthquake"),

@@ -187,3 +187,20 @@ def test_a_bare_cart_type_is_no_code_rule():
     a linen or supply cart is left to the analysis (tether or lock its casters); `crash cart` selects it."""
     assert code_rule(_item("medical equipment", "cart", 1.1, casters=True)) is None
     assert code_rule(_item("medical equipment", "crash cart", 1.1, casters=True)).equipment == "medical cart"
+
+
+def test_the_tables_of_many_items_give_a_code_action_s_head_and_send_its_detail_to_the_work_orders():
+    """A code-prescribed action's detail and reference filled the narrow 'What to do' column of the tables that
+    list many items 40 lines deep (the lab's report grew from 56 to 62 pages): those tables give the
+    sentence's head, the rest of the sentence stands whole in summary.csv, the work orders and Appendix A."""
+    heater = item_type({"name": "Gas water heater, 100 gal", "component_type": "", "contents": ""}, {})
+    item = SimpleNamespace(**heater, height_m=72 * 0.0254, casters=False, name="Gas water heater, 100 gal")
+    decided = actions.decide_action(item, _row(p_beyond=0.8, risk="high"), False, None, SETTINGS)
+    action, _ = advice.code_sentences(decided, _row(p_beyond=0.8, risk="high"), SETTINGS)
+    brief = advice.brief_action(action, "name")
+    head = action.split(advice.CODE_REQUIRED)[0] + advice.CODE_REQUIRED
+    assert brief.startswith(head) and head.startswith("Strap it (water heater")
+    assert decided.code.detail in action and decided.code.detail not in brief
+    assert decided.code.reference not in brief and "in the work orders and Appendix A" in brief
+    assert brief.endswith("its kind was read from its name: confirm it.")
+    assert advice.brief_action("Give it room: it needs 18 cm.", "name") == "Give it room: it needs 18 cm."
