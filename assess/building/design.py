@@ -43,9 +43,9 @@ commentary §C12.1.1 [7]_). This Ω lies between the two.
 2015) were searched for their archetypes' Ω; only what could be read counts here:
 
 * FEMA P-695 §9.3.6 and §9.2.7 (read on 1library.net's copy of its chapter 9) define
-  Ω as above and place the archetypes' values in Tables 9-3, 9-8 (reinforced-concrete
-  special moment frames) and 9-13 (ordinary frames); the tables themselves were not in
-  what could be read, nor any of NIST GCR 10-917-8's.
+  Ω as above, put the reinforced-concrete ordinary frames' Ω in Table 9-13 and the
+  special frames' collapse results in Tables 9-3 and 9-8; the tables themselves were
+  not in what could be read, nor any of NIST GCR 10-917-8's.
 * Elkady & Lignos (2015) [8]_ (abstract): steel perimeter special moment frame
   archetypes modelled with their gravity framing and composite slab reach a static
   overstrength Ω_s above 3.0, and a base shear strength up to 50 % above the bare
@@ -84,8 +84,10 @@ References
    12.8-2 to 12.8-6); §12.8.2 (Table 12.8-1); §12.8.3 (Eqs. 12.8-11, 12.8-12); §12.12.1 (storey drift limit).
 .. [2] FEMA P-750 (2009). NEHRP Recommended Seismic Provisions, Part 2
    (Commentary), §C12.1.1 on the meaning of R and Ω_0.
-.. [3] FEMA P-695 (2009). Quantification of Building Seismic Performance Factors. §6.3 (pushover,
-   Ω = V_max/V, effective yield drift), §9.2.7 and §9.3.6 (the archetypes' pushovers).
+.. [3] FEMA P-695 (2009). Quantification of Building Seismic Performance Factors. §9.3.6 and
+   §9.2.7 (the archetypes' pushovers, read at 1library.net/article/nonlinear-structural-analysis-
+   static-pushover-analysis.zx80j7vq and .../performance-evaluation-example-application-reinforced-
+   concrete-special-moment.zx80j7vq); §6.3's Eq. 6-7 as quoted by a public implementation.
 .. [4] NIST GCR 10-917-8 (2010). Evaluation of the FEMA P-695 Methodology for
    Quantification of Building Seismic Performance Factors.
 .. [5] Miranda, E. and Reyes, C. J. (2002). Approximate lateral drift demands in multistory
@@ -95,10 +97,11 @@ References
    Buildings. Wiley. Ch. 5 (cantilever walls).
 .. [7] ASCE/SEI 7-16 (2017), Commentary §C12.1.1 (the pushover's first significant yield and its
    peak, the system overstrength), as paraphrased in ideCAD's ASCE 7-16 help pages
-   (idecad.atlassian.net, "R, Cd and Ω0"); the commentary itself was not read.
+   (idecad.atlassian.net/wiki/pages/diffpages.action?originalId=2223440171&pageId=2328232068);
+   the commentary itself was not read.
 .. [8] Elkady, A. and Lignos, D. G. (2015). Effect of gravity framing on the overstrength and collapse
    capacity of steel frame buildings with perimeter special moment frames. Earthquake Eng. Struct.
-   Dyn. 44(8):1289-1307. doi:10.1002/eqe.2519 (its abstract).
+   Dyn. 44(8):1289-1307. doi:10.1002/eqe.2519 (its abstract, read at paperexplained.cn).
 """
 from __future__ import annotations
 
