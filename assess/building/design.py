@@ -135,9 +135,10 @@ LAW_BY_SYSTEM = {
 }
 #: Seismic importance factor I_e by risk category (ASCE 7-22 Table 1.5-2).
 IMPORTANCE_BY_RISK_CATEGORY = {"I": 1.0, "II": 1.0, "III": 1.25, "IV": 1.5}
-#: Assumed ratio of the first storey's yield to its design shear, every system alike: a judgement within
-#: what the literature read gives (first yield 1.3-2 x design, bare steel frames' pushover peak from
-#: about 2; the module's text), not a value per system, none of which could be read.
+#: Assumed ratio of the base shear at first-storey yield to the design base shear, every system
+#: alike: a judgement within what the literature read gives (first yield 1.3-2 x design, bare steel
+#: frames' pushover peak from about 2; the module's text), not a value per system, none of which
+#: could be read.
 DEFAULT_OVERSTRENGTH = 2.0
 #: C_u of ASCE 7-22 Table 12.8-1 against S_D1 [g] (interpolated, constant beyond the ends).
 UPPER_LIMIT_TABLE = ((0.1, 1.7), (0.15, 1.6), (0.2, 1.5), (0.3, 1.4), (0.4, 1.4))
