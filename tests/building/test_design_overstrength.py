@@ -1,0 +1,66 @@
+"""The design-data route's overstrength (assess/building/design.py; docs/workbook.md, sheet ``building``).
+
+What the module's text claims of its default Ω, checked against what it does not compute itself: the yield
+base shear against ASCE 7-22 §12.8's C_s worked by hand, the same Ω for every system (no value per system
+could be sourced); the hardening that separates this Ω (the corner of a hardening spring) from FEMA
+P-695's (the peak of its pushover), from the spring's own law against the bilinear closed form; and the
+users' pages stating the code's default.
+"""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from assess.building.design import DEFAULT_OVERSTRENGTH, SYSTEM_FACTORS, design_strength
+from assess.building.hysteresis import spring_forces
+from assess.building.nonlinear import DEFAULT_HARDENING
+from tests.project.test_docs import section, table_rows
+
+REPO = Path(__file__).resolve().parents[2]
+
+
+def test_the_default_is_two_times_the_design_base_shear_of_asce_7_22_worked_by_hand():
+    """5 storeys of 4 m, T_1 0.3 s, a shear wall (R 5) in Risk Category IV (I_e 1.5), S_DS 1.1 g, S_D1 0.6 g.
+
+    T_a = 0.02 (65.6 ft)^0.75 = 0.46 s, C_u T_a = 0.64 s > 0.3 s, so T = 0.3 s (§12.8.2);
+    C_s = min(1.1/(5/1.5), 0.6/(0.3 · 5/1.5)) = min(0.33, 0.6) = 0.33 (Eqs. 12.8-2, 12.8-3), above
+    0.044 · 1.1 · 1.5 = 0.0726 (Eq. 12.8-5); yield at 2 × 0.33 = 0.66 W.
+    """
+    strength = design_strength("shear wall", [1.0] * 5, [4.0, 8.0, 12.0, 16.0, 20.0], 0.3, sds_g=1.1,
+                               sd1_g=0.6, risk_category="IV")
+    assert strength.design_period_s == pytest.approx(0.3)
+    assert strength.seismic_response_coefficient == pytest.approx(0.33, rel=1e-12)
+    assert (strength.overstrength, strength.yield_base_shear_g) == (2.0, pytest.approx(0.66, rel=1e-12))
+    assert strength.source.endswith("times an assumed overstrength 2")
+
+
+@pytest.mark.parametrize("system", sorted(SYSTEM_FACTORS))
+def test_every_system_takes_the_same_default(system):
+    strength = design_strength(system, [1.0, 1.0], [3.0, 6.0], 0.2, sds_g=1.0, sd1_g=0.6)
+    assert strength.overstrength == DEFAULT_OVERSTRENGTH == 2.0
+    assert strength.yield_base_shear_g == pytest.approx(2.0 * strength.seismic_response_coefficient, rel=1e-12)
+
+
+@pytest.mark.parametrize("law", ["bilinear", "pinching"])
+def test_a_spring_pushed_to_ductility_seven_carries_1_18_times_its_yield(law):
+    """F = F_y (1 + b (μ - 1)) on the bilinear backbone, b = 0.03: 1.18 F_y at μ = 7 (the module's text)."""
+    stiffness, yield_force = 1000.0, 10.0
+    yield_drift = yield_force / stiffness
+    ductility = np.linspace(0.1, 7.0, 70)
+    forces = spring_forces(ductility * yield_drift, law, stiffness, yield_force, hardening=DEFAULT_HARDENING)
+    expected = np.where(ductility <= 1.0, ductility, 1.0 + 0.03 * (ductility - 1.0)) * yield_force
+    np.testing.assert_allclose(forces, expected, rtol=1e-9)
+    assert forces[-1] / yield_force == pytest.approx(1.18, rel=1e-9)
+
+
+def test_the_users_pages_state_the_code_s_default():
+    default = f"{DEFAULT_OVERSTRENGTH:g}"
+    rows = {row["key"].strip("`"): row for row in table_rows(section("workbook.md", "Sheet `building` (optional)"))
+            if "key" in row}
+    assert rows["overstrength"]["default"] == default
+    assert re.search(rf"\b{default}, for every system, is a judgement", rows["overstrength"]["meaning"])
+    assert f"an assumed overstrength of {default}," in " ".join((REPO / "README.md").read_text().split())
+    assert f"times an overstrength of {default}." in " ".join((REPO / "docs" / "guide.md").read_text().split())
