@@ -230,8 +230,21 @@ def quote(value: object) -> str:
     return f"'{clip(value)}'"
 
 
+#: Words a header may use for a column's name, by the name: ``weight_lb`` is ``mass_lb`` (a pound of mass
+#: is what scales weigh in; the engine takes the mass).
+HEADER_WORDS = {"weight": "mass"}
+
+
 def suggest(name: str, choices: list[str]) -> str | None:
-    """The closest of ``choices`` to ``name`` (difflib), or None."""
+    """The closest of ``choices`` to ``name``: ``name`` with a word of :data:`HEADER_WORDS` replaced, where
+    that is one of them, else difflib's closest, or None.
+
+    >>> suggest("weight_lb", ["height_m", "mass_kg", "mass_lb"])
+    'mass_lb'
+    """
+    word, underscore, rest = name.partition("_")
+    if word in HEADER_WORDS and HEADER_WORDS[word] + underscore + rest in choices:
+        return HEADER_WORDS[word] + underscore + rest
     close = difflib.get_close_matches(name, choices, n=1, cutoff=0.6)
     return close[0] if close else None
 

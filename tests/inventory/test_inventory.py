@@ -184,6 +184,17 @@ def test_unknown_column_suggests_the_closest(make_workbook):
                     "unknown column 'clearence_cm'", "did you mean 'clearance_cm'?")
 
 
+def test_a_weight_column_is_taken_for_the_mass_it_means(make_workbook):
+    """``weight_lb``, as a facilities list heads it: one problem, pointing at ``mass_lb`` (difflib alone
+    offered ``height_m``), and no second one for the missing mass."""
+    sheets = good_sheets()
+    rename_column(sheets["equipment"], "mass_lb", "weight_lb")
+    problem = only_problem(make_workbook(sheets))
+    assert_mentions(problem, "sheet 'equipment'", "column 'weight_lb'", "unknown column 'weight_lb'",
+                    "did you mean 'mass_lb'?")
+    assert "rename it to 'mass_lb'" in problem.fix
+
+
 def test_header_without_unit_lists_the_suffixes(make_workbook):
     sheets = good_sheets()
     rename_column(sheets["equipment"], "height_in", "Height ")
