@@ -350,6 +350,7 @@ def design_strength(system, floor_weights, floor_heights_m, period_s, *, sds_g=N
     if sds_g is None or sd1_g is None:
         raise ValueError("the design strength needs S_DS and S_D1 (or give yield_base_shear_g)")
     importance = importance_factor(risk_category)
+    whose = "an assumed" if overstrength is None else "the given"
     overstrength = DEFAULT_OVERSTRENGTH if overstrength is None else float(overstrength)
     if not overstrength >= 1.0:
         raise ValueError("overstrength must be at least 1")
@@ -359,4 +360,4 @@ def design_strength(system, floor_weights, floor_heights_m, period_s, *, sds_g=N
     value = cs * overstrength
     return DesignStrength(value, value * ratios, cs, r_factor, omega0, importance, overstrength, design_period,
                           f"ASCE 7-22 §12.8 design ({row}: R {r_factor:g}; I_e {importance:g}; "
-                          f"C_s {cs:.3g} at T {design_period:.3g} s) times an assumed overstrength {overstrength:g}")
+                          f"C_s {cs:.3g} at T {design_period:.3g} s) times {whose} overstrength {overstrength:g}")

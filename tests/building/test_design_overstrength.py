@@ -37,6 +37,14 @@ def test_the_default_is_two_times_the_design_base_shear_of_asce_7_22_worked_by_h
     assert strength.source.endswith("times an assumed overstrength 2")
 
 
+def test_an_overstrength_the_engineer_gives_is_not_called_assumed():
+    """The run's note (the strength's ``source``) says whose Ω it is: the default is assumed, the sheet's given."""
+    strength = design_strength("braced frame", [1.0] * 5, [4.0, 8.0, 12.0, 16.0, 20.0], 0.48, sds_g=0.74,
+                               sd1_g=0.4, risk_category="IV", overstrength=2.5)
+    assert strength.source.endswith("times the given overstrength 2.5")
+    assert "assumed" not in strength.source
+
+
 @pytest.mark.parametrize("system", sorted(SYSTEM_FACTORS))
 def test_every_system_takes_the_same_default(system):
     strength = design_strength(system, [1.0, 1.0], [3.0, 6.0], 0.2, sds_g=1.0, sd1_g=0.6)
