@@ -37,6 +37,7 @@ from matplotlib.patches import Patch  # noqa: E402
 from assess.data import km2010_table3  # noqa: E402
 from assess.fragility import median_edp, probability_of_exceedance  # noqa: E402
 from assess.quantity_text import length_unit, length_value  # noqa: E402
+from assess.report.sentences import slides_in_both  # noqa: E402
 
 #: Capacities c of the paper's Fig. 12.
 PAPER_CAPACITIES = (0.2, 0.4, 0.6, 0.8)
@@ -466,7 +467,7 @@ def simulation_vs_regression_figure(result, system: str = "si") -> str:
     scale = length_value(1.0, system)
     sim = pd.to_numeric(motions["sim_sliding_max_cm"], errors="coerce") * scale
     reg = pd.to_numeric(motions["sliding_median_cm"], errors="coerce") * scale
-    shown = (sim > 0) & (reg > 0)
+    shown = slides_in_both(motions)
     with matplotlib.rc_context(_RC):
         figure = _new_figure(3.4)
         axes = figure.subplots()

@@ -39,8 +39,8 @@ from assess.report.sentences import (
     DASH, action_groups, after_text, case_outcomes, changes, class_rule_paragraph, cm_interval_text, finite,
     flag_groups, floor_text, format_cm, format_length, format_percent, format_significant, given_by_parameters,
     hazard_limit_text, history_phrases, integer_text, interval_text, level_text, list_text, method_notes,
-    regression_items, regression_reason, risk_units, source_definitions, suite_text, text, total_units, what_happens,
-    worst_run_text,
+    regression_items, regression_reason, risk_units, slides_in_both, source_definitions, suite_text, text,
+    total_units, what_happens, worst_run_text,
 )
 from assess.report.title import title_block
 
@@ -529,7 +529,8 @@ def report_figures(result) -> dict:
                       for h in list(result.histories)[:HISTORY_FIGURES]],
         "fragility": figures.fragility_figure(sorted_result),
         "regression": figures.regression_figure(sorted_result),
-        "simulation": figures.simulation_vs_regression_figure(result, system) if result.simulated else None,
+        "simulation": (figures.simulation_vs_regression_figure(result, system)
+                       if result.simulated and slides_in_both(result.motions).any() else None),
     }
     return {
         "demand": [_data_uri(svg) for svg in drawn["demand"]],

@@ -322,6 +322,15 @@ def changes(comparison) -> dict | None:
                       "why": text(r["why"]) or DASH} for _, r in changed.head(MAX_CHANGE_ROWS).iterrows()]}
 
 
+def slides_in_both(motions: pd.DataFrame) -> pd.Series:
+    """Which cases (rows of ``result.motions``) slide in the simulation and in the paper's regression alike:
+    a simulated peak sliding and a regression median both above zero (the cases the report's figure of
+    one against the other shows, :func:`assess.report.figures.simulation_vs_regression_figure`)."""
+    simulated = pd.to_numeric(motions["sim_sliding_max_cm"], errors="coerce")
+    regression = pd.to_numeric(motions["sliding_median_cm"], errors="coerce")
+    return (simulated > 0) & (regression > 0)
+
+
 def case_outcomes(result: AssessmentResult) -> dict:
     """How the simulated cases ended, in classes that add up, and how many runs each solver answered.
 
@@ -329,6 +338,8 @@ def case_outcomes(result: AssessmentResult) -> dict:
     ``overturned`` if any run overturns, else ``uplift`` if any uplifts, else
     ``slid`` if it slides, else ``rest``; the four add up to ``cases``.
     Solvers are counted per run (a case of several histories may use several).
+    ``both``: the cases that slide in the simulation and in the regression (:func:`slides_in_both`), and
+    ``no_comparison``: the sentence the report gives instead of their figure where there is none.
     """
     motions = result.motions
     if not result.simulated or "sim_solver" not in motions:
@@ -345,7 +356,11 @@ def case_outcomes(result: AssessmentResult) -> dict:
     return {"cases": len(motions), "runs": int(sum(solvers.values())),
             "solvers": sorted(solvers.items(), key=lambda kv: -kv[1]),
             "overturned": int(overturned.sum()), "uplift": int(uplift.sum()), "slid": int(slid.sum()),
-            "rest": int(rest.sum())}
+            "rest": int(rest.sum()), "both": (both := int(slides_in_both(motions).sum())),
+            "no_comparison": "" if both else (
+                "No case slides both in the simulation and by the paper's regression (where the regression "
+                "does not apply to a case, it gives no sliding), so there is no figure of the one against the "
+                "other.")}
 
 
 # --------------------------------------------------------------------------- where the numbers come from

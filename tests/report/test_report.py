@@ -350,3 +350,28 @@ def test_pdf_fetches_nothing(monkeypatch):
     assert pdf.startswith(b"%PDF")
     assert set(fetcher.refused) == {"http://example.com/x.png", "file:///etc/passwd",
                                     "https://example.com/a.css"}
+
+
+def _history_of(item_id: str) -> dict:
+    """A simulated time history of one item, as ``result.histories`` holds them (Fig. 7 of the paper)."""
+    time_s = np.linspace(0.0, 12.0, 601)
+    return {"id": item_id, "name": "FORMA incubator", "mode": "slide", "overturned": False, "time_s": time_s,
+            "sliding_cm": 3 * np.sin(time_s), "theta_over_alpha": 0.1 * np.sin(2 * time_s),
+            "floor_accel_g": 0.5 * np.sin(5 * time_s), "clearance_cm": 20.0, "sim_motion": "synthetic 1/10",
+            "direction": 1, "motion": "Los Gatos PC", "solver": "sliding kernel"}
+
+
+@pytest.mark.parametrize("simulated_sliding_cm, figure_4, history_figure", [(0.0, False, 4), (50.0, True, 5)])
+def test_the_figure_of_simulation_against_regression_only_where_a_case_slides_in_both(
+        simulated_sliding_cm, figure_4, history_figure):
+    """Where no case slides both in the simulation and by the regression, a sentence stands where the empty
+    figure of one against the other was, and the time histories' figures are numbered on from Figure 3."""
+    import dataclasses
+
+    result = make_result(simulated=True)
+    result = dataclasses.replace(result, motions=result.motions.assign(sim_sliding_max_cm=simulated_sliding_cm),
+                                 histories=[_history_of("F-01")])
+    section = re.search(r'<section id="simulation">.*?</section>', render_html(result), re.S).group(0)
+    assert ("<b>Figure 4.</b> Regression and simulation side by side" in section) is figure_4
+    assert ("No case slides both in the simulation and by the paper&#39;s regression" in section) is not figure_4
+    assert f"<b>Figure {history_figure}.</b> F-01 FORMA incubator" in section
