@@ -1,5 +1,7 @@
 """The OpenSees truth buildings' pushover: the ``yield_base_shear_g`` the equipment checks give the tool.
 
+The flexural wall ``wallf6`` is checked apart (last test): a determinate cantilever on its base hinge.
+
 An engineer writes in the building sheet the base shear at first yield from a pushover of the whole lateral
 system. The harness (tests/peers/opensees_buildings.py) takes it from a static pushover of the OpenSees building
 itself under ASCE 7-22 §12.8.3's forces. Checked here against the closed form of the same building: below first
@@ -49,6 +51,8 @@ def test_the_pushover_base_shear_at_first_yield_is_the_spring_plus_the_column(na
 
 
 def test_the_wall_pushover_gives_its_first_storey_spring():
+    """``wall6``, a shear-building idealisation of a wall (storey springs, no bending): its first storey yields
+    first, at its spring's yield shear."""
     from peers.opensees_buildings import BUILDINGS, pushover_yield_base_shear_g
     truth = BUILDINGS["wall6"]
     assert pushover_yield_base_shear_g(truth) == pytest.approx(truth.yield_base_shear_g, rel=1e-6)
