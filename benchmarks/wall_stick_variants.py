@@ -74,6 +74,7 @@ def main(argv=None):
                                                          "stiffness' variant: it has no storey springs)")
     args = parser.parse_args(argv)
     truth = BUILDINGS[args.truth]
+    variants = [v for v in args.variants.split(",") if hasattr(truth, "stiffness_profile") or v != "truth's stiffness"]
     given = round(pushover_yield_base_shear_g(truth), 6)
     for level in args.levels.split(","):
         suite = ground_suite(11, truth.period_s, LEVELS[level])
@@ -82,7 +83,7 @@ def main(argv=None):
             with opensees_floors(truth, suite):
                 reference = assess(workbook(folder, truth, suite, level, [["response", "yielding"]]), level)
             truth_floors = reference[0].floors.set_index("floor")
-            for name in args.variants.split(","):
+            for name in variants:
                 yielding_module.yielding_stick = variant_stick(*VARIANTS[name])
                 yielding_module.forget()
                 try:
