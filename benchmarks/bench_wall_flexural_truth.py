@@ -1,25 +1,46 @@
-"""The tool's shear-wall stick against a FLEXURAL OpenSees wall: does the wall's excess sliding come from its truth?
+"""The tool's shear-wall stick against the FLEXURAL OpenSees wall ``wallf6``: how much the hinge's modelling moves it.
 
-Run: python benchmarks/bench_wall_flexural_truth.py [--levels DE,MCE_R] [--hinge 10]
-     (needs openseespy and pyslammer; about a minute a level)
+Run: python benchmarks/bench_wall_flexural_truth.py [--levels DE,MCE_R] [--n 5,10,20] [--hinge-damping]
+     [--hardening 0.02] [--histories]
+     (needs openseespy and pyslammer; about a minute a level and n)
 
-The project's truth wall (tests/peers/opensees_buildings.py ``wall6``) is a shear building of pinching storey
-springs, its storeys 42 % as stiff at the top as at the base, with T_2/T_1 0.38. A slender wall bends: here
-the same 6 storeys of 3.5 m, floor masses and T_1 0.5 s as an elastic Euler-Bernoulli cantilever
-(``elasticBeamColumn``, EI scaled to T_1) on a base hinge (``zeroLength`` rotational ``Hysteretic`` with wall6's
-pinching, b 0.02), capacity-designed to stay elastic above it (Paulay & Priestley 1992, ch. 5): T_2/T_1 0.15
-to 0.16. Its yield moment is 0.36 W times the ELF moment arm, so that its pushover base shear at yield is
-wall6's 0.36 W, and the tool is given that (``given``); also ``design x 2`` and ``elastic``. The hinge's
-elastic rotational stiffness ``--hinge`` × EI/H is not known from the literature used here, and it moves the
-answer: with 10, sliding gm 1.33 (σ ln 0.56) at DE and 1.25 (0.42) at MCE_R, the roof's PFA 1.01 and 0.94
-of the truth's; with 100 (a nearly rigid-plastic hinge), 0.99 (0.50) and 0.99 (0.40), the roof's PFA 0.93
-and 0.72. So this is an exploration, not a check: against a bending wall the tool's wall stick is within
-the issue's [0.8, 1.25] or just above it, depending on the hinge. The flexural wall's roof PFA/PGA at DE,
-2.2 to 2.9, brackets ASCE 7-22's H_f/R_μ (2.27); wall6's is 1.86. Same records, items and measures as benchmarks/bench_yielding_equipment.py.
+The truth is ``peers.opensees_buildings.WALLF6`` (its class text gives the sources): ``wall6``'s 6 storeys of
+3.5 m, floor masses, T_1 0.5 s and pushover base shear at yield 0.36 W, as an elastic Euler-Bernoulli
+cantilever on a pinching rotational hinge at its base, with Ibarra & Krawinkler's stiffness modification (the
+hinge n times the element's rotational stiffness 3EI_el/H, the element's EI × (n + 1)/n, the hinge's hardening
+b/(1 + n(1 − b))) and Zareian & Medina's damping (stiffness-proportional on the element only, × (n + 1)/n).
+n = 10 is the sources' value and ``wallf6``'s; ``--n`` sweeps it, the assembly's T_1 and yield base shear kept,
+so the reader sees how much that modelling choice moves the answer. ``--hinge-damping`` puts Rayleigh damping on
+the hinge's committed stiffness as well (what the sources advise against; the first exploration of this
+benchmark did it, with the hinge 10 and 100 EI_el/H, and found sliding gm 1.33 and 0.99 at DE);
+``--hardening`` sets the wall's post-yield stiffness ratio (0.02, ``wall6``'s, by default).
+
+Routes, items, records and measures as benchmarks/bench_yielding_equipment.py (``given``: ``yield_base_shear_g``
+0.36, the truth's pushover; ``design x 2``; ``elastic``), with the wall's rotation ductility 1 + θ_p/θ_y
+(θ_p the hinge's plastic rotation, θ_y = M_y H/(3EI); median over the motions) and each floor's PFA/PGA of
+the truth.
+
+Measured (sliding gm tool/truth with ``given``, σ ln in brackets; DE / MCE_R):
+
+* n 5, 10, 20 (b 0.02): 1.44 (0.57) / 1.43 (0.45); 1.42 (0.57) / 1.45 (0.44); 1.44 (0.56) / 1.42 (0.42): the
+  hinge's stiffness barely moves it once the element and the hardening are modified with it. Roof PFA
+  tool/truth 1.04/0.94, 1.03/0.93, 0.99/0.90; the wall's rotation ductility, median, 2.0/3.1, 2.0/3.0, 1.9/3.0.
+* n 3.33, 10, 33.3 with ``--hinge-damping`` (DE): 1.44, 1.44, 1.47: nor does damping on the hinge.
+* the wall's hardening b (n 10): 0.02, 0.05, 0.1 give 1.42/1.45, 1.37/1.35, 1.33/1.26; the first exploration's
+  hinges (10 and 100 EI_el/H, i.e. n 3.33 and 33.3, the spring's own b 0.02, i.e. the wall's b 0.081 and
+  0.41, hinge damped) are reproduced as 1.34 and 1.00 (it reported 1.33 and 0.99): what moved it there was the
+  wall's hardening, not the hinge's stiffness.
+* ``--histories`` (n 10), tool/truth medians over the motions, DE / MCE_R: the roof's PFA 1.03/0.93, its time
+  above 0.3 g 1.11/1.14 and ∫(|a| − 0.3 g)⁺ dt 1.37/1.25; the mid-height's 0.95/1.09, 1.44/1.27, 1.62/1.57. The
+  tool's floors stay above the items' friction longer at the same peak. Its stick yields in its first
+  storey's shear spring (ductility 6-17 at DE, where the wall's rotation ductility is 1.7-5.6), a mechanism
+  that moves every floor above by the same amount, where the wall's base hinge moves them in proportion to
+  their height: a likely reason, not isolated here.
 """
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import sys
 import tempfile
 from contextlib import contextmanager
@@ -31,114 +52,107 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path[:0] = [str(REPO / "tests")]
 
 from assess.building import yielding as yielding_module  # noqa: E402
-from peers.opensees_buildings import BUILDINGS, FLOOR_MASS_KG, elf_pattern  # noqa: E402
-from peers.opensees_shear import GRAVITY_M_S2, load_opensees  # noqa: E402
-from peers.opensees_yielding import floor_histories  # noqa: E402
-from peers.yielding_equipment import LEVELS, _key, assess, compare, ground_suite, workbook  # noqa: E402
+from peers import opensees_buildings  # noqa: E402
+from peers.opensees_buildings import WALLF6, wall_pushover_yield_base_shear_g  # noqa: E402
+from peers.yielding_equipment import (LEVELS, _key, assess, compare, ground_suite, opensees_floors,  # noqa: E402
+                                      workbook)
 
-WALL = BUILDINGS["wall6"]
-YIELD_BASE_SHEAR_G = 0.36  # wall6's pushover base shear at yield
-HARDENING = 0.02
+THRESHOLD_G = 0.3  # about the items' μ: the floor acceleration above which they slide
 
 
-class FlexuralWall:
-    """The cantilever on its base hinge; ``hinge`` is the hinge's elastic rotational stiffness over EI/H."""
+def histories(wall, suite, level, folder):
+    """Per motion, the mid-height floor's and the roof's PFA, time above :data:`THRESHOLD_G` and
+    ∫(|a| − 0.3 g)⁺ dt, the tool's (``given``) over the truth's; the tool's largest storey ductility and the
+    wall's: why the tool slides more where the PFA agrees (printed, not fitted)."""
+    with opensees_floors(wall, suite):
+        truth = {_key(a): yielding_module.stick_history(None, a, dt) for _, a, dt in suite}
+    tool, original = {}, yielding_module.stick_history
 
-    def __init__(self, ops, hinge):
-        self.ops, self.hinge = ops, float(hinge)
-        n, h = WALL.storeys, WALL.storey_height_m
-        heights = h * np.arange(1, n + 1)
-        weight = n * FLOOR_MASS_KG * GRAVITY_M_S2
-        self.yield_moment = YIELD_BASE_SHEAR_G * weight * float(np.sum(elf_pattern(WALL) * heights))
-        self.bending_rigidity = 1e10
-        period = self.periods()[0]
-        self.bending_rigidity *= (period / WALL.period_s) ** 2  # T scales as 1/sqrt(EI), the hinge with it
+    def capture(building, accel, dt):
+        tool[_key(accel)] = original(building, accel, dt)
+        return tool[_key(accel)]
 
-    def build(self):
-        """The OpenSees model; returns the hinge's yield rotation."""
-        ops, n, h = self.ops, WALL.storeys, WALL.storey_height_m
-        ops.wipe()
-        ops.model("basic", "-ndm", 2, "-ndf", 3)
-        ops.node(0, 0.0, 0.0)
-        ops.fix(0, 1, 1, 1)
-        ops.node(100, 0.0, 0.0)
-        ops.fix(100, 1, 1, 0)
-        k_theta = self.hinge * self.bending_rigidity / (n * h)
-        yield_rotation = self.yield_moment / k_theta
-        m3, r3 = self.yield_moment + HARDENING * k_theta * 99 * yield_rotation, 100 * yield_rotation
-        ops.uniaxialMaterial("Hysteretic", 1, self.yield_moment, yield_rotation, m3, r3, -self.yield_moment,
-                             -yield_rotation, -m3, -r3, WALL.pinch_x, WALL.pinch_y, 0.0, 0.0, WALL.beta)
-        ops.element("zeroLength", 1, 0, 100, "-mat", 1, "-dir", 6, "-doRayleigh", 1)
-        ops.geomTransf("Linear", 1)
-        below = 100
-        for i in range(1, n + 1):
-            ops.node(i, 0.0, i * h)
-            ops.fix(i, 0, 1, 0)
-            ops.mass(i, FLOOR_MASS_KG, 0.0, 0.0)
-            ops.element("elasticBeamColumn", 10 + i, below, i, 1e12, 1.0, self.bending_rigidity, 1)
-            below = i
-        return yield_rotation
-
-    def periods(self):
-        self.build()
-        return 2.0 * np.pi / np.sqrt(np.array(self.ops.eigen("-fullGenLapack", 2)))
-
-    def history(self, accel_g, dt_s):
-        """The floors' absolute accelerations as the yielding route's StickHistory (ductility: the hinge's)."""
-        ops, n, h = self.ops, WALL.storeys, WALL.storey_height_m
-        yield_rotation = self.build()
-        omega = np.sqrt(np.array(ops.eigen("-fullGenLapack", 2)))
-        ops.rayleigh(float(0.05 * 2 * omega[0] * omega[1] / (omega[0] + omega[1])), 0.0, 0.0,
-                     float(0.05 * 2 / (omega[0] + omega[1])))
-        rotation = [0.0]  # the hinge's, after every sample
-        substeps = max(1, int(np.ceil(dt_s / 0.001 - 1e-9)))
-        accel, drift = floor_histories(ops, n, accel_g, dt_s, substeps, 1e-10, True,
-                                       each_sample=lambda ops: rotation.append(ops.nodeDisp(100, 3)))
-        ductility = np.full(n, np.nan)
-        ductility[0] = np.abs(rotation).max() / yield_rotation
-        return yielding_module.StickHistory(accel, np.abs(drift).max(axis=1) / h, ductility, False)
+    yielding_module.stick_history = capture
+    try:
+        assess(workbook(folder, wall, suite, level, [["response", "yielding"],
+                                                     ["yield_base_shear_g", wall.yield_base_shear_g]]), level)
+    finally:
+        yielding_module.stick_history = original
+    ratios = {3: [], wall.storeys: []}
+    for name, accel, dt in suite:
+        t, r = tool[_key(accel)], truth[_key(accel)]
+        line = []
+        for floor in ratios:
+            a_t, a_r = np.abs(t.floor_accel_g[floor]), np.abs(r.floor_accel_g[floor])
+            row = (a_t.max() / a_r.max(), (a_t > THRESHOLD_G).sum() / max((a_r > THRESHOLD_G).sum(), 1),
+                   np.maximum(a_t - THRESHOLD_G, 0).sum() / max(np.maximum(a_r - THRESHOLD_G, 0).sum(), 1e-12))
+            ratios[floor].append(row)
+            line.append(f"floor {floor}: PFA {row[0]:.2f} time {row[1]:.2f} excess {row[2]:.2f}")
+        print(f"  {name[:24]:24s} {'; '.join(line)}; storey ductility max, tool {np.nanmax(t.ductility):.1f}, "
+              f"the wall's {r.ductility[0]:.2f}")
+    for floor, rows in ratios.items():
+        print(f"{level} floor {floor}, median tool/truth: PFA {np.median([x[0] for x in rows]):.2f}, time above "
+              f"{THRESHOLD_G} g {np.median([x[1] for x in rows]):.2f}, excess {np.median([x[2] for x in rows]):.2f}")
 
 
 @contextmanager
-def flexural_floors(wall, suite):
-    """The yielding route's stick swapped for the flexural wall under each ground history of ``suite``."""
-    answers = {_key(accel): wall.history(accel, dt) for _, accel, dt in suite}
-    original = yielding_module.stick_history
-    yielding_module.stick_history = lambda building, ground_accel_g, dt_s: answers[_key(ground_accel_g)]
+def hinge_rayleigh():
+    """The hinge's zeroLength built with ``-doRayleigh 1`` (Rayleigh damping on its committed stiffness)."""
+    original = opensees_buildings._build_wall
+
+    def build(ops, wall):
+        original(ops, wall)
+        ops.remove("element", 1)
+        ops.element("zeroLength", 1, 0, 100, "-mat", 1, "-dir", 6, "-doRayleigh", 1)
+
+    opensees_buildings._build_wall = build
     try:
-        yield answers
+        yield
     finally:
-        yielding_module.stick_history = original
+        opensees_buildings._build_wall = original
 
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--levels", default="DE")
-    parser.add_argument("--hinge", type=float, default=10.0, help="the hinge's elastic rotational stiffness / (EI/H)")
+    parser.add_argument("--n", default="5,10,20", help="the hinge's stiffness over the element's, 3EI_el/H")
+    parser.add_argument("--hinge-damping", action="store_true")
+    parser.add_argument("--histories", action="store_true", help="also compare the floor histories per motion")
+    parser.add_argument("--hardening", type=float, default=WALLF6.hardening,
+                        help="the wall's post-yield stiffness ratio b (the hinge's is b/(1 + n(1 - b)))")
     args = parser.parse_args(argv)
-    ops, why = load_opensees()
-    if ops is None:
-        sys.exit(why)
-    wall = FlexuralWall(ops, args.hinge)
-    print("T1, T2 [s]:", np.round(wall.periods(), 4))
-    routes = {"given": [["response", "yielding"], ["yield_base_shear_g", YIELD_BASE_SHEAR_G]],
+    routes = {"given": [["response", "yielding"], ["yield_base_shear_g", WALLF6.yield_base_shear_g]],
               "design x 2": [["response", "yielding"], ["overstrength", 2.0]],
               "elastic": [["response", "elastic"]]}
-    for level in args.levels.split(","):
-        suite = ground_suite(11, WALL.period_s, LEVELS[level])
-        with tempfile.TemporaryDirectory() as tmp:
-            folder = Path(tmp)
-            with flexural_floors(wall, suite) as answers:
-                reference = assess(workbook(folder, WALL, suite, level, [["response", "yielding"]]), level)
-            hinge = np.median([a.ductility[0] for a in answers.values()])
-            print(f"{level}: the hinge's rotation ductility, median {hinge:.1f}")
-            for route, rows in routes.items():
-                c = compare(assess(workbook(folder, WALL, suite, level, rows), level), reference)
-                print(f"{level} {route:10s} gm {c['gm']:.3f} sigma_ln {c['sigma_ln']:.3f} PFA tool/truth mid "
-                      f"{c['pfa_mid']:.3f} roof {c['pfa_roof']:.3f} overturn verdicts {c['overturn_agree']:.2f} "
-                      f"({c['n_overturn']}) risk class {c['class_agree']:.2f}", flush=True)
-            floors = reference[0].floors.set_index("floor")["pfa_over_pga_median"]
-            print(f"{level} the flexural wall's PFA/PGA by floor:", floors.round(3).tolist())
+    with (hinge_rayleigh() if args.hinge_damping else _nothing()):
+        for n in (float(v) for v in args.n.split(",")):
+            wall = dataclasses.replace(WALLF6, stiffness_ratio_n=n, hardening=args.hardening)
+            periods = np.round(opensees_buildings.wall_periods_s(wall), 4)
+            print(f"n {n:g} (b {wall.hardening:g}, the hinge's {wall.hinge_hardening():.4g}): T1, T2 [s] {periods}, "
+                  f"pushover base shear at yield {wall_pushover_yield_base_shear_g(wall):.4f} W", flush=True)
+            for level in args.levels.split(","):
+                suite = ground_suite(11, wall.period_s, LEVELS[level])
+                with tempfile.TemporaryDirectory() as tmp:
+                    folder = Path(tmp)
+                    with opensees_floors(wall, suite):
+                        reference = assess(workbook(folder, wall, suite, level, [["response", "yielding"]]), level)
+                    floors = reference[0].floors.set_index("floor")
+                    print(f"n {n:g} {level}: the wall's rotation ductility (1 + θ_p/θ_y), median "
+                          f"{floors.loc[1, 'ductility_median']:.2f}, PFA/PGA by floor "
+                          f"{floors['pfa_over_pga_median'].round(3).tolist()}")
+                    for route, rows in routes.items():
+                        c = compare(assess(workbook(folder, wall, suite, level, rows), level), reference)
+                        print(f"n {n:g} {level} {route:10s} gm {c['gm']:.3f} sigma_ln {c['sigma_ln']:.3f} PFA "
+                              f"tool/truth mid {c['pfa_mid']:.3f} roof {c['pfa_roof']:.3f} overturn verdicts "
+                              f"{c['overturn_agree']:.2f} ({c['n_overturn']}) risk class {c['class_agree']:.2f}",
+                              flush=True)
+                    if args.histories:
+                        histories(wall, suite, level, folder)
+
+
+@contextmanager
+def _nothing():
+    yield
 
 
 if __name__ == "__main__":

@@ -1,12 +1,14 @@
 """Equipment demand on the floors of yielding buildings: the tool's yielding route against OpenSees buildings.
 
-Run: python benchmarks/bench_yielding_equipment.py [--levels DE,MCE_R] [--buildings smf4,smf8,wall6]
+Run: python benchmarks/bench_yielding_equipment.py [--levels DE,MCE_R] [--buildings smf4,smf8,wall6,wallf6]
      [--motions 11] [--overstrengths 1.5,2,3] [--truth-profile]      (needs openseespy and pyslammer; about 2 minutes)
 
-The truth: three yielding OpenSeesPy buildings of our own (tests/peers/opensees_buildings.py: steel
+The truth: four yielding OpenSeesPy buildings of our own (tests/peers/opensees_buildings.py: steel
 special moment frames of 4 and 8 storeys with a continuous elastic column, a pinching concrete shear wall
-of 6 storeys; ASCE 7-22 ELF designs, tapering storey stiffness, design strengths with an overstrength
-growing up the height; the sources are in that module), under real records
+of 6 storeys idealised as a shear building (``wall6``); ASCE 7-22 ELF designs, tapering storey stiffness,
+design strengths with an overstrength growing up the height; and the same wall as it bends (``wallf6``: an
+elastic cantilever on a pinching base hinge, n = 10 of Ibarra & Krawinkler's stiffness modification, no
+stiffness-proportional damping on the hinge); the sources are in that module), under real records
 (pyslammer's sample records, the first ``--motions`` of ``peers.yielding_equipment.RECORDS``, each a
 30 s window from 1 s before 5 % of its Arias intensity) scaled so that their 5 %-damped S_a(T_1) is
 the design spectrum's (S_DS 1.0 g, S_D1 0.6 g) at DE, 1.5 times it at MCE_R. Six items (the paper's three prototypes, a
@@ -73,7 +75,7 @@ def markdown(frame: pd.DataFrame) -> str:
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--levels", default="DE")
-    parser.add_argument("--buildings", default="smf4,smf8,wall6")
+    parser.add_argument("--buildings", default="smf4,smf8,wall6,wallf6")
     parser.add_argument("--motions", type=int, default=11)
     parser.add_argument("--overstrengths", default="1.5,2,3")
     parser.add_argument("--truth-profile", action="store_true",
@@ -90,7 +92,7 @@ def main(argv=None):
                 folder = Path(tmp)
                 given = round(pushover_yield_base_shear_g(truth), 6)
                 routes = {"given": [["response", "yielding"], ["yield_base_shear_g", given]]}
-                if args.truth_profile:
+                if args.truth_profile and hasattr(truth, "stiffness_profile"):
                     profile = ", ".join(f"{k:g}" for k in truth.stiffness_profile)
                     routes["given + truth's stiffness"] = routes["given"] + [["storey_stiffness", profile]]
                 for omega in args.overstrengths.split(","):

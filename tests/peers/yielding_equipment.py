@@ -24,7 +24,7 @@ from assess.inventory import read_workbook
 from assess.inventory.settings import Settings
 from assess.site.asce7 import design_spectral_acceleration_g
 from assess.site.spectrum import pseudo_acceleration_spectrum
-from peers.opensees_buildings import truth_response
+from peers.opensees_buildings import FlexuralWall, truth_response, wall_history
 from workbooks import write_workbook
 
 SDS_G, SD1_G = 1.0, 0.6
@@ -96,10 +96,16 @@ def opensees_floors(truth, suite):
     """The yielding route's stick swapped for the OpenSees building under each ground history of ``suite``."""
     answers = {}
     for _, accel, dt in suite:
-        floor_accel, drift, yield_drift = truth_response(truth, accel, dt)
+        if isinstance(truth, FlexuralWall):  # the storeys have no yield drift: the hinge's ductility on storey 1
+            floor_accel, drift, hinge_ductility = wall_history(truth, accel, dt)
+            ductility = np.full(truth.storeys, np.nan)
+            ductility[0] = hinge_ductility
+        else:
+            floor_accel, drift, yield_drift = truth_response(truth, accel, dt)
+            ductility = np.abs(drift).max(axis=1) / yield_drift
         peak = np.abs(drift).max(axis=1)
-        answers[_key(accel)] = yielding_module.StickHistory(
-            floor_accel, peak / truth.storey_height_m, peak / yield_drift, False)
+        answers[_key(accel)] = yielding_module.StickHistory(floor_accel, peak / truth.storey_height_m, ductility,
+                                                            False)
     original = yielding_module.stick_history
 
     def stick_history(building, ground_accel_g, dt_s):

@@ -1,5 +1,7 @@
 """The OpenSees truth buildings' pushover: the ``yield_base_shear_g`` the equipment checks give the tool.
 
+The flexural wall ``wallf6`` is checked apart (last test): a determinate cantilever on its base hinge.
+
 An engineer writes in the building sheet the base shear at first yield from a pushover of the whole lateral
 system. The harness (tests/peers/opensees_buildings.py) takes it from a static pushover of the OpenSees building
 itself under ASCE 7-22 §12.8.3's forces. Checked here against the closed form of the same building: below first
@@ -49,6 +51,8 @@ def test_the_pushover_base_shear_at_first_yield_is_the_spring_plus_the_column(na
 
 
 def test_the_wall_pushover_gives_its_first_storey_spring():
+    """``wall6``, a shear-building idealisation of a wall (storey springs, no bending): its first storey yields
+    first, at its spring's yield shear."""
     from peers.opensees_buildings import BUILDINGS, pushover_yield_base_shear_g
     truth = BUILDINGS["wall6"]
     assert pushover_yield_base_shear_g(truth) == pytest.approx(truth.yield_base_shear_g, rel=1e-6)
@@ -60,3 +64,47 @@ def test_the_pushover_yields_past_first_yield():
     shear, drifts = pushover(BUILDINGS["smf4"])
     roof = drifts.sum(axis=1)
     assert shear[-1] / roof[-1] < 0.5 * shear[0] / roof[0]
+
+
+def _cantilever_roof_per_unit_base_shear(wall, bending_rigidity):
+    """Roof displacement [m] per newton of base shear of an elastic cantilever under the ELF forces (point loads
+    F_j at heights x_j: roof deflection F_j x_j²(3H − x_j)/(6EI), Euler-Bernoulli)."""
+    from peers.opensees_buildings import elf_pattern
+    height = wall.storeys * wall.storey_height_m
+    x = wall.storey_height_m * np.arange(1, wall.storeys + 1)
+    return float(np.sum(elf_pattern(wall) * x ** 2 * (3.0 * height - x)) / (6.0 * bending_rigidity))
+
+
+def test_the_flexural_wall_pushover_against_the_cantilever_on_its_hinge():
+    """``wallf6``: the base shear at the hinge's yield is M_y/Σ F_x h_x (statics), the roof displacement at yield
+    the element's deflection (EI (n + 1)/n) plus θ_y H, and the slopes before and after yield those of the element
+    in series with the hinge (k_θ, then b_s k_θ), all under the ELF forces; T_1 in OpenSees is the 0.5 s the
+    wall's EI was set for (numpy's eigenvalues of the closed-form flexibility)."""
+    from peers.opensees_buildings import (WALLF6, elf_pattern, wall_periods_s, wall_pushover,
+                                          wall_pushover_yield_base_shear_g)
+    wall = WALLF6
+    n = wall.stiffness_ratio_n
+    height = wall.storeys * wall.storey_height_m
+    x = wall.storey_height_m * np.arange(1, wall.storeys + 1)
+    arm = float(np.sum(elf_pattern(wall) * x))
+    ei = wall.bending_rigidity_n_m2()
+    k_theta = (n + 1.0) * 3.0 * ei / height
+    flexural = _cantilever_roof_per_unit_base_shear(wall, ei * (n + 1.0) / n)
+    elastic = 1.0 / (flexural + arm * height / k_theta)  # base shear per roof metre
+    b = wall.hardening
+    hardened = 1.0 / (flexural + arm * height / (b / (1.0 + n * (1.0 - b)) * k_theta))
+    v_yield = wall.yield_moment_n_m() / arm  # N
+
+    assert wall_periods_s(wall)[0] == pytest.approx(0.5, rel=1e-6)
+    assert v_yield / wall.weight_n == pytest.approx(0.36, rel=1e-12)
+    assert wall_pushover_yield_base_shear_g(wall) == pytest.approx(0.36, rel=1e-6)
+    shear, roof, _ = wall_pushover(wall)
+    shear = shear * wall.weight_n
+    before = shear < 0.9 * v_yield
+    assert np.allclose(shear[before] / roof[before], elastic, rtol=1e-6)
+    after = roof > 2.0 * v_yield / elastic
+    slope = np.diff(shear[after]) / np.diff(roof[after])
+    assert np.allclose(slope, hardened, rtol=1e-4)
+    # the stiffness modification keeps the wall's own stiffness: within 1.5 % of the unmodified cantilever's
+    # (exact under a load at the roof; the ELF forces sit lower)
+    assert elastic * _cantilever_roof_per_unit_base_shear(wall, ei) == pytest.approx(1.0, abs=0.015)

@@ -1,32 +1,37 @@
 """Equipment on yielding buildings: the tool's yielding route against OpenSees buildings of our own (issue 29).
 
-Three yielding OpenSeesPy buildings not built from the tool's stick (tests/peers/opensees_buildings.py: steel
-special moment frames of 4 and 8 storeys with a continuous elastic column, a pinching concrete wall of 6;
-ASCE 7-22 ELF designs, tapering stiffness, an overstrength growing up the height; the sources are in that
-module), 11 of pyslammer's real records scaled to the design spectrum at T_1 (DE), six items on the
+Four yielding OpenSeesPy buildings not built from the tool's stick (tests/peers/opensees_buildings.py: steel
+special moment frames of 4 and 8 storeys with a continuous elastic column, a pinching concrete wall of 6
+idealised as a shear building (``wall6``); ASCE 7-22 ELF designs, tapering stiffness, an overstrength growing
+up the height; and the same wall as it bends (``wallf6``: an elastic cantilever on a pinching base hinge whose
+elastic stiffness, hardening and damping are set as concentrated-plasticity models set them, Ibarra &
+Krawinkler's n = 10 and Zareian & Medina's damping); the sources are in that module), 11 of pyslammer's
+real records scaled to the design spectrum at T_1 (DE), six items on the
 mid-height floor and the roof, through the product itself (``run_assessment``) with only the floor histories
 differing (tests/peers/yielding_equipment.py). The strength given to the tool is what an engineer would write:
 the truth building's own pushover (ELF pattern) base shear at first yield of any storey, column included
 (``pushover_yield_base_shear_g``: 0.305 and 0.144 for the frames, whose first storey spring alone yields at
-0.275 and 0.125 W; 0.36 for the wall). What is claimed, and checked:
+0.275 and 0.125 W; 0.36 for both walls). What is claimed, and checked:
 
 * with that ``yield_base_shear_g``, and with only the design data (the default overstrength 2), the
   sliding's geometric mean tool/truth lies in [0.67, 1.5] and nearer 1 than today's elastic route. **Not**
   from the design data on the frames (0.65 at DE, 0.76 at MCE_R on 4 storeys, whose truth's base
-  overstrength is 2.2 against the default 2; 0.62/0.83 on 8 storeys): strict xfails (:data:`SHORT`), so that
-  they say so until they pass;
+  overstrength is 2.2 against the default 2; 0.62/0.83 on 8 storeys), nor on the flexural wall (1.53 at DE,
+  1.59 at MCE_R): strict xfails (:data:`SHORT`), so that they say so until they pass;
 * a larger overstrength slides more (1.5, 2, 3: the design-data route's sensitivity). The default 2 is
   the same for every system: the literature that could be read (assess/building/design.py) gives first
   yield at 1.3-2 times the design forces and bare steel frames' pushover peak at about 2 or more, and no
-  value per system; none of Ω 1.5, 2, 2.5, 3 meets [0.67, 1.5] on all three buildings at DE and MCE_R
+  value per system; none of Ω 1.5, 2, 2.5, 3 meets [0.67, 1.5] on the three shear buildings at DE and MCE_R
   (benchmarks/bench_yielding_equipment.py; 2.5: the frames 0.94-1.07, the wall 1.80 and 1.61);
 * the roof's PFA/PGA stays below ASCE 7-22's H_f (a sanity check);
 * issue 29's stricter targets with the given strength, per building: sliding gm in [0.8, 1.25] and σ ln
   ≤ 0.45, met on both frames (DE: 0.91, σ 0.31 on 4 storeys; 0.82, σ 0.37 on 8; MCE_R 0.95/0.26 and
-  1.00/0.31), not on the wall (1.31, σ 0.47 at DE; 1.27, 0.36 at MCE_R); overturn verdicts ≥ 75 % of the
-  cases where either overturns and risk class ≥ 80 % of the items, met on no building at DE (overturn
-  verdicts 57 %, 73 %, 67 % of 7, 11 and 6 cases; risk class 83 %, 83 %, 58 %), on the 4-storey frame at
-  MCE_R (75 %, 100 %). The unmet ones are strict xfails with these numbers.
+  1.00/0.31), not on either wall (``wall6`` 1.31, σ 0.47 at DE; 1.27, 0.36 at MCE_R; ``wallf6`` 1.42, σ 0.57
+  at DE; 1.45, 0.44 at MCE_R); overturn verdicts ≥ 75 % of the cases where either overturns and risk class
+  ≥ 80 % of the items, met at DE on the flexural wall only (83 % of 6 cases, 83 %; the others: overturn
+  verdicts 57 %, 73 %, 67 % of 7, 11 and 6 cases; risk class 83 %, 83 %, 58 %), at MCE_R on the 4-storey
+  frame (75 %, 100 %), not on the flexural wall (54 % of 13, 75 %). The unmet ones at DE are strict xfails
+  with these numbers.
 
 The wall slides too much because of its stick, not its truth (measured with the strength given, DE/MCE_R):
 the tool's equivalent-shear springs of a flexural wall (α 1) soften up the height to 6 % of the first
@@ -35,10 +40,19 @@ tool's wall gives gm 1.10/1.11, σ ln 0.15/0.14. Its capacity-designed upper sto
 code's shares instead, 1.00/1.02, but then its top storey yields to ductility 7-9 where the truth's stays
 near 1 and the roof's PFA falls to 0.73-0.78 of the truth's); the truth's pinching and hardening
 (1.28/1.16) and Rayleigh damping at modes 1 and 2 (1.29/1.27) barely move it. The truth is a shear building,
-where a slender wall bends: against a bending wall of the same T_1 and yield base shear (an elastic cantilever
-on a pinching base hinge, benchmarks/bench_wall_flexural_truth.py) the tool's wall gives 0.99-1.33 at DE and
-0.99-1.25 at MCE_R as the hinge's elastic stiffness goes from 100 to 10 EI/H. The literature used here does not
-say the tool's wall should move toward wall6, so the tool is unchanged.
+where a slender wall bends. Against the bending wall ``wallf6`` (same storeys, masses, T_1, pinching and yield
+base shear) the tool's wall slides more, not less: gm 1.42/1.45 (σ ln 0.57/0.44), though the roof's and
+mid-height's PFA are within 5-10 % of the truth's (tool/truth 1.03/0.93 at the roof, 0.96/1.09 at mid-height).
+The hinge's stiffness, the modelling choice the sources leave open, barely moves it: n 5, 10, 20 give
+1.44, 1.42, 1.44 at DE and 1.43, 1.45, 1.42 at MCE_R, and Rayleigh damping on the hinge as well 1.44 (n 10,
+DE; benchmarks/bench_wall_flexural_truth.py). What moved the first exploration of that benchmark (0.99-1.33)
+was the wall's hardening: it gave the hinge spring itself b 0.02, i.e. the wall b 0.08 (hinge 10 EI_el/H) to
+0.41 (100 EI_el/H), reproduced here as 1.34 and 1.00. At the same peak the tool's floors stay above the items'
+friction longer (time above 0.3 g 1.44 and 1.11 times the truth's at mid-height and roof, DE; ``--histories``):
+its stick yields in its first storey's shear spring, which moves every floor above by the same amount, where
+the wall's base hinge moves them in proportion to their height (a likely reason, not isolated). The literature
+read does not say the tool's wall stick is wrong (its sources are on how to model a hinge, not on a stick's
+storeys), so the tool is unchanged.
 
 Skipped, with the reason, where openseespy or pyslammer is not importable.
 """
@@ -79,16 +93,16 @@ def measured(tmp_path_factory):
 
 
 #: (route, building) where the claim below is not met, with the measured gm (DE): strict xfails.
-SHORT = {("design x 2", "smf8"): 0.62, ("design x 2", "smf4"): 0.65}
+SHORT = {("design x 2", "smf8"): 0.62, ("design x 2", "smf4"): 0.65, ("design x 2", "wallf6"): 1.53}
 
 
 def _cases():
     for route in ("given", "design x 2"):
-        for name in ("smf4", "smf8", "wall6"):
+        for name in ("smf4", "smf8", "wall6", "wallf6"):
             marks = ()
             if (route, name) in SHORT:
                 marks = pytest.mark.xfail(strict=True, reason=f"{name}, {route}: gm {SHORT[route, name]} (DE), "
-                                                              f"below 0.67 (module docstring)")
+                                                              f"outside [0.67, 1.5] (module docstring)")
             yield pytest.param(route, name, marks=marks, id=f"{route}-{name}")
 
 
@@ -116,6 +130,8 @@ def test_the_roof_pfa_over_pga_stays_below_asce_7_22_hf(measured):
 
 #: Issue 29's targets with the given strength not met at DE, with the measured numbers: strict xfails.
 TARGETS_SHORT = {("sliding", "wall6"): "gm 1.31, sigma ln 0.47 (MCE_R 1.27, 0.36): the wall's stick (module docstring)",
+                 ("sliding", "wallf6"): "gm 1.42, sigma ln 0.57 (MCE_R 1.45, 0.44): against the bending wall "
+                                        "(module docstring)",
                  ("verdicts", "smf4"): "overturn verdicts 57 % of 7 cases where either overturns; risk class 83 %",
                  ("verdicts", "smf8"): "overturn verdicts 73 % of 11 cases; risk class 83 %",
                  ("verdicts", "wall6"): "overturn verdicts 67 % of 6 cases; risk class 58 %"}
@@ -123,7 +139,7 @@ TARGETS_SHORT = {("sliding", "wall6"): "gm 1.31, sigma ln 0.47 (MCE_R 1.27, 0.36
 
 def _target_cases():
     for target in ("sliding", "verdicts"):
-        for name in ("smf4", "smf8", "wall6"):
+        for name in ("smf4", "smf8", "wall6", "wallf6"):
             marks = ()
             if (target, name) in TARGETS_SHORT:
                 marks = pytest.mark.xfail(strict=True, reason=f"{name}: {TARGETS_SHORT[target, name]}")
