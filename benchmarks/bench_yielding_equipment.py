@@ -38,7 +38,9 @@ per item, the share of the items whose overturning verdict is the same (``overtu
 moderate or high from ``p_overturn`` and the default ``risk_overturn_moderate``/``risk_overturn_high``, the
 part of ``risk`` that overturning decides: the verdict a user reads, each item counted once, where the
 per-case share rests on the 5-20 cases where either overturns, many on the edge of overturning);
-risk class: the share of items whose class is the same. Then each floor's PFA/PGA (median over
+risk class: the share of items whose class is the same. Then, per route over the buildings and levels, where
+the overturn verdicts part (the tool alone overturns, on the safe side, or the truth alone) and the pooled
+agreement with its 90 % Clopper-Pearson interval. Then each floor's PFA/PGA (median over
 the motions) beside ASCE 7-22 §13.3.1's H_f/R_μ (R_μ = max(√(1.1 R/(I_e Ω_0)), 1.3), eq. 13.3-6): a
 sanity check, not a target; with the largest storey ductility over the storeys and the motions, and the
 top storey's (median and largest over the motions). Nothing is fitted here.
@@ -69,6 +71,24 @@ def markdown(frame: pd.DataFrame) -> str:
         return f"{value:.3f}" if isinstance(value, float) else str(value)
     lines = ["| " + " | ".join(frame.columns) + " |", "|" + "---|" * len(frame.columns)]
     lines += ["| " + " | ".join(cell(v) for v in row) + " |" for row in frame.itertuples(index=False)]
+    return "\n".join(lines)
+
+
+def overturn_misses(table: pd.DataFrame) -> str:
+    """Where the overturn verdicts part, pooled per route over the buildings and levels: the cases where the tool
+    alone overturns (on the safe side) and where the truth alone does, and the share of agreement where either
+    overturns with its 90 % Clopper-Pearson interval (the per-case share rests on few cases)."""
+    from scipy import stats
+
+    lines = ["| route | both | tool only | truth only | agreement (90 % interval) |", "|---|---|---|---|---|"]
+    for route, group in table.groupby("route", sort=False):
+        either = int(group["n_overturn"].sum())
+        both = int(round(float((group["overturn_agree"].fillna(0.0) * group["n_overturn"]).sum())))
+        low = stats.beta.ppf(0.05, both, either - both + 1) if both > 0 else 0.0
+        high = stats.beta.ppf(0.95, both + 1, either - both) if both < either else 1.0
+        share = both / either if either else float("nan")
+        lines.append(f"| {route} | {both} | {int(group['overturn_tool_only'].sum())} | "
+                     f"{int(group['overturn_truth_only'].sum())} | {share:.2f} ({low:.2f}-{high:.2f}) |")
     return "\n".join(lines)
 
 
@@ -131,6 +151,8 @@ def main(argv=None):
                        "overturn class agree min": round(group["overturn_class_agree"].min(), 2),
                        "class agree min": round(group["class_agree"].min(), 2)})
     print(markdown(pd.DataFrame(pooled)))
+    print()
+    print(overturn_misses(table))
     print()
     print(markdown(pd.DataFrame(ratios)))
     print(f"\ntotal {time.perf_counter() - start:.0f} s")

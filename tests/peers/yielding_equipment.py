@@ -157,6 +157,7 @@ def compare(tool, truth):
             "gm": float(np.exp(ratio.mean())) if len(ratio) else np.nan,
             "sigma_ln": float(ratio.std(ddof=1)) if len(ratio) > 1 else np.nan,
             "n_overturn": int(either.sum()),
+            "overturn_tool_only": int((over_t & ~over_r).sum()), "overturn_truth_only": int((~over_t & over_r).sum()),
             "overturn_agree": float((over_t[either] == over_r[either]).mean()) if either.any() else np.nan,
             "overturn_agree_all": float((over_t == over_r).mean()),
             "overturn_class_agree": float((overturn_classes[0] == overturn_classes[1]).mean()),
