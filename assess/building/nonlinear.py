@@ -80,15 +80,16 @@ MAX_ITERATIONS = 50
 DEFAULT_HARDENING = 0.03
 #: How the stick carries the elastic model's flexure, per system (:func:`yielding_stick`): frames and
 #: braced frames yield in a storey mechanism while their overall flexure (the columns' axial
-#: strains) stays elastic, so their column is kept elastic beside the yielding springs; a wall
-#: yields in flexure at its base, which a stick of storey springs can only stand in for with an
-#: equivalent shear stick.
+#: strains) stays elastic, so their column is kept elastic beside the yielding springs; a
+#: capacity-designed wall yields in flexure at its base and stays elastic above (Paulay & Priestley
+#: [6]_ ch. 5): the elastic model on a base hinge (:mod:`assess.building.wall_hinge`). ``other``
+#: systems keep the equivalent shear stick.
 FLEXURE_BY_SYSTEM = {
     "steel moment frame": "elastic column",
     "concrete moment frame": "elastic column",
     "eccentrically braced frame": "elastic column",
     "braced frame": "elastic column",
-    "shear wall": "equivalent shear",
+    "shear wall": "base hinge",
     "other": "equivalent shear",
 }
 
@@ -533,8 +534,11 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
                    storey_stiffness=None, floor_masses_kg=None, law=None, hardening=None, damping=0.05,
                    rayleigh_modes=(1, 3), flexure=None, p_delta=False,
                    damping_stiffness="tangent", damping_model="rayleigh",
-                   strength_profile=None) -> YieldingStick:
+                   strength_profile=None):
     """The yielding stick of a building described as :func:`~assess.building.modes.building_modes` takes it.
+
+    A :class:`YieldingStick`, or with ``flexure="base hinge"`` a
+    :class:`~assess.building.wall_hinge.HingedWall`.
 
     Parameters
     ----------
@@ -567,7 +571,12 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
         model's flexural column kept beside the springs, linear: the elastic limit is the
         elastic model itself, but the column never yields, so a flexure-dominated
         building (small α) then barely yields (at α = 1 its first storey's spring carries
-        2-8 % of the storey shear under the code's forces, 3 to 12 storeys).
+        2-8 % of the storey shear under the code's forces, 3 to 12 storeys). ``"base hinge"``: the
+        elastic model (scaled to T_1) rotating on a plastic hinge at its base, the wall above elastic
+        (:func:`~assess.building.wall_hinge.hinged_wall`): the hinge yields at the moment of the code's
+        forces at a base shear of ``storey_yield_ratio[0]`` times the weight (the other storeys' ratios
+        and ``strength_profile`` do not enter, ``damping_model`` must be ``"rayleigh"``); the elastic
+        limit has the elastic model's T_1 and its roof displacement under a load at the roof.
     p_delta : bool
         Add the gravity loads' geometric stiffness (:func:`p_delta_stiffness`); T_1 stays that without it.
     strength_profile : str, optional
@@ -582,7 +591,7 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
     floor_heights = np.cumsum(heights)
     masses = np.full(n, 1.0e5) if floor_masses_kg is None else np.asarray(floor_masses_kg, dtype=float)
     alpha = ALPHA_BY_SYSTEM[system] if alpha is None else float(alpha)
-    if alpha == 0.0:
+    if alpha == 0.0 and flexure != "base hinge":
         raise ValueError("a flexural cantilever (alpha 0) has no storey springs to yield")
     if period_s is None:
         period_s = approximate_period(floor_heights[-1], system)
@@ -590,6 +599,18 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
     full = stiffness_matrix(n, float(np.mean(heights)), alpha, relative)
     forces = vertical_distribution(masses, floor_heights, period_s)
     shears = np.cumsum(forces[::-1])[::-1]
+    if flexure == "base hinge":
+        from .wall_hinge import hinged_wall  # that module builds on this one
+        ratio = np.asarray(storey_yield_ratio, dtype=float)
+        if ratio.shape != (n,) or np.any(~(ratio > 0.0)):
+            raise ValueError("storey_yield_ratio must give one positive ratio per storey")
+        if damping_model != "rayleigh":
+            raise ValueError("a wall on a base hinge takes Rayleigh damping on its elastic part only")
+        return hinged_wall(full, heights, masses, period_s, float(ratio[0]) * masses.sum() * GRAVITY_M_S2, forces,
+                           law=LAW_BY_SYSTEM[system] if law is None else law,
+                           hardening=DEFAULT_HARDENING if hardening is None else float(hardening),
+                           damping=damping, rayleigh_modes=rayleigh_modes,
+                           geometric_stiffness_n_m=p_delta_stiffness(masses, heights) if p_delta else None)
     if flexure == "equivalent shear":
         drifts = np.diff(np.concatenate([[0.0], np.linalg.solve(full, forces)]))
         springs = shears / drifts
@@ -601,7 +622,7 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
         drifts = np.diff(np.concatenate([[0.0], np.linalg.solve(full, forces)]))
         share = springs * drifts / shears
     else:
-        raise ValueError("flexure must be 'equivalent shear' or 'elastic column'")
+        raise ValueError("flexure must be 'equivalent shear', 'elastic column' or 'base hinge'")
     omega2 = eigh(shear_chain_matrix(springs) + linear, np.diag(masses), eigvals_only=True)
     scale = (2.0 * np.pi / np.sqrt(omega2[0]) / float(period_s)) ** 2
     springs, linear = springs * scale, linear * scale

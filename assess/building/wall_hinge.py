@@ -101,6 +101,9 @@ class HingedWall:
         n.
     pinch_x, pinch_y, unloading_beta : float
         Parameters of the pinching law.
+    geometric_stiffness_n_m : ndarray (n, n), optional
+        The gravity loads' P-Delta stiffness on the floors' displacements
+        (:func:`~assess.building.nonlinear.p_delta_stiffness`), where asked.
     """
 
     floor_masses_kg: np.ndarray
@@ -117,6 +120,7 @@ class HingedWall:
     pinch_x: float = 0.8
     pinch_y: float = 0.4
     unloading_beta: float = 0.4
+    geometric_stiffness_n_m: np.ndarray | None = None
 
     @property
     def storeys(self) -> int:
@@ -131,11 +135,15 @@ class HingedWall:
         """θ_y = M_y/k_ref, the elastic model's base rotation at yield (module text)."""
         return self.yield_moment_n_m / self.reference_stiffness_n_m_rad
 
-    def assembled_stiffness(self, hinge_tangent_n_m_rad=None) -> np.ndarray:
-        """K_T of the module text, (n + 1, n + 1), the hinge at k_θ unless a tangent is given."""
-        return _assembled(self.elastic_stiffness_n_m, self.floor_heights_m,
-                          self.hinge_stiffness_n_m_rad if hinge_tangent_n_m_rad is None
-                          else float(hinge_tangent_n_m_rad))
+    def assembled_stiffness(self, hinge_tangent_n_m_rad=None, p_delta=True) -> np.ndarray:
+        """K_T of the module text, (n + 1, n + 1), the hinge at k_θ unless a tangent is given, with the
+        P-Delta stiffness where the wall has it (and ``p_delta``)."""
+        matrix = _assembled(self.elastic_stiffness_n_m, self.floor_heights_m,
+                            self.hinge_stiffness_n_m_rad if hinge_tangent_n_m_rad is None
+                            else float(hinge_tangent_n_m_rad))
+        if p_delta and self.geometric_stiffness_n_m is not None:
+            matrix[:-1, :-1] += self.geometric_stiffness_n_m
+        return matrix
 
 
 def _assembled(elastic, heights, hinge):
@@ -178,7 +186,7 @@ def reference_stiffness(stiffness_n_m, floor_heights_m) -> float:
 
 def hinged_wall(stiffness, storey_heights_m, floor_masses_kg, period_s, yield_base_shear_n, floor_forces, *,
                 law="pinching", hardening=0.03, damping=0.05, rayleigh_modes=(1, 3),
-                stiffness_ratio_n=STIFFNESS_RATIO_N) -> HingedWall:
+                stiffness_ratio_n=STIFFNESS_RATIO_N, geometric_stiffness_n_m=None) -> HingedWall:
     """The elastic model of lateral stiffness ``stiffness`` (any scale) on a base hinge (module text).
 
     Parameters
@@ -195,7 +203,9 @@ def hinged_wall(stiffness, storey_heights_m, floor_masses_kg, period_s, yield_ba
     law, hardening :
         The hinge's law and the assembly's post-yield stiffness ratio b.
     damping, rayleigh_modes :
-        ζ at the assembly's modes ``rayleigh_modes`` (1-based).
+        ζ at the assembly's modes ``rayleigh_modes`` (1-based), without P-Delta.
+    geometric_stiffness_n_m : array-like (n, n), optional
+        P-Delta's (:func:`~assess.building.nonlinear.p_delta_stiffness`); T_1 stays that without it.
     """
     heights = np.cumsum(np.asarray(storey_heights_m, dtype=float))
     masses = np.asarray(floor_masses_kg, dtype=float)
@@ -214,7 +224,9 @@ def hinged_wall(stiffness, storey_heights_m, floor_masses_kg, period_s, yield_ba
         raise ValueError("the yield base shear must be positive")
     return HingedWall(masses, unscaled.storey_heights_m, unscaled.elastic_stiffness_n_m * scale,
                       unscaled.hinge_stiffness_n_m_rad * scale, unscaled.reference_stiffness_n_m_rad * scale,
-                      moment, unscaled.hinge_hardening, b, law, (a0, a1), n_mod)
+                      moment, unscaled.hinge_hardening, b, law, (a0, a1), n_mod,
+                      geometric_stiffness_n_m=None if geometric_stiffness_n_m is None
+                      else np.asarray(geometric_stiffness_n_m, dtype=float))
 
 
 @njit(cache=True)
@@ -229,10 +241,11 @@ def _hinge_state(theta, law, committed, trial, k_theta, m_y, hardening, pinch_x,
 
 
 @njit(cache=True, nogil=True)  # released so that a suite's motions run on threads (assess.building.yielding)
-def _hinge_history(ground_g, dt_s, substeps, masses, k_full, k_theta, m_y, hardening, law, pinch_x,
-                   pinch_y, beta, a0, a1_elastic, tolerance, max_iterations):  # pragma: no cover - compiled
+def _hinge_history(ground_g, dt_s, substeps, masses, k_full, damping, k_theta, m_y, hardening, law, pinch_x,
+                   pinch_y, beta, tolerance, max_iterations):  # pragma: no cover - compiled
     """Floors' absolute accelerations [g] (n + 1, samples), storey drifts [m] (n, samples), peak |θ| at the
-    samples [rad], unconverged substeps. ``k_full``: the elastic part's (n + 1)² stiffness on (u, θ)."""
+    samples [rad], unconverged substeps. ``k_full``, ``damping``: the linear part's (n + 1)² stiffness (the
+    hinge left out) and the damping matrix on (u, θ)."""
     n = masses.size
     m = n + 1
     n_samples = ground_g.size
@@ -245,11 +258,6 @@ def _hinge_history(ground_g, dt_s, substeps, masses, k_full, k_theta, m_y, harde
     mass = np.zeros(m)
     for i in range(n):
         mass[i] = masses[i]
-    damping = np.zeros((m, m))  # a0 M + a1 K_e: constant (no damping on the hinge)
-    for r in range(m):
-        for c in range(m):
-            damping[r, c] = a1_elastic * k_full[r, c]
-        damping[r, r] += a0 * mass[r]
     committed = np.zeros(STATE_SIZE)
     committed[2] = k_theta
     trial = committed.copy()
@@ -325,6 +333,15 @@ def _hinge_history(ground_g, dt_s, substeps, masses, k_full, k_theta, m_y, harde
     return accel_out, drift_out, peak_theta, unconverged
 
 
+def damping_matrix(wall: HingedWall) -> np.ndarray:
+    """C = a_0 M + a_1 (n + 1)/n K_e on (u, θ) [N s/m] (module text): none on the hinge, none from P-Delta."""
+    a0, a1 = wall.rayleigh
+    n_mod = wall.stiffness_ratio_n
+    matrix = a1 * (n_mod + 1.0) / n_mod * wall.assembled_stiffness(0.0, p_delta=False)
+    matrix[:-1, :-1] += a0 * np.diag(np.asarray(wall.floor_masses_kg, dtype=float))
+    return np.ascontiguousarray(matrix)
+
+
 def hinged_wall_response(wall: HingedWall, ground_accel_g, dt_s, *, substep_s=DEFAULT_SUBSTEP_S,
                          substeps=None) -> YieldingResponse:
     """Every floor's absolute acceleration and every storey's drift under one ground motion.
@@ -339,13 +356,11 @@ def hinged_wall_response(wall: HingedWall, ground_accel_g, dt_s, *, substep_s=DE
         shortest = float(hinged_periods(wall)[-1]) / STEPS_PER_SHORTEST_PERIOD
         substeps = substeps_for(dt_s, min(substep_s, shortest))
     n = wall.storeys
-    k_full = np.ascontiguousarray(wall.assembled_stiffness(0.0))
     accel, drift, peak_theta, unconverged = _hinge_history(
-        ground, float(dt_s), int(substeps), np.ascontiguousarray(wall.floor_masses_kg, dtype=float), k_full,
-        float(wall.hinge_stiffness_n_m_rad),
-        float(wall.yield_moment_n_m), float(wall.hinge_hardening), LAWS[wall.law], float(wall.pinch_x),
-        float(wall.pinch_y), float(wall.unloading_beta), float(wall.rayleigh[0]),
-        float(wall.rayleigh[1]) * (wall.stiffness_ratio_n + 1.0) / wall.stiffness_ratio_n, TOLERANCE_M,
+        ground, float(dt_s), int(substeps), np.ascontiguousarray(wall.floor_masses_kg, dtype=float),
+        np.ascontiguousarray(wall.assembled_stiffness(0.0)), damping_matrix(wall),
+        float(wall.hinge_stiffness_n_m_rad), float(wall.yield_moment_n_m), float(wall.hinge_hardening),
+        LAWS[wall.law], float(wall.pinch_x), float(wall.pinch_y), float(wall.unloading_beta), TOLERANCE_M,
         MAX_ITERATIONS)
     ductility = np.full(n, np.nan)
     hinge_yield = wall.yield_moment_n_m / wall.hinge_stiffness_n_m_rad

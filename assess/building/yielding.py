@@ -59,6 +59,7 @@ from .design import DesignStrength, design_strength
 from .modes import BuildingModes
 from .nonlinear import STRENGTH_BY_SYSTEM, YieldingStick, yielding_response, yielding_stick
 from .response import floor_records
+from .wall_hinge import HingedWall, hinged_wall_response
 
 #: Storey drift ratio beyond which the stick is not trusted, per lateral system [-]: the Collapse
 #: Prevention level's transient drift of FEMA 356 Table C1-3 (module text); ``other`` takes the lowest.
@@ -83,8 +84,8 @@ class YieldingBuilding:
     modes : BuildingModes
         The building's elastic model (its periods and floors; the elastic route's histories where no
         storey yields).
-    stick : YieldingStick
-        The stick of storey springs.
+    stick : YieldingStick or HingedWall
+        The stick of storey springs, or a wall's elastic model on its base hinge.
     strength : DesignStrength
         Where its storeys' strength came from.
     system : str
@@ -127,13 +128,20 @@ class YieldingBuilding:
         return self.modes.effective_mass_ratio
 
 
-def _stick_key(stick: YieldingStick) -> str:
+def _stick_key(stick) -> str:
     digest = hashlib.blake2b(digest_size=16)
-    for value in (stick.floor_masses_kg, stick.storey_heights_m, stick.stiffness_n_m, stick.yield_force_n,
-                  stick.hardening, stick.linear_stiffness_n_m, np.asarray(stick.rayleigh, dtype=float)):
+    if isinstance(stick, HingedWall):
+        values = (stick.floor_masses_kg, stick.storey_heights_m, stick.assembled_stiffness(0.0),
+                  [stick.hinge_stiffness_n_m_rad, stick.reference_stiffness_n_m_rad, stick.yield_moment_n_m,
+                   stick.hinge_hardening, stick.stiffness_ratio_n], np.asarray(stick.rayleigh, dtype=float))
+        digest.update(b"base hinge|")
+    else:
+        values = (stick.floor_masses_kg, stick.storey_heights_m, stick.stiffness_n_m, stick.yield_force_n,
+                  stick.hardening, stick.linear_stiffness_n_m, np.asarray(stick.rayleigh, dtype=float))
+    for value in values:
         digest.update(np.ascontiguousarray(value, dtype=float).tobytes())
     digest.update(f"{stick.law}|{stick.pinch_x}|{stick.pinch_y}|{stick.unloading_beta}|"
-                  f"{stick.damping_stiffness}".encode())
+                  f"{getattr(stick, 'damping_stiffness', 'elastic part')}".encode())
     return digest.hexdigest()
 
 
@@ -169,6 +177,14 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
     arguments = dict(system=system, period_s=period_s, alpha=modes.alpha, storey_stiffness=modes.storey_stiffness,
                      damping=damping, p_delta=p_delta)
     stick = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, **arguments)
+    if isinstance(stick, HingedWall):  # only the base yields: the storeys above have no yield shear
+        strength = replace(strength, storey_yield_ratio=np.concatenate([strength.storey_yield_ratio[:1],
+                                                                        np.full(modes.storeys - 1, np.nan)]),
+                           source=f"{strength.source}; the wall yields in flexure at its base only, its plastic "
+                                  "hinge carrying the moment of the code's lateral forces at that base shear, and "
+                                  "stays elastic above")
+        return YieldingBuilding(modes, stick, strength, system, DRIFT_LIMIT_BY_SYSTEM[system], bool(p_delta),
+                                _stick_key(stick))
     code = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, strength_profile="code",
                           **arguments)
     profile = STRENGTH_BY_SYSTEM[system]
@@ -185,7 +201,9 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
 class StickHistory:
     """One ground history through the stick: every floor's acceleration (row 0 the ground) and each storey's
     peak drift ratio and ductility; ``elastic`` where no storey yielded (the rows are then the elastic
-    route's histories)."""
+    route's histories). A wall on its base hinge gives its rotation ductility at the base
+    (:mod:`assess.building.wall_hinge`) in the first storey's place and NaN above (those storeys do not
+    yield)."""
 
     floor_accel_g: np.ndarray
     peak_drift_ratio: np.ndarray
@@ -214,8 +232,11 @@ def stick_history(building: YieldingBuilding, ground_accel_g, dt_s: float) -> St
         if key in _MEMORY:
             _MEMORY.move_to_end(key)
             return _MEMORY[key]
-    response = yielding_response(building.stick, ground, dt_s)  # the compiled kernel releases the GIL
-    elastic = bool(np.all(response.ductility < 1.0))
+    # the compiled kernels release the GIL
+    response = (hinged_wall_response(building.stick, ground, dt_s) if isinstance(building.stick, HingedWall)
+                else yielding_response(building.stick, ground, dt_s))
+    ductility = response.ductility[np.isfinite(response.ductility)]
+    elastic = bool(np.all(ductility < 1.0))
     accel = response.floor_accel_g
     if elastic:
         history = floor_records(building.modes, [Record(ground, dt_s, "")])
