@@ -63,17 +63,12 @@ from scipy.linalg import eigh
 from .design import LAW_BY_SYSTEM, vertical_distribution
 from .hysteresis import BILINEAR, LAWS, bilinear_trial, pinching_trial
 from .modes import ALPHA_BY_SYSTEM, stiffness_matrix
+from .newmark import (DEFAULT_SUBSTEP_S, MAX_ITERATIONS, STEPS_PER_SHORTEST_PERIOD, TOLERANCE_M,  # noqa: F401
+                      YieldingResponse, _solve, rayleigh_coefficients, substeps_for)
 from .period import approximate_period
+from .wall_hinge import hinged_wall
 
 GRAVITY_M_S2 = 9.80665
-#: Longest substep [s] of the integration by default, and the fewest substeps per period of the
-#: stick's shortest elastic mode (Newmark's period error is (π²/12)(Δt/T)², Chopra [1]_ §5.5:
-#: 5e-3 at 40 steps; a stiff flexural mode of 0.02 s otherwise drifts out of phase in a long record).
-DEFAULT_SUBSTEP_S = 0.001
-STEPS_PER_SHORTEST_PERIOD = 40
-#: Newton's tolerance on the norm of the displacement correction [m] and its iteration cap.
-TOLERANCE_M = 1e-12
-MAX_ITERATIONS = 50
 #: Post-yield stiffness ratio b of the storey springs by default: 3 %, within the 2-5 % of the
 #: storey pushover curves of code-designed frames (e.g. FEMA P-695 archetypes) and the usual
 #: Steel01 choice; P-Delta, where asked, lowers the storeys' net post-yield stiffness further.
@@ -162,53 +157,6 @@ class YieldingStick:
         return self.yield_force_n / self.stiffness_n_m
 
 
-@dataclass(frozen=True)
-class YieldingResponse:
-    """Response history of a :class:`YieldingStick` under one ground motion.
-
-    Attributes
-    ----------
-    floor_accel_g : ndarray, (n + 1, n_samples)
-        Absolute acceleration [g] of each floor, row 0 the ground.
-    drift_m : ndarray, (n, n_samples)
-        Storey drift (floor i minus floor i-1) [m].
-    peak_drift_ratio : ndarray, (n,)
-        max |drift_i| / h_i [-].
-    ductility : ndarray, (n,)
-        max |drift_i| / (F_y,i / k_0,i) [-]: below 1, the storey stayed elastic.
-    unconverged_steps : int
-        Substeps where Newton's iterations stopped at their cap (0 expected).
-    """
-
-    floor_accel_g: np.ndarray
-    drift_m: np.ndarray
-    peak_drift_ratio: np.ndarray
-    ductility: np.ndarray
-    unconverged_steps: int
-
-
-def rayleigh_coefficients(periods_s, damping=0.05, modes=(1, 3)):
-    """(a_0, a_1) of Rayleigh damping with ratio ζ at two modes (1-based; capped at the last mode).
-
-    .. math::  a_0 = \\zeta\\frac{2\\omega_i\\omega_j}{\\omega_i + \\omega_j},\\qquad
-               a_1 = \\zeta\\frac{2}{\\omega_i + \\omega_j}
-
-    (Chopra [1]_ eq. 11.4.9 with ζ_i = ζ_j). Examples: ω 10 and 30 rad/s, 5 %:
-    a_0 = 0.05·600/40 = 0.75, a_1 = 0.1/40 = 0.0025:
-
-    >>> a0, a1 = rayleigh_coefficients(2 * np.pi / np.array([10.0, 20.0, 30.0]), 0.05)
-    >>> round(a0, 6), round(a1, 6)
-    (0.75, 0.0025)
-    """
-    omega = 2.0 * np.pi / np.asarray(periods_s, dtype=float)
-    if omega.size == 1:
-        return 0.0, 2.0 * damping / omega[0]
-    i = min(modes[0], omega.size) - 1
-    j = min(modes[1], omega.size) - 1
-    wi, wj = omega[i], omega[j]
-    return float(damping * 2.0 * wi * wj / (wi + wj)), float(damping * 2.0 / (wi + wj))
-
-
 def rayleigh_modal_damping(periods_s, a0, a1):
     """ζ_j = a_0/(2ω_j) + a_1 ω_j/2 of each mode [-] (for the elastic modal route)."""
     omega = 2.0 * np.pi / np.asarray(periods_s, dtype=float)
@@ -268,26 +216,6 @@ def p_delta_stiffness(floor_masses_kg, storey_heights_m):
     masses = np.asarray(floor_masses_kg, dtype=float)
     above = np.cumsum(masses[::-1])[::-1] * GRAVITY_M_S2
     return -shear_chain_matrix(above / np.asarray(storey_heights_m, dtype=float))
-
-
-@njit(cache=True)
-def _solve(matrix, rhs, out):  # pragma: no cover - compiled
-    """out = matrix⁻¹ rhs, Gaussian elimination without pivoting (SPD-dominant: M/βΔt²); overwrites matrix."""
-    n = rhs.size
-    b = rhs.copy()
-    for k in range(n):
-        pivot = matrix[k, k]
-        for i in range(k + 1, n):
-            factor = matrix[i, k] / pivot
-            if factor != 0.0:
-                for j in range(k, n):
-                    matrix[i, j] -= factor * matrix[k, j]
-                b[i] -= factor * b[k]
-    for i in range(n - 1, -1, -1):
-        total = b[i]
-        for j in range(i + 1, n):
-            total -= matrix[i, j] * out[j]
-        out[i] = total / matrix[i, i]
 
 
 @njit(cache=True)
@@ -414,11 +342,6 @@ def _history(ground_g, dt_s, substeps, masses, k0, fy, hardening, law, pinch_x, 
             accel_out[r + 1, step + 1] = g1 + a[r] / g
             drift_out[r, step + 1] = u[r] - (u[r - 1] if r > 0 else 0.0)
     return accel_out, drift_out, unconverged
-
-
-def substeps_for(dt_s, substep_s=DEFAULT_SUBSTEP_S) -> int:
-    """Substeps per record step so that each is at most ``substep_s``."""
-    return max(1, int(np.ceil(float(dt_s) / float(substep_s) - 1e-9)))
 
 
 def yielding_response(stick: YieldingStick, ground_accel_g, dt_s, *, substep_s=DEFAULT_SUBSTEP_S,
@@ -600,7 +523,6 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
     forces = vertical_distribution(masses, floor_heights, period_s)
     shears = np.cumsum(forces[::-1])[::-1]
     if flexure == "base hinge":
-        from .wall_hinge import hinged_wall  # that module builds on this one
         ratio = np.asarray(storey_yield_ratio, dtype=float)
         if ratio.shape != (n,) or np.any(~(ratio > 0.0)):
             raise ValueError("storey_yield_ratio must give one positive ratio per storey")

@@ -63,8 +63,8 @@ from numba import njit
 from scipy.linalg import eigh
 
 from .hysteresis import BILINEAR, LAWS, STATE_SIZE, bilinear_trial, pinching_trial
-from .nonlinear import (DEFAULT_SUBSTEP_S, MAX_ITERATIONS, STEPS_PER_SHORTEST_PERIOD, TOLERANCE_M,
-                        YieldingResponse, _solve, rayleigh_coefficients, substeps_for)
+from .newmark import (DEFAULT_SUBSTEP_S, MAX_ITERATIONS, STEPS_PER_SHORTEST_PERIOD, TOLERANCE_M,
+                      YieldingResponse, _solve, rayleigh_coefficients, substeps_for)
 
 #: n of the stiffness modification: the hinge's elastic stiffness over the reference k_ref is n + 1 (Ibarra &
 #: Krawinkler [2]_'s n = 10, the OpenSees examples' [3]_).

@@ -3,7 +3,8 @@
 The building sheet's ``response: yielding`` (by default wherever the storeys' strength is known,
 docs/workbook.md) passes each ground motion through a stick of yielding storey springs
 (:func:`~assess.building.nonlinear.yielding_stick`: bilinear springs for steel frames and braces,
-pinching, stiffness-degrading ones for concrete; Rayleigh damping on the tangent stiffness), started
+pinching, stiffness-degrading ones for concrete; Rayleigh damping on the tangent stiffness), or, for a
+shear wall, the elastic model on a pinching plastic hinge at its base (:mod:`assess.building.wall_hinge`), started
 from the building's elastic model (:func:`~assess.building.modes.building_modes`: the same T_1, α and
 storeys' stiffness profile, ``modes.storey_stiffness``) with each storey's strength from
 ``yield_base_shear_g`` or the code's design times an overstrength
@@ -14,14 +15,16 @@ floor histories themselves (:func:`~assess.building.response.floor_records`): a 
 stay elastic is assessed exactly as the elastic route assesses it. The two models are not the same building at the
 threshold, though: for frames (the stick keeps the elastic model's flexural column) the stick's
 elastic limit is within 2-25 % RMS of the modal route's histories (Rayleigh against modal damping;
-roof PFA 0.98-1.10 times), but a wall's or ``other``'s stick is an equivalent shear stick (a storey
-spring cannot yield in flexure), whose elastic limit differs from the shear-flexural modes (α = 1) by
-150-185 % RMS with a roof PFA 1.25-1.65 times the modal one (3 to 12 storeys,
-``benchmarks/yielding_elastic_limit.py``): a motion that only just yields such a building gets floor
-motions noticeably different from one that just does not.
+roof PFA 0.98-1.10 times); a wall on its base hinge (the same T_1, its higher modes 2-2.5 % shorter, no
+damping on the hinge) within 23-43 % RMS, roof PFA 0.94-1.03 times; but ``other``'s stick is an
+equivalent shear stick (a storey spring cannot yield in flexure), whose elastic limit differs from the
+shear-flexural modes (α = 1) by 150-185 % RMS with a roof PFA 1.25-1.65 times the modal one (3 to 12
+storeys, ``benchmarks/yielding_elastic_limit.py``): a motion that only just yields such a building gets
+floor motions noticeably different from one that just does not.
 
-What the storeys did under each motion (peak drift ratio, ductility) goes to ``floors.csv``
-(:func:`storey_table`); a drift ratio beyond :data:`DRIFT_LIMIT_BY_SYSTEM` is beyond what the stick
+What the storeys did under each motion (peak drift ratio, ductility; for a wall on its base hinge, the
+wall's rotation ductility at its base in storey 1's place and none above, where it does not yield) goes to
+``floors.csv`` (:func:`storey_table`); a drift ratio beyond :data:`DRIFT_LIMIT_BY_SYSTEM` is beyond what the stick
 can be trusted for. The limits are the transient drifts of the *Collapse Prevention* structural
 performance level of FEMA 356 [1]_ Table C1-3 (steel moment frames 5 %, concrete frames 4 %,
 braced steel frames and concrete walls 2 %): there the building is near collapse, its members lose
@@ -180,9 +183,9 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
     if isinstance(stick, HingedWall):  # only the base yields: the storeys above have no yield shear
         strength = replace(strength, storey_yield_ratio=np.concatenate([strength.storey_yield_ratio[:1],
                                                                         np.full(modes.storeys - 1, np.nan)]),
-                           source=f"{strength.source}; the wall yields in flexure at its base only, its plastic "
-                                  "hinge carrying the moment of the code's lateral forces at that base shear, and "
-                                  "stays elastic above")
+                           source=strength.source.replace(", spread over the storeys as ASCE 7-22 §12.8.3 does", "")
+                           + "; the wall yields in flexure at its base only, its plastic hinge carrying the moment "
+                             "of ASCE 7-22 §12.8.3's lateral forces at that base shear, and stays elastic above")
         return YieldingBuilding(modes, stick, strength, system, DRIFT_LIMIT_BY_SYSTEM[system], bool(p_delta),
                                 _stick_key(stick))
     code = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, strength_profile="code",
@@ -288,7 +291,8 @@ def storey_table(building: YieldingBuilding, histories: Sequence[StickHistory], 
     Columns: ``response`` (``yielding``), ``yield_base_shear_g``, ``storey_yield_ratio`` (the storey's
     yield shear over the weight), ``drift_ratio_median``, ``drift_ratio_min``, ``drift_ratio_max`` (peak
     storey drift over its height), ``ductility_median``, ``ductility_min``, ``ductility_max`` (peak drift
-    over the yield drift), ``motions_yielded`` (motions under which any storey yielded), ``drift_limit``
+    over the yield drift; a wall on its base hinge: the wall's rotation ductility at its base in storey 1, NaN
+    above, as ``storey_yield_ratio``), ``motions_yielded`` (motions under which any storey yielded), ``drift_limit``
     and ``motions_beyond_drift_limit`` (motions whose storey drift passed it).
     """
     drift = np.array([h.peak_drift_ratio for h in histories])
