@@ -333,6 +333,18 @@ def _hinge_history(ground_g, dt_s, substeps, masses, k_full, damping, k_theta, m
     return accel_out, drift_out, peak_theta, unconverged
 
 
+def rotation_ductility(wall: HingedWall, peak_rotation_rad: float) -> float:
+    """The wall's rotation ductility at its base, 1 + θ_p/θ_y (module text), from the hinge's peak rotation;
+    below yield, the peak rotation over the hinge's yield rotation (below 1: it stayed elastic).
+
+    θ_y,hinge = M_y/k_θ; beyond it θ_p = θ_peak − θ_y,hinge over θ_y = M_y/k_ref = (n + 1) θ_y,hinge.
+    """
+    hinge_yield = wall.yield_moment_n_m / wall.hinge_stiffness_n_m_rad
+    if peak_rotation_rad <= hinge_yield:
+        return float(peak_rotation_rad / hinge_yield)
+    return float(1.0 + (peak_rotation_rad - hinge_yield) / wall.yield_rotation_rad)
+
+
 def damping_matrix(wall: HingedWall) -> np.ndarray:
     """C = a_0 M + a_1 (n + 1)/n K_e on (u, θ) [N s/m] (module text): none on the hinge, none from P-Delta."""
     a0, a1 = wall.rayleigh
@@ -363,9 +375,7 @@ def hinged_wall_response(wall: HingedWall, ground_accel_g, dt_s, *, substep_s=DE
         LAWS[wall.law], float(wall.pinch_x), float(wall.pinch_y), float(wall.unloading_beta), TOLERANCE_M,
         MAX_ITERATIONS)
     ductility = np.full(n, np.nan)
-    hinge_yield = wall.yield_moment_n_m / wall.hinge_stiffness_n_m_rad
-    ductility[0] = 1.0 + max(peak_theta - hinge_yield, 0.0) / wall.yield_rotation_rad if peak_theta > hinge_yield \
-        else peak_theta / hinge_yield
+    ductility[0] = rotation_ductility(wall, peak_theta)
     peak = np.abs(drift).max(axis=1)
     return YieldingResponse(floor_accel_g=accel, drift_m=drift,
                             peak_drift_ratio=peak / np.asarray(wall.storey_heights_m, dtype=float),
