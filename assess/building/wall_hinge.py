@@ -27,7 +27,8 @@ assembly the hardening b ([3]_, the corrected eq. B.5 of [2]_).
 **Damping** (Zareian & Medina [4]_): Rayleigh, a_0 M on the floors and a_1 (n + 1)/n K_e on the
 elastic part only, none on the hinge: a yielding hinge gets no spurious damping force, and at small
 amplitudes the assembly has the damping of a_0 M + a_1 K (the Kelvin element in series with the stiff
-hinge carries n/(n + 1) of a_1). The matrix is constant; only the hinge's tangent changes.
+hinge carries n/(n + 1) of a_1). The matrix is constant; only the hinge's tangent changes (so Newton's
+matrix is inverted once and updated by Sherman-Morrison at each iteration).
 
 **Integration** as the storey stick's (:mod:`assess.building.nonlinear`): Newmark's average
 acceleration with Newton iterations at substeps, the ground linear between samples; the hinge's law
@@ -271,7 +272,23 @@ def _hinge_history(ground_g, dt_s, substeps, masses, k_full, damping, k_theta, m
     a_new = np.zeros(m)
     du = np.zeros(m)
     residual = np.zeros(m)
-    matrix = np.zeros((m, m))
+    # Newton's matrix is K_lin + c_vel C + c_mass M (constant) plus the hinge's tangent at (θ, θ): its inverse
+    # once (_solve per column), then each iteration by Sherman-Morrison, a rank-one update (O(m²), not O(m³))
+    constant = np.zeros((m, m))
+    for r in range(m):
+        for c in range(m):
+            constant[r, c] = k_full[r, c] + c_vel * damping[r, c]
+        constant[r, r] += c_mass * mass[r]
+    inverse = np.zeros((m, m))
+    unit = np.zeros(m)
+    column = np.zeros(m)
+    for c in range(m):
+        unit[:] = 0.0
+        unit[c] = 1.0
+        _solve(constant.copy(), unit, column)
+        for r in range(m):
+            inverse[r, c] = column[r]
+    solved = np.zeros(m)
     accel_out = np.empty((n + 1, n_samples))
     drift_out = np.empty((n, n_samples))
     accel_out[0, 0] = ground_g[0]
@@ -300,11 +317,13 @@ def _hinge_history(ground_g, dt_s, substeps, masses, k_full, damping, k_theta, m
                         total -= damping[r, c] * v_new[c] + k_full[r, c] * u_new[c]
                     residual[r] = total
                 for r in range(m):
+                    total = 0.0
                     for c in range(m):
-                        matrix[r, c] = k_full[r, c] + c_vel * damping[r, c]
-                    matrix[r, r] += c_mass * mass[r]
-                matrix[n, n] += tangent
-                _solve(matrix, residual, du)
+                        total += inverse[r, c] * residual[c]
+                    solved[r] = total
+                factor = tangent * solved[n] / (1.0 + tangent * inverse[n, n])
+                for r in range(m):
+                    du[r] = solved[r] - factor * inverse[r, n]
                 norm = 0.0
                 for r in range(m):
                     u_new[r] += du[r]
