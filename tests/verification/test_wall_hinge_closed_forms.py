@@ -104,3 +104,13 @@ def test_a_slow_ramp_gives_the_static_rotation(law, over_yield):
     loads = wall.floor_masses_kg * a_g * GRAVITY_M_S2
     roof = np.linalg.solve(wall.elastic_stiffness_n_m, loads)[-1] + heights[-1] * theta
     assert np.sum(response.drift_m[:, -1]) == pytest.approx(-roof, rel=0.01)
+
+
+def test_p_delta_lowers_the_walls_period_as_the_geometric_stiffness_says():
+    # one storey: the floor's lateral stiffness k (θ condensed) less P/h, so T grows by sqrt(k/(k - W/h))
+    plain = _wall(1, 0.5)
+    with_p_delta = _wall(1, 0.5, p_delta=True)
+    k = lateral_stiffness(plain)[0, 0]
+    weight = plain.floor_masses_kg[0] * GRAVITY_M_S2
+    assert hinged_periods(with_p_delta)[0] == pytest.approx(0.5 * np.sqrt(k / (k - weight / HEIGHT_M)), rel=1e-9)
+    assert with_p_delta.yield_moment_n_m == plain.yield_moment_n_m
