@@ -9,6 +9,7 @@
 * The assembly's T_1 is the elastic model's; its higher modes a little shorter (measured).
 * A slow ramp of ground acceleration to a constant (quasi-static): the hinge's rotation and the wall's
   rotation ductility from statics (M = a_g Σ m_i h_i; θ = θ_y,h + (M − M_y)/(b_s k_θ) beyond yield).
+* P-Delta: one storey's period grows by √(k/(k − W/h)) (the linearised geometric stiffness).
 """
 import numpy as np
 import pytest
