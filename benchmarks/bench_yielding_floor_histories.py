@@ -5,8 +5,10 @@ Run: python benchmarks/bench_yielding_floor_histories.py   (needs pyslammer for 
 The first 11 of pyslammer's sample records (in name order), each scaled so that its 5 % S_a(T_1) is the
 design spectrum's (S_DS 1.0 g, S_D1 0.6 g) at T_1 1.4 s, through a 12-storey stick designed by ASCE 7-22
 §12.8 (Risk Category II, overstrength 2): a steel special moment frame (bilinear springs) and a concrete
-special moment frame (pinching springs), Rayleigh 5 % on the tangent stiffness, Newmark/Newton at
-substeps of at most 1 ms. Prints the compile-or-load time, the best and worst of 3 runs, the
+special moment frame (pinching springs), Rayleigh 5 % on the tangent stiffness, and a concrete shear
+wall (its elastic model on a pinching base hinge, assess/building/wall_hinge.py; the ductility then the
+wall's at its base), Newmark/Newton at substeps of at most 1 ms (shorter where the stick's shortest period
+asks). Prints the compile-or-load time, the best and worst of 3 runs, the
 median first-storey ductility, and the elastic modal route's time on the same suite for scale.
 """
 import os
@@ -18,6 +20,7 @@ import pyslammer
 from assess.building import building_modes, floor_records
 from assess.building.design import design_strength
 from assess.building.nonlinear import yielding_response, yielding_stick
+from assess.building.wall_hinge import HingedWall, hinged_wall_response
 from assess.hazard.records import read_record
 from assess.site.asce7 import design_spectral_acceleration_g
 from assess.site.spectrum import pseudo_acceleration_spectrum
@@ -41,16 +44,17 @@ def main():
     samples = sum(accel.size for accel, _ in suite)
     duration = sum(accel.size * dt for accel, dt in suite)
     heights = 3.5 * np.arange(1, STOREYS + 1)
-    for system in ("steel moment frame", "concrete moment frame"):
+    for system in ("steel moment frame", "concrete moment frame", "shear wall"):
         strength = design_strength(system, np.ones(STOREYS), heights, PERIOD_S, sds_g=1.0, sd1_g=0.6)
         stick = yielding_stick(STOREYS, 3.5, strength.storey_yield_ratio, system=system, period_s=PERIOD_S)
+        respond = hinged_wall_response if isinstance(stick, HingedWall) else yielding_response
         start = time.perf_counter()
-        yielding_response(stick, suite[0][0][:10], suite[0][1])
+        respond(stick, suite[0][0][:10], suite[0][1])
         compile_s = time.perf_counter() - start
         times = []
         for _ in range(3):
             start = time.perf_counter()
-            results = [yielding_response(stick, accel, dt) for accel, dt in suite]
+            results = [respond(stick, accel, dt) for accel, dt in suite]
             times.append(time.perf_counter() - start)
         ductility = np.median([r.ductility[0] for r in results])
         unconverged = sum(r.unconverged_steps for r in results)

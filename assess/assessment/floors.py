@@ -25,6 +25,7 @@ from assess.building.design import design_storey_stiffness
 from assess.building.floors import floors_table
 from assess.building.period import approximate_period
 from assess.building.response import floor_records
+from assess.building.wall_hinge import HingedWall
 from assess.building.yielding import (YieldingBuilding, building_floor_records, storey_table, yielding_building,
                                       yielding_histories)
 from assess.errors import InputError, Problem
@@ -214,14 +215,18 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
     stiffness = stiffness_note(modes, sheet)
     if isinstance(building, YieldingBuilding):
         strength = building.strength
+        hinged = isinstance(building.stick, HingedWall)
+        springs = (f"its elastic model on a {building.stick.law} plastic hinge at the base" if hinged
+                   else f"{building.stick.law} storey springs")
         text = (f"{which}: each ground motion through the building, modelled as yielding ({sheet.storeys} storeys, "
                 f"{sheet.system}, T1 {modes.periods_s[0]:.2f} s ({source}), {stiffness}, "
-                f"{sheet.damping:.0%} Rayleigh damping; "
-                f"{building.stick.law} storey springs"
+                f"{sheet.damping:.0%} Rayleigh damping; {springs}"
                 + (", with P-Delta" if building.p_delta else "") + "): the floor's absolute acceleration in time "
-                f"(floors.csv). Its storeys yield at a base shear of {strength.yield_base_shear_g:.3g} W: "
-                f"{strength.source}. Under a motion that yields no storey the floors' motions are the elastic "
-                "modes' ones. The building's own collapse is not assessed.")
+                f"(floors.csv). {'It yields' if hinged else 'Its storeys yield'} at a base shear of "
+                f"{strength.yield_base_shear_g:.3g} W: {strength.source}. Under a motion that "
+                f"{'does not yield it' if hinged else 'yields no storey'} the floors' motions are the elastic modes' "
+                "ones. The "
+                "building's own collapse is not assessed.")
     else:
         text = (f"{which}: each ground motion through the building's elastic modes "
                 f"({sheet.storeys} storeys, {sheet.system}, T1 {modes.periods_s[0]:.2f} s ({source}), {stiffness}, "

@@ -63,32 +63,28 @@ from scipy.linalg import eigh
 from .design import LAW_BY_SYSTEM, vertical_distribution
 from .hysteresis import BILINEAR, LAWS, bilinear_trial, pinching_trial
 from .modes import ALPHA_BY_SYSTEM, stiffness_matrix
+from .newmark import (DEFAULT_SUBSTEP_S, MAX_ITERATIONS, STEPS_PER_SHORTEST_PERIOD, TOLERANCE_M,  # noqa: F401
+                      YieldingResponse, _solve, rayleigh_coefficients, substeps_for)
 from .period import approximate_period
+from .wall_hinge import hinged_wall
 
 GRAVITY_M_S2 = 9.80665
-#: Longest substep [s] of the integration by default, and the fewest substeps per period of the
-#: stick's shortest elastic mode (Newmark's period error is (π²/12)(Δt/T)², Chopra [1]_ §5.5:
-#: 5e-3 at 40 steps; a stiff flexural mode of 0.02 s otherwise drifts out of phase in a long record).
-DEFAULT_SUBSTEP_S = 0.001
-STEPS_PER_SHORTEST_PERIOD = 40
-#: Newton's tolerance on the norm of the displacement correction [m] and its iteration cap.
-TOLERANCE_M = 1e-12
-MAX_ITERATIONS = 50
 #: Post-yield stiffness ratio b of the storey springs by default: 3 %, within the 2-5 % of the
 #: storey pushover curves of code-designed frames (e.g. FEMA P-695 archetypes) and the usual
 #: Steel01 choice; P-Delta, where asked, lowers the storeys' net post-yield stiffness further.
 DEFAULT_HARDENING = 0.03
 #: How the stick carries the elastic model's flexure, per system (:func:`yielding_stick`): frames and
 #: braced frames yield in a storey mechanism while their overall flexure (the columns' axial
-#: strains) stays elastic, so their column is kept elastic beside the yielding springs; a wall
-#: yields in flexure at its base, which a stick of storey springs can only stand in for with an
-#: equivalent shear stick.
+#: strains) stays elastic, so their column is kept elastic beside the yielding springs; a
+#: capacity-designed wall yields in flexure at its base and stays elastic above (Paulay & Priestley
+#: [6]_ ch. 5): the elastic model on a base hinge (:mod:`assess.building.wall_hinge`). ``other``
+#: systems keep the equivalent shear stick.
 FLEXURE_BY_SYSTEM = {
     "steel moment frame": "elastic column",
     "concrete moment frame": "elastic column",
     "eccentrically braced frame": "elastic column",
     "braced frame": "elastic column",
-    "shear wall": "equivalent shear",
+    "shear wall": "base hinge",
     "other": "equivalent shear",
 }
 
@@ -161,53 +157,6 @@ class YieldingStick:
         return self.yield_force_n / self.stiffness_n_m
 
 
-@dataclass(frozen=True)
-class YieldingResponse:
-    """Response history of a :class:`YieldingStick` under one ground motion.
-
-    Attributes
-    ----------
-    floor_accel_g : ndarray, (n + 1, n_samples)
-        Absolute acceleration [g] of each floor, row 0 the ground.
-    drift_m : ndarray, (n, n_samples)
-        Storey drift (floor i minus floor i-1) [m].
-    peak_drift_ratio : ndarray, (n,)
-        max |drift_i| / h_i [-].
-    ductility : ndarray, (n,)
-        max |drift_i| / (F_y,i / k_0,i) [-]: below 1, the storey stayed elastic.
-    unconverged_steps : int
-        Substeps where Newton's iterations stopped at their cap (0 expected).
-    """
-
-    floor_accel_g: np.ndarray
-    drift_m: np.ndarray
-    peak_drift_ratio: np.ndarray
-    ductility: np.ndarray
-    unconverged_steps: int
-
-
-def rayleigh_coefficients(periods_s, damping=0.05, modes=(1, 3)):
-    """(a_0, a_1) of Rayleigh damping with ratio ζ at two modes (1-based; capped at the last mode).
-
-    .. math::  a_0 = \\zeta\\frac{2\\omega_i\\omega_j}{\\omega_i + \\omega_j},\\qquad
-               a_1 = \\zeta\\frac{2}{\\omega_i + \\omega_j}
-
-    (Chopra [1]_ eq. 11.4.9 with ζ_i = ζ_j). Examples: ω 10 and 30 rad/s, 5 %:
-    a_0 = 0.05·600/40 = 0.75, a_1 = 0.1/40 = 0.0025:
-
-    >>> a0, a1 = rayleigh_coefficients(2 * np.pi / np.array([10.0, 20.0, 30.0]), 0.05)
-    >>> round(a0, 6), round(a1, 6)
-    (0.75, 0.0025)
-    """
-    omega = 2.0 * np.pi / np.asarray(periods_s, dtype=float)
-    if omega.size == 1:
-        return 0.0, 2.0 * damping / omega[0]
-    i = min(modes[0], omega.size) - 1
-    j = min(modes[1], omega.size) - 1
-    wi, wj = omega[i], omega[j]
-    return float(damping * 2.0 * wi * wj / (wi + wj)), float(damping * 2.0 / (wi + wj))
-
-
 def rayleigh_modal_damping(periods_s, a0, a1):
     """ζ_j = a_0/(2ω_j) + a_1 ω_j/2 of each mode [-] (for the elastic modal route)."""
     omega = 2.0 * np.pi / np.asarray(periods_s, dtype=float)
@@ -267,26 +216,6 @@ def p_delta_stiffness(floor_masses_kg, storey_heights_m):
     masses = np.asarray(floor_masses_kg, dtype=float)
     above = np.cumsum(masses[::-1])[::-1] * GRAVITY_M_S2
     return -shear_chain_matrix(above / np.asarray(storey_heights_m, dtype=float))
-
-
-@njit(cache=True)
-def _solve(matrix, rhs, out):  # pragma: no cover - compiled
-    """out = matrix⁻¹ rhs, Gaussian elimination without pivoting (SPD-dominant: M/βΔt²); overwrites matrix."""
-    n = rhs.size
-    b = rhs.copy()
-    for k in range(n):
-        pivot = matrix[k, k]
-        for i in range(k + 1, n):
-            factor = matrix[i, k] / pivot
-            if factor != 0.0:
-                for j in range(k, n):
-                    matrix[i, j] -= factor * matrix[k, j]
-                b[i] -= factor * b[k]
-    for i in range(n - 1, -1, -1):
-        total = b[i]
-        for j in range(i + 1, n):
-            total -= matrix[i, j] * out[j]
-        out[i] = total / matrix[i, i]
 
 
 @njit(cache=True)
@@ -415,11 +344,6 @@ def _history(ground_g, dt_s, substeps, masses, k0, fy, hardening, law, pinch_x, 
     return accel_out, drift_out, unconverged
 
 
-def substeps_for(dt_s, substep_s=DEFAULT_SUBSTEP_S) -> int:
-    """Substeps per record step so that each is at most ``substep_s``."""
-    return max(1, int(np.ceil(float(dt_s) / float(substep_s) - 1e-9)))
-
-
 def yielding_response(stick: YieldingStick, ground_accel_g, dt_s, *, substep_s=DEFAULT_SUBSTEP_S,
                       substeps=None) -> YieldingResponse:
     """Every floor's absolute acceleration and every storey's drift under one ground motion.
@@ -533,8 +457,11 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
                    storey_stiffness=None, floor_masses_kg=None, law=None, hardening=None, damping=0.05,
                    rayleigh_modes=(1, 3), flexure=None, p_delta=False,
                    damping_stiffness="tangent", damping_model="rayleigh",
-                   strength_profile=None) -> YieldingStick:
+                   strength_profile=None):
     """The yielding stick of a building described as :func:`~assess.building.modes.building_modes` takes it.
+
+    A :class:`YieldingStick`, or with ``flexure="base hinge"`` a
+    :class:`~assess.building.wall_hinge.HingedWall`.
 
     Parameters
     ----------
@@ -567,7 +494,12 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
         model's flexural column kept beside the springs, linear: the elastic limit is the
         elastic model itself, but the column never yields, so a flexure-dominated
         building (small α) then barely yields (at α = 1 its first storey's spring carries
-        2-8 % of the storey shear under the code's forces, 3 to 12 storeys).
+        2-8 % of the storey shear under the code's forces, 3 to 12 storeys). ``"base hinge"``: the
+        elastic model (scaled to T_1) rotating on a plastic hinge at its base, the wall above elastic
+        (:func:`~assess.building.wall_hinge.hinged_wall`): the hinge yields at the moment of the code's
+        forces at a base shear of ``storey_yield_ratio[0]`` times the weight (the other storeys' ratios
+        and ``strength_profile`` do not enter, ``damping_model`` must be ``"rayleigh"``); the elastic
+        limit has the elastic model's T_1 and its roof displacement under a load at the roof.
     p_delta : bool
         Add the gravity loads' geometric stiffness (:func:`p_delta_stiffness`); T_1 stays that without it.
     strength_profile : str, optional
@@ -582,7 +514,7 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
     floor_heights = np.cumsum(heights)
     masses = np.full(n, 1.0e5) if floor_masses_kg is None else np.asarray(floor_masses_kg, dtype=float)
     alpha = ALPHA_BY_SYSTEM[system] if alpha is None else float(alpha)
-    if alpha == 0.0:
+    if alpha == 0.0 and flexure != "base hinge":
         raise ValueError("a flexural cantilever (alpha 0) has no storey springs to yield")
     if period_s is None:
         period_s = approximate_period(floor_heights[-1], system)
@@ -590,6 +522,17 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
     full = stiffness_matrix(n, float(np.mean(heights)), alpha, relative)
     forces = vertical_distribution(masses, floor_heights, period_s)
     shears = np.cumsum(forces[::-1])[::-1]
+    if flexure == "base hinge":
+        ratio = np.asarray(storey_yield_ratio, dtype=float)
+        if ratio.shape != (n,) or np.any(~(ratio > 0.0)):
+            raise ValueError("storey_yield_ratio must give one positive ratio per storey")
+        if damping_model != "rayleigh":
+            raise ValueError("a wall on a base hinge takes Rayleigh damping on its elastic part only")
+        return hinged_wall(full, heights, masses, period_s, float(ratio[0]) * masses.sum() * GRAVITY_M_S2, forces,
+                           law=LAW_BY_SYSTEM[system] if law is None else law,
+                           hardening=DEFAULT_HARDENING if hardening is None else float(hardening),
+                           damping=damping, rayleigh_modes=rayleigh_modes,
+                           geometric_stiffness_n_m=p_delta_stiffness(masses, heights) if p_delta else None)
     if flexure == "equivalent shear":
         drifts = np.diff(np.concatenate([[0.0], np.linalg.solve(full, forces)]))
         springs = shears / drifts
@@ -601,7 +544,7 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
         drifts = np.diff(np.concatenate([[0.0], np.linalg.solve(full, forces)]))
         share = springs * drifts / shears
     else:
-        raise ValueError("flexure must be 'equivalent shear' or 'elastic column'")
+        raise ValueError("flexure must be 'equivalent shear', 'elastic column' or 'base hinge'")
     omega2 = eigh(shear_chain_matrix(springs) + linear, np.diag(masses), eigvals_only=True)
     scale = (2.0 * np.pi / np.sqrt(omega2[0]) / float(period_s)) ** 2
     springs, linear = springs * scale, linear * scale

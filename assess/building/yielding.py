@@ -3,7 +3,8 @@
 The building sheet's ``response: yielding`` (by default wherever the storeys' strength is known,
 docs/workbook.md) passes each ground motion through a stick of yielding storey springs
 (:func:`~assess.building.nonlinear.yielding_stick`: bilinear springs for steel frames and braces,
-pinching, stiffness-degrading ones for concrete; Rayleigh damping on the tangent stiffness), started
+pinching, stiffness-degrading ones for concrete; Rayleigh damping on the tangent stiffness), or, for a
+shear wall, the elastic model on a pinching plastic hinge at its base (:mod:`assess.building.wall_hinge`), started
 from the building's elastic model (:func:`~assess.building.modes.building_modes`: the same T_1, α and
 storeys' stiffness profile, ``modes.storey_stiffness``) with each storey's strength from
 ``yield_base_shear_g`` or the code's design times an overstrength
@@ -14,14 +15,16 @@ floor histories themselves (:func:`~assess.building.response.floor_records`): a 
 stay elastic is assessed exactly as the elastic route assesses it. The two models are not the same building at the
 threshold, though: for frames (the stick keeps the elastic model's flexural column) the stick's
 elastic limit is within 2-25 % RMS of the modal route's histories (Rayleigh against modal damping;
-roof PFA 0.98-1.10 times), but a wall's or ``other``'s stick is an equivalent shear stick (a storey
-spring cannot yield in flexure), whose elastic limit differs from the shear-flexural modes (α = 1) by
-150-185 % RMS with a roof PFA 1.25-1.65 times the modal one (3 to 12 storeys,
-``benchmarks/yielding_elastic_limit.py``): a motion that only just yields such a building gets floor
-motions noticeably different from one that just does not.
+roof PFA 0.98-1.10 times); a wall on its base hinge (the same T_1, its higher modes 2-2.5 % shorter, no
+damping on the hinge) within 23-43 % RMS, roof PFA 0.94-1.03 times; but ``other``'s stick is an
+equivalent shear stick (a storey spring cannot yield in flexure), whose elastic limit differs from the
+shear-flexural modes (α = 1) by 150-185 % RMS with a roof PFA 1.25-1.65 times the modal one (3 to 12
+storeys, ``benchmarks/yielding_elastic_limit.py``): a motion that only just yields such a building gets
+floor motions noticeably different from one that just does not.
 
-What the storeys did under each motion (peak drift ratio, ductility) goes to ``floors.csv``
-(:func:`storey_table`); a drift ratio beyond :data:`DRIFT_LIMIT_BY_SYSTEM` is beyond what the stick
+What the storeys did under each motion (peak drift ratio, ductility; for a wall on its base hinge, the
+wall's rotation ductility at its base in storey 1's place and none above, where it does not yield) goes to
+``floors.csv`` (:func:`storey_table`); a drift ratio beyond :data:`DRIFT_LIMIT_BY_SYSTEM` is beyond what the stick
 can be trusted for. The limits are the transient drifts of the *Collapse Prevention* structural
 performance level of FEMA 356 [1]_ Table C1-3 (steel moment frames 5 %, concrete frames 4 %,
 braced steel frames and concrete walls 2 %): there the building is near collapse, its members lose
@@ -59,6 +62,7 @@ from .design import DesignStrength, design_strength
 from .modes import BuildingModes
 from .nonlinear import STRENGTH_BY_SYSTEM, YieldingStick, yielding_response, yielding_stick
 from .response import floor_records
+from .wall_hinge import HingedWall, hinged_wall_response
 
 #: Storey drift ratio beyond which the stick is not trusted, per lateral system [-]: the Collapse
 #: Prevention level's transient drift of FEMA 356 Table C1-3 (module text); ``other`` takes the lowest.
@@ -83,8 +87,8 @@ class YieldingBuilding:
     modes : BuildingModes
         The building's elastic model (its periods and floors; the elastic route's histories where no
         storey yields).
-    stick : YieldingStick
-        The stick of storey springs.
+    stick : YieldingStick or HingedWall
+        The stick of storey springs, or a wall's elastic model on its base hinge.
     strength : DesignStrength
         Where its storeys' strength came from.
     system : str
@@ -127,13 +131,20 @@ class YieldingBuilding:
         return self.modes.effective_mass_ratio
 
 
-def _stick_key(stick: YieldingStick) -> str:
+def _stick_key(stick) -> str:
     digest = hashlib.blake2b(digest_size=16)
-    for value in (stick.floor_masses_kg, stick.storey_heights_m, stick.stiffness_n_m, stick.yield_force_n,
-                  stick.hardening, stick.linear_stiffness_n_m, np.asarray(stick.rayleigh, dtype=float)):
+    if isinstance(stick, HingedWall):
+        values = (stick.floor_masses_kg, stick.storey_heights_m, stick.assembled_stiffness(0.0),
+                  [stick.hinge_stiffness_n_m_rad, stick.reference_stiffness_n_m_rad, stick.yield_moment_n_m,
+                   stick.hinge_hardening, stick.stiffness_ratio_n], np.asarray(stick.rayleigh, dtype=float))
+        digest.update(b"base hinge|")
+    else:
+        values = (stick.floor_masses_kg, stick.storey_heights_m, stick.stiffness_n_m, stick.yield_force_n,
+                  stick.hardening, stick.linear_stiffness_n_m, np.asarray(stick.rayleigh, dtype=float))
+    for value in values:
         digest.update(np.ascontiguousarray(value, dtype=float).tobytes())
     digest.update(f"{stick.law}|{stick.pinch_x}|{stick.pinch_y}|{stick.unloading_beta}|"
-                  f"{stick.damping_stiffness}".encode())
+                  f"{getattr(stick, 'damping_stiffness', 'elastic part')}".encode())
     return digest.hexdigest()
 
 
@@ -169,6 +180,14 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
     arguments = dict(system=system, period_s=period_s, alpha=modes.alpha, storey_stiffness=modes.storey_stiffness,
                      damping=damping, p_delta=p_delta)
     stick = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, **arguments)
+    if isinstance(stick, HingedWall):  # only the base yields: the storeys above have no yield shear
+        strength = replace(strength, storey_yield_ratio=np.concatenate([strength.storey_yield_ratio[:1],
+                                                                        np.full(modes.storeys - 1, np.nan)]),
+                           source=strength.source.replace(", spread over the storeys as ASCE 7-22 §12.8.3 does", "")
+                           + "; the wall yields in flexure at its base only, its plastic hinge carrying the moment "
+                             "of ASCE 7-22 §12.8.3's lateral forces at that base shear, and stays elastic above")
+        return YieldingBuilding(modes, stick, strength, system, DRIFT_LIMIT_BY_SYSTEM[system], bool(p_delta),
+                                _stick_key(stick))
     code = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, strength_profile="code",
                           **arguments)
     profile = STRENGTH_BY_SYSTEM[system]
@@ -185,7 +204,9 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
 class StickHistory:
     """One ground history through the stick: every floor's acceleration (row 0 the ground) and each storey's
     peak drift ratio and ductility; ``elastic`` where no storey yielded (the rows are then the elastic
-    route's histories)."""
+    route's histories). A wall on its base hinge gives its rotation ductility at the base
+    (:mod:`assess.building.wall_hinge`) in the first storey's place and NaN above (those storeys do not
+    yield)."""
 
     floor_accel_g: np.ndarray
     peak_drift_ratio: np.ndarray
@@ -214,8 +235,11 @@ def stick_history(building: YieldingBuilding, ground_accel_g, dt_s: float) -> St
         if key in _MEMORY:
             _MEMORY.move_to_end(key)
             return _MEMORY[key]
-    response = yielding_response(building.stick, ground, dt_s)  # the compiled kernel releases the GIL
-    elastic = bool(np.all(response.ductility < 1.0))
+    # the compiled kernels release the GIL
+    response = (hinged_wall_response(building.stick, ground, dt_s) if isinstance(building.stick, HingedWall)
+                else yielding_response(building.stick, ground, dt_s))
+    ductility = response.ductility[np.isfinite(response.ductility)]
+    elastic = bool(np.all(ductility < 1.0))
     accel = response.floor_accel_g
     if elastic:
         history = floor_records(building.modes, [Record(ground, dt_s, "")])
@@ -267,7 +291,8 @@ def storey_table(building: YieldingBuilding, histories: Sequence[StickHistory], 
     Columns: ``response`` (``yielding``), ``yield_base_shear_g``, ``storey_yield_ratio`` (the storey's
     yield shear over the weight), ``drift_ratio_median``, ``drift_ratio_min``, ``drift_ratio_max`` (peak
     storey drift over its height), ``ductility_median``, ``ductility_min``, ``ductility_max`` (peak drift
-    over the yield drift), ``motions_yielded`` (motions under which any storey yielded), ``drift_limit``
+    over the yield drift; a wall on its base hinge: the wall's rotation ductility at its base in storey 1, NaN
+    above, as ``storey_yield_ratio``), ``motions_yielded`` (motions under which any storey yielded), ``drift_limit``
     and ``motions_beyond_drift_limit`` (motions whose storey drift passed it).
     """
     drift = np.array([h.peak_drift_ratio for h in histories])

@@ -33,7 +33,14 @@ def _drift_range(low: float, high: float) -> str:
 
 
 def _number(value: float) -> str:
-    """A ductility: one decimal (``1.03`` → ``1.0``), whole numbers from 10."""
+    """A ductility: one decimal (``1.03`` → ``1.0``), whole numbers from 10; a dash where there is none (a
+    wall's storeys above its base hinge do not yield).
+
+    >>> _number(1.03), _number(12.4), _number(float("nan"))
+    ('1.0', '12', '–')
+    """
+    if math.isnan(value):
+        return "–"
     return f"{value:.1f}" if value < 10 else f"{value:.0f}"
 
 
@@ -64,8 +71,11 @@ def building_context(result) -> dict | None:
     motions = int(table["motions"].iloc[0])
     yielded = int(table["motions_yielded"].iloc[0])
     limit = float(table["drift_limit"].iloc[0])
+    storeys = table[table["floor"] > 0]
+    # a wall on its base hinge: only storey 1 has a yield strength and a ductility (the hinge's)
+    hinged = len(storeys) > 1 and bool(storeys["storey_yield_ratio"].iloc[1:].isna().all())
     rows, beyond = [], {}
-    for _, row in table[table["floor"] > 0].iterrows():
+    for _, row in storeys.iterrows():
         k = int(row["floor"])
         count = int(row["motions_beyond_drift_limit"])
         if count:
@@ -73,22 +83,35 @@ def building_context(result) -> dict | None:
         rows.append({
             "storey": k,
             "floors": f"{floor_text(k - 1, numbering)}–{floor_text(k, numbering)}",
-            "yield_ratio": f"{row['storey_yield_ratio']:.3f}",  # one precision down the column
+            "yield_ratio": ("–" if math.isnan(row["storey_yield_ratio"])
+                            else f"{row['storey_yield_ratio']:.3f}"),  # one precision down the column
             "drift": _percent(row["drift_ratio_median"]),
             "drift_range": _drift_range(row["drift_ratio_min"], row["drift_ratio_max"]),
             "ductility": _number(row["ductility_median"]),
-            "ductility_range": f"{_number(row['ductility_min'])}–{_number(row['ductility_max'])}",
+            "ductility_range": ("" if math.isnan(row["ductility_min"])
+                                else f"{_number(row['ductility_min'])}–{_number(row['ductility_max'])}"),
             "beyond": count,
             "pfa_over_pga": f"{row['pfa_over_pga_median']:.2f}",
             "hf": f"{row['hf_asce7_22']:.2f}",
         })
-    lead = (f"The upper floors' motions come from a model of the building that yields: its storeys yield at a "
-            f"base shear of {float(table['yield_base_shear_g'].iloc[0]):.3f} times its weight (the notes at the top "
-            f"say where that comes from). {yielded} of the {motions} ground motions yielded at least one storey"
-            + (" (the others gave the elastic modes' floor motions)." if yielded < motions else ".")
-            + " Each storey's peak drift (over its height) and ductility (peak drift over the drift at which it "
-            "yields) are the median over the motions, with their range; PFA/PGA is the floor's, beside ASCE 7-22 "
-            "§13.3.1's H_f as a check (not a target).")
+    shear = float(table['yield_base_shear_g'].iloc[0])
+    if hinged:
+        lead = (f"The upper floors' motions come from a model of the building that yields: a wall that yields in "
+                f"bending at its base only, at a base shear of {shear:.3f} times its weight (the notes at the top say "
+                f"where that comes from), and stays elastic above. {yielded} of the {motions} ground motions "
+                "yielded it" + (" (the others gave the elastic modes' floor motions)." if yielded < motions else ".")
+                + " Each storey's peak drift (over its height) is the median over the motions, with their range; "
+                "the ductility, in storey 1's row, is the wall's at its base (its peak rotation there over the "
+                "rotation at which it yields); PFA/PGA is the floor's, beside ASCE 7-22 §13.3.1's H_f as a check "
+                "(not a target).")
+    else:
+        lead = (f"The upper floors' motions come from a model of the building that yields: its storeys yield at a "
+                f"base shear of {shear:.3f} times its weight (the notes at the top "
+                f"say where that comes from). {yielded} of the {motions} ground motions yielded at least one storey"
+                + (" (the others gave the elastic modes' floor motions)." if yielded < motions else ".")
+                + " Each storey's peak drift (over its height) and ductility (peak drift over the drift at which it "
+                "yields) are the median over the motions, with their range; PFA/PGA is the floor's, beside ASCE 7-22 "
+                "§13.3.1's H_f as a check (not a target).")
     warning = notice = ""
     if beyond:
         worst = max(beyond.values())

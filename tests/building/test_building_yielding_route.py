@@ -191,3 +191,41 @@ def test_the_storey_table_gives_every_yield_shear_to_one_precision(weak):
     assert [row["yield_ratio"] for row in section["rows"]] == [f"{r:.3f}" for r in ratios]
     assert all(re.fullmatch(r"\d\.\d{3}", row["yield_ratio"]) for row in section["rows"])
     assert "a base shear of 0.050 times its weight" in section["lead"]
+
+
+def test_a_shear_wall_yields_at_its_base_hinge(make_workbook):
+    """A shear wall (2 storeys of 4 m, T1 0.3 s, yield at 0.2 W given): its floors' histories are its elastic
+    model's on a base hinge (``hinged_wall_response`` of assess/building/wall_hinge.py, verified against
+    OpenSees in tests/verification/), storey 1 carries the wall's ductility at its base and the given
+    strength, storey 2 neither (it does not yield); the report's table says so with dashes, its words with
+    the base."""
+    from assess.building.wall_hinge import hinged_wall_response
+    from assess.report.building import building_context
+
+    yielding_module.forget()
+    path = make_workbook(_sheets(("system", "shear wall"), ("response", "yielding"), ("yield_base_shear_g", 0.2)),
+                         record=False)
+    histories, ground, level, simulated = _floor_histories(path)
+    wall = yielding_stick(2, 4.0, np.array([0.2, 0.1]), system="shear wall", period_s=0.3, damping=0.05)
+    floors = simulated.floors.set_index("floor")
+    assert floors.loc[1, "storey_yield_ratio"] == pytest.approx(0.2, rel=1e-12)
+    assert np.isnan(floors.loc[2, "storey_yield_ratio"]) and np.isnan(floors.loc[2, "ductility_median"])
+    ductility = []
+    for motion in ground:
+        response = hinged_wall_response(wall, motion.accel_g, motion.dt_s)
+        if response.ductility[0] >= 1.0:
+            for floor in (1, 2):
+                (got,) = histories[f"{motion.name} @ floor {floor}"]
+                # the same model to rounding (the product's T_1 comes back from the modes' eigenvalues)
+                np.testing.assert_allclose(got, response.floor_accel_g[floor], rtol=0, atol=1e-9)
+        ductility.append(response.ductility[0])
+    assert max(ductility) >= 1.0, "the design level must yield this wall for the test to mean anything"
+    assert floors.loc[1, "ductility_median"] == pytest.approx(np.median(ductility), rel=1e-9)
+    assert floors.loc[1, "motions_yielded"] == sum(d >= 1.0 for d in ductility)
+    result = run_assessment(read_workbook(path), "DE", seed=3)
+    section = building_context(result)
+    assert [row["yield_ratio"] for row in section["rows"]] == ["0.200", "–"]
+    assert section["rows"][1]["ductility"] == "–" and section["rows"][1]["ductility_range"] == ""
+    assert "yields in bending at its base only" in section["lead"]
+    html = render_html(result)
+    assert "plastic hinge at the base" in html and "<td class=\"num\">– </td>" not in html
