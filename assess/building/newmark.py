@@ -100,6 +100,28 @@ def _solve(matrix, rhs, out):  # pragma: no cover - compiled
         out[i] = total / matrix[i, i]
 
 
+@njit(cache=True)
+def _rates(u_new, u, v, a, a_new, v_new, h, count):  # pragma: no cover - compiled
+    """Newmark's average acceleration (γ = 1/2, β = 1/4) at the trial displacements ``u_new`` of the first
+    ``count`` degrees of freedom: the accelerations into ``a_new``, the velocities into ``v_new``."""
+    gamma = 0.5
+    beta_n = 0.25
+    c_mass = 1.0 / (beta_n * h * h)
+    for r in range(count):
+        a_new[r] = c_mass * (u_new[r] - u[r]) - v[r] / (beta_n * h) - (0.5 / beta_n - 1.0) * a[r]
+        v_new[r] = v[r] + h * ((1.0 - gamma) * a[r] + gamma * a_new[r])
+
+
+@njit(cache=True)
+def _record(accel_out, drift_out, column, ground_g, u, a, n):  # pragma: no cover - compiled
+    """The sample ``column`` of the floors' absolute accelerations [g] (the ground's in row 0) and of the
+    storeys' drifts [m], from the floors' displacements ``u`` [m] and relative accelerations ``a`` [m/s²]."""
+    accel_out[0, column] = ground_g
+    for r in range(n):
+        accel_out[r + 1, column] = ground_g + a[r] / 9.80665
+        drift_out[r, column] = u[r] - (u[r - 1] if r > 0 else 0.0)
+
+
 def substeps_for(dt_s, substep_s=DEFAULT_SUBSTEP_S) -> int:
     """Substeps per record step so that each is at most ``substep_s``."""
     return max(1, int(np.ceil(float(dt_s) / float(substep_s) - 1e-9)))

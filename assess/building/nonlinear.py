@@ -64,7 +64,7 @@ from .design import LAW_BY_SYSTEM, vertical_distribution
 from .hysteresis import BILINEAR, LAWS, bilinear_trial, pinching_trial
 from .modes import ALPHA_BY_SYSTEM, stiffness_matrix
 from .newmark import (DEFAULT_SUBSTEP_S, MAX_ITERATIONS, STEPS_PER_SHORTEST_PERIOD, TOLERANCE_M,  # noqa: F401
-                      YieldingResponse, _solve, rayleigh_coefficients, substeps_for)
+                      YieldingResponse, _rates, _record, _solve, rayleigh_coefficients, substeps_for)
 from .period import approximate_period
 from .wall_hinge import hinged_wall
 
@@ -266,10 +266,7 @@ def _history(ground_g, dt_s, substeps, masses, k0, fy, hardening, law, pinch_x, 
     matrix = np.zeros((n, n))
     accel_out = np.empty((n + 1, n_samples))
     drift_out = np.empty((n, n_samples))
-    accel_out[0, 0] = ground_g[0]
-    for i in range(n):
-        accel_out[i + 1, 0] = ground_g[0] + a[i] / g
-        drift_out[i, 0] = 0.0
+    _record(accel_out, drift_out, 0, ground_g[0], u, a, n)
     unconverged = 0
     for step in range(n_samples - 1):
         g0 = ground_g[step]
@@ -293,9 +290,7 @@ def _history(ground_g, dt_s, substeps, masses, k0, fy, hardening, law, pinch_x, 
                 u_new[r] = u[r]
             converged = False
             for iteration in range(max_iterations):
-                for r in range(n):
-                    a_new[r] = c_mass * (u_new[r] - u[r]) - v[r] / (beta_n * h) - (0.5 / beta_n - 1.0) * a[r]
-                    v_new[r] = v[r] + h * ((1.0 - gamma) * a[r] + gamma * a_new[r])
+                _rates(u_new, u, v, a, a_new, v_new, h, n)
                 _spring_states(u_new, law, committed, trial, k0, fy, hardening, pinch_x, pinch_y, beta,
                                force, tangent)
                 for r in range(n):
@@ -326,9 +321,7 @@ def _history(ground_g, dt_s, substeps, masses, k0, fy, hardening, law, pinch_x, 
             if not converged:
                 unconverged += 1
             # the state at the converged displacements, then commit
-            for r in range(n):
-                a_new[r] = c_mass * (u_new[r] - u[r]) - v[r] / (beta_n * h) - (0.5 / beta_n - 1.0) * a[r]
-                v_new[r] = v[r] + h * ((1.0 - gamma) * a[r] + gamma * a_new[r])
+            _rates(u_new, u, v, a, a_new, v_new, h, n)
             _spring_states(u_new, law, committed, trial, k0, fy, hardening, pinch_x, pinch_y, beta, force, tangent)
             for r in range(n):
                 for s in range(8):
@@ -337,10 +330,7 @@ def _history(ground_g, dt_s, substeps, masses, k0, fy, hardening, law, pinch_x, 
                 u[r] = u_new[r]
                 v[r] = v_new[r]
                 a[r] = a_new[r]
-        accel_out[0, step + 1] = g1
-        for r in range(n):
-            accel_out[r + 1, step + 1] = g1 + a[r] / g
-            drift_out[r, step + 1] = u[r] - (u[r - 1] if r > 0 else 0.0)
+        _record(accel_out, drift_out, step + 1, g1, u, a, n)
     return accel_out, drift_out, unconverged
 
 

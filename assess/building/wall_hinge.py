@@ -65,7 +65,7 @@ from scipy.linalg import eigh
 
 from .hysteresis import BILINEAR, LAWS, STATE_SIZE, bilinear_trial, pinching_trial
 from .newmark import (DEFAULT_SUBSTEP_S, MAX_ITERATIONS, STEPS_PER_SHORTEST_PERIOD, TOLERANCE_M,
-                      YieldingResponse, _solve, rayleigh_coefficients, substeps_for)
+                      YieldingResponse, _rates, _record, _solve, rayleigh_coefficients, substeps_for)
 
 #: n of the stiffness modification: the hinge's elastic stiffness over the reference k_ref is n + 1 (Ibarra &
 #: Krawinkler [2]_'s n = 10, the OpenSees examples' [3]_).
@@ -291,10 +291,7 @@ def _hinge_history(ground_g, dt_s, substeps, masses, k_full, damping, k_theta, m
     solved = np.zeros(m)
     accel_out = np.empty((n + 1, n_samples))
     drift_out = np.empty((n, n_samples))
-    accel_out[0, 0] = ground_g[0]
-    for i in range(n):
-        accel_out[i + 1, 0] = ground_g[0] + a[i] / g
-        drift_out[i, 0] = 0.0
+    _record(accel_out, drift_out, 0, ground_g[0], u, a, n)
     peak_theta = 0.0
     unconverged = 0
     for step in range(n_samples - 1):
@@ -306,9 +303,7 @@ def _hinge_history(ground_g, dt_s, substeps, masses, k_full, damping, k_theta, m
                 u_new[r] = u[r]
             converged = False
             for iteration in range(max_iterations):
-                for r in range(m):
-                    a_new[r] = c_mass * (u_new[r] - u[r]) - v[r] / (beta_n * h) - (0.5 / beta_n - 1.0) * a[r]
-                    v_new[r] = v[r] + h * ((1.0 - gamma) * a[r] + gamma * a_new[r])
+                _rates(u_new, u, v, a, a_new, v_new, h, m)
                 moment, tangent = _hinge_state(u_new[n], law, committed, trial, k_theta, m_y, hardening,
                                                pinch_x, pinch_y, beta)
                 for r in range(m):
@@ -333,9 +328,7 @@ def _hinge_history(ground_g, dt_s, substeps, masses, k_full, damping, k_theta, m
                     break
             if not converged:
                 unconverged += 1
-            for r in range(m):
-                a_new[r] = c_mass * (u_new[r] - u[r]) - v[r] / (beta_n * h) - (0.5 / beta_n - 1.0) * a[r]
-                v_new[r] = v[r] + h * ((1.0 - gamma) * a[r] + gamma * a_new[r])
+            _rates(u_new, u, v, a, a_new, v_new, h, m)
             _hinge_state(u_new[n], law, committed, trial, k_theta, m_y, hardening, pinch_x, pinch_y, beta)
             for s in range(STATE_SIZE):
                 committed[s] = trial[s]
@@ -343,10 +336,7 @@ def _hinge_history(ground_g, dt_s, substeps, masses, k_full, damping, k_theta, m
                 u[r] = u_new[r]
                 v[r] = v_new[r]
                 a[r] = a_new[r]
-        accel_out[0, step + 1] = g1
-        for r in range(n):
-            accel_out[r + 1, step + 1] = g1 + a[r] / g
-            drift_out[r, step + 1] = u[r] - (u[r - 1] if r > 0 else 0.0)
+        _record(accel_out, drift_out, step + 1, g1, u, a, n)
         if abs(u[n]) > peak_theta:
             peak_theta = abs(u[n])
     return accel_out, drift_out, peak_theta, unconverged
