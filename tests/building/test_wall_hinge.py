@@ -23,6 +23,9 @@ def test_a_shear_wall_yields_at_its_base_and_reports_no_upper_storey_strength():
     ratios = building.strength.storey_yield_ratio
     assert ratios[0] == pytest.approx(0.3) and np.all(np.isnan(ratios[1:]))
     assert "at its base only" in building.strength.source
+    # the design's "spread over the storeys" is taken out of the note by its wording: a rewording must be seen here
+    assert "spread over the storeys" not in building.strength.source
+    assert building.strength.source.startswith("base shear at yield 0.3 W as given;")
     t = np.arange(0.0, 10.0, 0.01)
     strong = stick_history(building, 1.0 * np.sin(2 * np.pi * t / 0.5) * (t < 4.0), 0.01)
     weak = stick_history(building, 0.02 * np.sin(2 * np.pi * t / 0.5) * (t < 4.0), 0.01)
