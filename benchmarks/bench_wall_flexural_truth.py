@@ -57,7 +57,7 @@ from assess.building import yielding as yielding_module  # noqa: E402
 from peers import opensees_buildings  # noqa: E402
 from peers.opensees_buildings import WALLF6, wall_pushover_yield_base_shear_g  # noqa: E402
 from peers.yielding_equipment import (LEVELS, _key, assess, compare, ground_suite, opensees_floors,  # noqa: E402
-                                      workbook)
+                                      truth_result, workbook)
 
 THRESHOLD_G = 0.3  # about the items' μ: the floor acceleration above which they slide
 
@@ -136,8 +136,7 @@ def main(argv=None):
                 suite = ground_suite(11, wall.period_s, LEVELS[level])
                 with tempfile.TemporaryDirectory() as tmp:
                     folder = Path(tmp)
-                    with opensees_floors(wall, suite):
-                        reference = assess(workbook(folder, wall, suite, level, [["response", "yielding"]]), level)
+                    reference = truth_result(wall, suite, level, folder)
                     floors = reference[0].floors.set_index("floor")
                     print(f"n {n:g} {level}: the wall's rotation ductility (1 + θ_p/θ_y), median "
                           f"{floors.loc[1, 'ductility_median']:.2f}, PFA/PGA by floor "

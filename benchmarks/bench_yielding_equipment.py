@@ -62,7 +62,7 @@ sys.path[:0] = [str(REPO / "tests")]
 from assess.building.floors import height_factor  # noqa: E402
 from peers.opensees_buildings import BUILDINGS, pushover_yield_base_shear_g  # noqa: E402
 from peers.yielding_equipment import (LEVELS, SYSTEM_R, assess, compare, ground_suite,  # noqa: E402
-                                      opensees_floors, workbook)
+                                      truth_result, workbook)
 
 
 def markdown(frame: pd.DataFrame) -> str:
@@ -118,8 +118,7 @@ def main(argv=None):
                 for omega in args.overstrengths.split(","):
                     routes[f"design x {omega}"] = [["response", "yielding"], ["overstrength", float(omega)]]
                 routes["elastic"] = [["response", "elastic"]]
-                with opensees_floors(truth, suite):
-                    reference = assess(workbook(folder, truth, suite, level, [["response", "yielding"]]), level)
+                reference = truth_result(truth, suite, level, folder)
                 results = {route: assess(workbook(folder, truth, suite, level, extra), level)
                            for route, extra in routes.items()}
             for route, result in results.items():

@@ -36,7 +36,7 @@ sys.path[:0] = [str(REPO / "tests")]
 from assess.building import yielding as yielding_module  # noqa: E402
 from assess.building.nonlinear import elastic_periods, rayleigh_coefficients  # noqa: E402
 from peers.opensees_buildings import BUILDINGS, pushover_yield_base_shear_g  # noqa: E402
-from peers.yielding_equipment import LEVELS, assess, compare, ground_suite, opensees_floors, workbook  # noqa: E402
+from peers.yielding_equipment import LEVELS, assess, compare, ground_suite, truth_result, workbook  # noqa: E402
 
 WALL = BUILDINGS["wall6"]
 ORIGINAL = yielding_module.yielding_stick
@@ -83,8 +83,7 @@ def main(argv=None):
         suite = ground_suite(11, truth.period_s, LEVELS[level])
         with tempfile.TemporaryDirectory() as tmp:
             folder = Path(tmp)
-            with opensees_floors(truth, suite):
-                reference = assess(workbook(folder, truth, suite, level, [["response", "yielding"]]), level)
+            reference = truth_result(truth, suite, level, folder)
             truth_floors = reference[0].floors.set_index("floor")
             for name in variants:
                 yielding_module.yielding_stick = variant_stick(*VARIANTS[name])

@@ -125,6 +125,13 @@ def assess(path, level):
     return result, motions.set_index(["id", "ground", "direction"]).sort_index()
 
 
+def truth_result(truth, suite, level, folder: Path):
+    """The product's answer on the OpenSees building ``truth``'s floor histories under ``suite`` at ``level``
+    (as :func:`assess` gives it): the reference every route is compared with."""
+    with opensees_floors(truth, suite):
+        return assess(workbook(folder, truth, suite, level, [["response", "yielding"]]), level)
+
+
 def overturn_class(p_overturn):
     """Each item's overturning verdict as the summary's risk takes it from ``p_overturn`` alone: ``high`` from
     ``risk_overturn_high``, ``moderate`` from ``risk_overturn_moderate`` (the defaults), else ``low``."""
