@@ -94,24 +94,20 @@ def building_context(result) -> dict | None:
             "pfa_over_pga": f"{row['pfa_over_pga_median']:.2f}",
             "hf": f"{row['hf_asce7_22']:.2f}",
         })
-    shear = float(table['yield_base_shear_g'].iloc[0])
-    if hinged:
-        lead = (f"The upper floors' motions come from a model of the building that yields: a wall that yields in "
-                f"bending at its base only, at a base shear of {shear:.3f} times its weight (the notes at the top say "
-                f"where that comes from), and stays elastic above. {yielded} of the {motions} ground motions "
-                "yielded it" + (" (the others gave the elastic modes' floor motions)." if yielded < motions else ".")
-                + " Each storey's peak drift (over its height) is the median over the motions, with their range; "
-                "the ductility, in storey 1's row, is the wall's at its base (its peak rotation there over the "
-                "rotation at which it yields); PFA/PGA is the floor's, beside ASCE 7-22 §13.3.1's H_f as a check "
-                "(not a target).")
-    else:
-        lead = (f"The upper floors' motions come from a model of the building that yields: its storeys yield at a "
-                f"base shear of {shear:.3f} times its weight (the notes at the top "
-                f"say where that comes from). {yielded} of the {motions} ground motions yielded at least one storey"
-                + (" (the others gave the elastic modes' floor motions)." if yielded < motions else ".")
-                + " Each storey's peak drift (over its height) and ductility (peak drift over the drift at which it "
-                "yields) are the median over the motions, with their range; PFA/PGA is the floor's, beside ASCE 7-22 "
-                "§13.3.1's H_f as a check (not a target).")
+    shear = f"a base shear of {float(table['yield_base_shear_g'].iloc[0]):.3f} times its weight (the notes at the top say where " \
+            "that comes from)"
+    what_yields, yielded_what, measures = (
+        (f"a wall that yields in bending at its base only, at {shear}, and stays elastic above", "yielded it",
+         "Each storey's peak drift (over its height) is the median over the motions, with their range; the "
+         "ductility, in storey 1's row, is the wall's at its base (its peak rotation there over the rotation at "
+         "which it yields)") if hinged else
+        (f"its storeys yield at {shear}", "yielded at least one storey",
+         "Each storey's peak drift (over its height) and ductility (peak drift over the drift at which it yields) "
+         "are the median over the motions, with their range"))
+    lead = (f"The upper floors' motions come from a model of the building that yields: {what_yields}. {yielded} of "
+            f"the {motions} ground motions {yielded_what}"
+            + (" (the others gave the elastic modes' floor motions)." if yielded < motions else ".")
+            + f" {measures}; PFA/PGA is the floor's, beside ASCE 7-22 §13.3.1's H_f as a check (not a target).")
     warning = notice = ""
     if beyond:
         worst = max(beyond.values())
