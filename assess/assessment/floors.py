@@ -25,9 +25,8 @@ from assess.building.design import design_storey_stiffness
 from assess.building.floors import floors_table
 from assess.building.period import approximate_period
 from assess.building.response import floor_records
-from assess.building.wall_hinge import HingedWall
-from assess.building.yielding import (YieldingBuilding, building_floor_records, storey_table, yielding_building,
-                                      yielding_histories)
+from assess.building.yielding import (BASE_HINGE, YieldingBuilding, building_floor_records, storey_table,
+                                      yielding_building, yielding_histories)
 from assess.errors import InputError, Problem
 from assess.hazard.levels import HazardLevel
 from assess.hazard.records import Record
@@ -215,7 +214,7 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
     stiffness = stiffness_note(modes, sheet)
     if isinstance(building, YieldingBuilding):
         strength = building.strength
-        hinged = isinstance(building.stick, HingedWall)
+        hinged = building.yielding_model == BASE_HINGE
         springs = (f"its elastic model on a {building.stick.law} plastic hinge at the base" if hinged
                    else f"{building.stick.law} storey springs")
         text = (f"{which}: each ground motion through the building, modelled as yielding ({sheet.storeys} storeys, "

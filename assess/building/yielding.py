@@ -76,6 +76,12 @@ DRIFT_LIMIT_BY_SYSTEM = {
 }
 #: Bytes of stick answers (every floor's history per ground history) a run keeps, most recent first.
 MEMORY_BYTES = 256 * 2 ** 20
+#: Which yielding model a building's stick is (:attr:`YieldingBuilding.yielding_model`, ``floors.csv``'s
+#: ``yielding_model``): storeys that yield in their springs
+#: (:class:`~assess.building.nonlinear.YieldingStick`), or a wall's elastic model on a plastic hinge at its
+#: base that yields there only (:class:`~assess.building.wall_hinge.HingedWall`).
+STOREY_SPRINGS = "storey springs"
+BASE_HINGE = "base hinge"
 
 
 @dataclass(frozen=True)
@@ -108,6 +114,12 @@ class YieldingBuilding:
     drift_limit: float
     p_delta: bool
     key: str
+
+    @property
+    def yielding_model(self) -> str:
+        """:data:`BASE_HINGE` where the stick is a wall on its base hinge, else :data:`STOREY_SPRINGS`: the
+        model that runs, read from the stick itself."""
+        return BASE_HINGE if isinstance(self.stick, HingedWall) else STOREY_SPRINGS
 
     # the elastic model's description, as the route reads it from BuildingModes
     @property
@@ -288,7 +300,8 @@ def storey_table(building: YieldingBuilding, histories: Sequence[StickHistory], 
     """What each storey did over the suite, one row per floor of ``floors`` (storey k below floor k; floor 0
     has none): the columns ``floors.csv`` adds for a yielding building (docs/outputs.md).
 
-    Columns: ``response`` (``yielding``), ``yield_base_shear_g``, ``storey_yield_ratio`` (the storey's
+    Columns: ``response`` (``yielding``), ``yielding_model`` (:attr:`YieldingBuilding.yielding_model`:
+    ``storey springs`` or ``base hinge``), ``yield_base_shear_g``, ``storey_yield_ratio`` (the storey's
     yield shear over the weight), ``drift_ratio_median``, ``drift_ratio_min``, ``drift_ratio_max`` (peak
     storey drift over its height), ``ductility_median``, ``ductility_min``, ``ductility_max`` (peak drift
     over the yield drift; a wall on its base hinge: the wall's rotation ductility at its base in storey 1, NaN
@@ -300,11 +313,11 @@ def storey_table(building: YieldingBuilding, histories: Sequence[StickHistory], 
     yielded = int(sum(not h.elastic for h in histories))
     rows = []
     for k in sorted(int(f) for f in floors):
-        row = {"response": "yielding", "yield_base_shear_g": building.strength.yield_base_shear_g,
-               "storey_yield_ratio": np.nan, "drift_ratio_median": np.nan, "drift_ratio_min": np.nan,
-               "drift_ratio_max": np.nan, "ductility_median": np.nan, "ductility_min": np.nan,
-               "ductility_max": np.nan, "motions_yielded": yielded, "drift_limit": building.drift_limit,
-               "motions_beyond_drift_limit": np.nan}
+        row = {"response": "yielding", "yielding_model": building.yielding_model,
+               "yield_base_shear_g": building.strength.yield_base_shear_g, "storey_yield_ratio": np.nan,
+               "drift_ratio_median": np.nan, "drift_ratio_min": np.nan, "drift_ratio_max": np.nan,
+               "ductility_median": np.nan, "ductility_min": np.nan, "ductility_max": np.nan, "motions_yielded": yielded,
+               "drift_limit": building.drift_limit, "motions_beyond_drift_limit": np.nan}
         if k > 0:
             d, mu = drift[:, k - 1], ductility[:, k - 1]
             row.update(storey_yield_ratio=float(building.strength.storey_yield_ratio[k - 1]),

@@ -1,16 +1,17 @@
 """The report's building section: what a yielding building's storeys did, and where the model stops.
 
 Everything here is read from the result's ``floors.csv`` table (:func:`assess.building.yielding.storey_table`
-and :func:`assess.building.floors.floors_table`): each storey's peak drift ratio and ductility over the
-suite, the storeys whose drift passed the limit the model is trusted to (FEMA 356 Table C1-3's Collapse
-Prevention drift for the system, :data:`assess.building.yielding.DRIFT_LIMIT_BY_SYSTEM`), and, as a sanity
-check beside each floor's PFA/PGA, ASCE 7-22 §13.3.1's H_f. An elastic building has no section: its
-floors are described in the report's notes.
+and :func:`assess.building.floors.floors_table`): which model yielded (``yielding_model``: storey springs, or a
+wall's base hinge), each storey's peak drift ratio and ductility over the suite, the storeys whose drift passed
+the limit the model is trusted to (FEMA 356 Table C1-3's Collapse Prevention drift for the system,
+:data:`assess.building.yielding.DRIFT_LIMIT_BY_SYSTEM`), and, as a sanity check beside each floor's PFA/PGA,
+ASCE 7-22 §13.3.1's H_f. An elastic building has no section: its floors are described in the report's notes.
 """
 from __future__ import annotations
 
 import math
 
+from assess.building.yielding import BASE_HINGE
 from assess.quantity_text import floor_numbering_of, floor_text
 
 #: Sentence closing the section, whatever the drifts.
@@ -72,8 +73,8 @@ def building_context(result) -> dict | None:
     yielded = int(table["motions_yielded"].iloc[0])
     limit = float(table["drift_limit"].iloc[0])
     storeys = table[table["floor"] > 0]
-    # a wall on its base hinge: only storey 1 has a yield strength and a ductility (the hinge's)
-    hinged = len(storeys) > 1 and bool(storeys["storey_yield_ratio"].iloc[1:].isna().all())
+    # a wall on its base hinge (the model that ran says so): only storey 1 has a yield strength and a ductility
+    hinged = table["yielding_model"].iloc[0] == BASE_HINGE
     rows, beyond = [], {}
     for _, row in storeys.iterrows():
         k = int(row["floor"])

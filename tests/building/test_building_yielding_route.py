@@ -79,6 +79,7 @@ def test_a_yielding_building_gives_the_sticks_floor_motions(make_workbook):
     floors = simulated.floors.set_index("floor")
     assert floors.loc[1, "yield_base_shear_g"] == pytest.approx(0.6, rel=1e-12)
     assert floors.loc[[1, 2], "storey_yield_ratio"].to_numpy() == pytest.approx(ratios, rel=1e-12)
+    assert (floors["yielding_model"] == "storey springs").all()  # the stick of storey springs built above
     elastic = _elastic_expected(ground)
     yielded = 0
     drifts = []
@@ -210,6 +211,7 @@ def test_a_shear_wall_yields_at_its_base_hinge(make_workbook):
     floors = simulated.floors.set_index("floor")
     assert floors.loc[1, "storey_yield_ratio"] == pytest.approx(0.2, rel=1e-12)
     assert np.isnan(floors.loc[2, "storey_yield_ratio"]) and np.isnan(floors.loc[2, "ductility_median"])
+    assert (floors["yielding_model"] == "base hinge").all()
     ductility = []
     for motion in ground:
         response = hinged_wall_response(wall, motion.accel_g, motion.dt_s)
@@ -229,3 +231,40 @@ def test_a_shear_wall_yields_at_its_base_hinge(make_workbook):
     assert "yields in bending at its base only" in section["lead"]
     html = render_html(result)
     assert "plastic hinge at the base" in html and "<td class=\"num\">– </td>" not in html
+
+
+def test_a_steel_moment_frame_yields_in_storey_springs(make_workbook):
+    """floors.csv names the model that ran: a steel moment frame's storey springs, with a yield ratio in every
+    storey (a wall's base hinge: tests above)."""
+    path = make_workbook(_sheets(("system", "steel moment frame"), ("response", "yielding"),
+                                 ("yield_base_shear_g", 0.2)), record=False)
+    result = run_assessment(read_workbook(path), "DE", seed=3)
+    assert (result.floors["yielding_model"] == "storey springs").all()
+    assert result.floors.loc[result.floors["floor"] > 0, "storey_yield_ratio"].notna().all()
+
+
+def test_the_reports_wording_follows_the_model_that_ran_not_the_empty_cells(weak):
+    """The storey table's lead reads ``yielding_model``: the same storeys (every storey with a yield ratio) get
+    the base hinge's words where the field says ``base hinge``, and a wall's table (storey 2 empty) gets the
+    storeys' words where it says ``storey springs`` (what the report once guessed from the empty cells, and
+    could not for a one-storey wall)."""
+    import dataclasses
+
+    from assess.report.building import building_context
+
+    springs = building_context(weak)["lead"]
+    assert "its storeys yield at a base shear of" in springs and "yielded at least one storey" in springs
+    assert "at its base only" not in springs
+    hinge_floors = weak.floors.assign(yielding_model="base hinge")
+    hinged = building_context(dataclasses.replace(weak, floors=hinge_floors))["lead"]
+    assert "a wall that yields in bending at its base only, at a base shear of 0.050" in hinged
+    assert "yielded it" in hinged and "the ductility, in storey 1's row, is the wall's at its base" in hinged
+    wall_floors = weak.floors.copy()
+    wall_floors.loc[wall_floors["floor"] > 1, ["storey_yield_ratio", "ductility_median", "ductility_min",
+                                               "ductility_max"]] = np.nan
+    assert "its storeys yield at" in building_context(dataclasses.replace(weak, floors=wall_floors))["lead"]
+    assert "at its base only" in building_context(dataclasses.replace(
+        weak, floors=wall_floors.assign(yielding_model="base hinge")))["lead"]
+    # a one-storey wall has no empty storey to guess from: the field still gives the hinge's words
+    one_storey = weak.floors[weak.floors["floor"] <= 1].assign(yielding_model="base hinge")
+    assert "at its base only" in building_context(dataclasses.replace(weak, floors=one_storey))["lead"]

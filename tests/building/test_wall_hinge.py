@@ -5,7 +5,8 @@ import numpy as np
 import pytest
 
 from assess.building.modes import building_modes
-from assess.building.nonlinear import yielding_stick
+from assess.building.nonlinear import YieldingStick, yielding_stick
+from assess.building.wall_hinge import HingedWall
 from assess.building.yielding import stick_history, storey_table, yielding_building
 
 HEIGHT_M = 3.5
@@ -37,6 +38,22 @@ def test_a_shear_wall_yields_at_its_base_and_reports_no_upper_storey_strength():
     assert table["ductility_median"].iloc[2:].isna().all()
     assert table["storey_yield_ratio"].iloc[2:].isna().all()
     assert (table["drift_ratio_median"].iloc[1:] > 0).all()
+    # the model that ran, on every row: the stick is a HingedWall
+    assert isinstance(building.stick, HingedWall)
+    assert (table["yielding_model"] == "base hinge").all()
+
+
+@pytest.mark.parametrize("system", ["steel moment frame", "concrete moment frame", "braced frame", "other"])
+def test_other_systems_yield_in_storey_springs(system):
+    """Every system but a shear wall yields in its storey springs (a YieldingStick), and floors.csv says so."""
+    modes = building_modes(4, HEIGHT_M, system=system, period_s=0.6)
+    building = yielding_building(modes, system, yield_base_shear_g=0.3)
+    assert isinstance(building.stick, YieldingStick) and not isinstance(building.stick, HingedWall)
+    t = np.arange(0.0, 6.0, 0.01)
+    history = stick_history(building, 1.0 * np.sin(2 * np.pi * t / 0.6) * (t < 3.0), 0.01)
+    table = storey_table(building, [history], range(5))
+    assert (table["yielding_model"] == "storey springs").all()
+    assert table["storey_yield_ratio"].iloc[1:].notna().all()
 
 
 def test_equivalent_shear_stays_available_for_walls():
