@@ -133,7 +133,7 @@ def regression_words(summary: pd.DataFrame, im_range: tuple) -> dict:
     >>> words["reasons"]
     ['IM, uplift', '', '']
     >>> words["note"]
-    Markup('“n/a” where it does not: for every item here its governing motion has no clear pulse, none carrying at least 38 % of PTA; <i>IM</i>: its IM is outside the range the regression was fitted on, 1.71–6.4; <i>uplift</i>: it uplifts.')
+    Markup('“n/a” where it does not: for every freestanding item here its governing motion has no clear pulse, none carrying at least 38 % of PTA; <i>IM</i>: its IM is outside the range the regression was fitted on, 1.71–6.4; <i>uplift</i>: it uplifts.')
     """
     free = _analysed(summary)
     reasons = [_reasons(note) for note in summary.get("regression_note", pd.Series([""] * len(summary)))]
@@ -143,7 +143,7 @@ def regression_words(summary: pd.DataFrame, im_range: tuple) -> dict:
     shown = {short for r in unapplied for short in r if short not in shared}
     im_min, im_max = (f"{value:g}" for value in im_range)
     meaning = {short: words.format(im_min=im_min, im_max=im_max) for _, short, words in REGRESSION_SHORT}
-    every = "every item here" if len(unapplied) == int(free.sum()) else "every item marked n/a here"
+    every = "every freestanding item here" if len(unapplied) == int(free.sum()) else "every item marked n/a here"
     parts = [f"for {every} {meaning[short]}" for short in shared]
     parts += [_term(short, meaning[short]) for _, short, _ in REGRESSION_SHORT if short in shown]
     note = Markup("“n/a” where it does not") + (Markup(": ") + Markup("; ").join(parts) if parts else "") + "."

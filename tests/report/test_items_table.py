@@ -128,7 +128,7 @@ def test_every_reason_the_regression_does_not_apply_is_in_the_row_or_said_once_f
     result = _building_result()
     section = _all_items(building_html)
     note = _plain(re.search(r'<p class="note">(.*?)</p>', section, re.S).group(1))
-    assert "for every item here its governing motion has no clear pulse" in note  # all five: no pulse
+    assert "for every freestanding item here its governing motion has no clear pulse" in note  # all four freestanding items: no pulse
     rows = _rows(section)
     for _, item in result.summary[result.summary["risk"] != "anchored"].iterrows():
         expected = {short for words, short in SHORT.items() if words in item["regression_note"]}
