@@ -31,8 +31,8 @@ from assess.quantity_text import floor_numbering_of, length_unit, length_value, 
 from assess.report import figures
 from assess.report.building import building_context
 from assess.report.costs import costs_context
-from assess.report.items_table import action_note, demand_from, regression_words, table_action
 from assess.report.curve import curve_context
+from assess.report.items_table import action_note, demand_from, regression_words, table_action
 from assess.report.method import floor_motion_route
 from assess.report.pdf import RefusedURLError, data_only_url_fetcher, decode_data_uri, render_pdf, report_pdf  # noqa: F401
 from assess.report.references import reference_rows

@@ -124,6 +124,21 @@ def test_a_floor_with_two_sources_keeps_the_column():
         assert "120 motions" in _cell(rows[item["id"]], "c-src")
 
 
+def test_one_source_with_different_motions_keeps_only_the_motions_in_the_column():
+    """Every item from the same source, two items of one floor from different suites: the lead names the
+    source once and each row says its own motions."""
+    result = _building_result()
+    summary = result.summary
+    summary.loc[summary["risk"] != "anchored", "demand_source"] = pd.Series(
+        [(THROUGH,)] * int((summary["risk"] != "anchored").sum()), index=summary.index[summary["risk"] != "anchored"])
+    summary.loc[summary["id"] == "F-01-0", ["suite_motions", "suite_histories"]] = [7.0, 70.0]
+    section = _all_items(render_html(result))
+    assert f"Where it comes from, for every item: {THROUGH};" in _plain(section)
+    rows = _rows(section)
+    assert _cell(rows["F-01-0"], "c-src") == "7 motions, 70 simulated histories"
+    assert _cell(rows["M-05-0"], "c-src") == "120 motions" and _cell(rows["R-04-0"], "c-src") == "–"
+
+
 def test_every_reason_the_regression_does_not_apply_is_in_the_row_or_said_once_for_all(building_html):
     result = _building_result()
     section = _all_items(building_html)
