@@ -32,6 +32,7 @@ from assess.report import figures
 from assess.report.building import building_context
 from assess.report.costs import costs_context
 from assess.report.curve import curve_context
+from assess.report.items_table import action_note, demand_from, regression_words, table_action
 from assess.report.method import floor_motion_route
 from assess.report.pdf import RefusedURLError, data_only_url_fetcher, decode_data_uri, render_pdf, report_pdf  # noqa: F401
 from assess.report.references import reference_rows
@@ -39,7 +40,7 @@ from assess.report.sentences import (
     DASH, action_groups, after_text, case_outcomes, changes, class_rule_paragraph, cm_interval_text, finite,
     flag_groups, floor_text, format_cm, format_length, format_percent, format_significant, given_by_parameters,
     hazard_limit_text, history_phrases, integer_text, interval_text, level_text, list_text, method_notes,
-    regression_items, regression_reason, risk_units, slides_in_both, source_definitions, suite_text, text,
+    regression_items, risk_units, slides_in_both, source_definitions, suite_text, text,
     total_units, what_happens, worst_run_text,
 )
 from assess.report.title import title_block
@@ -181,7 +182,6 @@ def _item_row(row: pd.Series, system: str = "si", numbering: str = "ground_0") -
         "regression_applies": isinstance(row.get("regression_applies"), (bool, np.bool_))
         and bool(row.get("regression_applies")),
         "regression_note": text(row.get("regression_note")),
-        "regression_reason": regression_reason(row.get("regression_note")),
         "suite": suite_text(row),
     }
 
@@ -462,6 +462,10 @@ def report_context(result, with_figures: bool = True) -> dict:
         row["anchor"] = anchor
     counts = result.risk_counts()
     zeta, eta, sigma, im_min, im_max = figures.regression_constants(result)
+    regression_short = regression_words(summary, (im_min, im_max))
+    for row, reasons in zip(rows, regression_short["reasons"]):
+        row["table_action"] = table_action(row["action"], row["type_source"])
+        row["regression_short"] = reasons
     return {
         "version": assess.__version__,
         "facility": text(result.facility),
@@ -483,6 +487,8 @@ def report_context(result, with_figures: bool = True) -> dict:
         "high": [r for r in rows if r["risk"] == "high"],
         "moderate": [r for r in rows if r["risk"] == "moderate"],
         "rows": rows,
+        "all_items": {"demand": demand_from(summary, numbering), "regression_note": regression_short["note"],
+                      "action_note": action_note([r["table_action"] for r in rows])},  # said once, not per row
         "flag_groups": flag_groups(result.flags, (im_min, im_max), system),
         "flag_count": len(result.flags),
         "flag_items": len({flag.item_id for flag in result.flags}),

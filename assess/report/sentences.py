@@ -518,25 +518,6 @@ def given_by_parameters(result: AssessmentResult) -> bool:
     return bool((~described.str.startswith("record ") & (described != "")).any())
 
 
-#: The short words of why the paper's regression does not apply (the reasons of
-#: :func:`assess.fragility.governing.regression_note`), for a table's cell.
-REGRESSION_REASONS = (("no clear pulse", "no clear pulse"), ("outside", "IM outside its range"),
-                      ("uplifts", "uplifts"))
-
-
-def regression_reason(note) -> str:
-    """Why the regression does not apply, in a few words, from an item's ``regression_note`` ("" where it
-    applies).
-
-    >>> regression_reason("not applicable: pulse share 0.018 < 0.38 (no clear pulse), IM 0.12 outside 1.71-6.4")
-    'no clear pulse, IM outside its range'
-    >>> regression_reason("")
-    ''
-    """
-    note = text(note)
-    return ", ".join(short for words, short in REGRESSION_REASONS if words in note)
-
-
 def regression_items(summary: pd.DataFrame) -> dict:
     """How many freestanding items the figures of the paper's regression mark (``shown``: those whose
     governing case it applies to, with its Pf) of how many (``of``).

@@ -208,7 +208,7 @@ def test_nan_shows_as_dash_and_numbers_are_rounded(html):
     rock_row = re.search(r'<tr class="row-high">\s*<td class="c-id id"><a class="id" href="#item-K-02">K-02</a></td>.*?</tr>',
                          all_items, re.S).group(0)
     # the regression does not apply to an item that uplifts: not shown, "n/a" and why (issue 19)
-    assert '<td class="num c-sl"><span class="muted">n/a</span><br><span class="muted small">uplifts</span></td>' in rock_row
+    assert '<td class="num c-sl"><span class="muted">n/a</span><br><span class="muted small">uplift</span></td>' in rock_row
     assert '<td class="num c-pfa">–</td>' in rock_row
     forma = re.search(r'<td class="c-id id"><a class="id" href="#item-F-01">F-01</a></td>.*?</tr>', all_items, re.S).group(0)
     assert '<td class="num c-sl">74 / 115<span class="unit">Pf ' in forma
