@@ -68,7 +68,8 @@ def test_a_second_process_that_dies_leaves_the_appendix_to_this_one(html, pdf, m
 
     monkeypatch.setattr(pdf_module, "render_part", kill_then_lay_out)
     assert render_pdf(html, processes=2) == pdf
-    assert killed == [-signal.SIGKILL]
+    # one process was killed; its exit code reads None where the pool's own thread, seeing it die, reaped it first
+    assert len(killed) == 1 and killed[0] in (-signal.SIGKILL, None)
     assert multiprocessing.active_children() == []
 
 
