@@ -106,6 +106,22 @@ def report_template() -> jinja2.Template:
 
 
 # --------------------------------------------------------------------------- context
+#: How :func:`_sorted_summary` orders the items, as the all-items table's lead says it: by the pipeline's
+#: ``priority`` where there is one, else by risk.
+ORDER_SENTENCE = {
+    "priority": "In order of priority: what a failure of the item costs (life-safety, hazardous, critical, "
+                "valuable, ordinary) times its chance of overturning, of sliding past its room (counted half) or "
+                "of rocking that harms it (a quarter, where that counts), so a moderate item may come before a "
+                "high one; the items that need no action and the anchored ones last, by id.",
+    "risk": "Sorted by risk, then by the chance of overturning and of sliding beyond the clearance.",
+}
+
+
+def order_sentence(summary: pd.DataFrame) -> str:
+    """The sentence saying how :func:`_sorted_summary` orders ``summary``'s items (:data:`ORDER_SENTENCE`)."""
+    return ORDER_SENTENCE["priority" if "priority" in summary else "risk"]
+
+
 def _sorted_summary(summary: pd.DataFrame) -> pd.DataFrame:
     """Items by urgency: the pipeline's ``priority`` where there is one (what the failure costs times its
     chance); otherwise risk class, then the chance of overturning, then rocking before sliding, then the
@@ -487,7 +503,8 @@ def report_context(result, with_figures: bool = True) -> dict:
         "high": [r for r in rows if r["risk"] == "high"],
         "moderate": [r for r in rows if r["risk"] == "moderate"],
         "rows": rows,
-        "all_items": {"demand": demand_from(summary, numbering), "regression_note": regression_short["note"],
+        "all_items": {"order": order_sentence(summary), "demand": demand_from(summary, numbering),
+                      "regression_note": regression_short["note"],
                       "action_note": action_note([r["table_action"] for r in rows])},  # said once, not per row
         "flag_groups": flag_groups(result.flags, (im_min, im_max), system),
         "flag_count": len(result.flags),

@@ -264,3 +264,38 @@ def test_floors_text_writes_runs_as_ranges():
     assert items_table.floors_text([5, 1, 2, 3]) == "floors 1 to 3 and 5"
     assert items_table.floors_text([2]) == "floor 2"
     assert items_table.floors_text([0, 1], "ground_1") == "floors 1 and 2"
+
+
+def _table_ids(page: str) -> list[str]:
+    """The ids of the all-items table's rows, in the order the report shows them."""
+    table = page[page.index('id="all-items-table"'):]
+    table = table[:table.index("</table>")]
+    return re.findall(r'<td class="[^"]*c-id[^"]*"[^>]*>\s*(?:<[^>]+>)*\s*([^<\s]+)', table)
+
+
+def test_the_table_is_in_the_order_its_lead_says():
+    """With a ``priority`` (as every run's summary has) the rows follow it and the lead says so, fractions
+    as the priority score weighs them; without one, the lead says risk and the rows follow risk."""
+    from assess.decision.risk_classes import ROCKING_HARM_SEVERITY, SLIDING_SEVERITY
+
+    result = make_result(simulated=True)
+    summary = result.summary.copy()
+    assert "priority" in summary
+    summary["priority"] = list(range(len(summary), 0, -1))  # the reverse of the ids' order
+    result.summary = summary
+    page = render_html(result)
+    lead = html_module.unescape(page[page.index('<section id="all-items"'):].split("</p>")[0])
+    assert "In order of priority" in lead and "Sorted by risk" not in lead
+    assert {0.5: "counted half", 0.25: "a quarter"}[SLIDING_SEVERITY] in lead
+    assert {0.25: "(a quarter, where that counts)", 0.125: "an eighth"}[ROCKING_HARM_SEVERITY] in lead
+    expected = summary.sort_values("priority")["id"].astype(str).tolist()
+    assert _table_ids(page) == expected
+
+    result.summary = summary.drop(columns=["priority"])
+    page = render_html(result)
+    lead = html_module.unescape(page[page.index('<section id="all-items"'):].split("</p>")[0])
+    assert "Sorted by risk" in lead and "priority" not in lead
+    risks = {str(i): str(r) for i, r in zip(summary["id"], summary["risk"])}
+    order = {"high": 0, "moderate": 1, "low": 2, "anchored": 3}
+    shown = [order[risks[i]] for i in _table_ids(page)]
+    assert shown == sorted(shown) and len(shown) == len(summary)
