@@ -118,6 +118,53 @@ def _lowered_text(row, lowered: LoweredDemand, system: str) -> str:
             f"{percent_text(row['p_beyond_clearance'])}), and {rocks}, under the same motions")
 
 
+#: The head of an action's sentence (:func:`action_sentence`), by kind, before why and its numbers; a table
+#: of many items shows the head alone, with the room the item needs where sliding decided it (:func:`action_head`).
+ACTION_HEADS = {
+    "anchor": "Anchor it to the floor or wall",
+    "tether": "Tether or strap it to the wall (it stands on casters)",
+    "lower_contents": "Move its heavy contents to the lowest shelves or drawers",
+    "restrain": "Restrain it against sliding (edge stops, bumpers or cable restraints)",
+    "room": "Give it room",
+}
+
+
+def _lock_casters_head(row, system: str) -> str:
+    return f"Lock or chock its casters and keep {length_text(row['demand_room_cm'], system, 'up')} clear around it"
+
+
+def action_head(kind: str, row, settings: Settings, mode: str = "") -> str:
+    """The head of the action's sentence (:func:`action_sentence`, of which it is the start), and where sliding
+    past its room decided the action (``mode`` ``beyond_clearance``; room and a restraint always) the room the item
+    needs; "" for a kind with no sentence of its own (anchored, a code's; "No action needed" for none).
+
+    >>> row = {"demand_room_cm": 107.2, "clearance_cm": 25.0, "p_beyond_clearance": 0.98, "p_overturn": 0.0}
+    >>> action_head("restrain", row, Settings(), "beyond_clearance")
+    'Restrain it against sliding (edge stops, bumpers or cable restraints): it needs 108 cm'
+    >>> action_head("anchor", row, Settings(), "overturn"), action_head("none", row, Settings())
+    ('Anchor it to the floor or wall', 'No action needed')
+    """
+    system = system_of(settings)
+    mode = mode or ("overturn" if float(row["p_overturn"]) > 0.0 else "beyond_clearance")
+    if kind == "lock_casters":
+        return _lock_casters_head(row, system)
+    if kind == "none":
+        return "No action needed"
+    head = ACTION_HEADS.get(kind, "")
+    if kind in ("room", "restrain") or (kind == "tether" and mode == "beyond_clearance"):
+        return f"{head}: it needs {length_text(row['demand_room_cm'], system, 'up')}"
+    return head
+
+
+def decision_head(decision, settings: Settings) -> str:
+    """:func:`action_head` of one item's :class:`~assess.decision.decisions.ItemDecision` ("" where a code
+    prescribes its action or it is anchored: their sentences have heads of their own)."""
+    action = decision.action
+    if action.kind == ActionKind.ANCHORED or action.code is not None:
+        return ""
+    return action_head(action.kind, decision.demand, settings, action.mode)
+
+
 def action_sentence(kind: str, row, uplift: bool, lowered: LoweredDemand | None, settings: Settings,
                     mode: str = "") -> str:
     """A plain sentence a facility manager can act on, for the action ``kind``
@@ -126,20 +173,19 @@ def action_sentence(kind: str, row, uplift: bool, lowered: LoweredDemand | None,
     system = system_of(settings)
     mode = mode or ("overturn" if float(row["p_overturn"]) > 0.0 or uplift else "beyond_clearance")
     if kind == "anchor":
-        return f"Anchor it to the floor or wall: {_why_overturn_or_rock(row)}"
+        return f"{ACTION_HEADS['anchor']}: {_why_overturn_or_rock(row)}"
     if kind == "tether":
-        return f"Tether or strap it to the wall (it stands on casters): {_why(row, mode, system, settings)}"
+        return f"{ACTION_HEADS['tether']}: {_why(row, mode, system, settings)}"
     if kind == "lower_contents":
-        return (f"Move its heavy contents to the lowest shelves or drawers: as loaded {_why_overturn_or_rock(row)}; with its "
+        return (f"{ACTION_HEADS['lower_contents']}: as loaded {_why_overturn_or_rock(row)}; with its "
                 f"centre of mass at {float(lowered.cg_fraction):.0%} of its height the engine finds it still "
                 "under the same motions")
     if kind == "lock_casters":
-        return (f"Lock or chock its casters and keep {length_text(row['demand_room_cm'], system, 'up')} clear "
-                f"around it: {_room_numbers(row, system)}")
+        return f"{_lock_casters_head(row, system)}: {_room_numbers(row, system)}"
     if kind == "room":
-        return f"Give it room: {_room_numbers(row, system)}"
+        return f"{ACTION_HEADS['room']}: {_room_numbers(row, system)}"
     if kind == "restrain":
-        return (f"Restrain it against sliding (edge stops, bumpers or cable restraints): {_room_numbers(row, system)}: "
+        return (f"{ACTION_HEADS['restrain']}: {_room_numbers(row, system)}: "
                 f"{_more_than_spare(row, system, settings)}")
     return "No action needed"
 

@@ -150,33 +150,50 @@ def regression_words(summary: pd.DataFrame, im_range: tuple) -> dict:
     return {"reasons": [", ".join(short for short in r if short not in shared) for r in reasons], "note": note}
 
 
-def table_action(action: str, type_source: str = "") -> dict:
+def table_action(action: str, type_source: str = "", head: str = "") -> dict:
     """An item's action as the table shows it: ``head`` and ``tags`` (:data:`ACTION_TAGS`) for a
-    code-prescribed action, whose detail and reference the work orders and Appendix A give; any other action
-    whole, with no tags.
+    code-prescribed action, whose detail and reference the work orders and Appendix A give; the analysis's
+    action by its sentence's ``head`` where one is given (:func:`assess.report.advice.decision_head`: what
+    to do, and the room it needs where sliding decided it; ``short`` where that leaves words out); else the
+    action whole, with no tags.
 
     >>> table_action("Chain it (gas cylinders: required whatever the analysis says): each cylinder chained. "
     ...              "Reference: NFPA 99 (2021) ch. 11.", "name")
-    {'head': 'Chain it (gas cylinders)', 'tags': 'code, kind from name'}
+    {'head': 'Chain it (gas cylinders)', 'tags': 'code, kind from name', 'short': False}
+    >>> table_action("Give it room: it needs 18 cm to be low risk and has 10 cm.", head="Give it room: it needs 18 cm")
+    {'head': 'Give it room: it needs 18 cm', 'tags': '', 'short': True}
     >>> table_action("Give it room: it needs 18 cm.")
-    {'head': 'Give it room: it needs 18 cm.', 'tags': ''}
+    {'head': 'Give it room: it needs 18 cm.', 'tags': '', 'short': False}
     """
-    head, required, _ = action.partition(CODE_REQUIRED)
+    start, required, _ = action.partition(CODE_REQUIRED)
     if not required:
-        return {"head": action or DASH, "tags": ""}
+        if head and action.startswith(head):  # the sentence's own start: the table never says other words
+            return {"head": head, "tags": "", "short": head != action}
+        return {"head": action or DASH, "tags": "", "short": False}
     tags = ["code"] + (["kind from name"] if type_source == "name" else [])
-    return {"head": f"{head})", "tags": ", ".join(tags)}
+    return {"head": f"{start})", "tags": ", ".join(tags), "short": False}
+
+
+#: The column note's sentence where the table shows an analysis's action by its head (``short``).
+SHORT_ACTIONS = ("Action: what to do, with the room the item needs where sliding decided it; why, with its "
+                 "numbers, is in the work orders and Appendix A.")
 
 
 def action_note(actions: list[dict]) -> str:
-    """The column note's sentence on the tags the table's actions carry ("" where none carries one).
+    """The column note's sentences on the table's actions: that an action shown by its head is whole in the
+    work orders and Appendix A (where one is, :data:`SHORT_ACTIONS`), and the tags they carry ("" where
+    neither).
 
-    >>> action_note([{"tags": "code"}, {"tags": ""}])
+    >>> action_note([{"tags": "code", "short": False}, {"tags": "", "short": False}])
     Markup('Action, under it: <i>code</i>: a code requires the action whatever the analysis says; its detail and reference are in the work orders and Appendix A.')
+    >>> action_note([{"tags": "", "short": True}])
+    Markup('Action: what to do, with the room the item needs where sliding decided it; why, with its numbers, is in the work orders and Appendix A.')
     """
     used = {tag for action in actions for tag in action["tags"].split(", ") if tag}
     said = [_term(tag, meaning) for tag, meaning in ACTION_TAGS.items() if tag in used]
-    return Markup("Action, under it: ") + Markup("; ").join(said) + "." if said else Markup("")
+    short = Markup(SHORT_ACTIONS) if any(action.get("short") for action in actions) else Markup("")
+    tags = Markup("Action, under it: ") + Markup("; ").join(said) + "." if said else Markup("")
+    return Markup(" ").join(part for part in (short, tags) if part)
 
 
 def _term(word: str, meaning: str) -> Markup:

@@ -24,7 +24,7 @@ from markupsafe import Markup
 
 import assess
 from assess.anchorage.method import anchorage_method
-from assess.report.advice import anchorage_sentence, brief_action, with_words, work_order_sentences
+from assess.report.advice import anchorage_sentence, brief_action, decision_head, with_words, work_order_sentences
 from assess.report.anchorage_table import anchorage_context
 from assess.decision.risk_classes import rule_text
 from assess.quantity_text import floor_numbering_of, length_unit, length_value, system_of
@@ -479,8 +479,11 @@ def report_context(result, with_figures: bool = True) -> dict:
     counts = result.risk_counts()
     zeta, eta, sigma, im_min, im_max = figures.regression_constants(result)
     regression_short = regression_words(summary, (im_min, im_max))
-    for row, reasons in zip(rows, regression_short["reasons"]):
-        row["table_action"] = table_action(row["action"], row["type_source"])
+    decisions = result.decisions or {}
+    for row, reasons, item_id in zip(rows, regression_short["reasons"], summary["id"]):
+        decision = decisions.get(item_id)
+        head = decision_head(decision, settings) if decision is not None else ""
+        row["table_action"] = table_action(row["action"], row["type_source"], head)
         row["regression_short"] = reasons
     return {
         "version": assess.__version__,

@@ -240,11 +240,11 @@ def test_the_building_table_fits_twice_the_rows_it_did_with_its_shared_words_in_
     def every_reason(summary, im_range):
         return {"reasons": ["no clear pulse, IM outside its range, uplifts"] * len(summary), "note": ""}
 
-    def whole(action, type_source=""):
-        head, _, _ = action.partition(": required")
-        return {"head": (head + ": required whatever the analysis says): the detail and its reference are in "
+    def whole(action, type_source="", head=""):
+        start, _, _ = action.partition(": required")
+        return {"head": (start + ": required whatever the analysis says): the detail and its reference are in "
                          "the work orders and Appendix A; its kind was read from its name: confirm it.")
-                if action == CODE_ACTION else action, "tags": ""}
+                if action == CODE_ACTION else action, "tags": "", "short": False}
 
     from assess.report import render as render_module
     monkeypatch.setattr(render_module, "demand_from", every_row)
@@ -299,3 +299,28 @@ def test_the_table_is_in_the_order_its_lead_says():
     order = {"high": 0, "moderate": 1, "low": 2, "anchored": 3}
     shown = [order[risks[i]] for i in _table_ids(page)]
     assert shown == sorted(shown) and len(shown) == len(summary)
+
+
+@pytest.mark.parametrize("kind, mode, needs", [
+    ("anchor", "overturn", False), ("tether", "overturn", False), ("tether", "beyond_clearance", True),
+    ("lower_contents", "overturn", False), ("restrain", "beyond_clearance", True), ("room", "beyond_clearance", True),
+    ("lock_casters", "beyond_clearance", True), ("none", "", False)])
+@pytest.mark.parametrize("units", ["si", "us"])
+def test_an_analysis_action_in_the_table_is_the_start_of_its_sentence(kind, mode, needs, units):
+    """The table shows the analysis's action by the start of the very sentence the work orders and Appendix A
+    give (what to do), and where sliding decided it the room the item needs, rounded up as the sentence
+    rounds it: 107.2 cm -> 108 cm, 42.2 in (107.2 cm) -> 43 in."""
+    from assess.decision.actions import LoweredDemand
+    from assess.inventory.model import Settings
+    from assess.report.advice import action_head, action_sentence
+
+    settings = Settings(units=units)
+    row = {"demand_room_cm": 107.2, "clearance_cm": 25.0, "p_beyond_clearance": 0.98, "p_overturn": 0.4,
+           "suite_motions": 7, "suite_histories": 70, "theta_max_over_alpha": 1.4, "cg_height_cm": 90.0}
+    lowered = LoweredDemand(0.3, 0.5, True, 1.2, 0.35, 60.0)
+    head = action_head(kind, row, settings, mode)
+    sentence = action_sentence(kind, row, True, lowered, settings, mode)
+    assert head and sentence.startswith(head), (head, sentence)
+    needed = "108 cm" if units == "si" else "43 in"
+    assert head.endswith(f"needs {needed}") == needs or (kind == "lock_casters" and f"keep {needed} clear" in head)
+    assert (len(head) < len(sentence)) == (kind != "none")
