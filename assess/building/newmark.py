@@ -100,16 +100,25 @@ def _solve(matrix, rhs, out):  # pragma: no cover - compiled
         out[i] = total / matrix[i, i]
 
 
+#: Newmark's average acceleration: γ and β.
+GAMMA, BETA = 0.5, 0.25
+
+
+@njit(cache=True)
+def _gains(h):  # pragma: no cover - compiled
+    """``(c_mass, c_vel)``: what multiplies the mass and the damping matrices in Newton's matrix of a step of
+    ``h`` [s] (Newmark's average acceleration, :data:`GAMMA`, :data:`BETA`)."""
+    return 1.0 / (BETA * h * h), GAMMA / (BETA * h)
+
+
 @njit(cache=True)
 def _rates(u_new, u, v, a, a_new, v_new, h, count):  # pragma: no cover - compiled
     """Newmark's average acceleration (γ = 1/2, β = 1/4) at the trial displacements ``u_new`` of the first
     ``count`` degrees of freedom: the accelerations into ``a_new``, the velocities into ``v_new``."""
-    gamma = 0.5
-    beta_n = 0.25
-    c_mass = 1.0 / (beta_n * h * h)
+    c_mass = _gains(h)[0]
     for r in range(count):
-        a_new[r] = c_mass * (u_new[r] - u[r]) - v[r] / (beta_n * h) - (0.5 / beta_n - 1.0) * a[r]
-        v_new[r] = v[r] + h * ((1.0 - gamma) * a[r] + gamma * a_new[r])
+        a_new[r] = c_mass * (u_new[r] - u[r]) - v[r] / (BETA * h) - (0.5 / BETA - 1.0) * a[r]
+        v_new[r] = v[r] + h * ((1.0 - GAMMA) * a[r] + GAMMA * a_new[r])
 
 
 @njit(cache=True)

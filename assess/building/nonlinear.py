@@ -64,7 +64,7 @@ from .design import LAW_BY_SYSTEM, vertical_distribution
 from .hysteresis import BILINEAR, LAWS, bilinear_trial, pinching_trial
 from .modes import ALPHA_BY_SYSTEM, stiffness_matrix
 from .newmark import (DEFAULT_SUBSTEP_S, MAX_ITERATIONS, STEPS_PER_SHORTEST_PERIOD, TOLERANCE_M,  # noqa: F401
-                      YieldingResponse, _rates, _record, _solve, rayleigh_coefficients, substeps_for)
+                      YieldingResponse, _gains, _rates, _record, _solve, rayleigh_coefficients, substeps_for)
 from .period import approximate_period
 from .wall_hinge import hinged_wall
 
@@ -241,10 +241,7 @@ def _history(ground_g, dt_s, substeps, masses, k0, fy, hardening, law, pinch_x, 
     n_samples = ground_g.size
     g = 9.80665
     h = dt_s / substeps
-    gamma = 0.5
-    beta_n = 0.25
-    c_mass = 1.0 / (beta_n * h * h)
-    c_vel = gamma / (beta_n * h)
+    c_mass, c_vel = _gains(h)
     committed = np.zeros((n, 8))
     for i in range(n):
         committed[i, 2] = k0[i]

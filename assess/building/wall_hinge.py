@@ -65,7 +65,7 @@ from scipy.linalg import eigh
 
 from .hysteresis import BILINEAR, LAWS, STATE_SIZE, bilinear_trial, pinching_trial
 from .newmark import (DEFAULT_SUBSTEP_S, MAX_ITERATIONS, STEPS_PER_SHORTEST_PERIOD, TOLERANCE_M,
-                      YieldingResponse, _rates, _record, _solve, rayleigh_coefficients, substeps_for)
+                      YieldingResponse, _gains, _rates, _record, _solve, rayleigh_coefficients, substeps_for)
 
 #: n of the stiffness modification: the hinge's elastic stiffness over the reference k_ref is n + 1 (Ibarra &
 #: Krawinkler [2]_'s n = 10, the OpenSees examples' [3]_).
@@ -252,10 +252,7 @@ def _hinge_history(ground_g, dt_s, substeps, masses, k_full, damping, k_theta, m
     n_samples = ground_g.size
     g = 9.80665
     h = dt_s / substeps
-    gamma = 0.5
-    beta_n = 0.25
-    c_mass = 1.0 / (beta_n * h * h)
-    c_vel = gamma / (beta_n * h)
+    c_mass, c_vel = _gains(h)
     mass = np.zeros(m)
     for i in range(n):
         mass[i] = masses[i]
