@@ -133,7 +133,13 @@ def _lock_casters_head(row, system: str) -> str:
     return f"Lock or chock its casters and keep {length_text(row['demand_room_cm'], system, 'up')} clear around it"
 
 
-def action_head(kind: str, row, settings: Settings, mode: str = "") -> str:
+def _decided_by(row, mode: str, uplift: bool = False) -> str:
+    """The failure that decided an action: ``mode`` where given (:func:`assess.decision.actions.action_mode`),
+    else overturning where the item overturns (or ``uplift``: it rocks), else sliding past its room."""
+    return mode or ("overturn" if float(row["p_overturn"]) > 0.0 or uplift else "beyond_clearance")
+
+
+def action_head(kind: str, row, settings: Settings, mode: str = "", uplift: bool = False) -> str:
     """The head of the action's sentence (:func:`action_sentence`, of which it is the start), and where sliding
     past its room decided the action (``mode`` ``beyond_clearance``; room and a restraint always) the room the item
     needs; "" for a kind with no sentence of its own (anchored, a code's; "No action needed" for none).
@@ -145,7 +151,7 @@ def action_head(kind: str, row, settings: Settings, mode: str = "") -> str:
     ('Anchor it to the floor or wall', 'No action needed')
     """
     system = system_of(settings)
-    mode = mode or ("overturn" if float(row["p_overturn"]) > 0.0 else "beyond_clearance")
+    mode = _decided_by(row, mode, uplift)
     if kind == "lock_casters":
         return _lock_casters_head(row, system)
     if kind == "none":
@@ -162,7 +168,7 @@ def decision_head(decision, settings: Settings) -> str:
     action = decision.action
     if action.kind == ActionKind.ANCHORED or action.code is not None:
         return ""
-    return action_head(action.kind, decision.demand, settings, action.mode)
+    return action_head(action.kind, decision.demand, settings, action.mode, action.uplift)
 
 
 def action_sentence(kind: str, row, uplift: bool, lowered: LoweredDemand | None, settings: Settings,
@@ -171,7 +177,7 @@ def action_sentence(kind: str, row, uplift: bool, lowered: LoweredDemand | None,
     (:func:`assess.decision.actions.choose_action`) and the failure that decided it (``mode``:
     :func:`assess.decision.actions.action_mode`; "" read as overturning where it overturns or rocks)."""
     system = system_of(settings)
-    mode = mode or ("overturn" if float(row["p_overturn"]) > 0.0 or uplift else "beyond_clearance")
+    mode = _decided_by(row, mode, uplift)
     if kind == "anchor":
         return f"{ACTION_HEADS['anchor']}: {_why_overturn_or_rock(row)}"
     if kind == "tether":
@@ -200,7 +206,7 @@ def what_if_sentence(kind: str, row, lowered: LoweredDemand | None, settings: Se
     """The item's risk if the action is taken, from its own numbers or the engine's what-if run, and why
     not the next action (``mode``: the failure that decided it; ``contents``: what its contents can do)."""
     system = system_of(settings)
-    mode = mode or ("overturn" if float(row["p_overturn"]) > 0.0 else "beyond_clearance")
+    mode = _decided_by(row, mode)
     lowering = "" if kind == "lower_contents" else _lowering_clause(row, lowered, contents, system)
     if kind == "anchor":
         return ("Anchored (assumed to hold), it would neither slide nor overturn: 0% for both. Room or a "
