@@ -2,7 +2,15 @@
 run (see ``tests/commands.py``)."""
 from __future__ import annotations
 
+import json
+import subprocess
+
 import pytest
+
+try:
+    import fcntl
+except ImportError:  # not on Windows
+    fcntl = None
 
 from commands import LAB, run
 from workbooks import RECORD_FILE, good_sheets, write_workbook
@@ -28,9 +36,24 @@ def make_workbook(tmp_path):
 
 
 @pytest.fixture(scope="session")
-def lab_run(tmp_path_factory):
+def lab_run(tmp_path_factory, worker_id):
     """The sample lab (``inventories/lab.xlsx``) at 2in50 in every format, run once for the session
     as a user runs it in a scratch folder: ``(scratch, what the command returned)``, the outputs in
-    ``scratch/reports/lab-2in50``. Tests read them or copy them; none changes them."""
-    scratch = tmp_path_factory.mktemp("lab")
-    return scratch, run(LAB, "--hazard", "2in50", cwd=scratch)
+    ``scratch/reports/lab-2in50``. Tests read them or copy them; none changes them.
+
+    Under pytest-xdist the run is made once for all the workers: the first to ask runs it, in the
+    session's shared temporary folder, and the others wait for it and read what it left (the pattern of
+    pytest-xdist's documentation, "Making session-scoped fixtures execute only once", with the standard
+    library's ``fcntl.flock`` for the lock; where there is none, each worker runs the lab itself)."""
+    if worker_id == "master" or fcntl is None:
+        scratch = tmp_path_factory.mktemp("lab")
+        return scratch, run(LAB, "--hazard", "2in50", cwd=scratch)
+    shared = tmp_path_factory.getbasetemp().parent
+    scratch, answer = shared / "lab", shared / "lab.json"
+    with open(shared / "lab.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if not answer.exists():
+            scratch.mkdir()
+            done = run(LAB, "--hazard", "2in50", cwd=scratch)
+            answer.write_text(json.dumps([done.args, done.returncode, done.stdout, done.stderr]))
+    return scratch, subprocess.CompletedProcess(*json.loads(answer.read_text()))
