@@ -215,8 +215,11 @@ def diagnosis_table(inventory, cases, declared: Predicted) -> pd.DataFrame:
     from assess.calibration.effects import item_block
 
     first = inventory.hazard.drop_duplicates("motion").set_index("motion")
+    pgv_m_s = {}  # per record: the cases of one motion share it (build_cases), its PGV made once
     rows = []
     for case, mode in zip(cases, declared.mode):
+        if id(case.record) not in pgv_m_s:
+            pgv_m_s[id(case.record)] = peak_velocity_m_s(case.record.accel_g, case.record.dt_s)
         block = item_block(case.item, case.half_width_m)
         tp = float(first.loc[case.motion, "tp_s"]) if case.motion in first.index else np.nan
         pta = case.record.pta_g
@@ -224,7 +227,7 @@ def diagnosis_table(inventory, cases, declared: Predicted) -> pd.DataFrame:
         pressure_kpa = float(case.item["mass_kg"]) * STANDARD_GRAVITY_M_S2 / area_m2 / 1000.0 \
             if "mass_kg" in case.item and area_m2 > 0 else np.nan
         rows.append({"specimen": case.specimen, "motion": case.motion, "direction": case.direction,
-                     "pta_g": pta, "tp_s": tp, "pgv_m_s": peak_velocity_m_s(case.record.accel_g, case.record.dt_s),
+                     "pta_g": pta, "tp_s": tp, "pgv_m_s": pgv_m_s[id(case.record)],
                      "mu": block.mu, "b_over_h": block.b_over_h, "pressure_kpa": pressure_kpa,
                      "im": pta / block.mu - 1.0 if block.mu > 0 else np.inf,
                      "omega_p_over_p": 2 * np.pi / tp / block.p_rad_s if np.isfinite(tp) and tp > 0 else np.nan,
