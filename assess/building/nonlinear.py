@@ -362,7 +362,7 @@ def yielding_response(stick: YieldingStick, ground_accel_g, dt_s, *, substep_s=D
     accel, drift, unconverged = _history(
         ground, float(dt_s), int(substeps), np.ascontiguousarray(stick.floor_masses_kg, dtype=float),
         np.ascontiguousarray(stick.stiffness_n_m, dtype=float), np.ascontiguousarray(stick.yield_force_n, dtype=float),
-        np.ascontiguousarray(np.broadcast_to(stick.hardening, (n,)), dtype=float), LAWS[stick.law],
+        np.array(np.broadcast_to(stick.hardening, (n,)), dtype=float), LAWS[stick.law],
         float(stick.pinch_x), float(stick.pinch_y), float(stick.unloading_beta),
         np.ascontiguousarray(stick.linear_stiffness_n_m, dtype=float),
         np.zeros((n, n)) if stick.modal_damping_n_s_m is None

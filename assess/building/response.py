@@ -108,7 +108,7 @@ def modal_relative_accelerations(ground_accel_g, dt_s, periods_s, damping):
     """
     ground = np.ascontiguousarray(ground_accel_g, dtype=float)
     periods = np.ascontiguousarray(periods_s, dtype=float)
-    zeta = np.ascontiguousarray(np.broadcast_to(np.asarray(damping, dtype=float), periods.shape))
+    zeta = np.array(np.broadcast_to(np.asarray(damping, dtype=float), periods.shape))  # writable: one kernel
     coefficients = np.ascontiguousarray(nigam_jennings_coefficients(periods, dt_s, zeta))
     return _relative_accelerations(ground, coefficients, 2.0 * np.pi / periods, zeta)
 

@@ -759,7 +759,9 @@ def rocking_case_peaks(records_g, dt_s, record_index, alpha_rad, p_rad_s, restit
         raise ValueError("record_index must be a 1-D array of indices into records_g")
     alpha, p, e, kappa = _check_block(alpha_rad, p_rad_s, restitution, inertia_ratio_value)
     stop = np.full(index.size, np.inf) if mu_static is None else np.asarray(mu_static, dtype=float)
-    alpha, p, e, kappa, stop = (np.ascontiguousarray(np.broadcast_to(x, index.shape), dtype=float)
+    # a writable copy each: numba compiles the kernel again for a read-only array (np.broadcast_to's view
+    # of an array already of the cases' shape is one), so one kernel serves every call
+    alpha, p, e, kappa, stop = (np.array(np.broadcast_to(x, index.shape), dtype=float)
                                 for x in (alpha, p, e, kappa, stop))
     return _run_cases(records, dts, index, alpha, p, e, kappa, tail_s, stop)
 
