@@ -53,7 +53,7 @@ def lab_run(tmp_path_factory, worker_id):
     with open(shared / "lab.lock", "w") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)
         if not answer.exists():
-            scratch.mkdir()
+            scratch.mkdir(exist_ok=True)  # a worker that died mid-run left it: the run writes it anew
             done = run(LAB, "--hazard", "2in50", cwd=scratch)
             answer.write_text(json.dumps([done.args, done.returncode, done.stdout, done.stderr]))
     return scratch, subprocess.CompletedProcess(*json.loads(answer.read_text()))
