@@ -266,6 +266,28 @@ def test_no_page_cites_a_contract_outside_the_project():
         assert not re.search(r"\bSPEC\b", page.read_text(encoding="utf-8")), page.name
 
 
+#: A path of the repository as the pages write it, e.g. ``tests/portfolio/test_batch.py::test_name``.
+#: (A path inside another folder, ``~/venvs/assess/bin``, is not one; ``*`` is a wildcard.)
+_PATH = re.compile(r"(?<![\w/~.-])((?:tests|assess|benchmarks|inventories|templates)/[\w./*-]*[\w*])(?:::(\w+))?")
+
+
+def test_every_file_and_test_the_pages_name_is_there():
+    """A page that sends the reader to ``tests/test_batch.py`` after the tests moved to their folders sends
+    them nowhere (nine such paths were left by the move): every path the README and the pages name exists,
+    and every ``file.py::test`` names a test of that file."""
+    root = DOCS.parent
+    missing, checked = [], 0
+    for page in [root / "README.md", *sorted(DOCS.glob("*.md"))]:
+        for path, test in _PATH.findall(page.read_text(encoding="utf-8")):
+            checked += 1
+            target = root / path
+            if not (any(root.glob(path)) if "*" in path else target.exists()):
+                missing.append(f"{page.name}: {path}")
+            elif test and not re.search(rf"^def {test}\(", target.read_text(encoding="utf-8"), re.M):
+                missing.append(f"{page.name}: {path}::{test}")
+    assert checked > 50 and not missing, missing
+
+
 def _anchor(heading: str) -> str:
     """GitHub's anchor of a heading: lower case, punctuation other than - and _ dropped, spaces made -."""
     return re.sub(r"[^\w\- ]", "", heading.lower()).replace(" ", "-")
