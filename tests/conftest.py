@@ -3,6 +3,7 @@ run (see ``tests/commands.py``)."""
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 
 import pytest
@@ -36,7 +37,7 @@ def make_workbook(tmp_path):
 
 
 @pytest.fixture(scope="session")
-def lab_run(tmp_path_factory, worker_id):
+def lab_run(tmp_path_factory):
     """The sample lab (``inventories/lab.xlsx``) at 2in50 in every format, run once for the session
     as a user runs it in a scratch folder: ``(scratch, what the command returned)``, the outputs in
     ``scratch/reports/lab-2in50``. Tests read them or copy them; none changes them.
@@ -45,7 +46,7 @@ def lab_run(tmp_path_factory, worker_id):
     session's shared temporary folder, and the others wait for it and read what it left (the pattern of
     pytest-xdist's documentation, "Making session-scoped fixtures execute only once", with the standard
     library's ``fcntl.flock`` for the lock; where there is none, each worker runs the lab itself)."""
-    if worker_id == "master" or fcntl is None:
+    if "PYTEST_XDIST_WORKER" not in os.environ or fcntl is None:  # one process (no xdist), or no flock
         scratch = tmp_path_factory.mktemp("lab")
         return scratch, run(LAB, "--hazard", "2in50", cwd=scratch)
     shared = tmp_path_factory.getbasetemp().parent
