@@ -21,6 +21,8 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
+from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
+
 #: Longest substep [s] of the integration by default, and the fewest substeps per period of the
 #: stick's shortest elastic mode (Newmark's period error is (π²/12)(Δt/T)², Chopra [1]_ §5.5:
 #: 5e-3 at 40 steps; a stiff flexural mode of 0.02 s otherwise drifts out of phase in a long record).
@@ -127,7 +129,7 @@ def _record(accel_out, drift_out, column, ground_g, u, a, n):  # pragma: no cove
     storeys' drifts [m], from the floors' displacements ``u`` [m] and relative accelerations ``a`` [m/s²]."""
     accel_out[0, column] = ground_g
     for r in range(n):
-        accel_out[r + 1, column] = ground_g + a[r] / 9.80665
+        accel_out[r + 1, column] = ground_g + a[r] / STANDARD_GRAVITY_M_S2
         drift_out[r, column] = u[r] - (u[r - 1] if r > 0 else 0.0)
 
 

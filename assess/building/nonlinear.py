@@ -60,6 +60,8 @@ import numpy as np
 from numba import njit
 from scipy.linalg import eigh
 
+from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
+
 from .design import LAW_BY_SYSTEM, vertical_distribution
 from .hysteresis import BILINEAR, LAWS, bilinear_trial, pinching_trial
 from .modes import ALPHA_BY_SYSTEM, stiffness_matrix
@@ -68,7 +70,8 @@ from .newmark import (DEFAULT_SUBSTEP_S, MAX_ITERATIONS, STEPS_PER_SHORTEST_PERI
 from .period import approximate_period
 from .wall_hinge import hinged_wall
 
-GRAVITY_M_S2 = 9.80665
+#: Standard gravity [m/s²], the engine's (:data:`assess.mechanics.geometry.STANDARD_GRAVITY_M_S2`).
+GRAVITY_M_S2 = STANDARD_GRAVITY_M_S2
 #: Post-yield stiffness ratio b of the storey springs by default: 3 %, within the 2-5 % of the
 #: storey pushover curves of code-designed frames (e.g. FEMA P-695 archetypes) and the usual
 #: Steel01 choice; P-Delta, where asked, lowers the storeys' net post-yield stiffness further.
@@ -239,7 +242,7 @@ def _history(ground_g, dt_s, substeps, masses, k0, fy, hardening, law, pinch_x, 
              k_lin, c_extra, a0, a1, damping_on_initial, tolerance, max_iterations):  # pragma: no cover - compiled
     n = masses.size
     n_samples = ground_g.size
-    g = 9.80665
+    g = GRAVITY_M_S2
     h = dt_s / substeps
     c_mass, c_vel = _gains(h)
     committed = np.zeros((n, 8))
@@ -515,7 +518,8 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
             raise ValueError("storey_yield_ratio must give one positive ratio per storey")
         if damping_model != "rayleigh":
             raise ValueError("a wall on a base hinge takes Rayleigh damping on its elastic part only")
-        return hinged_wall(full, heights, masses, period_s, float(ratio[0]) * masses.sum() * GRAVITY_M_S2, forces,
+        base_shear_n = float(ratio[0]) * masses.sum() * GRAVITY_M_S2
+        return hinged_wall(full, heights, masses, period_s, base_shear_n, forces,
                            law=LAW_BY_SYSTEM[system] if law is None else law,
                            hardening=DEFAULT_HARDENING if hardening is None else float(hardening),
                            damping=damping, rayleigh_modes=rayleigh_modes,

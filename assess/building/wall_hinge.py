@@ -63,6 +63,8 @@ import numpy as np
 from numba import njit
 from scipy.linalg import eigh
 
+from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
+
 from .hysteresis import BILINEAR, LAWS, STATE_SIZE, bilinear_trial, pinching_trial
 from .newmark import (DEFAULT_SUBSTEP_S, MAX_ITERATIONS, STEPS_PER_SHORTEST_PERIOD, TOLERANCE_M,
                       YieldingResponse, _gains, _rates, _record, _solve, rayleigh_coefficients, substeps_for)
@@ -250,7 +252,7 @@ def _hinge_history(ground_g, dt_s, substeps, masses, k_full, damping, k_theta, m
     n = masses.size
     m = n + 1
     n_samples = ground_g.size
-    g = 9.80665
+    g = STANDARD_GRAVITY_M_S2
     h = dt_s / substeps
     c_mass, c_vel = _gains(h)
     mass = np.zeros(m)
