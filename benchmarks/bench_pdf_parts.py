@@ -3,11 +3,11 @@
 Run: python benchmarks/bench_pdf_parts.py [--repeat 4] [--html report.html ...]
 
 Without ``--html`` it writes the lab report's HTML (inventories/lab.xlsx, hazard 2in50) and draws that.
-Each HTML is split as :func:`assess.report.pdf.render_pdf` splits it (the body, and Appendix A drawn in a
-second process by the main job), and :func:`~assess.report.pdf.render_part` of each part is timed with
-``time.process_time`` (best of ``--repeat``, the HTML files taken in turn, so that a busy machine weighs on
-each alike), then :func:`~assess.report.pdf.merge` of the two PDFs. The main job waits for the larger of
-the two parts, then the merge.
+Each HTML is split as :func:`assess.report.pdf.render_pdf` splits it (the body, which the main job lays out
+in a second process, and Appendix A, which it lays out in its own), and :func:`~assess.report.pdf.render_part`
+of each part is timed with ``time.process_time`` (best of ``--repeat``, the HTML files taken in turn, so that a
+busy machine weighs on each alike), then :func:`~assess.report.pdf.merge` of the two PDFs (the main job joins
+them in the second process, after the body). The main job waits for the larger of the two parts, then the merge.
 
 Not a test.
 """
