@@ -117,9 +117,14 @@ ORDER_SENTENCE = {
 }
 
 
+def _ordering(summary: pd.DataFrame) -> str:
+    """How :func:`_sorted_summary` orders ``summary``'s items: ``priority`` where the pipeline gave one, else ``risk``."""
+    return "priority" if "priority" in summary else "risk"
+
+
 def order_sentence(summary: pd.DataFrame) -> str:
     """The sentence saying how :func:`_sorted_summary` orders ``summary``'s items (:data:`ORDER_SENTENCE`)."""
-    return ORDER_SENTENCE["priority" if "priority" in summary else "risk"]
+    return ORDER_SENTENCE[_ordering(summary)]
 
 
 def _sorted_summary(summary: pd.DataFrame) -> pd.DataFrame:
@@ -133,7 +138,7 @@ def _sorted_summary(summary: pd.DataFrame) -> pd.DataFrame:
         "pf": -pd.to_numeric(summary["p_beyond_clearance"], errors="coerce").fillna(-1.0),
         "id": summary["id"].astype(str),
     }, index=summary.index)
-    if "priority" in summary:  # the pipeline's order of action: consequence × chance (1 = act first)
+    if _ordering(summary) == "priority":  # the pipeline's order of action: consequence × chance (1 = act first)
         keys["priority"] = pd.to_numeric(summary["priority"], errors="coerce").fillna(len(summary) + 1)
         order = keys.sort_values(["priority", "risk", "id"], kind="mergesort").index
         return summary.loc[order]
