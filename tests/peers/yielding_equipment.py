@@ -45,7 +45,7 @@ ITEMS = (("FORMA", 2.286, 0.622, 0.84, 330.0, 0.23, 0.15),
          ("SHELVING", 2.1844, 1.2192, 0.6096, 408.0, 0.35, 0.254),
          ("CHEST", 0.91, 1.60, 0.75, 150.0, 0.30, 0.10))
 #: (R, Ω_0) of ASCE 7-22 Table 12.2-1 for the systems (I_e 1), for R_μ.
-SYSTEM_R = {"steel moment frame": (8.0, 3.0), "shear wall": (5.0, 2.5)}
+SYSTEM_R = {"steel moment frame": (8.0, 3.0), "concrete moment frame": (8.0, 3.0), "shear wall": (5.0, 2.5)}
 
 
 def windowed(record):
