@@ -268,3 +268,19 @@ def test_the_reports_wording_follows_the_model_that_ran_not_the_empty_cells(weak
     # a one-storey wall has no empty storey to guess from: the field still gives the hinge's words
     one_storey = weak.floors[weak.floors["floor"] <= 1].assign(yielding_model="base hinge")
     assert "at its base only" in building_context(dataclasses.replace(weak, floors=one_storey))["lead"]
+
+
+@pytest.mark.parametrize("rows, assumed", [([], True), ([("overstrength", 2.0)], False),
+                                           ([("yield_base_shear_g", 0.5)], False)])
+def test_the_note_says_an_assumed_overstrength_is_a_judgement_and_what_to_give(make_workbook, rows, assumed):
+    """Only the design data (no ``yield_base_shear_g``, no ``overstrength``): the run's building note says the
+    overstrength is a judgement that moves the answer most and names the two cells that replace it; where the
+    engineer gave either, it does not."""
+    path = make_workbook(_sheets(("system", "steel moment frame"), ("response", "yielding"), *rows), record=False)
+    result = run_assessment(read_workbook(path), "DE", seed=3)
+    note = next(n for n in result.hazard_notes if "modelled as yielding" in n)
+    said = "The overstrength is a judgement, not this building's" in note
+    assert said == assumed, note
+    if assumed:
+        assert "times an assumed overstrength 2" in note
+        assert note.endswith("give yield_base_shear_g (from a pushover or an evaluation) or overstrength where known.")
