@@ -113,7 +113,8 @@ ORDER_SENTENCE = {
                 "valuable, ordinary) times its chance of overturning, of sliding past its room (counted half) or "
                 "of rocking that harms it (a quarter, where that counts), so a moderate item may come before a "
                 "high one; the items that need no action and the anchored ones last, by id.",
-    "risk": "Sorted by risk, then by the chance of overturning and of sliding beyond the clearance.",
+    "risk": "Sorted by risk, then by the chance of overturning, items that rock before those that only slide, "
+            "then by the chance of sliding beyond the clearance.",
 }
 
 

@@ -295,6 +295,7 @@ def test_the_table_is_in_the_order_its_lead_says():
     page = render_html(result)
     lead = html_module.unescape(page[page.index('<section id="all-items"'):].split("</p>")[0])
     assert "Sorted by risk" in lead and "priority" not in lead
+    assert "items that rock before those that only slide" in lead  # the sort's third key, said
     risks = {str(i): str(r) for i, r in zip(summary["id"], summary["risk"])}
     order = {"high": 0, "moderate": 1, "low": 2, "anchored": 3}
     shown = [order[risks[i]] for i in _table_ids(page)]
