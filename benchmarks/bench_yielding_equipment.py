@@ -115,7 +115,7 @@ def overturn_misses(table: pd.DataFrame) -> str:
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--levels", default="DE")
-    parser.add_argument("--buildings", default="smf4,smf8,wall6,wallf6,rcf5")
+    parser.add_argument("--buildings", default=",".join(BUILDINGS))
     parser.add_argument("--motions", type=int, default=11)
     parser.add_argument("--overstrengths", default="1.5,2,3")
     parser.add_argument("--truth-strengths", default="",

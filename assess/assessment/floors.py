@@ -226,7 +226,7 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
                 f"{'does not yield it' if hinged else 'yields no storey'} the floors' motions are the elastic modes' "
                 "ones. The "
                 "building's own collapse is not assessed.")
-        if sheet.yield_base_shear_g is None and sheet.overstrength is None:
+        if strength.overstrength_assumed:
             text += (" The overstrength is a judgement, not this building's, and the strength moves the floors' "
                      "motions most: give yield_base_shear_g (from a pushover or an evaluation) or overstrength "
                      "where known.")

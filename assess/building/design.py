@@ -291,6 +291,9 @@ class DesignStrength:
         R and Ω_0 (Table 12.2-1), I_e, the overstrength assumed, the period C_s used [s].
     source : str
         One sentence: where the strength came from.
+    overstrength_assumed : bool
+        Whether ``overstrength`` is :data:`DEFAULT_OVERSTRENGTH`, taken because neither it nor the yield base
+        shear was given (a judgement, which the run's note says).
     """
 
     yield_base_shear_g: float
@@ -302,6 +305,7 @@ class DesignStrength:
     overstrength: float | None
     design_period_s: float | None
     source: str
+    overstrength_assumed: bool = False
 
 
 def design_strength(system, floor_weights, floor_heights_m, period_s, *, sds_g=None, sd1_g=None, tl_s=None,
@@ -351,8 +355,8 @@ def design_strength(system, floor_weights, floor_heights_m, period_s, *, sds_g=N
     if sds_g is None or sd1_g is None:
         raise ValueError("the design strength needs S_DS and S_D1 (or give yield_base_shear_g)")
     importance = importance_factor(risk_category)
-    whose = "an assumed" if overstrength is None else "the given"
-    overstrength = DEFAULT_OVERSTRENGTH if overstrength is None else float(overstrength)
+    assumed = overstrength is None
+    overstrength = DEFAULT_OVERSTRENGTH if assumed else float(overstrength)
     if not overstrength >= 1.0:
         raise ValueError("overstrength must be at least 1")
     approximate = float(approximate_period(heights[-1], system))
@@ -361,4 +365,5 @@ def design_strength(system, floor_weights, floor_heights_m, period_s, *, sds_g=N
     value = cs * overstrength
     return DesignStrength(value, value * ratios, cs, r_factor, omega0, importance, overstrength, design_period,
                           f"ASCE 7-22 §12.8 design ({row}: R {r_factor:g}; I_e {importance:g}; "
-                          f"C_s {cs:.3g} at T {design_period:.3g} s) times {whose} overstrength {overstrength:g}")
+                          f"C_s {cs:.3g} at T {design_period:.3g} s) times {'an assumed' if assumed else 'the given'} "
+                          f"overstrength {overstrength:g}", assumed)
