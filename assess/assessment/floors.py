@@ -96,6 +96,8 @@ def building_model_of(building: BuildingSheet, site: SiteSheet | None, modes: Bu
                       risk_category=site.risk_category)
     elif site is not None:
         design = dict(risk_category=site.risk_category)
+    if site is not None:
+        design["code"] = site.code
     return yielding_building(modes, building.system, damping=building.damping, overstrength=building.overstrength,
                              yield_base_shear_g=building.yield_base_shear_g, p_delta=building.p_delta, **design)
 

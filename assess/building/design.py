@@ -309,7 +309,8 @@ class DesignStrength:
 
 
 def design_strength(system, floor_weights, floor_heights_m, period_s, *, sds_g=None, sd1_g=None, tl_s=None,
-                    s1_g=None, risk_category="II", overstrength=None, yield_base_shear_g=None) -> DesignStrength:
+                    s1_g=None, risk_category="II", overstrength=None, yield_base_shear_g=None,
+                    code="ASCE 7-22") -> DesignStrength:
     """Each storey's yield shear over the weight, from the ELF design or from a given yield base shear.
 
     Parameters
@@ -330,6 +331,10 @@ def design_strength(system, floor_weights, floor_heights_m, period_s, *, sds_g=N
         Actual over design base shear; :data:`DEFAULT_OVERSTRENGTH` by default.
     yield_base_shear_g : float, optional
         The base shear at yield over the weight, where known; replaces the design.
+    code : str
+        The site's edition, ``"ASCE 7-22"`` or ``"ASCE 7-16"``, which ``source`` names: the provisions used
+        (§12.8's C_s and its bounds, T_a and C_u, k and C_vx; Tables 1.5-2 and 12.2-1's rows here) read the
+        same in both.
 
     Examples
     --------
@@ -350,7 +355,7 @@ def design_strength(system, floor_weights, floor_heights_m, period_s, *, sds_g=N
         if not value > 0.0:
             raise ValueError("yield_base_shear_g must be positive")
         return DesignStrength(value, value * ratios, None, None, None, None, None, None,
-                              f"base shear at yield {value:g} W as given, spread over the storeys as ASCE 7-22 "
+                              f"base shear at yield {value:g} W as given, spread over the storeys as {code} "
                               f"§12.8.3 does")
     if sds_g is None or sd1_g is None:
         raise ValueError("the design strength needs S_DS and S_D1 (or give yield_base_shear_g)")
@@ -364,6 +369,6 @@ def design_strength(system, floor_weights, floor_heights_m, period_s, *, sds_g=N
     cs = seismic_response_coefficient(sds_g, sd1_g, design_period, r_factor, importance, tl_s, s1_g)
     value = cs * overstrength
     return DesignStrength(value, value * ratios, cs, r_factor, omega0, importance, overstrength, design_period,
-                          f"ASCE 7-22 §12.8 design ({row}: R {r_factor:g}; I_e {importance:g}; "
+                          f"{code} §12.8 design ({row}: R {r_factor:g}; I_e {importance:g}; "
                           f"C_s {cs:.3g} at T {design_period:.3g} s) times {'an assumed' if assumed else 'the given'} "
                           f"overstrength {overstrength:g}", assumed)

@@ -162,7 +162,7 @@ def _stick_key(stick) -> str:
 
 def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.05, sds_g=None, sd1_g=None,
                       tl_s=None, s1_g=None, risk_category="II", overstrength=None, yield_base_shear_g=None,
-                      p_delta: bool = False) -> YieldingBuilding:
+                      p_delta: bool = False, code: str = "ASCE 7-22") -> YieldingBuilding:
     """The yielding stick of a building whose elastic model is ``modes`` (equal floor masses, uniform storeys).
 
     The storeys' strength: ``yield_base_shear_g`` where given, else ASCE 7-22 §12.8's design from the site's
@@ -171,7 +171,8 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
     and raised where the system's design makes a storey stronger
     (:data:`~assess.building.nonlinear.STRENGTH_BY_SYSTEM`: ``strength.storey_yield_ratio`` is the
     result); the springs' law and the stick's flexure are the system's (:data:`~assess.building.design.LAW_BY_SYSTEM`,
-    :data:`~assess.building.nonlinear.FLEXURE_BY_SYSTEM`).
+    :data:`~assess.building.nonlinear.FLEXURE_BY_SYSTEM`). The strength's words name ``code``, the site's
+    edition (the provisions used read the same in ASCE 7-16 and 7-22).
 
     Examples
     --------
@@ -188,16 +189,16 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
     period_s = float(modes.periods_s[0])
     strength = design_strength(system, np.ones(modes.storeys), heights, period_s, sds_g=sds_g, sd1_g=sd1_g,
                                tl_s=tl_s, s1_g=s1_g, risk_category=risk_category, overstrength=overstrength,
-                               yield_base_shear_g=yield_base_shear_g)
+                               yield_base_shear_g=yield_base_shear_g, code=code)
     arguments = dict(system=system, period_s=period_s, alpha=modes.alpha, storey_stiffness=modes.storey_stiffness,
                      damping=damping, p_delta=p_delta)
     stick = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, **arguments)
     if isinstance(stick, HingedWall):  # only the base yields: the storeys above have no yield shear
         strength = replace(strength, storey_yield_ratio=np.concatenate([strength.storey_yield_ratio[:1],
                                                                         np.full(modes.storeys - 1, np.nan)]),
-                           source=strength.source.replace(", spread over the storeys as ASCE 7-22 §12.8.3 does", "")
+                           source=strength.source.replace(f", spread over the storeys as {code} §12.8.3 does", "")
                            + "; the wall yields in flexure at its base only, its plastic hinge carrying the moment "
-                             "of ASCE 7-22 §12.8.3's lateral forces at that base shear, and stays elastic above")
+                             f"of {code} §12.8.3's lateral forces at that base shear, and stays elastic above")
         return YieldingBuilding(modes, stick, strength, system, DRIFT_LIMIT_BY_SYSTEM[system], bool(p_delta),
                                 _stick_key(stick))
     code = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, strength_profile="code",

@@ -284,3 +284,23 @@ def test_the_note_says_an_assumed_overstrength_is_a_judgement_and_what_to_give(m
     if assumed:
         assert "times an assumed overstrength 2" in note
         assert note.endswith("give yield_base_shear_g (from a pushover or an evaluation) or overstrength where known.")
+
+
+@pytest.mark.parametrize("code", ["ASCE 7-22", "ASCE 7-16"])
+@pytest.mark.parametrize("system, given, expected", [
+    ("steel moment frame", None, "{code} §12.8 design (C.1 steel special moment frames"),
+    ("steel moment frame", 0.3, "base shear at yield 0.3 W as given, spread over the storeys as {code} §12.8.3 does"),
+    ("shear wall", 0.3, "base shear at yield 0.3 W as given; the wall yields in flexure at its base only, its "
+                        "plastic hinge carrying the moment of {code} §12.8.3's lateral forces"),
+])
+def test_the_strengths_words_name_the_sites_edition(code, system, given, expected):
+    """The design strength's words name the edition of the site sheet's ``code`` (page 1 names it too), not
+    always ASCE 7-22: a 7-16 site read "ASCE 7-22 §12.8" in its building note."""
+    from assess.assessment.floors import building_model_of
+    from assess.inventory.site_building import BuildingSheet, SiteSheet
+    site = SiteSheet(code=code, sds_g=1.0, sd1_g=0.6)
+    model = building_model_of(BuildingSheet(storeys=3, height_m=12.0, period_s=0.4, system=system,
+                                            response="yielding", yield_base_shear_g=given), site)
+    other = "ASCE 7-16" if code == "ASCE 7-22" else "ASCE 7-22"
+    assert expected.format(code=code) in model.strength.source
+    assert other not in model.strength.source
