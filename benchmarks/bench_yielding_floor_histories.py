@@ -1,6 +1,6 @@
 """Cost of the yielding building's floor histories: 11 ground motions through a 12-storey stick, every floor.
 
-Run: python benchmarks/bench_yielding_floor_histories.py   (needs pyslammer for its records)
+Run: python benchmarks/bench_yielding_floor_histories.py [--storeys 12,24,48,96]   (needs pyslammer for its records)
 
 The first 11 of pyslammer's sample records (in name order), each scaled so that its 5 % S_a(T_1) is the
 design spectrum's (S_DS 1.0 g, S_D1 0.6 g) at T_1 1.4 s, through a 12-storey stick designed by ASCE 7-22
@@ -10,7 +10,13 @@ wall (its elastic model on a pinching base hinge, assess/building/wall_hinge.py;
 wall's at its base), Newmark/Newton at substeps of at most 1 ms (shorter where the stick's shortest period
 asks). Prints the compile-or-load time, the best and worst of 3 runs, the
 median first-storey ductility, and the elastic modal route's time on the same suite for scale.
+
+With ``--storeys``: how the cost grows with the height, the reason for the most storeys the yielding model
+takes (``MAX_YIELDING_STOREYS`` of assess/inventory/site_building.py): for each number of storeys (4 m
+storeys, T_1 ASCE 7-22's T_a of the system, the same design), the seconds one ground motion (the first
+record, at the design spectrum at that T_1) takes per 30 s of shaking, best of 2, each system.
 """
+import argparse
 import os
 import time
 
@@ -39,7 +45,35 @@ def suite_at_design(period_s):
     return out
 
 
-def main():
+def height_sweep(storey_counts):
+    """Seconds per 30 s of shaking of one ground motion through the yielding stick, by storeys and system."""
+    from assess.building.period import approximate_period
+    for storeys in storey_counts:
+        heights = 4.0 * np.arange(1, storeys + 1)
+        for system in ("steel moment frame", "concrete moment frame", "shear wall", "other"):
+            period_s = float(approximate_period(heights[-1], system))
+            accel, dt = suite_at_design(period_s)[0]
+            strength = design_strength(system, np.ones(storeys), heights, period_s, sds_g=1.0, sd1_g=0.6)
+            stick = yielding_stick(storeys, 4.0, strength.storey_yield_ratio, system=system, period_s=period_s)
+            respond = hinged_wall_response if isinstance(stick, HingedWall) else yielding_response
+            respond(stick, accel[:10], dt)  # compile or load
+            times = []
+            for _ in range(2):
+                start = time.perf_counter()
+                respond(stick, accel, dt)
+                times.append(time.perf_counter() - start)
+            per_30_s = min(times) * 30.0 / (accel.size * dt)
+            print(f"{storeys} storeys, {system} (T_1 {period_s:.2f} s): {per_30_s:.2f} s per 30 s of shaking",
+                  flush=True)
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--storeys", default="", help="comma-separated storey counts: the height sweep instead")
+    args = parser.parse_args(argv)
+    if args.storeys:
+        height_sweep([int(n) for n in args.storeys.split(",")])
+        return
     suite = suite_at_design(PERIOD_S)
     samples = sum(accel.size for accel, _ in suite)
     duration = sum(accel.size * dt for accel, dt in suite)

@@ -173,10 +173,11 @@ def site_suite(site: SiteSheet, level: HazardLevel, modes: BuildingModes | None,
     return SiteSuite(suite, design, periods)
 
 
-def through_building(building, histories: list[Record], floors) -> dict[int, list[Record]]:
+def through_building(building, histories: list[Record], floors, progress=None) -> dict[int, list[Record]]:
     """Each history (a ground motion's) through the building (its elastic modes or its yielding stick,
-    :func:`building_model_of`): ``{floor: [history per ground history]}``."""
-    return building_floor_records(building, histories, floors=sorted(int(f) for f in floors))
+    :func:`building_model_of`): ``{floor: [history per ground history]}``; ``progress(done, total)`` after
+    each history through a yielding stick."""
+    return building_floor_records(building, histories, floors=sorted(int(f) for f in floors), progress=progress)
 
 
 def floors_csv(building, ground: list[Record], floors, level_label: str) -> pd.DataFrame:

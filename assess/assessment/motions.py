@@ -264,36 +264,47 @@ def simulated_motions(motions: LevelMotions, workbook_name: str, settings: Setti
     floors = None
     if motions.building is not None and "from_ground" in motions.table and (motions.table["from_ground"] >= 0).any():
         progress("passing the ground motions through the building")
-        floors = _through_building(motions, histories, kinds, pairs)
+        floors = _through_building(motions, histories, kinds, pairs, progress)
     return SimulatedMotions(histories, kinds, pairs, floors)
 
 
-def _through_building(motions: LevelMotions, histories: dict, kinds: dict, pairs: dict) -> pd.DataFrame:
+def _through_building(motions: LevelMotions, histories: dict, kinds: dict, pairs: dict,
+                      progress: Progress) -> pd.DataFrame:
     """Every floor row's histories (``from_ground`` >= 0): its ground motion's through the building; the
     row's PTA, Tp and vp measured from its first history (``motions.table`` is updated). Returns floors.csv."""
     table, modes = motions.table, motions.building
     derived = table[table["from_ground"] >= 0]
-    for ground_key, rows in derived.groupby("from_ground", sort=True):
-        ground_key = int(ground_key)
-        floors = sorted(int(f) for f in rows["floor"])
-        width = site_and_building.through_building(modes, [r for r, _ in histories[ground_key]], floors)
-        depth = None
+    grounds = sorted(int(key) for key in derived["from_ground"].unique())
+    floors = sorted(int(f) for f in derived["floor"].unique())
+    # every ground history (and each pair's second) through the building in one pass, side by side
+    widths = [record for key in grounds for record, _ in histories[key]]
+    depths = [pairs[key][1] for key in grounds if key in pairs]
+    through = site_and_building.through_building(modes, widths + depths, floors,
+                                                 progress=_building_progress(progress))
+    counts = [len(histories[key]) for key in grounds]
+    first = dict(zip(grounds, np.cumsum([0] + counts[:-1]).tolist()))  # where each ground's histories start
+    depth_of = {key: len(widths) + j for j, key in enumerate(key for key in grounds if key in pairs)}
+    for index, row in derived.iterrows():
+        ground_key, k, floor = int(row["from_ground"]), int(row["motion_key"]), int(row["floor"])
+        width = through[floor][first[ground_key]:first[ground_key] + len(histories[ground_key])]
+        histories[k] = [(record, f"{label} @ floor {floor_text(floor, motions.numbering)}, through the building")
+                        for record, (_, label) in zip(width, histories[ground_key])]
+        kinds[k] = RECORD  # the engine under the floor's history governs (no pulse regression for it)
         if ground_key in pairs:
-            depth = site_and_building.through_building(modes, [pairs[ground_key][1]], floors)
-        for index, row in rows.iterrows():
-            k, floor = int(row["motion_key"]), int(row["floor"])
-            histories[k] = [(record, f"{label} @ floor {floor_text(floor, motions.numbering)}, through the building")
-                            for record, (_, label) in zip(width[floor], histories[ground_key])]
-            kinds[k] = RECORD  # the engine under the floor's history governs (no pulse regression for it)
-            if depth is not None:
-                pairs[k] = (width[floor][0], depth[floor][0])
-            # a floor's motion is the building's filtered response, no pulse: the paper's regression (Tp, vp)
-            # does not apply to it, and the engine under the history governs
-            table.loc[index, ["pta_g", "tp_s", "vp_m_s", "pulse_source"]] = [width[floor][0].pta_g, np.nan, np.nan,
-                                                                              NO_PULSE]
-    ground = [histories[int(k)][0][0] for k in sorted(derived["from_ground"].unique())]
-    return site_and_building.floors_csv(modes, ground, sorted(int(f) for f in derived["floor"].unique()),
-                                        motions.level_label)
+            pairs[k] = (width[0], through[floor][depth_of[ground_key]])
+        # a floor's motion is the building's filtered response, no pulse: the paper's regression (Tp, vp)
+        # does not apply to it, and the engine under the history governs
+        table.loc[index, ["pta_g", "tp_s", "vp_m_s", "pulse_source"]] = [width[0].pta_g, np.nan, np.nan, NO_PULSE]
+    ground = [histories[key][0][0] for key in grounds]
+    return site_and_building.floors_csv(modes, ground, floors, motions.level_label)
+
+
+def _building_progress(progress: Progress):
+    """``progress(done, total)`` for the pass through a yielding building: a line at every tenth."""
+    def report(done: int, total: int) -> None:
+        if done == total or done % max(1, total // 10) == 0:
+            progress(f"through the building: {done} of {total} ground histories")
+    return report
 
 
 def _motion_record(record_path: str, scale: float, motion: str, row: int, workbook_name: str,

@@ -50,7 +50,7 @@ import threading
 from collections import OrderedDict
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, replace
-from typing import Optional, Sequence
+from typing import Callable, Optional, Sequence
 
 import numba
 import numpy as np
@@ -269,18 +269,24 @@ def stick_history(building: YieldingBuilding, ground_accel_g, dt_s: float) -> St
 
 
 def yielding_histories(building: YieldingBuilding, ground_motions: Sequence[Record],
-                       floors: Optional[Sequence[int]] = None) -> tuple[dict[int, list[Record]], list[StickHistory]]:
+                       floors: Optional[Sequence[int]] = None, progress: Optional[Callable[[int, int], None]] = None
+                       ) -> tuple[dict[int, list[Record]], list[StickHistory]]:
     """Every ground motion through the yielding building: the floors' histories as records (as
-    :func:`~assess.building.response.floor_records` gives them) and each motion's :class:`StickHistory`."""
+    :func:`~assess.building.response.floor_records` gives them) and each motion's :class:`StickHistory`;
+    ``progress(done, total)`` after each motion, where given."""
     wanted = list(range(building.storeys + 1)) if floors is None else [int(k) for k in floors]
     if any(not 0 <= k <= building.storeys for k in wanted):
         raise ValueError(f"floors must lie between 0 and {building.storeys}")
     out = {k: [] for k in wanted}
     grounds = [np.ascontiguousarray(motion.accel_g, dtype=float) for motion in ground_motions]
     # each motion on its own thread (the kernel releases the GIL): what changes is when, not what
+    histories = []
     with ThreadPoolExecutor(max(1, min(numba.get_num_threads(), len(grounds)))) as pool:
-        histories = list(pool.map(lambda m: stick_history(building, grounds[m], ground_motions[m].dt_s),
-                                  range(len(grounds))))
+        for history in pool.map(lambda m: stick_history(building, grounds[m], ground_motions[m].dt_s),
+                                range(len(grounds))):
+            histories.append(history)
+            if progress is not None:
+                progress(len(histories), len(grounds))
     for motion, ground, history in zip(ground_motions, grounds, histories):
         for k in wanted:
             accel = ground.copy() if k == 0 else history.floor_accel_g[k].copy()
@@ -288,12 +294,13 @@ def yielding_histories(building: YieldingBuilding, ground_motions: Sequence[Reco
     return out, histories
 
 
-def building_floor_records(building, ground_motions: Sequence[Record],
-                           floors: Optional[Sequence[int]] = None) -> dict[int, list[Record]]:
+def building_floor_records(building, ground_motions: Sequence[Record], floors: Optional[Sequence[int]] = None,
+                           progress: Optional[Callable[[int, int], None]] = None) -> dict[int, list[Record]]:
     """The floors' histories under each ground motion, through the building as it is modelled: its elastic
-    modes (:class:`~assess.building.modes.BuildingModes`) or its yielding stick (:class:`YieldingBuilding`)."""
+    modes (:class:`~assess.building.modes.BuildingModes`) or its yielding stick (:class:`YieldingBuilding`,
+    ``progress`` as :func:`yielding_histories` takes it)."""
     if isinstance(building, YieldingBuilding):
-        return yielding_histories(building, ground_motions, floors)[0]
+        return yielding_histories(building, ground_motions, floors, progress)[0]
     return floor_records(building, ground_motions, floors=floors)
 
 

@@ -304,3 +304,19 @@ def test_the_strengths_words_name_the_sites_edition(code, system, given, expecte
     other = "ASCE 7-16" if code == "ASCE 7-22" else "ASCE 7-22"
     assert expected.format(code=code) in model.strength.source
     assert other not in model.strength.source
+
+
+def test_the_pass_through_a_yielding_building_shows_progress(make_workbook):
+    """The ground histories go through the yielding stick in one pass, which says how far it has got: a line
+    at every tenth, counting up to all of them."""
+    import re
+
+    path = make_workbook(_sheets(("system", "steel moment frame"), ("response", "yielding")), record=False)
+    said = []
+    run_assessment(read_workbook(path), "DE", seed=3, progress=said.append)
+    counts = [tuple(map(int, m.groups())) for line in said
+              if (m := re.fullmatch(r"through the building: (\d+) of (\d+) ground histories", line))]
+    assert counts and counts[-1][0] == counts[-1][1] == 3, said  # the site sheet's suite_size
+    assert [done for done, _ in counts] == sorted(done for done, _ in counts)
+    assert len(counts) <= 11
+
