@@ -30,7 +30,7 @@ from assess.building.yielding import (BASE_HINGE, YieldingBuilding, building_flo
 from assess.errors import InputError, Problem
 from assess.hazard.levels import HazardLevel
 from assess.hazard.records import Record
-from assess.inventory.site_building import BuildingSheet, SiteSheet
+from assess.inventory.site_building import MAX_YIELDING_STOREYS, BuildingSheet, SiteSheet
 from assess.quantity_text import floor_text, floors_text
 from assess.site.asce7 import DesignSpectrum, from_design_values, from_mapped_values
 from assess.site.suite import GroundSuite, ground_suite
@@ -240,6 +240,9 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
                 "(floors.csv). The building is taken as elastic: a building that yields has lower peak floor "
                 "accelerations than these, at longer periods; floor motions a structural engineer gives in the "
                 "hazard sheet govern.")
+        if sheet.response is None and sheet.storeys > MAX_YIELDING_STOREYS:
+            text += (f" The yielding model takes at most {MAX_YIELDING_STOREYS} storeys (its cost grows with the "
+                     "cube of the storeys), so it did not run.")
     if derive_floors_roof is not None:
         text += " --derive-floors gives way to the building sheet."
     return text

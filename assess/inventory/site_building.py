@@ -37,6 +37,13 @@ MAX_STOREYS = 200
 #: stick of yielding storey springs (:mod:`assess.building.yielding`). Without the key: yielding where the
 #: storeys' strength is known (the site sheet's design values, or ``yield_base_shear_g``), elastic otherwise.
 RESPONSES = ("elastic", "yielding")
+#: The most storeys the yielding stick takes. Each integration step solves the stick's full stiffness (its
+#: elastic column or wall couples every floor), so one ground motion costs about the cube of the storeys:
+#: per 30 s of shaking, 0.07 / 0.50 / 3.0 / 6.0 s for steel moment frames of 12 / 24 / 40 / 48 storeys and 0.24 /
+#: 1.15 / 4.7 / 8.1 s for shear walls (``benchmarks/bench_yielding_floor_histories.py --storeys 12,24,40,48``;
+#: 93 s for a frame of 96), and a level's suite has 11 to 500 motions. Beyond it the elastic modes answer (any
+#: height, in seconds), and the note says why.
+MAX_YIELDING_STOREYS = 40
 #: Bounds of the building sheet's ``yield_base_shear_g`` (base shear at yield over the weight) and ``overstrength``.
 YIELD_BASE_SHEAR_RANGE_G = (0.01, 3.0)
 OVERSTRENGTH_RANGE = (1.0, 6.0)
@@ -157,7 +164,8 @@ class BuildingSheet:
 
     def response_with(self, site: "SiteSheet | None") -> str:
         """``elastic`` or ``yielding``: the sheet's ``response``, else yielding where the storeys' strength is
-        known (``yield_base_shear_g``, or the site sheet's design values for the code's design), else elastic.
+        known (``yield_base_shear_g``, or the site sheet's design values for the code's design) and the building
+        has at most :data:`MAX_YIELDING_STOREYS` storeys, else elastic.
 
         >>> BuildingSheet(storeys=3, height_m=10.0).response_with(None)
         'elastic'
@@ -167,7 +175,7 @@ class BuildingSheet:
         if self.response is not None:
             return self.response
         known = self.yield_base_shear_g is not None or (site is not None and site.has_design_values)
-        return "yielding" if known else "elastic"
+        return "yielding" if known and self.storeys <= MAX_YIELDING_STOREYS else "elastic"
 
 
 # ---------------------------------------------------------------- reading
@@ -395,6 +403,19 @@ def read_building(table, report) -> BuildingSheet | None:
                 report.at(values[key][1], key_header, f"{name} is given but response is elastic: the elastic "
                           "modes have no strength, so it would be ignored.",
                           f"delete the {name} row, or write yielding in response (row {values['response'][1]}).")
+    if "storeys" in out and int(out["storeys"]) > MAX_YIELDING_STOREYS and response != "elastic":
+        asked = [key for key in ("response", "yield_base_shear", "overstrength", "p_delta")
+                 if key in out and (key != "response" or response == "yielding") and (key != "p_delta" or p_delta)]
+        for key in asked:
+            name = "yield_base_shear_g" if key == "yield_base_shear" else key
+            report.at(values[key][1], key_header if key != "response" else value_header,
+                      f"{'response is yielding' if key == 'response' else name + ' is given'} but the building has "
+                      f"{int(out['storeys'])} storeys: the yielding model takes at most {MAX_YIELDING_STOREYS} (its "
+                      "cost grows with the cube of the storeys, about 6 s a ground motion at 48), and beyond that "
+                      "the building's elastic modes answer.",
+                      "write elastic in response (the elastic modes answer any height)" if key == "response"
+                      else f"delete the {name} row: above {MAX_YIELDING_STOREYS} storeys the elastic modes answer, "
+                           "and they have no strength.")
     if "yield_base_shear" in out and "overstrength" in out:
         report.at(values["overstrength"][1], key_header, "the building sheet gives both yield_base_shear_g and "
                   "overstrength: the overstrength multiplies the code's design strength, which a given base "

@@ -320,3 +320,16 @@ def test_the_pass_through_a_yielding_building_shows_progress(make_workbook):
     assert [done for done, _ in counts] == sorted(done for done, _ in counts)
     assert len(counts) <= 11
 
+
+def test_the_note_says_why_a_tall_building_is_elastic():
+    """Above the storeys the yielding model takes, a building whose strength is known is modelled elastic by
+    default; the note says why (and says nothing of it where the sheet asked for elastic)."""
+    from assess.assessment.floors import building_model_of, building_note
+    from assess.inventory.site_building import MAX_YIELDING_STOREYS, BuildingSheet, SiteSheet
+    site = SiteSheet(sds_g=1.0, sd1_g=0.6)
+    n = MAX_YIELDING_STOREYS + 1
+    for response, said in ((None, True), ("elastic", False)):
+        sheet = BuildingSheet(storeys=n, height_m=4.0 * n, system="steel moment frame", response=response)
+        note = building_note(building_model_of(sheet, site), sheet, [n], None)
+        assert ("The yielding model takes at most 40 storeys" in note) == said, note
+        assert "through the building's elastic modes" in note

@@ -171,6 +171,34 @@ def test_yielding_refusals_name_the_cell(make_workbook, rows, cell, words, fix):
     assert fix in located[0].fix and located[0].fix
 
 
+@pytest.mark.parametrize("storeys, building, expected", [
+    (40, [], "yielding"),                                       # the most the yielding model takes
+    (41, [], "elastic"),                                        # beyond it, the elastic modes answer
+    (41, [("p_delta", "no")], "elastic"),                       # a p_delta that asks nothing is no request
+    (200, [("response", "elastic")], "elastic"),
+])
+def test_above_the_yielding_models_storeys_the_default_is_elastic(make_workbook, storeys, building, expected):
+    inventory = read_workbook(make_workbook(_sheets(site=DESIGN_SITE, building=[
+        ("storeys", storeys), ("height_m", 4 * storeys)] + building)))
+    assert inventory.building.response_with(inventory.site) == expected
+
+
+@pytest.mark.parametrize("rows, cell, header", [
+    ([("response", "yielding")], "B4", "value"),
+    ([("yield_base_shear_g", 0.2)], "A4", "key"),
+    ([("overstrength", 2.5)], "A4", "key"),
+    ([("p_delta", "yes")], "A4", "key"),
+])
+def test_asking_for_yielding_above_its_storeys_is_refused_at_the_cell(make_workbook, rows, cell, header):
+    """A 41-storey building: one ground motion through the yielding stick costs about the cube of the storeys,
+    so what asks for it is refused, at its cell, with the elastic modes as the fix (or the row deleted)."""
+    problems = _problems(make_workbook, site=DESIGN_SITE, building=[("storeys", 41), ("height_m", 164)] + rows)
+    located = _located(problems, "building", cell)
+    assert located, [(p.cell, p.message) for p in problems]
+    assert "the building has 41 storeys: the yielding model takes at most 40" in located[0].message
+    assert ("write elastic in response" if header == "value" else "delete the") in located[0].fix
+
+
 def test_yielding_without_a_strength_is_refused_at_the_response_cell(make_workbook):
     """No yield_base_shear_g and a site sheet without design values (here, none at all): exit 2 at response."""
     problems = _problems(make_workbook, building=[("storeys", 3), ("height_m", 12), ("response", "yielding")])
