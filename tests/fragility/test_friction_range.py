@@ -56,7 +56,7 @@ def test_two_way_sliding_on_a_real_record_is_not_monotone_in_mu():
     μ = 0.138 slides about 4.7 cm farther than at μ = 0.12 (LN2-6-01's range, 0.12-0.192). An independent
     implicit (Moreau) time stepping on dt/200 gives the same growth."""
     pyslammer = pytest.importorskip("pyslammer")
-    from tests.verification.test_sliding_2d import moreau_reference
+    from peers.moreau import moreau_reference
 
     motion = pyslammer.sample_ground_motions()["Loma_Prieta_1989_HSP-000"]
     accel = np.asarray(motion.accel, dtype=float)

@@ -17,11 +17,12 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
-from numba import get_num_threads, njit
+from numba import get_num_threads
 
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2 as G
 from assess.mechanics.sliding import sliding_response
 from assess.mechanics.sliding_2d import Sliding2DResult, sliding_2d_peaks_batch, sliding_response_2d
+from peers.moreau import moreau_reference
 
 NEWMARK = Path(__file__).resolve().parents[1] / "data" / "newmark" / "rectangular_pulse.csv"
 MUS = (0.05, 0.1, 0.2)
@@ -53,46 +54,6 @@ def pairs(records):
     """Each record with the next one in name order (the last with the first): 18 pairs."""
     names = list(records)
     return [(a, b) for a, b in zip(names, names[1:] + names[:1])]
-
-
-@njit(cache=True)
-def moreau_reference(ax_g, ay_g, dt, mu, substeps):
-    """Peak |u| and residual (x, y) [m] by Moreau's implicit step of Coulomb friction.
-
-    On each substep h the velocity without friction is ``w = v - g a h`` (a at the
-    substep's midpoint); friction removes at most μ g h from it, opposite to it:
-    ``v' = 0`` if ``|w| ≤ μ g h``, else ``w (1 - μ g h/|w|)`` (the exact projection onto
-    the friction cone of an implicit Euler step; first order in h, no event location).
-    The floor is at rest after the record and a sliding block is stepped on until it stops.
-    """
-    h = dt / substeps
-    ux = uy = vx = vy = peak2 = 0.0
-    n = ax_g.shape[0]
-    k = 0
-    while True:
-        for j in range(substeps):
-            if k < n - 1:
-                frac = (j + 0.5) / substeps
-                ax = ax_g[k] + (ax_g[k + 1] - ax_g[k]) * frac
-                ay = ay_g[k] + (ay_g[k + 1] - ay_g[k]) * frac
-            else:
-                ax = ay = 0.0
-            wx = vx - G * ax * h
-            wy = vy - G * ay * h
-            w = np.sqrt(wx * wx + wy * wy)
-            if w <= mu * G * h:
-                nx = ny = 0.0
-            else:
-                nx = wx * (1.0 - mu * G * h / w)
-                ny = wy * (1.0 - mu * G * h / w)
-            ux += 0.5 * (vx + nx) * h
-            uy += 0.5 * (vy + ny) * h
-            vx, vy = nx, ny
-            peak2 = max(peak2, ux * ux + uy * uy)
-        k += 1
-        if k >= n - 1 and vx == 0.0 and vy == 0.0:
-            break
-    return np.sqrt(peak2), ux, uy
 
 
 # ----------------------------------------------------------------------------- (a), (b)
@@ -196,7 +157,7 @@ def test_circular_floor_motion_inside_the_static_cone_never_slides():
 def test_record_pairs_against_moreau_time_stepping(records, mu):
     """(e) Real record pairs (each record with the next, 6 of the 18 pairs) against Moreau stepping.
 
-    The reference (``moreau_reference``, written here) shares nothing with the kernel but
+    The reference (``moreau_reference``, tests/peers/moreau.py) shares nothing with the kernel but
     the equation: implicit projection step on substeps of dt/200, no events, first order.
     Measured: largest relative difference of the peak 7.5e-4 (μ 0.1) and 1.5e-3 (μ 0.2)
     (8.8e-4 and 1.7e-3 with the reference on dt/100); residuals within 4.0e-3 of the peak.
