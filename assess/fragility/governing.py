@@ -364,6 +364,11 @@ def _source_note(item_cases: pd.DataFrame, source_of: pd.Series, constants: Regr
     return "; ".join(parts) + "."
 
 
+#: The words of each reason why the regression does not apply, as :func:`regression_note` writes them (the
+#: report's table finds its short words by them: :data:`assess.report.items_table.REGRESSION_SHORT`).
+NO_PULSE_WORDS, OUTSIDE_WORDS, UPLIFT_WORDS = "no clear pulse", "outside", "the item uplifts"
+
+
 def regression_note(pulse_share: float, im: float, uplift: bool, constants: RegressionConstants) -> str:
     """Why the paper's regression does not apply to one case (""  where it does,
     :func:`~assess.fragility.suite.regression_applies`): "not applicable: ..." with each reason.
@@ -375,11 +380,11 @@ def regression_note(pulse_share: float, im: float, uplift: bool, constants: Regr
     share = 1.0 if not np.isfinite(pulse_share) else float(pulse_share)
     reasons = []
     if share < PULSE_SHARE_MIN:
-        reasons.append(f"pulse share {share:.2g} < {PULSE_SHARE_MIN:g} (no clear pulse)")
+        reasons.append(f"pulse share {share:.2g} < {PULSE_SHARE_MIN:g} ({NO_PULSE_WORDS})")
     if not constants.im_min <= im <= constants.im_max:
-        reasons.append(f"IM {im:.2g} outside {constants.im_min:g}-{constants.im_max:g}")
+        reasons.append(f"IM {im:.2g} {OUTSIDE_WORDS} {constants.im_min:g}-{constants.im_max:g}")
     if uplift:
-        reasons.append("the item uplifts")
+        reasons.append(UPLIFT_WORDS)
     return "not applicable: " + ", ".join(reasons) if reasons else ""
 
 

@@ -21,6 +21,8 @@ from __future__ import annotations
 import pandas as pd
 from markupsafe import Markup
 
+from assess.fragility.governing import NO_PULSE_WORDS, OUTSIDE_WORDS, UPLIFT_WORDS
+from assess.fragility.suite import PULSE_SHARE_MIN
 from assess.quantity_text import floor_text
 from assess.report.advice import CODE_REQUIRED
 from assess.report.sentences import DASH, finite, list_text, suite_text, text
@@ -28,9 +30,10 @@ from assess.report.sentences import DASH, finite, list_text, suite_text, text
 #: The short word of each reason why the regression does not apply, by the words of the item's
 #: ``regression_note`` (:func:`assess.fragility.governing.regression_note`) that give it, and what it means.
 REGRESSION_SHORT = (
-    ("no clear pulse", "no pulse", "its governing motion has no clear pulse, none carrying at least 38 % of PTA"),
-    ("outside", "IM", "its IM is outside the range the regression was fitted on, {im_min}–{im_max}"),
-    ("uplifts", "uplift", "it uplifts"),
+    (NO_PULSE_WORDS, "no pulse", "its governing motion has no clear pulse, none carrying at least "
+                                 f"{PULSE_SHARE_MIN * 100:g} % of PTA"),
+    (OUTSIDE_WORDS, "IM", "its IM is outside the range the regression was fitted on, {im_min}–{im_max}"),
+    (UPLIFT_WORDS, "uplift", "it uplifts"),
 )
 
 #: The tags under a code-prescribed action in the table, and what the column's note says of each.
