@@ -17,7 +17,7 @@ from pathlib import Path
 
 from assess.inventory import schema
 from assess.inventory.schema import CellError, Column
-from assess.building.period import SYSTEMS  # the lateral systems of ASCE 7 Table 12.8-2
+from assess.building.period import SYSTEMS, approximate_period  # ASCE 7 Table 12.8-2's systems, Eq. 12.8-7
 from assess.inventory.units import LENGTH, PERIOD
 
 #: Code editions whose spectra and equations the tool applies.
@@ -44,6 +44,11 @@ RESPONSES = ("elastic", "yielding")
 #: 93 s for a frame of 96), and a level's suite has 11 to 500 motions. Beyond it the elastic modes answer (any
 #: height, in seconds), and the note says why.
 MAX_YIELDING_STOREYS = 40
+#: A given T1 below ASCE 7's approximate period T_a over this is refused: T_a = C_t h_n^x is itself near the
+#: short end of buildings' measured periods (meant to err short: ASCE 7's commentary to §12.8.2), and a quarter of it
+#: is a unit slip (a frequency, milliseconds) rather than a building. It also bounds the yielding model's
+#: cost, whose steps shorten with the stick's shortest period.
+PERIOD_BELOW_APPROXIMATE = 4
 #: Bounds of the building sheet's ``yield_base_shear_g`` (base shear at yield over the weight) and ``overstrength``.
 YIELD_BASE_SHEAR_RANGE_G = (0.01, 3.0)
 OVERSTRENGTH_RANGE = (1.0, 6.0)
@@ -435,6 +440,13 @@ def read_building(table, report) -> BuildingSheet | None:
         report.at(where, value_header, f"a roof {height_m:.3g} m above the ground over {storeys} storeys "
                   f"is {height_m / storeys:.3g} m a storey; storeys are 2 to 10 m high.",
                   "check the unit in the key (height_m, height_ft) and the number of storeys.")
+        return None
+    approximate = float(approximate_period(height_m, system))
+    if "period" in out and out["period"] < approximate / PERIOD_BELOW_APPROXIMATE:
+        report.at(values["period"][1], value_header, f"a T1 of {out['period']:g} s is below 1/"
+                  f"{PERIOD_BELOW_APPROXIMATE:g} of ASCE 7's approximate period T_a = {approximate:.2g} s of a "
+                  f"{system} {height_m:.3g} m high (Eq. 12.8-7): stiffer than buildings are.",
+                  "write the fundamental period in seconds (not a frequency), or delete the row to take T_a.")
         return None
     return BuildingSheet(storeys=storeys, height_m=float(height_m), system=system,
                          period_s=out.get("period"), damping=float(out.get("damping", DEFAULT_DAMPING)),

@@ -199,6 +199,24 @@ def test_asking_for_yielding_above_its_storeys_is_refused_at_the_cell(make_workb
     assert ("write elastic in response" if header == "value" else "delete the") in located[0].fix
 
 
+@pytest.mark.parametrize("system, period, refused", [
+    ("shear wall", 0.04, True),            # T_a = 0.0488 × 20^0.75 = 0.46 s: a tenth of it
+    ("shear wall", 0.12, False),           # a quarter of it and more
+    ("steel moment frame", 0.17, True),    # T_a = 0.0724 × 20^0.8 = 0.79 s
+    ("steel moment frame", 0.2, False),
+])
+def test_a_period_far_below_the_approximate_one_is_refused_at_its_cell(make_workbook, system, period, refused):
+    """A T1 under a quarter of ASCE 7's T_a (Eq. 12.8-7) is a unit slip, and would make the yielding model's
+    steps as short: refused at the period cell."""
+    building = [("storeys", 5), ("height_m", 20), ("system", system), ("period_s", period)]
+    if not refused:
+        assert read_workbook(make_workbook(_sheets(site=DESIGN_SITE, building=building))).building.period_s == period
+        return
+    located = _located(_problems(make_workbook, site=DESIGN_SITE, building=building), "building", "B5")
+    assert located and "below 1/4 of ASCE 7's approximate period T_a" in located[0].message
+    assert "in seconds" in located[0].fix
+
+
 def test_yielding_without_a_strength_is_refused_at_the_response_cell(make_workbook):
     """No yield_base_shear_g and a site sheet without design values (here, none at all): exit 2 at response."""
     problems = _problems(make_workbook, building=[("storeys", 3), ("height_m", 12), ("response", "yielding")])
