@@ -98,18 +98,20 @@ def stripe_histories(modes, ground: list, pga_g: float, floors) -> dict[int, lis
         scaled.append((first.scaled(factor), second.scaled(factor) if second is not first else None))
     wanted = sorted(set(int(f) for f in floors))
     upper = [f for f in wanted if f > 0]
-    width = building_floor_records(modes, [w for w, _ in scaled], floors=upper) if upper else {}
     paired = [k for k, (_, d) in enumerate(scaled) if d is not None]
-    depth = building_floor_records(modes, [scaled[k][1] for k in paired], floors=upper) if upper and paired else {}
+    # every history of the stripe (each pair's second after the firsts) through the building in one pass
+    through = building_floor_records(modes, [w for w, _ in scaled] + [scaled[k][1] for k in paired],
+                                     floors=upper) if upper else {}
+    depth_at = {k: len(scaled) + j for j, k in enumerate(paired)}
     out = {}
     for floor in wanted:
         histories = []
         for k, (w, d) in enumerate(scaled):
-            first = w if floor == 0 else width[floor][k]
+            first = w if floor == 0 else through[floor][k]
             if d is None:
                 histories.append((first, first))
             else:
-                histories.append((first, d if floor == 0 else depth[floor][paired.index(k)]))
+                histories.append((first, d if floor == 0 else through[floor][depth_at[k]]))
         out[floor] = histories
     return out
 
