@@ -25,8 +25,8 @@ from assess.building.design import design_storey_stiffness
 from assess.building.floors import floors_table
 from assess.building.period import approximate_period
 from assess.building.response import floor_records
-from assess.building.yielding import (BASE_HINGE, YieldingBuilding, building_floor_records, storey_table,
-                                      yielding_building, yielding_histories)
+from assess.building.yielding import (BASE_HINGE, STABILITY_COEFFICIENT_MAX, YieldingBuilding, building_floor_records,
+                                      storey_table, yielding_building, yielding_histories)
 from assess.errors import InputError, Problem
 from assess.hazard.levels import HazardLevel
 from assess.hazard.records import Record
@@ -98,8 +98,20 @@ def building_model_of(building: BuildingSheet, site: SiteSheet | None, modes: Bu
         design = dict(risk_category=site.risk_category)
     if site is not None:
         design["code"] = site.code
-    return yielding_building(modes, building.system, damping=building.damping, overstrength=building.overstrength,
-                             yield_base_shear_g=building.yield_base_shear_g, p_delta=building.p_delta, **design)
+    model = yielding_building(modes, building.system, damping=building.damping, overstrength=building.overstrength,
+                              yield_base_shear_g=building.yield_base_shear_g, p_delta=building.p_delta, **design)
+    theta = model.stability_coefficient
+    if theta > STABILITY_COEFFICIENT_MAX:
+        approximate = float(approximate_period(building.height_m, building.system))
+        raise InputError([Problem(
+            workbook_name, f"with p_delta the gravity loads make this building unstable or nearly so: its first "
+            f"mode's stability coefficient θ is {theta:.2g} (1 − (T1/T1 with P-Delta)², T1 {modes.periods_s[0]:.3g} s), "
+            f"above the {STABILITY_COEFFICIENT_MAX:g} that ASCE 7-22 §12.8.7 allows a building; a building that "
+            "flexible under its own weight would collapse in the model, not shake its floors.",
+            f"check period_s (T1 {modes.periods_s[0]:.3g} s is {modes.periods_s[0] / approximate:.2g} times ASCE 7's "
+            f"approximate period T_a {approximate:.2g} s for this height and system), or write no in p_delta.",
+            sheet=building.sheet, row=building.rows.get("p_delta"))])
+    return model
 
 
 def design_spectrum_of(site: SiteSheet, workbook_name: str) -> DesignSpectrum | None:

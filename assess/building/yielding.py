@@ -60,9 +60,9 @@ from assess.hazard.records import Record
 
 from .design import DesignStrength, design_strength
 from .modes import BuildingModes
-from .nonlinear import STRENGTH_BY_SYSTEM, YieldingStick, yielding_response, yielding_stick
+from .nonlinear import STRENGTH_BY_SYSTEM, YieldingStick, elastic_periods, yielding_response, yielding_stick
 from .response import floor_records
-from .wall_hinge import HingedWall, hinged_wall_response
+from .wall_hinge import HingedWall, hinged_periods, hinged_wall_response
 
 #: Storey drift ratio beyond which the stick is not trusted, per lateral system [-]: the Collapse
 #: Prevention level's transient drift of FEMA 356 Table C1-3 (module text); ``other`` takes the lowest.
@@ -74,6 +74,8 @@ DRIFT_LIMIT_BY_SYSTEM = {
     "shear wall": 0.02,
     "other": 0.02,
 }
+#: The largest stability coefficient θ ASCE 7-22 §12.8.7 lets a building have (0.5/(β C_d), at most 0.25).
+STABILITY_COEFFICIENT_MAX = 0.25
 #: Bytes of stick answers (every floor's history per ground history) a run keeps, most recent first.
 MEMORY_BYTES = 256 * 2 ** 20
 #: Which yielding model a building's stick is (:attr:`YieldingBuilding.yielding_model`, ``floors.csv``'s
@@ -120,6 +122,22 @@ class YieldingBuilding:
         """:data:`BASE_HINGE` where the stick is a wall on its base hinge, else :data:`STOREY_SPRINGS`: the
         model that runs, read from the stick itself."""
         return BASE_HINGE if isinstance(self.stick, HingedWall) else STOREY_SPRINGS
+
+    @property
+    def stability_coefficient(self) -> float:
+        """θ of the first mode under the gravity loads' P-Delta: 1 − (T_1/T_1,PΔ)², T_1,PΔ the elastic stick's first
+        period with the geometric stiffness (0 without P-Delta; inf where it makes the stick unstable).
+
+        For a shear building whose storeys share one θ_i = P_i/(k_i h_i), ω² falls to ω²(1 − θ) (Chopra,
+        *Dynamics of Structures*, §18.6): the first mode's θ is that stability coefficient, ASCE 7-22 §12.8.7's
+        θ = P Δ/(V h C_d) at the elastic drift (Δ = C_d δ_e), which the code keeps at most 0.5/(β C_d) ≤ 0.25
+        (:data:`STABILITY_COEFFICIENT_MAX`).
+        """
+        if not self.p_delta:
+            return 0.0
+        periods = hinged_periods(self.stick) if isinstance(self.stick, HingedWall) else elastic_periods(self.stick)
+        first = float(periods[0])
+        return float(1.0 - (self.periods_s[0] / first) ** 2) if np.isfinite(first) else float("inf")
 
     # the elastic model's description, as the route reads it from BuildingModes
     @property

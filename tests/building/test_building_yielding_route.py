@@ -333,3 +333,24 @@ def test_the_note_says_why_a_tall_building_is_elastic():
         note = building_note(building_model_of(sheet, site), sheet, [n], None)
         assert ("The yielding model takes at most 40 storeys" in note) == said, note
         assert "through the building's elastic modes" in note
+
+
+@pytest.mark.parametrize("period_s, refused", [(1.0, False), (2.0, True)])
+def test_p_delta_beyond_the_codes_stability_coefficient_is_refused(period_s, refused):
+    """One storey of 3 m: k = m (2π/T)², P = m g, so θ = P/(k h) = g T²/(4π² h) exactly (0.0828 at 1 s, 0.331 at
+    2 s); above ASCE 7-22 §12.8.7's 0.25 the building would collapse in the model under its own weight, so the
+    run stops at the p_delta row (exit 2) rather than shake floors with a collapsing stick."""
+    from assess.assessment.floors import building_model_of
+    from assess.errors import InputError
+    from assess.inventory.site_building import BuildingSheet, SiteSheet
+    site = SiteSheet(sds_g=1.0, sd1_g=0.6)
+    sheet = BuildingSheet(storeys=1, height_m=3.0, period_s=period_s, p_delta=True, rows={"p_delta": 5})
+    theta = 9.80665 * period_s ** 2 / (4 * np.pi ** 2 * 3.0)
+    if not refused:
+        assert building_model_of(sheet, site).stability_coefficient == pytest.approx(theta, rel=1e-9)
+        return
+    with pytest.raises(InputError) as error:
+        building_model_of(sheet, site, workbook_name="b.xlsx")
+    (problem,) = error.value.problems
+    assert (problem.sheet, problem.row) == ("building", 5)
+    assert f"stability coefficient θ is {theta:.2g}" in problem.message and "p_delta" in problem.fix
