@@ -13,6 +13,7 @@ import math
 
 from assess.building.yielding import BASE_HINGE
 from assess.quantity_text import floor_numbering_of, floor_text
+from assess.report.sentences import runs_text
 
 #: Sentence closing the section, whatever the drifts.
 COLLAPSE_NOT_ASSESSED = ("The building's own collapse is not assessed: this report is about its contents, under "
@@ -46,10 +47,7 @@ def _number(value: float) -> str:
 
 
 def _storeys_text(storeys: list[int]) -> str:
-    words = [str(k) for k in storeys]
-    if len(words) == 1:
-        return f"storey {words[0]}"
-    return "storeys " + ", ".join(words[:-1]) + " and " + words[-1]
+    return runs_text(storeys, "storey")
 
 
 def building_context(result) -> dict | None:

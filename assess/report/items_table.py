@@ -25,7 +25,7 @@ from assess.fragility.governing import NO_PULSE_WORDS, OUTSIDE_WORDS, UPLIFT_WOR
 from assess.fragility.suite import PULSE_SHARE_MIN
 from assess.quantity_text import floor_text
 from assess.report.advice import CODE_REQUIRED
-from assess.report.sentences import DASH, finite, list_text, suite_text, text
+from assess.report.sentences import DASH, finite, list_text, runs_text, suite_text, text
 
 #: The short word of each reason why the regression does not apply, by the words of the item's
 #: ``regression_note`` (:func:`assess.fragility.governing.regression_note`) that give it, and what it means.
@@ -56,19 +56,7 @@ def floors_text(floors, numbering: str = "ground_0") -> str:
     >>> floors_text([0]), floors_text([3, 1, 2, 4]), floors_text([0, 2]), floors_text([0, 1, 2, 5], "ground_1")
     ('floor 0', 'floors 1 to 4', 'floors 0 and 2', 'floors 1 to 3 and 6')
     """
-    numbers = sorted({int(f) for f in floors})
-    runs: list[list[int]] = []
-    for number in numbers:
-        if runs and number == runs[-1][-1] + 1:
-            runs[-1].append(number)
-        else:
-            runs.append([number])
-    parts: list[str] = []
-    for run in runs:
-        labels = [floor_text(f, numbering) for f in run]
-        parts += [f"{labels[0]} to {labels[-1]}"] if len(run) >= 3 else labels
-    words = parts[0] if len(parts) == 1 else ", ".join(parts[:-1]) + " and " + parts[-1]
-    return ("floor " if len(numbers) == 1 else "floors ") + words
+    return runs_text(floors, "floor", lambda f: floor_text(f, numbering))
 
 
 def demand_from(summary: pd.DataFrame, numbering: str = "ground_0") -> dict:
