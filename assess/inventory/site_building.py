@@ -367,16 +367,17 @@ def read_site(table, folder: Path, report) -> SiteSheet | None:
 def read_building(table, report) -> BuildingSheet | None:
     """The ``building`` sheet, or None after reporting its problems."""
     before = len(report.problems)
-    values = _key_values(table, _BUILDING_KEYS, "building", report)
+    invalid: set = set()  # keys given with a value refused at its cell: not missing
+    values = _key_values(table, _BUILDING_KEYS, "building", report, invalid)
     value_header, key_header = table.headers.get("value"), table.headers.get("key")
     out = {name: value for name, (value, _) in values.items()}
-    if "storeys" not in out:
+    if "storeys" not in out and "storeys" not in invalid:
         report("the building sheet has no 'storeys'.", "add a row storeys with the number of storeys "
                "above ground (floors are numbered 0, the ground, to storeys, the roof).", row=1)
     if "height" in out and "storey_height" in out:
         report.at(values["storey_height"][1], key_header, "the building sheet gives both height and "
                   "storey_height.", "keep one: height_m (roof above ground) or storey_height_m (uniform).")
-    elif "height" not in out and "storey_height" not in out:
+    elif not {"height", "storey_height"} & (set(out) | invalid):
         report("the building sheet has no height.", "add height_m (the roof above the ground floor) or "
                "storey_height_m (when every storey is as high).", row=1)
     system = str(out.get("system", "other")).strip().lower()
@@ -420,7 +421,7 @@ def read_building(table, report) -> BuildingSheet | None:
                       "the building's elastic modes answer.",
                       "write elastic in response (the elastic modes answer any height)" if key == "response"
                       else f"delete the {name} row: above {MAX_YIELDING_STOREYS} storeys the elastic modes answer, "
-                           "and they have no strength.")
+                           + ("and they carry no P-Delta." if key == "p_delta" else "and they have no strength."))
     if "yield_base_shear" in out and "overstrength" in out:
         report.at(values["overstrength"][1], key_header, "the building sheet gives both yield_base_shear_g and "
                   "overstrength: the overstrength multiplies the code's design strength, which a given base "

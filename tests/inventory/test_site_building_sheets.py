@@ -276,3 +276,10 @@ def test_the_command_exits_2_on_a_bad_storey_stiffness_and_writes_nothing(make_w
     err = capsys.readouterr().err
     assert "building" in err and "B4" in err and "storey_stiffness" in err and "Traceback" not in err
     assert not out.exists() or not any(out.iterdir())
+
+
+def test_a_refused_height_is_not_also_called_missing(make_workbook):
+    """A storey height out of range is refused at its cell, once: the sheet is not also said to have no height."""
+    problems = _problems(make_workbook, building=[("storeys", 3), ("storey_height_ft", 33)])
+    assert [p.cell for p in problems] == ["B3"], [(p.cell, p.message) for p in problems]
+    assert "storey_height 33 ft" in problems[0].message
