@@ -42,8 +42,8 @@ def item_motion_direction_cases(items: pd.DataFrame, pairs: pd.DataFrame) -> pd.
     """One row per item x motion x direction with the block's geometry in that direction."""
     item_columns = ["id", "floor", "height_m", "width_m", "depth_m", "cg_height_m", "mu",
                     "mu_static", "clearance_m"] + [c for c in ("mu_low", "mu_high") if c in items]
-    motion_columns = ["id", "motion", "motion_key", "pta_g", "tp_s", "vp_m_s", "pulse_source"] + (
-        ["derived"] if "derived" in pairs else [])
+    motion_columns = ["id", "motion", "motion_key", "pta_g", "tp_s", "vp_m_s", "pulse_source"] + [
+        column for column in ("derived", "beyond_drift") if column in pairs]
     base = pairs[motion_columns].assign(pair_index=range(len(pairs))) \
         .merge(items[item_columns], on="id", validate="many_to_one")
     frames = []

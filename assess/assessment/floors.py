@@ -185,11 +185,18 @@ def site_suite(site: SiteSheet, level: HazardLevel, modes: BuildingModes | None,
     return SiteSuite(suite, design, periods)
 
 
-def through_building(building, histories: list[Record], floors, progress=None) -> dict[int, list[Record]]:
+def through_building(building, histories: list[Record], floors, progress=None) -> tuple[dict[int, list[Record]],
+                                                                                      list[bool]]:
     """Each history (a ground motion's) through the building (its elastic modes or its yielding stick,
-    :func:`building_model_of`): ``{floor: [history per ground history]}``; ``progress(done, total)`` after
-    each history through a yielding stick."""
-    return building_floor_records(building, histories, floors=sorted(int(f) for f in floors), progress=progress)
+    :func:`building_model_of`): ``{floor: [history per ground history]}``, and for each ground history whether
+    the yielding stick's storey drift passed :attr:`~assess.building.yielding.YieldingBuilding.drift_limit`
+    under it (what the model is trusted to; never for the elastic modes); ``progress(done, total)`` after each
+    history through a yielding stick."""
+    wanted = sorted(int(f) for f in floors)
+    if not isinstance(building, YieldingBuilding):
+        return building_floor_records(building, histories, floors=wanted), [False] * len(histories)
+    records, sticks = yielding_histories(building, histories, wanted, progress)
+    return records, [bool(np.nanmax(stick.peak_drift_ratio) > building.drift_limit) for stick in sticks]
 
 
 def floors_csv(building, ground: list[Record], floors, level_label: str) -> pd.DataFrame:

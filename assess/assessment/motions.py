@@ -279,14 +279,18 @@ def _through_building(motions: LevelMotions, histories: dict, kinds: dict, pairs
     # every ground history (and each pair's second) through the building in one pass, side by side
     widths = [record for key in grounds for record, _ in histories[key]]
     depths = [pairs[key][1] for key in grounds if key in pairs]
-    through = site_and_building.through_building(modes, widths + depths, floors,
-                                                 progress=_building_progress(progress))
+    through, beyond = site_and_building.through_building(modes, widths + depths, floors,
+                                                         progress=_building_progress(progress))
     counts = [len(histories[key]) for key in grounds]
     first = dict(zip(grounds, np.cumsum([0] + counts[:-1]).tolist()))  # where each ground's histories start
     depth_of = {key: len(widths) + j for j, key in enumerate(key for key in grounds if key in pairs)}
+    table["beyond_drift"] = False  # whether the building's model passed its trusted drift under the motion
     for index, row in derived.iterrows():
         ground_key, k, floor = int(row["from_ground"]), int(row["motion_key"]), int(row["floor"])
-        width = through[floor][first[ground_key]:first[ground_key] + len(histories[ground_key])]
+        start, stop = first[ground_key], first[ground_key] + len(histories[ground_key])
+        width = through[floor][start:stop]
+        table.loc[index, "beyond_drift"] = any(beyond[start:stop]) or (
+            ground_key in pairs and beyond[depth_of[ground_key]])
         histories[k] = [(record, f"{label} @ floor {floor_text(floor, motions.numbering)}, through the building")
                         for record, (_, label) in zip(width, histories[ground_key])]
         kinds[k] = RECORD  # the engine under the floor's history governs (no pulse regression for it)

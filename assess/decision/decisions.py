@@ -257,6 +257,13 @@ def item_flags(item, item_cases: pd.DataFrame, constants: RegressionConstants,
             f"floor {floor_text(item.floor, numbering)} has no motion in the workbook: it was assessed under the ground motions "
             f"amplified by ASCE 7-16 eq. 13.3-1 (--derive-floors), an envelope rule, not a floor "
             f"response analysis.")))
+    if "beyond_drift" in item_cases and item_cases["beyond_drift"].astype(bool).any():
+        beyond = item_cases.loc[item_cases["beyond_drift"].astype(bool), "motion_key"].nunique()
+        motions = item_cases["motion_key"].nunique()
+        flags.append(Flag(item.id, "building_beyond_drift", (
+            f"under {beyond} of its {motions} motions the building's model passed the storey drift it is trusted "
+            "to: the floor motions under those, and its results under them, are outside what the model stands "
+            "for (the report's building page says which storeys)."), f"{beyond} of {motions} motions"))
     if not np.isclose(item.cg_height_m, item.height_m / 2.0):
         flags.append(Flag(item.id, "cg_not_mid_height", (
             "centre of mass at {length}, not mid-height: alpha and b/h use it; "

@@ -28,6 +28,7 @@ FLAG_TITLES = {
     "calibrated": "Changed by the calibration",
     "cg_not_mid_height": "Centre of mass not at mid-height",
     "derived_floor_motion": "Floor motion derived from the ground motion",
+    "building_beyond_drift": "Floor motions from the building's model beyond the drift it is trusted to",
     "implausible_input": "Size or density no equipment has: check the workbook cell",
 }
 
@@ -236,6 +237,10 @@ FLAG_CAUSES = {
     "derived_floor_motion": "Their floors have no motion in the workbook: they were assessed under the ground "
                             "motions amplified by ASCE 7-16 eq. 13.3-1 (--derive-floors), an envelope rule, not "
                             "a floor response analysis. Floor motions from a structural engineer would replace it.",
+    "building_beyond_drift": "Under some of their motions (beside each) the building's model passed the storey "
+                             "drift it is trusted to (the building page says which storeys): the floor motions "
+                             "under those, and these items' results under them, are outside what the model stands "
+                             "for; their classes still count every motion.",
     "cg_not_mid_height": "The workbook puts their centre of mass off mid-height (at the height beside each): "
                          "α and b/h use it; the rocking frequency p assumes the mass spread over the whole box.",
     "im_outside_fit": "At these items' IM (beside each) the paper's regression, fitted on IM {im_min}–{im_max}, "
@@ -244,8 +249,8 @@ FLAG_CAUSES = {
 }
 #: The order of the flag groups: a cell to check first, then what changed an item's result, then the model's
 #: limits; codes not named here follow, in the order the result gives them.
-FLAG_ORDER = ("implausible_input", "calibrated", "uplift", "derived_floor_motion", "cg_not_mid_height",
-              "im_outside_fit")
+FLAG_ORDER = ("implausible_input", "calibrated", "uplift", "derived_floor_motion", "building_beyond_drift",
+              "cg_not_mid_height", "im_outside_fit")
 
 
 def flag_text(text: str, flag, system: str = "si") -> str:

@@ -354,3 +354,22 @@ def test_p_delta_beyond_the_codes_stability_coefficient_is_refused(period_s, ref
     (problem,) = error.value.problems
     assert (problem.sheet, problem.row) == ("building", 5)
     assert f"stability coefficient θ is {theta:.2g}" in problem.message and "p_delta" in problem.fix
+
+
+def test_items_under_motions_beyond_the_trusted_drift_are_flagged(weak):
+    """An item on a floor whose motions come from the stick is flagged with how many of its motions the stick
+    passed its trusted drift under. That is at least the most motions any one storey counted (floors.csv) and
+    at most their sum over the storeys. The ground floor's item, whose motions no model touched, is not
+    flagged."""
+    floors = weak.floors.set_index("floor")
+    beyond = floors.loc[1:, "motions_beyond_drift_limit"]
+    flags = {flag.item_id: flag for flag in weak.flags if flag.code == "building_beyond_drift"}
+    assert set(flags) == {"M-1", "R-2"}
+    summary = weak.summary.set_index("id")
+    for item_id, flag in flags.items():
+        count, total = map(int, flag.detail.split(" motions")[0].split(" of "))
+        assert total == 3 and beyond.max() <= count <= min(beyond.sum(), total)
+        assert "building_beyond_drift" in summary.loc[item_id, "flags"]
+    assert "building_beyond_drift" not in summary.loc["G-1", "flags"]
+    html = render_html(weak).replace("&#39;", "'")
+    assert "Floor motions from the building's model beyond the drift it is trusted to" in html
