@@ -22,6 +22,7 @@ import numpy as np
 import pandas as pd
 
 from assess.assessment import floors as site_and_building
+from assess.building.yielding import pass_progress
 from assess.calibration.apply import scaled_motions
 from assess.errors import InputError, Problem
 from assess.fragility.governing import PULSE, RECORD, SYNTHETIC
@@ -280,7 +281,7 @@ def _through_building(motions: LevelMotions, histories: dict, kinds: dict, pairs
     widths = [record for key in grounds for record, _ in histories[key]]
     depths = [pairs[key][1] for key in grounds if key in pairs]
     through, beyond = site_and_building.through_building(modes, widths + depths, floors,
-                                                         progress=_building_progress(progress))
+                                                         progress=pass_progress(progress))
     counts = [len(histories[key]) for key in grounds]
     first = dict(zip(grounds, np.cumsum([0] + counts[:-1]).tolist()))  # where each ground's histories start
     depth_of = {key: len(widths) + j for j, key in enumerate(key for key in grounds if key in pairs)}
@@ -301,14 +302,6 @@ def _through_building(motions: LevelMotions, histories: dict, kinds: dict, pairs
         table.loc[index, ["pta_g", "tp_s", "vp_m_s", "pulse_source"]] = [width[0].pta_g, np.nan, np.nan, NO_PULSE]
     ground = [histories[key][0][0] for key in grounds]
     return site_and_building.floors_csv(modes, ground, floors, motions.level_label)
-
-
-def _building_progress(progress: Progress):
-    """``progress(done, total)`` for the pass through a yielding building: a line at every tenth."""
-    def report(done: int, total: int) -> None:
-        if done == total or done % max(1, total // 10) == 0:
-            progress(f"through the building: {done} of {total} ground histories")
-    return report
 
 
 def _motion_record(record_path: str, scale: float, motion: str, row: int, workbook_name: str,

@@ -47,6 +47,7 @@ from __future__ import annotations
 
 import hashlib
 import threading
+import time
 from collections import OrderedDict
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, replace
@@ -310,6 +311,24 @@ def yielding_histories(building: YieldingBuilding, ground_motions: Sequence[Reco
             accel = ground.copy() if k == 0 else history.floor_accel_g[k].copy()
             out[k].append(Record(accel, motion.dt_s, motion.name if k == 0 else f"{motion.name} @ floor {k}"))
     return out, histories
+
+
+#: Seconds between two lines of a pass's progress (:func:`pass_progress`): a pass quicker than this says nothing.
+PROGRESS_EVERY_S = 5.0
+
+
+def pass_progress(progress: Callable[[str], None], lead: str = "") -> Callable[[int, int], None]:
+    """``progress(done, total)`` for :func:`yielding_histories` that says "``lead``through the building: done of
+    total ground histories" to ``progress`` once :data:`PROGRESS_EVERY_S` have passed since the pass began or
+    last said it, and at the end of a pass that said anything."""
+    last = [time.monotonic(), False]  # when it last spoke (or began), and whether it has
+
+    def report(done: int, total: int) -> None:
+        now = time.monotonic()
+        if now - last[0] >= PROGRESS_EVERY_S or (done == total and last[1]):
+            progress(f"{lead}through the building: {done} of {total} ground histories")
+            last[:] = [now, True]
+    return report
 
 
 def building_floor_records(building, ground_motions: Sequence[Record], floors: Optional[Sequence[int]] = None,

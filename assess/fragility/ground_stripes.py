@@ -43,7 +43,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from assess.building.yielding import YieldingBuilding, building_floor_records
+from assess.building.yielding import YieldingBuilding, building_floor_records, pass_progress
 from assess.quantity_text import floor_text
 from assess.fragility.stripes import (N_STRIPES, STRIPE_PGA_G, CurveRisk, StripeBatch, checked_curve,
                                       fit_and_integrate, stripe_levels_g)
@@ -88,7 +88,7 @@ def ground_histories(cases: pd.DataFrame, floor: int, motions: dict, sources: di
     return out
 
 
-def stripe_histories(modes, ground: list, pga_g: float, floors) -> dict[int, list]:
+def stripe_histories(modes, ground: list, pga_g: float, floors, progress=None) -> dict[int, list]:
     """Per floor of ``floors``: ``(width, depth)`` histories under each ground history of ``ground`` scaled
     to PGA ``pga_g`` [g] (a pair by one factor: its larger peak at ``pga_g``) and passed through the
     building (:func:`assess.building.yielding.building_floor_records`); floor 0 gets the scaled ground histories."""
@@ -101,7 +101,7 @@ def stripe_histories(modes, ground: list, pga_g: float, floors) -> dict[int, lis
     paired = [k for k, (_, d) in enumerate(scaled) if d is not None]
     # every history of the stripe (each pair's second after the firsts) through the building in one pass
     through = building_floor_records(modes, [w for w, _ in scaled] + [scaled[k][1] for k in paired],
-                                     floors=upper) if upper else {}
+                                     floors=upper, progress=progress) if upper else {}
     depth_at = {k: len(scaled) + j for j, k in enumerate(paired)}
     out = {}
     for floor in wanted:
@@ -117,11 +117,12 @@ def stripe_histories(modes, ground: list, pga_g: float, floors) -> dict[int, lis
 
 
 def ground_stripe_runs(cases: pd.DataFrame, motions: dict, sources: dict, modes, plan, runner,
-                       progress=None, record_pairs: dict | None = None) -> pd.DataFrame:
+                       progress=None, record_pairs: dict | None = None, say=None) -> pd.DataFrame:
     """Simulate items under their floor's histories for the ground suite scaled to stripes of PGA.
 
     ``plan``: ``(floor, pga_g, ids)`` as for :func:`assess.fragility.stripes.stripe_runs` (``pga_g`` in
     place of the floor's PFA); the same columns are returned, ``pfa_g`` holding the stripe's PGA [g].
+    ``say(text)``, where given, hears how far each stripe's pass through a yielding building has got.
     """
     record_pairs = record_pairs or {}
     per_item = cases.drop_duplicates(["id", "direction"])
@@ -138,7 +139,8 @@ def ground_stripe_runs(cases: pd.DataFrame, motions: dict, sources: dict, modes,
         for floor in floors:
             by_ground.setdefault(tuple(id(w) for w, _ in ground_of[floor]), []).append(floor)
         for group in by_ground.values():
-            through = stripe_histories(modes, ground_of[group[0]], pga_g, group)
+            through = stripe_histories(modes, ground_of[group[0]], pga_g, group,
+                                       progress=pass_progress(say, f"stripe {pga_g:.3g} g: ") if say else None)
             for floor in group:
                 histories_at[(floor, pga_g)] = through[floor]
     batch = StripeBatch()
@@ -187,7 +189,7 @@ def ground_curve_risk(cases: pd.DataFrame, motions: dict, sources: dict, modes, 
 
     def run_plan(plan, report=None):
         return ground_stripe_runs(cases, motions, sources, modes, plan, runner, progress=report,
-                                  record_pairs=record_pairs)
+                                  record_pairs=record_pairs, say=progress)
 
     prefix = f"{NOTE}, from the stripes of level {level_label}'s suite; " if level_label else f"{NOTE}; "
     return fit_and_integrate(cases, hazard, levels_g, rates_per_yr, floors, stripes_by_floor, run_plan, progress,

@@ -306,11 +306,12 @@ def test_the_strengths_words_name_the_sites_edition(code, system, given, expecte
     assert other not in model.strength.source
 
 
-def test_the_pass_through_a_yielding_building_shows_progress(make_workbook):
-    """The ground histories go through the yielding stick in one pass, which says how far it has got: a line
-    at every tenth, counting up to all of them."""
+def test_the_pass_through_a_yielding_building_shows_progress(make_workbook, monkeypatch):
+    """The ground histories go through the yielding stick in one pass, which says how far it has got (here at
+    every history: this pass is quicker than the lines' interval), counting up to all of them."""
     import re
 
+    monkeypatch.setattr(yielding_module, "PROGRESS_EVERY_S", 0.0)
     path = make_workbook(_sheets(("system", "steel moment frame"), ("response", "yielding")), record=False)
     said = []
     run_assessment(read_workbook(path), "DE", seed=3, progress=said.append)
@@ -318,7 +319,25 @@ def test_the_pass_through_a_yielding_building_shows_progress(make_workbook):
               if (m := re.fullmatch(r"through the building: (\d+) of (\d+) ground histories", line))]
     assert counts and counts[-1][0] == counts[-1][1] == 3, said  # the site sheet's suite_size
     assert [done for done, _ in counts] == sorted(done for done, _ in counts)
-    assert len(counts) <= 11
+
+
+def test_a_pass_speaks_every_interval_and_at_its_end_and_a_quick_one_not_at_all(monkeypatch):
+    """:func:`pass_progress` on a clock that advances 2 s a motion, lines every 5 s: it speaks at the third
+    motion (6 s), the sixth (12 s) and the end (the seventh); on a clock that stands still, never."""
+    from assess.building.yielding import pass_progress
+    clock = iter(range(0, 100, 2))
+    monkeypatch.setattr(yielding_module.time, "monotonic", lambda: next(clock))
+    said = []
+    report = pass_progress(said.append, "stripe 0.1 g: ")
+    for done in range(1, 8):
+        report(done, 7)
+    assert said == [f"stripe 0.1 g: through the building: {k} of 7 ground histories" for k in (3, 6, 7)]
+    monkeypatch.setattr(yielding_module.time, "monotonic", lambda: 0.0)
+    quiet = []
+    report = pass_progress(quiet.append)
+    for done in range(1, 8):
+        report(done, 7)
+    assert quiet == []
 
 
 def test_the_note_says_why_a_tall_building_is_elastic():

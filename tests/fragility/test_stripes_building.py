@@ -84,8 +84,11 @@ def de_run(tmp_path_factory, request):
     path = write_workbook(folder / "h.xlsx", _sheets(response=request.param))
     recording = Recording()
     runner = CachingRunner(recording, folder / "cache")
-    result = run_assessment(read_workbook(path), "DE", seed=3, hazard_curve=read_openquake_hazard(CURVE),
-                            runner=runner)
+    recording.said = []  # what the run said of its progress, a line at every history through the building
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr("assess.building.yielding.PROGRESS_EVERY_S", 0.0)
+        result = run_assessment(read_workbook(path), "DE", seed=3, hazard_curve=read_openquake_hazard(CURVE),
+                                runner=runner, progress=recording.said.append)
     return path, folder, recording, result
 
 
@@ -226,3 +229,20 @@ def test_two_levels_give_one_annual_rate_per_item(two_levels):
     # the stripes ran once: the two levels' own cases (3 items x 3 motions x 2 directions each) and one set
     assert recording.peaks == 2 * 18 + first.curve_risk.runs + what_if_runs(first) + what_if_runs(second)
     assert second.curve_risk is first.curve_risk
+
+
+def test_each_stripes_pass_through_a_yielding_building_says_how_far_it_has_got(de_run):
+    """Through the yielding stick each stripe's pass reports its ground histories (3 here) up to all of them,
+    for each of the 10 stripes (and the stripes added inside steep rises); the elastic modes' pass is instant
+    and says nothing."""
+    import re
+
+    _, _, recording, result = de_run
+    yielding = result.floors["response"].iloc[0] == "yielding" if "response" in result.floors else False
+    found = [re.fullmatch(r"stripe ([\d.]+) g: through the building: (\d+) of (\d+) ground histories", line)
+             for line in recording.said]
+    ends = {m.group(1) for m in found if m and m.group(2) == m.group(3) == "3"}
+    if not yielding:
+        assert not ends, recording.said
+        return
+    assert {f"{x:.3g}" for x in STRIPES_G} <= ends, recording.said
