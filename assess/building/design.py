@@ -310,7 +310,7 @@ class DesignStrength:
 
 def design_strength(system, floor_weights, floor_heights_m, period_s, *, sds_g=None, sd1_g=None, tl_s=None,
                     s1_g=None, risk_category="II", overstrength=None, yield_base_shear_g=None,
-                    code="ASCE 7-22") -> DesignStrength:
+                    code="ASCE 7-22", spread=True) -> DesignStrength:
     """Each storey's yield shear over the weight, from the ELF design or from a given yield base shear.
 
     Parameters
@@ -335,6 +335,9 @@ def design_strength(system, floor_weights, floor_heights_m, period_s, *, sds_g=N
         The site's edition, ``"ASCE 7-22"`` or ``"ASCE 7-16"``, which ``source`` names: the provisions used
         (§12.8's C_s and its bounds, T_a and C_u, k and C_vx; Tables 1.5-2 and 12.2-1's rows here) read the
         same in both.
+    spread : bool
+        Whether ``source`` says that a given yield base shear is spread over the storeys by §12.8.3 (not for a
+        wall that yields at its base only, whose words say what its hinge carries).
 
     Examples
     --------
@@ -355,8 +358,8 @@ def design_strength(system, floor_weights, floor_heights_m, period_s, *, sds_g=N
         if not value > 0.0:
             raise ValueError("yield_base_shear_g must be positive")
         return DesignStrength(value, value * ratios, None, None, None, None, None, None,
-                              f"base shear at yield {value:g} W as given, spread over the storeys as {code} "
-                              f"§12.8.3 does")
+                              f"base shear at yield {value:g} W as given"
+                              + (f", spread over the storeys as {code} §12.8.3 does" if spread else ""))
     if sds_g is None or sd1_g is None:
         raise ValueError("the design strength needs S_DS and S_D1 (or give yield_base_shear_g)")
     importance = importance_factor(risk_category)

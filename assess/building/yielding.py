@@ -61,7 +61,7 @@ from assess.hazard.records import Record
 
 from .design import DesignStrength, design_strength
 from .modes import BuildingModes
-from .nonlinear import STRENGTH_BY_SYSTEM, YieldingStick, elastic_periods, yielding_response, yielding_stick
+from .nonlinear import FLEXURE_BY_SYSTEM, STRENGTH_BY_SYSTEM, YieldingStick, elastic_periods, yielding_response, yielding_stick
 from .response import floor_records
 from .wall_hinge import HingedWall, hinged_periods, hinged_wall_response
 
@@ -208,16 +208,17 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
     period_s = float(modes.periods_s[0])
     strength = design_strength(system, np.ones(modes.storeys), heights, period_s, sds_g=sds_g, sd1_g=sd1_g,
                                tl_s=tl_s, s1_g=s1_g, risk_category=risk_category, overstrength=overstrength,
-                               yield_base_shear_g=yield_base_shear_g, code=code)
+                               yield_base_shear_g=yield_base_shear_g, code=code,
+                               spread=FLEXURE_BY_SYSTEM[system] != "base hinge")
     arguments = dict(system=system, period_s=period_s, alpha=modes.alpha, storey_stiffness=modes.storey_stiffness,
                      damping=damping, p_delta=p_delta)
     stick = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, **arguments)
     if isinstance(stick, HingedWall):  # only the base yields: the storeys above have no yield shear
         strength = replace(strength, storey_yield_ratio=np.concatenate([strength.storey_yield_ratio[:1],
                                                                         np.full(modes.storeys - 1, np.nan)]),
-                           source=strength.source.replace(f", spread over the storeys as {code} §12.8.3 does", "")
-                           + "; the wall yields in flexure at its base only, its plastic hinge carrying the moment "
-                             f"of {code} §12.8.3's lateral forces at that base shear, and stays elastic above")
+                           source=f"{strength.source}; the wall yields in flexure at its base only, its plastic hinge "
+                                  f"carrying the moment of {code} §12.8.3's lateral forces at that base shear, and stays "
+                                  "elastic above")
         return YieldingBuilding(modes, stick, strength, system, DRIFT_LIMIT_BY_SYSTEM[system], bool(p_delta),
                                 _stick_key(stick))
     code = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, strength_profile="code",
