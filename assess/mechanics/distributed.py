@@ -435,8 +435,13 @@ def _client(address: str, security, timeout_s: float):
                                  _CONNECT_FIX) from None
     failure = None
     hook, log = sys.unraisablehook, logging.getLogger("distributed")
-    level = log.level
+    # a listener that fails the client mid-handshake can trip a callback of the client's event loop, whose
+    # traceback asyncio logs from that loop's thread: quiet while the client is made, the refusal says it all
+    loop_logs = [logging.getLogger(name) for name in ("asyncio", "tornado.general", "tornado.application")]
+    level, loop_levels = log.level, [loop_log.level for loop_log in loop_logs]
     try:
+        for loop_log in loop_logs:
+            loop_log.setLevel(logging.CRITICAL)
         try:
             return Client(address, security=security, timeout=f"{timeout_s}s", set_as_default=False)
         except Exception as error:  # noqa: BLE001 - whatever a listener that passed for a scheduler did
@@ -448,6 +453,8 @@ def _client(address: str, security, timeout_s: float):
     finally:
         sys.unraisablehook = hook
         log.setLevel(level)
+        for loop_log, loop_level in zip(loop_logs, loop_levels):
+            loop_log.setLevel(loop_level)
     raise _scheduler_problem(address, f"it answered as a Dask scheduler, then failed as one ({failure})",
                              _CONNECT_FIX)
 
