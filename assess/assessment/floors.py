@@ -25,8 +25,8 @@ from assess.building.design import design_storey_stiffness
 from assess.building.floors import floors_table
 from assess.building.period import approximate_period
 from assess.building.response import floor_records
-from assess.building.yielding import (BASE_HINGE, STABILITY_COEFFICIENT_MAX, YieldingBuilding, building_floor_records,
-                                      storey_table, yielding_building, yielding_histories)
+from assess.building.yielding import (BASE_HINGE, STABILITY_COEFFICIENT_MAX, YieldingBuilding, storey_table,
+                                      yielding_building, yielding_histories)
 from assess.errors import InputError, Problem
 from assess.hazard.levels import HazardLevel
 from assess.hazard.records import Record
@@ -194,9 +194,9 @@ def through_building(building, histories: list[Record], floors, progress=None) -
     history through a yielding stick."""
     wanted = sorted(int(f) for f in floors)
     if not isinstance(building, YieldingBuilding):
-        return building_floor_records(building, histories, floors=wanted), [False] * len(histories)
+        return floor_records(building, histories, floors=wanted), [False] * len(histories)
     records, sticks = yielding_histories(building, histories, wanted, progress)
-    return records, [bool(np.nanmax(stick.peak_drift_ratio) > building.drift_limit) for stick in sticks]
+    return records, [bool(building.beyond_drift_limit(stick).any()) for stick in sticks]
 
 
 def floors_csv(building, ground: list[Record], floors, level_label: str) -> pd.DataFrame:
@@ -259,7 +259,7 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
                 "(floors.csv). The building is taken as elastic: a building that yields has lower peak floor "
                 "accelerations than these, at longer periods; floor motions a structural engineer gives in the "
                 "hazard sheet govern.")
-        if sheet.response is None and sheet.storeys > MAX_YIELDING_STOREYS:
+        if sheet.response is None and sheet.too_tall_to_yield:
             text += (f" The yielding model takes at most {MAX_YIELDING_STOREYS} storeys (its cost grows with the "
                      "cube of the storeys), so it did not run.")
     if derive_floors_roof is not None:

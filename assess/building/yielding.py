@@ -140,6 +140,11 @@ class YieldingBuilding:
         first = float(periods[0])
         return float(1.0 - (self.periods_s[0] / first) ** 2) if np.isfinite(first) else float("inf")
 
+    def beyond_drift_limit(self, history: "StickHistory") -> np.ndarray:
+        """Which storeys' peak drift passed :attr:`drift_limit` under one ground history (what the stick is
+        trusted to): the one test behind ``floors.csv``'s ``motions_beyond_drift_limit`` and the items' flag."""
+        return np.asarray(history.peak_drift_ratio) > self.drift_limit
+
     # the elastic model's description, as the route reads it from BuildingModes
     @property
     def storeys(self) -> int:
@@ -355,6 +360,7 @@ def storey_table(building: YieldingBuilding, histories: Sequence[StickHistory], 
     and ``motions_beyond_drift_limit`` (motions whose storey drift passed it).
     """
     drift = np.array([h.peak_drift_ratio for h in histories])
+    beyond = np.array([building.beyond_drift_limit(h) for h in histories])
     ductility = np.array([h.ductility for h in histories])
     yielded = int(sum(not h.elastic for h in histories))
     rows = []
@@ -370,6 +376,6 @@ def storey_table(building: YieldingBuilding, histories: Sequence[StickHistory], 
                        drift_ratio_median=float(np.median(d)), drift_ratio_min=float(d.min()),
                        drift_ratio_max=float(d.max()), ductility_median=float(np.median(mu)),
                        ductility_min=float(mu.min()), ductility_max=float(mu.max()),
-                       motions_beyond_drift_limit=int(np.sum(d > building.drift_limit)))
+                       motions_beyond_drift_limit=int(np.sum(beyond[:, k - 1])))
         rows.append(row)
     return pd.DataFrame(rows)

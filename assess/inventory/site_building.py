@@ -167,6 +167,11 @@ class BuildingSheet:
     def roof_floor(self) -> int:
         return self.storeys
 
+    @property
+    def too_tall_to_yield(self) -> bool:
+        """Whether the building has more storeys than the yielding model takes (:data:`MAX_YIELDING_STOREYS`)."""
+        return self.storeys > MAX_YIELDING_STOREYS
+
     def response_with(self, site: "SiteSheet | None") -> str:
         """``elastic`` or ``yielding``: the sheet's ``response``, else yielding where the storeys' strength is
         known (``yield_base_shear_g``, or the site sheet's design values for the code's design) and the building
@@ -180,7 +185,7 @@ class BuildingSheet:
         if self.response is not None:
             return self.response
         known = self.yield_base_shear_g is not None or (site is not None and site.has_design_values)
-        return "yielding" if known and self.storeys <= MAX_YIELDING_STOREYS else "elastic"
+        return "yielding" if known and not self.too_tall_to_yield else "elastic"
 
 
 # ---------------------------------------------------------------- reading
@@ -410,18 +415,22 @@ def read_building(table, report) -> BuildingSheet | None:
                           "modes have no strength, so it would be ignored.",
                           f"delete the {name} row, or write yielding in response (row {values['response'][1]}).")
     if "storeys" in out and int(out["storeys"]) > MAX_YIELDING_STOREYS and response != "elastic":
-        asked = [key for key in ("response", "yield_base_shear", "overstrength", "p_delta")
-                 if key in out and (key != "response" or response == "yielding") and (key != "p_delta" or p_delta)]
-        for key in asked:
-            name = "yield_base_shear_g" if key == "yield_base_shear" else key
-            report.at(values[key][1], key_header if key != "response" else value_header,
-                      f"{'response is yielding' if key == 'response' else name + ' is given'} but the building has "
-                      f"{int(out['storeys'])} storeys: the yielding model takes at most {MAX_YIELDING_STOREYS} (its "
-                      "cost grows with the cube of the storeys, about 6 s a ground motion at 48), and beyond that "
-                      "the building's elastic modes answer.",
-                      "write elastic in response (the elastic modes answer any height)" if key == "response"
-                      else f"delete the {name} row: above {MAX_YIELDING_STOREYS} storeys the elastic modes answer, "
-                           + ("and they carry no P-Delta." if key == "p_delta" else "and they have no strength."))
+        beyond = (f"the building has {int(out['storeys'])} storeys: the yielding model takes at most "
+                  f"{MAX_YIELDING_STOREYS} (its cost grows with the cube of the storeys, about 6 s a ground motion at "
+                  "48), and beyond that the building's elastic modes answer.")
+        deleted = f"above {MAX_YIELDING_STOREYS} storeys the elastic modes answer, and they"
+        # what asks for the yielding model: key, whether it asks, its words, the fix
+        for key, asks, said, fix in (
+                ("response", response == "yielding", "response is yielding",
+                 "write elastic in response (the elastic modes answer any height)"),
+                ("yield_base_shear", "yield_base_shear" in out, "yield_base_shear_g is given",
+                 f"delete the yield_base_shear_g row: {deleted} have no strength."),
+                ("overstrength", "overstrength" in out, "overstrength is given",
+                 f"delete the overstrength row: {deleted} have no strength."),
+                ("p_delta", p_delta, "p_delta is given", f"delete the p_delta row: {deleted} carry no P-Delta.")):
+            if asks:
+                report.at(values[key][1], value_header if key == "response" else key_header, f"{said} but {beyond}",
+                          fix)
     if "yield_base_shear" in out and "overstrength" in out:
         report.at(values["overstrength"][1], key_header, "the building sheet gives both yield_base_shear_g and "
                   "overstrength: the overstrength multiplies the code's design strength, which a given base "
