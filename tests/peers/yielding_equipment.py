@@ -92,8 +92,9 @@ def workbook(folder: Path, truth, suite, level, building_rows) -> Path:
 
 
 @contextmanager
-def opensees_floors(truth, suite):
-    """The yielding route's stick swapped for the OpenSees building under each ground history of ``suite``."""
+def opensees_floors(truth, suite, floor_scale=1.0):
+    """The yielding route's stick swapped for the OpenSees building under each ground history of ``suite``;
+    every floor's acceleration above the ground times ``floor_scale`` (1: as OpenSees gives it)."""
     answers = {}
     for _, accel, dt in suite:
         if isinstance(truth, FlexuralWall):  # the storeys have no yield drift: the hinge's ductility on storey 1
@@ -104,6 +105,7 @@ def opensees_floors(truth, suite):
             floor_accel, drift, yield_drift = truth_response(truth, accel, dt)
             ductility = np.abs(drift).max(axis=1) / yield_drift
         peak = np.abs(drift).max(axis=1)
+        floor_accel = np.vstack([floor_accel[:1], floor_scale * floor_accel[1:]])
         answers[_key(accel)] = yielding_module.StickHistory(floor_accel, peak / truth.storey_height_m, ductility,
                                                             False)
     original = yielding_module.stick_history
@@ -125,10 +127,11 @@ def assess(path, level):
     return result, motions.set_index(["id", "ground", "direction"]).sort_index()
 
 
-def truth_result(truth, suite, level, folder: Path):
+def truth_result(truth, suite, level, folder: Path, floor_scale=1.0):
     """The product's answer on the OpenSees building ``truth``'s floor histories under ``suite`` at ``level``
-    (as :func:`assess` gives it): the reference every route is compared with."""
-    with opensees_floors(truth, suite):
+    (as :func:`assess` gives it): the reference every route is compared with; with ``floor_scale``, on those
+    histories times it (no model error, only the floors' amplitude off by a known factor)."""
+    with opensees_floors(truth, suite, floor_scale):
         return assess(workbook(folder, truth, suite, level, [["response", "yielding"]]), level)
 
 

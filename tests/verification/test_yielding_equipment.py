@@ -45,6 +45,18 @@ at 0.275, 0.125 and 0.188 W; 0.36 for both walls). What is claimed, and checked:
   47 % and 75 % at worst), 10 % high 82 % pooled and 50 % at worst (``benchmarks/bench_yielding_equipment.py --levels DE,MCE_R
   --truth-strengths 0.9,1.1``): which motion tips an item on the edge of overturning turns on a few per cent
   of strength, which no pushover fixes; the sliding's gm and σ ln resolve far finer (σ ln ≤ 0.27 there).
+  Finer still, with no model at all between them: the OpenSees floor histories themselves times 0.995 or
+  1.005, the items' input half a per cent off, agree on 0.83 and 0.87 of the pooled cases where either
+  overturns and on **0.67 and 0.71 at worst** for one building and level, the risk class on 0.92 at worst,
+  while σ ln ≤ 0.10 and the per-item overturn verdict agrees on ≥ 0.92 of the items (times 0.98 and 1.02:
+  0.75 and 0.77 pooled, 0.58 and 0.56 at worst; ``--truth-floors 0.995,1.005,0.98,1.02``; checked here at DE,
+  :func:`test_the_per_case_overturn_verdicts_cannot_tell_floors_half_a_per_cent_apart`). Every one of the
+  110 cases where the given strength or its truth overturns is the loaded shelving rocking about its narrow
+  side, and "minor variations in the input can result in overturning" (the paper's §1, after Yim et al.
+  1980 and Makris & Roussos 2000): a per-case share of 75 % per building and level is finer than any model of
+  the floors can be held to. The overturning verdict the report gives, each item's class from
+  ``p_overturn`` over the motions (``overturn_class_agree``), agrees on ≥ 0.92 of the items for every
+  building and level with the given strength.
 
 The tool's shear wall is its elastic model on a base plastic hinge (assess/building/wall_hinge.py; its
 kernel checked against OpenSees with the same model in test_wall_hinge_opensees.py). Before it, the tool's
@@ -89,6 +101,8 @@ OPS, WHY = load_opensees()
 pytestmark = pytest.mark.skipif(OPS is None, reason=str(WHY))
 
 OVERSTRENGTHS = (1.5, 2.0, 3.0)
+#: The truth's own floor histories times these: no model error, the input half a per cent off.
+FLOOR_SCALES = (0.995, 1.005)
 
 
 @pytest.fixture(scope="module")
@@ -107,6 +121,7 @@ def measured(tmp_path_factory):
                   "elastic": [["response", "elastic"]]}
         routes.update({f"design x {o:g}": [["response", "yielding"], ["overstrength", o]] for o in OVERSTRENGTHS})
         results = {route: assess(workbook(folder, truth, suite, "DE", rows), "DE") for route, rows in routes.items()}
+        results.update({f"truth floors x {f:g}": truth_result(truth, suite, "DE", folder, f) for f in FLOOR_SCALES})
         numbers = {route: compare(result, reference) for route, result in results.items()}
         out[name] = {"truth": truth, "numbers": numbers, "floors": results["given"][0].floors.set_index("floor")}
     return out
@@ -150,7 +165,19 @@ def test_the_roof_pfa_over_pga_stays_below_asce_7_22_hf(measured):
         assert roof["pfa_over_pga_median"] < float(height_factor(1.0, truth.period_s)), name
 
 
-#: Issue 29's targets with the given strength not met at DE, with the measured numbers: strict xfails.
+def test_the_per_case_overturn_verdicts_cannot_tell_floors_half_a_per_cent_apart(measured):
+    # The truth against its own floor histories times 0.995 and 1.005 (module docstring): the per-case overturn
+    # share falls below issue 29's 75 % on some building, where the sliding and the per-item verdicts hold.
+    for factor in FLOOR_SCALES:
+        numbers = {name: m["numbers"][f"truth floors x {factor:g}"] for name, m in measured.items()}
+        assert min(n["overturn_agree"] for n in numbers.values()) < 0.75, (factor, numbers)
+        for name, n in numbers.items():
+            assert abs(np.log(n["gm"])) < 0.03 and n["sigma_ln"] <= 0.15, (factor, name, n)
+            assert n["overturn_class_agree"] >= 0.9, (factor, name, n)
+
+
+#: Issue 29's targets with the given strength not met at DE, with the measured numbers: strict xfails. Where the
+#: overturn verdicts per case miss, the truth's own floors half a per cent off miss too (module docstring).
 TARGETS_SHORT = {("verdicts", "smf4"): "overturn verdicts 57 % of 7 cases where either overturns; risk class 83 %",
                  ("verdicts", "smf8"): "overturn verdicts 73 % of 11 cases; risk class 83 %",
                  ("verdicts", "wall6"): "overturn verdicts 80 % of 5 cases; risk class 75 %",
