@@ -53,10 +53,18 @@ at 0.275, 0.125 and 0.188 W; 0.36 for both walls). What is claimed, and checked:
   :func:`test_the_per_case_overturn_verdicts_cannot_tell_floors_half_a_per_cent_apart`). Every one of the
   110 cases where the given strength or its truth overturns is the loaded shelving rocking about its narrow
   side, and "minor variations in the input can result in overturning" (the paper's §1, after Yim et al.
-  1980 and Makris & Roussos 2000): a per-case share of 75 % per building and level is finer than any model of
-  the floors can be held to. The overturning verdict the report gives, each item's class from
-  ``p_overturn`` over the motions (``overturn_class_agree``), agrees on ≥ 0.92 of the items for every
-  building and level with the given strength.
+  1980 and Makris & Roussos 2000). That is the block's physics, not a solver's: under the 47 OpenSees
+  floor histories on which it ever overturns (the 4- and 8-storey frames and the concrete frame at DE, the
+  4-storey frame at MCE_R) times 0.99, 0.995, 0.9975, 1, 1.0025, 1.005 and 1.01, the shelving's verdict
+  changes within that 1 % on 19, on 13 out of order ("XX.XX.X"), and the tool's three solvers (the engine's
+  own choice, the general Moreau-Jean solver and the event-driven one) give the same verdict in all but 4 of
+  the 329 runs; MuJoCo's rigid box (peers.mujoco_box), on the first 10 of those 19, changes its verdict within
+  that 1 % on 8, out of order on 5 (benchmarks/bench_overturn_sensitivity.py --mujoco 10;
+  :func:`test_overturning_turns_on_a_quarter_of_a_per_cent_in_mujoco_as_in_the_tool`). A
+  per-case share of 75 % per building and level is finer than any model of the floors can be held to. The
+  overturning verdict the report gives, each item's class from ``p_overturn`` over the motions
+  (``overturn_class_agree``), agrees on ≥ 0.92 of the items for every building and level with the given
+  strength.
 
 The tool's shear wall is its elastic model on a base plastic hinge (assess/building/wall_hinge.py; its
 kernel checked against OpenSees with the same model in test_wall_hinge_opensees.py). Before it, the tool's
@@ -174,6 +182,38 @@ def test_the_per_case_overturn_verdicts_cannot_tell_floors_half_a_per_cent_apart
         for name, n in numbers.items():
             assert abs(np.log(n["gm"])) < 0.03 and n["sigma_ln"] <= 0.15, (factor, name, n)
             assert n["overturn_class_agree"] >= 0.9, (factor, name, n)
+
+
+#: Amplitudes around one floor history, and the shelving standing on it (peers.yielding_equipment.ITEMS, its
+#: narrow side): the 8-storey frame's roof under Coalinga at DE.
+AMPLITUDES = (0.99, 0.995, 0.9975, 1.0, 1.0025, 1.005, 1.01)
+SHELVING = {"half_width_m": 0.6096 / 2, "height_m": 2.1844, "mu": 0.35}
+
+
+def test_overturning_turns_on_a_quarter_of_a_per_cent_in_mujoco_as_in_the_tool():
+    # Why the per-case share is coarse (module docstring): under one OpenSees roof history times 0.99 to 1.01 the
+    # shelving overturns at some amplitudes and not at others, out of order, in the tool's engine and in
+    # MuJoCo's rigid box (peers.mujoco_box) alike. Measured: both ".XX..X." (X overturns).
+    pytest.importorskip("pyslammer")
+    mujoco = pytest.importorskip("mujoco")
+    from assess.mechanics.block import Block
+    from assess.mechanics.gateway import run_responses
+    from peers.mujoco_box import box_model, overturns
+    from peers.opensees_buildings import truth_response
+    from peers.yielding_equipment import ground_suite
+
+    truth = BUILDINGS["smf8"]
+    (_, accel, dt), = [m for m in ground_suite(11, truth.period_s, 1.0) if m[0].startswith("Coalinga")]
+    roof = truth_response(truth, accel, dt)[0][truth.storeys]
+    block = Block(half_width_m=SHELVING["half_width_m"], cg_height_m=SHELVING["height_m"] / 2,
+                  height_m=SHELVING["height_m"], mu=SHELVING["mu"])
+    tool = [r.overturned for r in run_responses([(block, roof * a, dt) for a in AMPLITUDES])]
+    model = box_model(mujoco, **SHELVING)
+    peer = [overturns(mujoco, model, roof * a, dt, SHELVING["height_m"]) for a in AMPLITUDES]
+    for verdicts in (tool, peer):
+        assert any(verdicts) and not all(verdicts), verdicts
+        assert verdicts not in (sorted(verdicts), sorted(verdicts, reverse=True)), verdicts  # not one threshold
+    assert sum(t == p for t, p in zip(tool, peer)) >= 5, (tool, peer)
 
 
 #: Issue 29's targets with the given strength not met at DE, with the measured numbers: strict xfails. Where the
