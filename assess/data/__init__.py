@@ -8,16 +8,11 @@ from __future__ import annotations
 import functools
 import numbers
 import re
-import sys
+import tomllib
 from importlib import resources
 
 import numpy as np
 import pandas as pd
-
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # Python 3.10: tomli is the package tomllib was made from (same API), a dependency there only
-    import tomli as tomllib
 
 
 def default_settings() -> dict:
