@@ -1,6 +1,6 @@
 """MuJoCo's rigid box under a floor acceleration history: does it overturn? (a test-only peer)
 
-A box of the item's half-width and height (408 kg, no collision of its own) carrying two line feet at its
+A box of the item's half-width and height (408 kg by default, no collision of its own) carrying two line feet at its
 edges (capsules of 1 mm radius across its depth) on a plane, the item's μ, stiff critically damped contact
 (``solref`` four steps, damping ratio 1: an impact that does not bounce, as Housner's), MuJoCo's
 ``implicitfast`` integrator at 0.2 ms steps, elliptic friction cone. The floor's acceleration a(t) (linear
@@ -23,16 +23,19 @@ FOOT_RADIUS_M = 0.001
 OVERTURNED_RAD = 1.0
 
 
-def box_model(mujoco, half_width_m, height_m, mu):
-    """The MuJoCo model of the box on its two edge feet (module text)."""
-    h = height_m / 2
-    contact = f'friction="{mu} 0.005 0.0001" solref="{4 * STEP_S} 1"'
-    feet = "".join(f'<geom type="capsule" fromto="{x} -0.3 {-h + FOOT_RADIUS_M} {x} 0.3 {-h + FOOT_RADIUS_M}" '
-                   f'size="{FOOT_RADIUS_M}" density="0" {contact}/>' for x in (half_width_m, -half_width_m))
-    xml = (f'<mujoco><option timestep="{STEP_S}" gravity="0 0 {-STANDARD_GRAVITY_M_S2}" integrator="implicitfast" '
-           f'cone="elliptic" impratio="10"/><worldbody><geom type="plane" size="50 5 0.1" {contact}/>'
-           f'<body><freejoint/><geom type="box" size="{half_width_m} 0.3 {h}" contype="0" conaffinity="0" '
-           f'mass="408"/>{feet}</body></worldbody></mujoco>')
+def box_model(mujoco, half_width_m, height_m, mu, *, foot_half_span_m=None, mass_kg=408.0, step_s=STEP_S,
+              gravity_x_m_s2=0.0, foot_radius_m=FOOT_RADIUS_M):
+    """The MuJoCo model of the box on its two line feet (module text): at its edges, or at ±``foot_half_span_m``
+    (a box on inset feet, tests/verification/test_foot_inset.py); a constant sideways gravity where given."""
+    h, c = height_m / 2, half_width_m if foot_half_span_m is None else foot_half_span_m
+    contact = f'friction="{mu} 0.005 0.0001" solref="{4 * step_s} 1"'
+    feet = "".join(f'<geom type="capsule" fromto="{x} -0.3 {-h + foot_radius_m} {x} 0.3 {-h + foot_radius_m}" '
+                   f'size="{foot_radius_m}" density="0" {contact}/>' for x in (c, -c))
+    xml = (f'<mujoco><option timestep="{step_s}" gravity="{gravity_x_m_s2} 0 {-STANDARD_GRAVITY_M_S2}" '
+           f'integrator="implicitfast" cone="elliptic" impratio="10"/><worldbody>'
+           f'<geom type="plane" size="50 5 0.1" {contact}/><body><freejoint/>'
+           f'<geom type="box" size="{half_width_m} 0.3 {h}" contype="0" conaffinity="0" mass="{mass_kg}"/>{feet}'
+           f'</body></worldbody></mujoco>')
     return mujoco.MjModel.from_xml_string(xml)
 
 

@@ -38,6 +38,7 @@ from assess.mechanics.rocking import rocking_response
 
 from peers.footed_lab import INSET, NOISE, TRUTH_JITTER_CSV, measured_rows, read_truth, write_lab
 from peers.footed_rocking import FootedBox, footed_rocking
+from peers.mujoco_box import box_model
 
 #: (b, H, d): slender and squat boxes, on their edges and on feet.
 BOXES = [(0.2, 1.6, 0.0), (0.2, 1.6, 0.3), (0.4, 1.2, 0.5), (0.311, 2.286, 0.15)]
@@ -77,17 +78,10 @@ def test_hand_checked_box_on_feet():
 
 def _mujoco_box(mujoco, b, H, c, gravity_x=0.0, foot_radius_m=0.001, step_s=1e-4):
     """A 100 kg box of half-width b and height H (no collision of its own) carrying two line feet
-    (capsules of 1 mm radius across its depth) at x = ±c, on a plane; μ = 2, stiff contact."""
-    h = H / 2
-    contact = f'friction="2 0.005 0.0001" solref="{4 * step_s} 1"'
-    feet = "".join(f'<geom type="capsule" fromto="{x} -0.3 {-h + foot_radius_m} {x} 0.3 {-h + foot_radius_m}" '
-                   f'size="{foot_radius_m}" density="0" {contact}/>' for x in (c, -c))
-    xml = (f'<mujoco><option timestep="{step_s}" gravity="{gravity_x} 0 {-STANDARD_GRAVITY_M_S2}" '
-           f'integrator="implicitfast" cone="elliptic" impratio="10"/><worldbody>'
-           f'<geom type="plane" size="5 5 0.1" {contact}/><body><freejoint/>'
-           f'<geom type="box" size="{b} 0.3 {h}" contype="0" conaffinity="0" mass="100"/>{feet}'
-           f'</body></worldbody></mujoco>')
-    return mujoco.MjModel.from_xml_string(xml)
+    (capsules of 1 mm radius across its depth) at x = ±c, on a plane; μ = 2, stiff contact
+    (peers.mujoco_box.box_model)."""
+    return box_model(mujoco, b, H, 2.0, foot_half_span_m=c, mass_kg=100.0, step_s=step_s, gravity_x_m_s2=gravity_x,
+                     foot_radius_m=foot_radius_m)
 
 
 def _tilt(data):
