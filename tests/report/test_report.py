@@ -97,7 +97,7 @@ def make_result(simulated: bool = False) -> AssessmentResult:
     anchored.update({"id": "R-04", "name": "Wire rack", "room": "Store", "floor": 1,
                      "quantity": 3, "mode": "", "governing_motion": "", "risk": "anchored",
                      "action": "Anchored: check the anchorage", "clearance_cm": 5.0,
-                     "flags": ""})
+                     "flags": "", "regression_applies": None})  # None, not NaN: pandas 2 would make the column float
     summary = pd.concat([summary, pd.DataFrame([anchored])], ignore_index=True)
     summary = summary[SUMMARY_COLUMNS]
     return AssessmentResult(

@@ -129,12 +129,15 @@ def test_fig_2_draws_each_item_at_the_chance_its_table_gives(monkeypatch):
     the tables' number (``p_beyond_clearance``), never at the regression's Pf."""
     result = make_result(simulated=True)
     summary = result.summary
-    summary["demand_source"] = summary["demand_source"].astype(object)
     freestanding = summary["risk"] != "anchored"
-    summary.loc[0, ["p_beyond_clearance", "demand_source"]] = [0.0, ("records",)]  # pf_sliding 0.998
-    summary.loc[2, ["p_beyond_clearance", "demand_source"]] = [summary.loc[2, "pf_sliding"], ("regression",)]
-    summary.loc[3, ["p_beyond_clearance", "demand_source"]] = [0.004, ("synthetic",)]
-    summary.loc[1, ["p_beyond_clearance", "demand_source"]] = [0.6, ("records",)]
+    sources = summary["demand_source"].tolist()
+    for row, p_beyond, source in [(0, 0.0, ("records",)),  # pf_sliding 0.998
+                                  (2, summary.loc[2, "pf_sliding"], ("regression",)),
+                                  (3, 0.004, ("synthetic",)), (1, 0.6, ("records",))]:
+        summary.at[row, "p_beyond_clearance"] = p_beyond
+        sources[row] = source
+    # tuples in cells: set as a whole column (pandas 2's .loc and .at would spread a tuple over cells)
+    summary["demand_source"] = pd.Series(sources, index=summary.index, dtype=object)
     summary.loc[1, "im"] = 3.8
     assert summary.loc[0, "pf_sliding"] > 0.99  # the disagreement the figure showed
 
