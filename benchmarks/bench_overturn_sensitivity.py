@@ -31,14 +31,9 @@ sys.path[:0] = [str(REPO / "tests")]
 from assess.mechanics.block import Block  # noqa: E402
 from assess.mechanics.gateway import run_responses  # noqa: E402
 from peers.opensees_buildings import BUILDINGS, truth_response  # noqa: E402
-from peers.yielding_equipment import ITEMS, LEVELS, ground_suite  # noqa: E402
+from peers.yielding_equipment import LEVELS, ground_suite, narrow_box  # noqa: E402
 
 SOLVERS = ("auto", "general", "event-driven")
-
-
-def shelving():
-    (height, _, depth, _, mu), = [(h, w, d, m, mu) for name, h, w, d, m, mu, _ in ITEMS if name == "SHELVING"]
-    return {"half_width_m": depth / 2, "height_m": height, "mu": mu}
 
 
 def verdicts(flags) -> str:
@@ -60,7 +55,7 @@ def main(argv=None):
     parser.add_argument("--mujoco", type=int, default=0, help="rows to run through MuJoCo's box as well")
     args = parser.parse_args(argv)
     amplitudes = [float(a) for a in args.amplitudes.split(",")]
-    item = shelving()
+    item = narrow_box("SHELVING")
     block = Block(half_width_m=item["half_width_m"], cg_height_m=item["height_m"] / 2, height_m=item["height_m"],
                   mu=item["mu"])
     start = time.perf_counter()

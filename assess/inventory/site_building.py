@@ -59,6 +59,15 @@ _YES, _NO = ("yes", "y", "true", "1"), ("no", "n", "false", "0")
 _ROMAN = {"1": "I", "2": "II", "3": "III", "4": "IV"}
 
 
+def too_tall_to_yield(storeys: int) -> bool:
+    """Whether a building of ``storeys`` has more than the yielding model takes (:data:`MAX_YIELDING_STOREYS`).
+
+    >>> too_tall_to_yield(40), too_tall_to_yield(41)
+    (False, True)
+    """
+    return int(storeys) > MAX_YIELDING_STOREYS
+
+
 @dataclass(frozen=True)
 class SiteSheet:
     """The ``site`` sheet, checked (``docs/workbook.md``, sheet ``site``).
@@ -169,8 +178,8 @@ class BuildingSheet:
 
     @property
     def too_tall_to_yield(self) -> bool:
-        """Whether the building has more storeys than the yielding model takes (:data:`MAX_YIELDING_STOREYS`)."""
-        return self.storeys > MAX_YIELDING_STOREYS
+        """Whether the building has more storeys than the yielding model takes (:func:`too_tall_to_yield`)."""
+        return too_tall_to_yield(self.storeys)
 
     def response_with(self, site: "SiteSheet | None") -> str:
         """``elastic`` or ``yielding``: the sheet's ``response``, else yielding where the storeys' strength is
@@ -414,7 +423,7 @@ def read_building(table, report) -> BuildingSheet | None:
                 report.at(values[key][1], key_header, f"{name} is given but response is elastic: the elastic "
                           "modes have no strength, so it would be ignored.",
                           f"delete the {name} row, or write yielding in response (row {values['response'][1]}).")
-    if "storeys" in out and int(out["storeys"]) > MAX_YIELDING_STOREYS and response != "elastic":
+    if "storeys" in out and too_tall_to_yield(out["storeys"]) and response != "elastic":
         beyond = (f"the building has {int(out['storeys'])} storeys: the yielding model takes at most "
                   f"{MAX_YIELDING_STOREYS} (its cost grows with the cube of the storeys, about 6 s a ground motion at "
                   "48), and beyond that the building's elastic modes answer.")

@@ -46,10 +46,6 @@ def _number(value: float) -> str:
     return f"{value:.1f}" if value < 10 else f"{value:.0f}"
 
 
-def _storeys_text(storeys: list[int]) -> str:
-    return runs_text(storeys, "storey")
-
-
 def building_context(result) -> dict | None:
     """The section's rows and sentences from ``result.floors`` (None unless the building yields).
 
@@ -110,7 +106,7 @@ def building_context(result) -> dict | None:
     warning = notice = ""
     if beyond:
         worst = max(beyond.values())
-        warning = (f"Beyond what the model can be trusted for: the drift of {_storeys_text(sorted(beyond))} passed "
+        warning = (f"Beyond what the model can be trusted for: the drift of {runs_text(beyond, 'storey')} passed "
                    f"{_percent(limit)} under {'a motion' if worst == 1 else f'up to {worst} of the {motions} motions'}"
                    f". {_percent(limit)} is the transient drift of FEMA 356's Collapse Prevention level for this "
                    "system (Table C1-3): there a building is near collapse and its members lose strength with "
@@ -118,7 +114,7 @@ def building_context(result) -> dict | None:
                    "and the items' results under them, are outside what the model stands for. Have a structural "
                    "engineer look at the building first.")
         notice = (f"The building's model passed the storey drift it is trusted to ({_percent(limit)}, "
-                  f"{_storeys_text(sorted(beyond))}) under up to {worst} of the {motions} motions: the floor motions "
+                  f"{runs_text(beyond, 'storey')}) under up to {worst} of the {motions} motions: the floor motions "
                   "under those, and the items' results under them, are outside what it stands for.")
     return {"lead": lead, "rows": rows, "warning": warning, "notice": notice, "collapse": COLLAPSE_NOT_ASSESSED,
             "limit": _percent(limit).replace(" ", "\u00a0") if not math.isnan(limit) else ""}  # "4 %" on one line

@@ -44,6 +44,13 @@ ITEMS = (("FORMA", 2.286, 0.622, 0.84, 330.0, 0.23, 0.15),
          ("RACK", 2.032, 0.6096, 1.0668, 635.0, 0.30, 0.3556),
          ("SHELVING", 2.1844, 1.2192, 0.6096, 408.0, 0.35, 0.254),
          ("CHEST", 0.91, 1.60, 0.75, 150.0, 0.30, 0.10))
+def narrow_box(name: str) -> dict:
+    """The item ``name`` of :data:`ITEMS` rocking about its narrow side (its depth): ``half_width_m``, ``height_m``
+    and ``mu``, as :func:`peers.mujoco_box.box_model` takes them."""
+    (height, depth, mu), = [(h, d, mu) for item, h, _, d, _, mu, _ in ITEMS if item == name]
+    return {"half_width_m": depth / 2, "height_m": height, "mu": mu}
+
+
 #: (R, Ω_0) of ASCE 7-22 Table 12.2-1 for the systems (I_e 1), for R_μ.
 SYSTEM_R = {"steel moment frame": (8.0, 3.0), "concrete moment frame": (8.0, 3.0), "shear wall": (5.0, 2.5)}
 

@@ -184,10 +184,8 @@ def test_the_per_case_overturn_verdicts_cannot_tell_floors_half_a_per_cent_apart
             assert n["overturn_class_agree"] >= 0.9, (factor, name, n)
 
 
-#: Amplitudes around one floor history, and the shelving standing on it (peers.yielding_equipment.ITEMS, its
-#: narrow side): the 8-storey frame's roof under Coalinga at DE.
+#: Amplitudes around one floor history (the 8-storey frame's roof under Coalinga at DE), the shelving on it.
 AMPLITUDES = (0.99, 0.995, 0.9975, 1.0, 1.0025, 1.005, 1.01)
-SHELVING = {"half_width_m": 0.6096 / 2, "height_m": 2.1844, "mu": 0.35}
 
 
 def test_overturning_turns_on_a_quarter_of_a_per_cent_in_mujoco_as_in_the_tool():
@@ -200,16 +198,17 @@ def test_overturning_turns_on_a_quarter_of_a_per_cent_in_mujoco_as_in_the_tool()
     from assess.mechanics.gateway import run_responses
     from peers.mujoco_box import box_model, overturns
     from peers.opensees_buildings import truth_response
-    from peers.yielding_equipment import ground_suite
+    from peers.yielding_equipment import ground_suite, narrow_box
 
+    shelving = narrow_box("SHELVING")
     truth = BUILDINGS["smf8"]
     (_, accel, dt), = [m for m in ground_suite(11, truth.period_s, 1.0) if m[0].startswith("Coalinga")]
     roof = truth_response(truth, accel, dt)[0][truth.storeys]
-    block = Block(half_width_m=SHELVING["half_width_m"], cg_height_m=SHELVING["height_m"] / 2,
-                  height_m=SHELVING["height_m"], mu=SHELVING["mu"])
+    block = Block(half_width_m=shelving["half_width_m"], cg_height_m=shelving["height_m"] / 2,
+                  height_m=shelving["height_m"], mu=shelving["mu"])
     tool = [r.overturned for r in run_responses([(block, roof * a, dt) for a in AMPLITUDES])]
-    model = box_model(mujoco, **SHELVING)
-    peer = [overturns(mujoco, model, roof * a, dt, SHELVING["height_m"]) for a in AMPLITUDES]
+    model = box_model(mujoco, **shelving)
+    peer = [overturns(mujoco, model, roof * a, dt, shelving["height_m"]) for a in AMPLITUDES]
     for verdicts in (tool, peer):
         assert any(verdicts) and not all(verdicts), verdicts
         assert verdicts not in (sorted(verdicts), sorted(verdicts, reverse=True)), verdicts  # not one threshold
