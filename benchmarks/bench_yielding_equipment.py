@@ -2,7 +2,7 @@
 
 Run: python benchmarks/bench_yielding_equipment.py [--levels DE,MCE_R] [--buildings smf4,smf8,wall6,wallf6,rcf5]
      [--motions 11] [--overstrengths 1.5,2,3] [--truth-profile] [--truth-strengths 0.9,1.1]
-     [--truth-floors 0.995,1.005]                     (needs openseespy and pyslammer; about 3 minutes a level)
+     [--truth-floors 0.995,1.005] [--truth-alphas 5,20]  (needs openseespy and pyslammer; about 3 minutes a level)
 
 The truth: five yielding OpenSeesPy buildings of our own (tests/peers/opensees_buildings.py: steel
 special moment frames of 4 and 8 storeys and a reinforced-concrete one of 5 with pinching springs (``rcf5``),
@@ -49,6 +49,14 @@ a ``building`` sheet of the building's storeys, height, system and T_1): only th
   The cases where either overturns are all the loaded shelving rocking about its narrow side, whose overturning
   turns on minor variations of its input (the paper's §1): the per-case share per building and level cannot
   tell floors half a per cent apart.
+* ``given, truth α a`` and ``given + α, truth α a`` (``--truth-alphas``, e.g. ``5,20``; the frames only): the frame
+  rebuilt with its continuous column at α = a in place of its own 10 (stiffer columns at 5, softer at 20, both
+  within Miranda & Taghavi's 5-20 for moment frames), its own pushover base shear given, against the tool with
+  the system's α (12) and with ``lateral_stiffness_ratio`` a. Measured on the three frames at DE and MCE_R
+  (``--levels DE,MCE_R --overstrengths 2 --truth-alphas 5,20``, 134 s for ``smf4,rcf5``): sliding gm 0.39-1.72
+  with the system's α (outside [0.8, 1.25] on 7 of the 12), 0.87-1.16 with the building's; σ ln 0.17-0.40 with
+  the building's except at α 20 and DE (``rcf5`` 0.53, ``smf8`` 0.59); risk class ≥ 0.83 on 10 of the 12 with the
+  building's α, down to 0.25 with the system's.
 
 Columns, each route against the truth over the (item, motion, direction) cases: PFA tool/truth at the
 mid-height floor and the roof (median over the motions), sliding: geometric mean and σ of
@@ -133,6 +141,10 @@ def main(argv=None):
     parser.add_argument("--truth-floors", default="",
                         help="add the routes 'truth, floors x f' for these f (comma-separated): the OpenSees "
                              "building's own floor histories times f, against themselves")
+    parser.add_argument("--truth-alphas", default="",
+                        help="add, for the frames, OpenSees buildings whose column has these α (comma-separated) "
+                             "in place of their own 10, each against the routes 'given' (the system's α) and "
+                             "'given + α' (lateral_stiffness_ratio the building's)")
     parser.add_argument("--truth-profile", action="store_true",
                         help="add the route 'given + truth's stiffness': yield_base_shear_g and the OpenSees "
                              "building's storey stiffnesses in storey_stiffness")
@@ -161,6 +173,17 @@ def main(argv=None):
                                                                           level, folder)
                 for factor in filter(None, args.truth_floors.split(",")):
                     results[f"truth, floors x {factor}"] = truth_result(truth, suite, level, folder, float(factor))
+                for alpha in filter(None, args.truth_alphas.split(",")) if np.isfinite(truth.column_alpha) else ():
+                    other = dataclasses.replace(truth, column_alpha=float(alpha))
+                    strength = [["response", "yielding"],
+                                ["yield_base_shear_g", round(pushover_yield_base_shear_g(other), 6)]]
+                    other_reference = truth_result(other, suite, level, folder)
+                    for route, extra in ((f"given, truth α {alpha}", strength),
+                                         (f"given + α, truth α {alpha}",
+                                          strength + [["lateral_stiffness_ratio", float(alpha)]])):
+                        rows.append({"building": name, "level": level, "route": route,
+                                     **compare(assess(workbook(folder, other, suite, level, extra), level),
+                                               other_reference)})
             for route, result in results.items():
                 rows.append({"building": name, "level": level, "route": route, **compare(result, reference)})
             r_factor, omega0 = SYSTEM_R[truth.system]

@@ -75,10 +75,11 @@ def storey_stiffness_of(building: BuildingSheet) -> np.ndarray:
 
 def building_modes_of(building: BuildingSheet) -> BuildingModes:
     """The building sheet's modes (:func:`assess.building.building_modes`), every mode kept, with the storeys'
-    stiffness profile of :func:`storey_stiffness_of`."""
+    stiffness profile of :func:`storey_stiffness_of` and the sheet's ``lateral_stiffness_ratio`` (else the
+    system's α)."""
     return building_modes(building.storeys, building.height_m / building.storeys, system=building.system,
                           period_s=building.period_s, damping=building.damping,
-                          storey_stiffness=storey_stiffness_of(building))
+                          alpha=building.lateral_stiffness_ratio, storey_stiffness=storey_stiffness_of(building))
 
 
 def building_model_of(building: BuildingSheet, site: SiteSheet | None, modes: BuildingModes | None = None,
@@ -234,13 +235,15 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
     source = "given" if sheet.period_s is not None else "ASCE 7 Table 12.8-2's estimate"
     which = f"Floor{'s' if len(floors) > 1 else ''} {floors_text(floors, numbering)}"
     stiffness = stiffness_note(modes, sheet)
+    whose = "given" if sheet.lateral_stiffness_ratio is not None else "the system's typical one"
+    ratio = f"lateral stiffness ratio α {modes.alpha:g} ({whose})"
     if isinstance(building, YieldingBuilding):
         strength = building.strength
         hinged = building.yielding_model == BASE_HINGE
         springs = (f"its elastic model on a {building.stick.law} plastic hinge at the base" if hinged
                    else f"{building.stick.law} storey springs")
         text = (f"{which}: each ground motion through the building, modelled as yielding ({sheet.storeys} storeys, "
-                f"{sheet.system}, T1 {modes.periods_s[0]:.2f} s ({source}), {stiffness}, "
+                f"{sheet.system}, T1 {modes.periods_s[0]:.2f} s ({source}), {stiffness}, {ratio}, "
                 f"{sheet.damping:.0%} Rayleigh damping; {springs}"
                 + (", with P-Delta" if building.p_delta else "") + "): the floor's absolute acceleration in time "
                 f"(floors.csv). {'It yields' if hinged else 'Its storeys yield'} at a base shear of "
@@ -252,9 +255,14 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
             text += (" The overstrength is a judgement, not this building's, and the strength moves the floors' "
                      "motions most: give yield_base_shear_g (from a pushover or an evaluation) or overstrength "
                      "where known.")
+        if sheet.lateral_stiffness_ratio is None and not hinged:
+            text += (" α is the system's typical value, not this building's, and moves the floors' motions as much as "
+                     "the strength does (it sets how the columns spread the storeys' drift over the height): give "
+                     "lateral_stiffness_ratio where the building's own is known.")
     else:
         text = (f"{which}: each ground motion through the building's elastic modes "
                 f"({sheet.storeys} storeys, {sheet.system}, T1 {modes.periods_s[0]:.2f} s ({source}), {stiffness}, "
+                f"{ratio}, "
                 f"{sheet.damping:.0%} damping, {modes.n_modes} modes): the floor's absolute acceleration in time "
                 "(floors.csv). The building is taken as elastic: a building that yields has lower peak floor "
                 "accelerations than these, at longer periods; floor motions a structural engineer gives in the "

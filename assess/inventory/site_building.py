@@ -52,6 +52,10 @@ PERIOD_BELOW_APPROXIMATE = 4
 #: Bounds of the building sheet's ``yield_base_shear_g`` (base shear at yield over the weight) and ``overstrength``.
 YIELD_BASE_SHEAR_RANGE_G = (0.01, 3.0)
 OVERSTRENGTH_RANGE = (1.0, 6.0)
+#: Bounds of the building sheet's ``lateral_stiffness_ratio`` α (Miranda & Taghavi 2005: 0 a flexural cantilever,
+#: ∞ a shear building; walls 0 to 2, dual systems 1.5 to 6, moment frames 5 to 20). Below 0.1 the building
+#: bends as a cantilever, beyond 30 it shears as a shear building: nothing changes outside these.
+LATERAL_STIFFNESS_RATIO_RANGE = (0.1, 30.0)
 #: The largest ratio of one storey's stiffness to another's that the building sheet's ``storey_stiffness`` may give.
 STOREY_STIFFNESS_SPREAD = 20.0
 _YES, _NO = ("yes", "y", "true", "1"), ("no", "n", "false", "0")
@@ -153,6 +157,9 @@ class BuildingSheet:
         The storeys' relative stiffnesses, the first storey to the roof (``uniform``: all 1), where the
         engineer gives them; None: the system's design profile
         (:func:`assess.building.design.design_storey_stiffness`).
+    lateral_stiffness_ratio : float or None
+        Miranda & Taghavi's α of the building's shear-flexural model, where the engineer gives it; None: the
+        system's (:data:`assess.building.ALPHA_BY_SYSTEM`).
     rows : dict
         The sheet row of each key given.
     sheet : str
@@ -169,6 +176,7 @@ class BuildingSheet:
     overstrength: float | None = None
     p_delta: bool = False
     storey_stiffness: tuple | None = None
+    lateral_stiffness_ratio: float | None = None
     rows: dict = field(default_factory=dict, compare=False)
     sheet: str = "building"
 
@@ -233,6 +241,8 @@ _BUILDING_KEYS = {
                            positive=True),
     "p_delta": Column("p_delta", "text", max_chars=10),
     "storey_stiffness": Column("storey_stiffness", "text", max_chars=2000),
+    "lateral_stiffness_ratio": Column("lateral_stiffness_ratio", "number", low=LATERAL_STIFFNESS_RATIO_RANGE[0],
+                                      high=LATERAL_STIFFNESS_RATIO_RANGE[1], positive=True),
 }
 
 
@@ -471,6 +481,7 @@ def read_building(table, report) -> BuildingSheet | None:
                          period_s=out.get("period"), damping=float(out.get("damping", DEFAULT_DAMPING)),
                          response=response, yield_base_shear_g=out.get("yield_base_shear"),
                          overstrength=out.get("overstrength"), p_delta=p_delta, storey_stiffness=stiffness,
+                         lateral_stiffness_ratio=out.get("lateral_stiffness_ratio"),
                          rows={name: row for name, (_, row) in values.items()}, sheet=table.title)
 
 

@@ -1,0 +1,76 @@
+"""What the building's α moves: the yielding route against OpenSees frames whose column is stiffer or softer.
+
+The frames of tests/peers/opensees_buildings.py carry a continuous elastic column beside their storey springs,
+with α = H √(GA/EI) = 10, inside the 5 to 20 Miranda & Taghavi (2005) give moment frames; the tool takes 12 for
+a moment frame whose ``lateral_stiffness_ratio`` the building sheet does not give. Here the same three frames
+(``smf4``, ``smf8``, ``rcf5``) are built with α 5 (columns four times as stiff against the storeys) and 20 (a
+quarter), each with the pushover base shear at first yield that column gives it, under the 11 records at DE,
+and the product (tests/peers/yielding_equipment.py) runs on them with that ``yield_base_shear_g`` twice: with the
+system's α and with the building's own in ``lateral_stiffness_ratio``. Claimed and checked:
+
+* with the building's α the sliding's geometric mean tool/truth lies in issue 29's [0.8, 1.25] on every frame
+  at both α (measured 0.87 to 1.09);
+* with the system's α it does not on some (measured: ``smf8`` at α 5, 0.39; ``rcf5`` at α 20, 1.54): α, which
+  the design data do not fix, moves the upper floors' sliding by up to a factor of 2.6, as much as the
+  strength does, which is why the sheet takes it and the report says when it is assumed.
+
+Not claimed: σ ln ≤ 0.45 with the building's α at α 20 (``rcf5`` 0.53, ``smf8`` 0.59; at α 5 0.22 to 0.34), the
+softer column letting the drift gather in a storey, where small differences decide which one
+(``benchmarks/bench_yielding_equipment.py --truth-alphas 5,20`` gives every column at DE and MCE_R).
+
+Skipped, with the reason, where openseespy or pyslammer is not importable.
+"""
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+from peers.opensees_buildings import BUILDINGS
+from peers.opensees_shear import load_opensees
+
+OPS, WHY = load_opensees()
+pytestmark = pytest.mark.skipif(OPS is None, reason=str(WHY))
+
+FRAMES = ("smf4", "smf8", "rcf5")
+ALPHAS = (5.0, 20.0)
+
+
+@pytest.fixture(scope="module")
+def measured(tmp_path_factory):
+    pytest.importorskip("pyslammer")
+    from peers.opensees_buildings import pushover_yield_base_shear_g
+    from peers.yielding_equipment import assess, compare, ground_suite, truth_result, workbook
+
+    out = {}
+    for name in FRAMES:
+        own = BUILDINGS[name]
+        suite = ground_suite(11, own.period_s, 1.0)
+        for alpha in ALPHAS:
+            truth = dataclasses.replace(own, column_alpha=alpha)
+            folder = tmp_path_factory.mktemp(f"{name}-{alpha:g}")
+            reference = truth_result(truth, suite, "DE", folder)
+            given = round(pushover_yield_base_shear_g(truth), 6)
+            strength = [["response", "yielding"], ["yield_base_shear_g", given]]
+            for route, rows in (("system's", strength),
+                                ("building's", strength + [["lateral_stiffness_ratio", alpha]])):
+                result = assess(workbook(folder, truth, suite, "DE", rows), "DE")
+                out[name, alpha, route] = compare(result, reference)
+    return out
+
+
+@pytest.mark.parametrize("name", FRAMES)
+@pytest.mark.parametrize("alpha", ALPHAS)
+def test_with_the_buildings_alpha_the_sliding_is_within_the_issue_target(measured, name, alpha):
+    numbers = measured[name, alpha, "building's"]
+    assert numbers["n_sliding"] >= 100, numbers  # enough sliding cases to mean something
+    assert 0.8 <= numbers["gm"] <= 1.25, (name, alpha, numbers)
+
+
+def test_with_the_systems_alpha_it_is_not_on_some(measured):
+    system = {key[:2]: numbers["gm"] for key, numbers in measured.items() if key[2] == "system's"}
+    outside = {key: gm for key, gm in system.items() if not 0.8 <= gm <= 1.25}
+    assert outside, system
+    for key, gm in outside.items():  # and the building's own α brings each of those nearer
+        assert abs(np.log(measured[(*key, "building's")]["gm"])) < abs(np.log(gm)), (key, gm)
