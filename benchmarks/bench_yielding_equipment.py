@@ -173,7 +173,8 @@ def main(argv=None):
                                                                           level, folder)
                 for factor in filter(None, args.truth_floors.split(",")):
                     results[f"truth, floors x {factor}"] = truth_result(truth, suite, level, folder, float(factor))
-                for alpha in filter(None, args.truth_alphas.split(",")) if np.isfinite(truth.column_alpha) else ():
+                framed = np.isfinite(getattr(truth, "column_alpha", np.inf))  # the frames' column; walls have none
+                for alpha in filter(None, args.truth_alphas.split(",")) if framed else ():
                     other = dataclasses.replace(truth, column_alpha=float(alpha))
                     strength = [["response", "yielding"],
                                 ["yield_base_shear_g", round(pushover_yield_base_shear_g(other), 6)]]
