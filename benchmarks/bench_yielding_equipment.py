@@ -24,8 +24,9 @@ a ``building`` sheet of the building's storeys, height, system and T_1): only th
 * ``given``: ``response: yielding`` with ``yield_base_shear_g`` from a static pushover of the OpenSees
   building under the ELF pattern: the base shear, column included, when its first storey yields, over the
   weight (``peers.opensees_buildings.pushover_yield_base_shear_g``);
-* ``design x Ω``: ``response: yielding`` from the design data only (ASCE 7-22 §12.8) with
-  ``overstrength`` Ω (2 is the default);
+* ``design``: ``response: yielding`` from the design data only (ASCE 7-22 §12.8), the system's default
+  overstrength (2.5 for the steel frames, 2 for the others);
+* ``design x Ω``: the same with ``overstrength`` Ω;
 * ``elastic``: ``response: elastic``, today's modal route;
 * ``given + truth's stiffness`` (``--truth-profile``): ``given`` with the OpenSees building's storey
   stiffnesses in ``storey_stiffness`` (what an engineer who knows the building would write); the
@@ -162,7 +163,8 @@ def main(argv=None):
                 if args.truth_profile and hasattr(truth, "stiffness_profile"):
                     profile = ", ".join(f"{k:g}" for k in truth.stiffness_profile)
                     routes["given + truth's stiffness"] = routes["given"] + [["storey_stiffness", profile]]
-                for omega in args.overstrengths.split(","):
+                routes["design"] = [["response", "yielding"]]
+                for omega in filter(None, args.overstrengths.split(",")):
                     routes[f"design x {omega}"] = [["response", "yielding"], ["overstrength", float(omega)]]
                 routes["elastic"] = [["response", "elastic"]]
                 reference = truth_result(truth, suite, level, folder)
@@ -190,7 +192,7 @@ def main(argv=None):
             r_factor, omega0 = SYSTEM_R[truth.system]
             r_mu = max(np.sqrt(1.1 * r_factor / omega0), 1.3)
             for route, result in [("truth", reference)] + [(k, v) for k, v in results.items()
-                                                           if k in ("given", "design x 2")]:
+                                                           if k in ("given", "design")]:
                 floors = result[0].floors.set_index("floor")
                 for floor in (truth.storeys // 2, truth.storeys):
                     z = floor / truth.storeys

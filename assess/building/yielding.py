@@ -200,13 +200,13 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
 
     Examples
     --------
-    A 4-storey steel moment frame, T_1 0.6 s, at S_DS 1.0, S_D1 0.6: C_s 0.125, yield at 2 × 0.125:
+    A 4-storey steel moment frame, T_1 0.6 s, at S_DS 1.0, S_D1 0.6: C_s 0.125, yield at 2.5 × 0.125:
 
     >>> from assess.building.modes import building_modes
     >>> modes = building_modes(4, 4.0, system="steel moment frame", period_s=0.6)
     >>> b = yielding_building(modes, "steel moment frame", sds_g=1.0, sd1_g=0.6)
     >>> round(b.strength.yield_base_shear_g, 4), b.stick.law, b.drift_limit
-    (0.25, 'bilinear', 0.05)
+    (0.3125, 'bilinear', 0.05)
     """
     heights = modes.floor_heights_m[1:]
     storey_heights = np.diff(modes.floor_heights_m)
