@@ -256,9 +256,9 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
                      "motions most: give yield_base_shear_g (from a pushover or an evaluation) or overstrength "
                      "where known.")
         if sheet.lateral_stiffness_ratio is None and not hinged:
-            text += (" α, the system's typical value and not this building's, moves the floors' motions nearly as "
-                     "much as the strength does (it sets how the columns spread the storeys' drift over the height): "
-                     "give lateral_stiffness_ratio where the building's own is known.")
+            text += (" The lateral stiffness ratio α, the system's typical value and not this building's, moves the "
+                     "floors' motions nearly as much as the strength does (it sets how the columns spread the storeys' "
+                     "drift over the height): give lateral_stiffness_ratio where the building's own is known.")
     else:
         text = (f"{which}: each ground motion through the building's elastic modes "
                 f"({sheet.storeys} storeys, {sheet.system}, T1 {modes.periods_s[0]:.2f} s ({source}), {stiffness}, "
