@@ -51,6 +51,17 @@ def narrow_box(name: str) -> dict:
     return {"half_width_m": depth / 2, "height_m": height, "mu": mu}
 
 
+def own_alpha(truth) -> float:
+    """The lateral stiffness ratio α an engineer with the truth building's own model would write in the building
+    sheet's ``lateral_stiffness_ratio``: the frames' column's α; the shear building (``wall6``, no column, α ∞) the
+    sheet's highest, the flexural wall (``wallf6``, a cantilever, α 0) its lowest
+    (:data:`assess.inventory.site_building.LATERAL_STIFFNESS_RATIO_RANGE`)."""
+    from assess.inventory.site_building import LATERAL_STIFFNESS_RATIO_RANGE
+    if isinstance(truth, FlexuralWall):
+        return LATERAL_STIFFNESS_RATIO_RANGE[0]
+    return float(min(truth.column_alpha, LATERAL_STIFFNESS_RATIO_RANGE[1]))
+
+
 #: (R, Ω_0) of ASCE 7-22 Table 12.2-1 for the systems (I_e 1), for R_μ.
 SYSTEM_R = {"steel moment frame": (8.0, 3.0), "concrete moment frame": (8.0, 3.0), "shear wall": (5.0, 2.5)}
 

@@ -63,6 +63,16 @@ at 0.275, 0.125 and 0.188 W; 0.36 for both walls). What is claimed, and checked:
   (``overturn_class_agree``), agrees on ≥ 0.92 of the items for every building and level with the given
   strength.
 
+* the same targets with what an engineer with the building's model writes, its pushover strength and its
+  own α in ``lateral_stiffness_ratio`` (the frames' 10, the shear-building wall the sheet's 30, the bending
+  wall its 0.1; ``peers.yielding_equipment.own_alpha``): sliding gm in [0.8, 1.25] and σ ln ≤ 0.45 on all five
+  (DE: gm 0.96-1.18, σ ln 0.13-0.36; MCE_R: 1.02-1.18, 0.10-0.38), risk class ≥ 80 % on all but ``wall6`` at DE
+  (75 %, a strict xfail; MCE_R 0.83-1.0); the per-case overturn share stays at 0.45-0.89, as coarse as the
+  truth's own floors half a per cent off (:func:`test_the_issue_targets_with_the_buildings_strength_and_alpha`).
+  α is what the strength alone leaves open: ``rcf5``'s σ ln 0.48 at DE with the system's 12 is 0.31 with its 10,
+  ``wall6``'s 0.50 at MCE_R with 1 (a wall's) is 0.38 with a shear building's 30 (test_yielding_alpha.py
+  rebuilds the frames with α 5 and 20).
+
 The tool's shear wall is its elastic model on a base plastic hinge (assess/building/wall_hinge.py; its
 kernel checked against OpenSees with the same model in test_wall_hinge_opensees.py). Before it, the tool's
 wall was an equivalent shear stick of storey springs, and slid ``wallf6``'s equipment 1.42/1.45 times as far
@@ -114,7 +124,7 @@ FLOOR_SCALES = (0.995, 1.005)
 def measured(tmp_path_factory):
     pytest.importorskip("pyslammer")
     from peers.opensees_buildings import pushover_yield_base_shear_g
-    from peers.yielding_equipment import assess, compare, ground_suite, truth_result, workbook
+    from peers.yielding_equipment import assess, compare, ground_suite, own_alpha, truth_result, workbook
 
     out = {}
     for name, truth in BUILDINGS.items():
@@ -124,6 +134,7 @@ def measured(tmp_path_factory):
         given = round(pushover_yield_base_shear_g(truth), 6)
         routes = {"given": [["response", "yielding"], ["yield_base_shear_g", given]],
                   "elastic": [["response", "elastic"]]}
+        routes["given + own α"] = routes["given"] + [["lateral_stiffness_ratio", own_alpha(truth)]]
         routes["design"] = [["response", "yielding"]]
         routes.update({f"design x {o:g}": [["response", "yielding"], ["overstrength", o]] for o in OVERSTRENGTHS})
         results = {route: assess(workbook(folder, truth, suite, "DE", rows), "DE") for route, rows in routes.items()}
@@ -239,3 +250,30 @@ def test_the_issue_targets_with_the_given_strength(measured, target, name):
         assert 0.8 <= n["gm"] <= 1.25 and n["sigma_ln"] <= 0.45, (name, n)
     else:
         assert n["overturn_agree"] >= 0.75 and n["class_agree"] >= 0.8, (name, n)
+
+
+#: The risk class with the building's strength and α not met at DE, with the measured numbers: strict xfails.
+OWN_ALPHA_SHORT = {("class", "wall6"): "risk class 75 % (9 of 12 items), as with the strength alone"}
+
+
+def _own_alpha_cases():
+    for target in ("sliding", "class"):
+        for name in NAMES:
+            marks = ()
+            if (target, name) in OWN_ALPHA_SHORT:
+                marks = pytest.mark.xfail(strict=True, reason=f"{name}: {OWN_ALPHA_SHORT[target, name]}")
+            yield pytest.param(target, name, marks=marks, id=f"{target}-{name}")
+
+
+@pytest.mark.parametrize("target, name", list(_own_alpha_cases()))
+def test_the_issue_targets_with_the_buildings_strength_and_alpha(measured, target, name):
+    # What an engineer with the building's model writes: its pushover yield_base_shear_g and its own α in
+    # lateral_stiffness_ratio (peers.yielding_equipment.own_alpha: the frames' 10, the shear-building wall the
+    # sheet's 30, the bending wall its 0.1). Measured at DE: gm 0.96-1.18, σ ln 0.13-0.36, risk class 0.92 but
+    # for wall6's 0.75; at MCE_R (bench_yielding_equipment.py --own-alpha) gm 1.02-1.18, σ ln 0.10-0.38, class
+    # 0.83-1.0. The per-case overturn share stays coarse (0.45-0.89), as the truth's own floors show it must.
+    n = measured[name]["numbers"]["given + own α"]
+    if target == "sliding":
+        assert 0.8 <= n["gm"] <= 1.25 and n["sigma_ln"] <= 0.45, (name, n)
+    else:
+        assert n["class_agree"] >= 0.8, (name, n)
