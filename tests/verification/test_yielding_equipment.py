@@ -146,22 +146,22 @@ def measured(tmp_path_factory):
 
 #: (route, building) where the claim below is not met, with the measured gm (DE): strict xfails (none since the
 #: steel frames' default overstrength is their own, 2.5: with 2 they gave 0.62 and 0.65).
-SHORT = {}
+SHORT: dict = {}
 #: The truth buildings the claims are checked on: every one of the peer's.
 NAMES = tuple(BUILDINGS)
 
 
-def _cases():
-    for route in ("given", "design"):
+def _marked(firsts, short):
+    """(first, building) pairs as parameters, those in ``short`` strict xfails that give its words."""
+    for first in firsts:
         for name in NAMES:
             marks = ()
-            if (route, name) in SHORT:
-                marks = pytest.mark.xfail(strict=True, reason=f"{name}, {route}: gm {SHORT[route, name]} (DE), "
-                                                              f"outside [0.67, 1.5] (module docstring)")
-            yield pytest.param(route, name, marks=marks, id=f"{route}-{name}")
+            if (first, name) in short:
+                marks = pytest.mark.xfail(strict=True, reason=f"{name}, {first}: {short[first, name]}")
+            yield pytest.param(first, name, marks=marks, id=f"{first}-{name}")
 
 
-@pytest.mark.parametrize("route, name", list(_cases()))
+@pytest.mark.parametrize("route, name", list(_marked(("given", "design"), SHORT)))
 def test_sliding_within_a_factor_of_one_and_a_half_and_nearer_than_the_elastic_route(measured, route, name):
     m = measured[name]
     gm, elastic = m["numbers"][route]["gm"], m["numbers"]["elastic"]["gm"]
@@ -234,16 +234,7 @@ TARGETS_SHORT = {("verdicts", "smf4"): "overturn verdicts 57 % of 7 cases where 
                  ("verdicts", "rcf5"): "overturn verdicts 63 % of 8 cases; risk class 92 %"}
 
 
-def _target_cases():
-    for target in ("sliding", "verdicts"):
-        for name in NAMES:
-            marks = ()
-            if (target, name) in TARGETS_SHORT:
-                marks = pytest.mark.xfail(strict=True, reason=f"{name}: {TARGETS_SHORT[target, name]}")
-            yield pytest.param(target, name, marks=marks, id=f"{target}-{name}")
-
-
-@pytest.mark.parametrize("target, name", list(_target_cases()))
+@pytest.mark.parametrize("target, name", list(_marked(("sliding", "verdicts"), TARGETS_SHORT)))
 def test_the_issue_targets_with_the_given_strength(measured, target, name):
     n = measured[name]["numbers"]["given"]
     if target == "sliding":
@@ -256,16 +247,7 @@ def test_the_issue_targets_with_the_given_strength(measured, target, name):
 OWN_ALPHA_SHORT = {("class", "wall6"): "risk class 75 % (9 of 12 items), as with the strength alone"}
 
 
-def _own_alpha_cases():
-    for target in ("sliding", "class"):
-        for name in NAMES:
-            marks = ()
-            if (target, name) in OWN_ALPHA_SHORT:
-                marks = pytest.mark.xfail(strict=True, reason=f"{name}: {OWN_ALPHA_SHORT[target, name]}")
-            yield pytest.param(target, name, marks=marks, id=f"{target}-{name}")
-
-
-@pytest.mark.parametrize("target, name", list(_own_alpha_cases()))
+@pytest.mark.parametrize("target, name", list(_marked(("sliding", "class"), OWN_ALPHA_SHORT)))
 def test_the_issue_targets_with_the_buildings_strength_and_alpha(measured, target, name):
     # What an engineer with the building's model writes: its pushover yield_base_shear_g and its own α in
     # lateral_stiffness_ratio (peers.yielding_equipment.own_alpha: the frames' 10, the shear-building wall the
