@@ -2,7 +2,8 @@
 
 Run: python benchmarks/bench_yielding_equipment.py [--levels DE,MCE_R] [--buildings smf4,smf8,wall6,wallf6,rcf5]
      [--motions 11] [--overstrengths 1.5,2,3] [--truth-profile] [--truth-strengths 0.9,1.1]
-     [--truth-floors 0.995,1.005] [--truth-alphas 5,20]  (needs openseespy and pyslammer; about 3 minutes a level)
+     [--truth-floors 0.995,1.005] [--truth-alphas 5,20] [--own-alpha]
+     (needs openseespy and pyslammer; about 3 minutes a level)
 
 The truth: five yielding OpenSeesPy buildings of our own (tests/peers/opensees_buildings.py: steel
 special moment frames of 4 and 8 storeys and a reinforced-concrete one of 5 with pinching springs (``rcf5``),

@@ -56,9 +56,9 @@ commentary §C12.1.1 [7]_). This Ω lies between the two.
   above that.
 
 *What is taken.* A steel moment frame stands in a building with its gravity framing and slabs, so
-Elkady & Lignos' Ω_s of 3.0 [8]_ is the one that applies, not the bare frames'; as this Ω (the corner
-of a spring hardening 3 %, which carries 1.18 times its yield force at the ductility of about 7 the
-frames reach at the design earthquake) it is 3.0/1.18 = 2.54, taken as **2.5**. No archetype Ω of
+Elkady & Lignos' Ω_s with them, above 3.0 [8]_, is the one that applies, not the bare frames'; its least,
+3.0, as this Ω (the corner of a spring hardening 3 %, which carries 1.18 times its yield force at the
+ductility of about 7 the frames reach at the design earthquake) is 3.0/1.18 = 2.54, taken as **2.5**. No archetype Ω of
 concrete frames, braced frames or walls could be read, so no value is sourced for them: 2.0
 (:data:`DEFAULT_OVERSTRENGTH`), at the top of the first-yield range and at the low end the bare steel
 frames' Ω implies, a judgement stated as such in docs/workbook.md. A building whose gravity framing and
@@ -310,8 +310,8 @@ class DesignStrength:
     source : str
         One sentence: where the strength came from.
     overstrength_assumed : bool
-        Whether ``overstrength`` is the system's :data:`OVERSTRENGTH_BY_SYSTEM`, taken because neither it nor the yield base
-        shear was given (a judgement, which the run's note says).
+        Whether ``overstrength`` is the system's :data:`OVERSTRENGTH_BY_SYSTEM`, taken because neither it nor the
+        yield base shear was given (a judgement, which the run's note says).
     """
 
     yield_base_shear_g: float
