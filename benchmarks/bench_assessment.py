@@ -35,7 +35,8 @@ each, a steel moment frame, T1 from ASCE 7 Table 12.8-2, 5 % damping: :mod:`asse
 on floor i mod (STOREYS + 1), and run under the 18 records passed through the building to their floor
 (the time to make the floor histories is printed apart). With ``--yielding`` as well, the building
 yields: the records go through its yielding stick (:func:`assess.building.yielding.yielding_building`,
-strength from the ASCE 7-22 §12.8 design at S_DS 1.0 g, S_D1 0.6 g, Risk Category II, overstrength 2;
+strength from the ASCE 7-22 §12.8 design at S_DS 1.0 g, S_D1 0.6 g, Risk Category II, a steel moment frame's
+default overstrength 2.5;
 the records as recorded, unscaled), and the floor histories' time, the motions that yielded the building
 and the largest storey ductility are printed.
 

@@ -4,7 +4,8 @@ Run: python benchmarks/bench_yielding_floor_histories.py [--storeys 12,24,48,96]
 
 The first 11 of pyslammer's sample records (in name order), each scaled so that its 5 % S_a(T_1) is the
 design spectrum's (S_DS 1.0 g, S_D1 0.6 g) at T_1 1.4 s, through a 12-storey stick designed by ASCE 7-22
-§12.8 (Risk Category II, overstrength 2): a steel special moment frame (bilinear springs) and a concrete
+§12.8 (Risk Category II, the system's default overstrength: 2.5 for steel moment frames, 2 for the
+others): a steel special moment frame (bilinear springs) and a concrete
 special moment frame (pinching springs), Rayleigh 5 % on the tangent stiffness, and a concrete shear
 wall (its elastic model on a pinching base hinge, assess/building/wall_hinge.py; the ductility then the
 wall's at its base), Newmark/Newton at substeps of at most 1 ms (shorter where the stick's shortest period

@@ -282,7 +282,7 @@ def test_the_note_says_an_assumed_overstrength_is_a_judgement_and_what_to_give(m
     said = "The overstrength is a judgement, not this building's" in note
     assert said == assumed, note
     if assumed:
-        assert "times an assumed overstrength 2" in note
+        assert "times an assumed overstrength 2.5;" in note  # a steel moment frame's default
         assert "give yield_base_shear_g (from a pushover or an evaluation) or overstrength where known." in note
 
 

@@ -145,7 +145,7 @@ def measured(tmp_path_factory):
 
 
 #: (route, building) where the claim below is not met, with the measured gm (DE): strict xfails (none since the
-#: steel frames' default overstrength is their own, 2.5: with 2 they gave 0.62 and 0.65).
+#: steel moment frames default to 2.5: with 2 the steel frames gave 0.62 and 0.65).
 SHORT: dict = {}
 #: The truth buildings the claims are checked on: every one of the peer's.
 NAMES = tuple(BUILDINGS)
