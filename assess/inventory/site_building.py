@@ -39,9 +39,12 @@ MAX_STOREYS = 200
 RESPONSES = ("elastic", "yielding")
 #: The most storeys the yielding stick takes. Each integration step solves the stick's full stiffness (its
 #: elastic column or wall couples every floor), so one ground motion costs about the cube of the storeys:
-#: per 30 s of shaking, 0.07 / 0.50 / 3.0 / 6.0 s for steel moment frames of 12 / 24 / 40 / 48 storeys and 0.24 /
-#: 1.15 / 4.7 / 8.1 s for shear walls (``benchmarks/bench_yielding_floor_histories.py --storeys 12,24,40,48``;
-#: 93 s for a frame of 96), and a level's suite has 11 to 500 motions. Beyond it the elastic modes answer (any
+#: per 30 s of shaking, 0.07 / 0.50 / 3.0 / 6.0 s for steel moment frames of 12 / 24 / 40 / 48 storeys, 0.24 /
+#: 1.15 / 4.7 / 8.1 s for shear walls and 0.29 / 2.3 / 14 / 28 s for braced frames, whose stiffer column (α 4)
+#: shortens the stick's shortest period and with it the step (9.6 / 18 s eccentrically braced at 40 / 48;
+#: ``benchmarks/bench_yielding_floor_histories.py --storeys 12,24,40,48``; 93 s for a moment frame of 96; a given
+#: ``lateral_stiffness_ratio`` below the system's costs more the same way: 31 s at α 1 for a braced frame of 40), and
+#: a level's suite has 11 to 500 motions. Beyond it the elastic modes answer (any
 #: height, in seconds), and the note says why.
 MAX_YIELDING_STOREYS = 40
 #: A given T1 below ASCE 7's approximate period T_a over this is refused: T_a = C_t h_n^x is itself near the
@@ -435,8 +438,8 @@ def read_building(table, report) -> BuildingSheet | None:
                           f"delete the {name} row, or write yielding in response (row {values['response'][1]}).")
     if "storeys" in out and too_tall_to_yield(out["storeys"]) and response != "elastic":
         beyond = (f"the building has {int(out['storeys'])} storeys: the yielding model takes at most "
-                  f"{MAX_YIELDING_STOREYS} (its cost grows with the cube of the storeys, about 6 s a ground motion at "
-                  "48), and beyond that the building's elastic modes answer.")
+                  f"{MAX_YIELDING_STOREYS} (its cost grows with the cube of the storeys: 6 to 28 s a ground motion at "
+                  "48, by system), and beyond that the building's elastic modes answer.")
         deleted = f"above {MAX_YIELDING_STOREYS} storeys the elastic modes answer, and they"
         # what asks for the yielding model: key, whether it asks, its words, the fix
         for key, asks, said, fix in (
