@@ -97,9 +97,9 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path[:0] = [str(REPO / "tests")]
 
 from assess.building.floors import height_factor  # noqa: E402
-from peers.opensees_buildings import BUILDINGS, pushover_yield_base_shear_g  # noqa: E402
-from peers.yielding_equipment import (LEVELS, SYSTEM_R, assess, compare, ground_suite, own_alpha,  # noqa: E402
-                                      truth_result, workbook)
+from peers.opensees_buildings import BUILDINGS  # noqa: E402
+from peers.yielding_equipment import (LEVELS, SYSTEM_R, assess, compare, given_strength,  # noqa: E402
+                                      ground_suite, own_alpha, truth_result, workbook)
 
 
 def markdown(frame: pd.DataFrame) -> str:
@@ -167,8 +167,7 @@ def main(argv=None):
             suite = ground_suite(args.motions, truth.period_s, LEVELS[level])
             with tempfile.TemporaryDirectory() as tmp:
                 folder = Path(tmp)
-                given = round(pushover_yield_base_shear_g(truth), 6)
-                routes = {"given": [["response", "yielding"], ["yield_base_shear_g", given]]}
+                routes = {"given": given_strength(truth)}
                 if args.own_alpha:
                     routes["given + own α"] = routes["given"] + [["lateral_stiffness_ratio", own_alpha(truth)]]
                 if args.truth_profile and hasattr(truth, "stiffness_profile"):
@@ -189,8 +188,7 @@ def main(argv=None):
                 framed = np.isfinite(getattr(truth, "column_alpha", np.inf))  # the frames' column; walls have none
                 for alpha in filter(None, args.truth_alphas.split(",")) if framed else ():
                     other = dataclasses.replace(truth, column_alpha=float(alpha))
-                    strength = [["response", "yielding"],
-                                ["yield_base_shear_g", round(pushover_yield_base_shear_g(other), 6)]]
+                    strength = given_strength(other)
                     other_reference = truth_result(other, suite, level, folder)
                     for route, extra in ((f"given, truth α {alpha}", strength),
                                          (f"given + α, truth α {alpha}",

@@ -24,7 +24,7 @@ from assess.inventory import read_workbook
 from assess.inventory.settings import Settings
 from assess.site.asce7 import design_spectral_acceleration_g
 from assess.site.spectrum import pseudo_acceleration_spectrum
-from peers.opensees_buildings import FlexuralWall, truth_response, wall_history
+from peers.opensees_buildings import FlexuralWall, pushover_yield_base_shear_g, truth_response, wall_history
 from workbooks import write_workbook
 
 SDS_G, SD1_G = 1.0, 0.6
@@ -49,6 +49,13 @@ def narrow_box(name: str) -> dict:
     and ``mu``, as :func:`peers.mujoco_box.box_model` takes them."""
     (height, depth, mu), = [(h, d, mu) for item, h, _, d, _, mu, _ in ITEMS if item == name]
     return {"half_width_m": depth / 2, "height_m": height, "mu": mu}
+
+
+def given_strength(truth) -> list:
+    """The building sheet's rows of the route ``given``: ``response`` yielding and ``yield_base_shear_g`` the truth
+    building's own pushover gives (:func:`peers.opensees_buildings.pushover_yield_base_shear_g`), written to six
+    decimals as an engineer would copy it."""
+    return [["response", "yielding"], ["yield_base_shear_g", round(pushover_yield_base_shear_g(truth), 6)]]
 
 
 def own_alpha(truth) -> float:

@@ -40,8 +40,7 @@ ALPHAS = (5.0, 20.0)
 @pytest.fixture(scope="module")
 def measured(tmp_path_factory):
     pytest.importorskip("pyslammer")
-    from peers.opensees_buildings import pushover_yield_base_shear_g
-    from peers.yielding_equipment import assess, compare, ground_suite, truth_result, workbook
+    from peers.yielding_equipment import assess, compare, given_strength, ground_suite, truth_result, workbook
 
     out = {}
     for name in FRAMES:
@@ -51,8 +50,7 @@ def measured(tmp_path_factory):
             truth = dataclasses.replace(own, column_alpha=alpha)
             folder = tmp_path_factory.mktemp(f"{name}-{alpha:g}")
             reference = truth_result(truth, suite, "DE", folder)
-            given = round(pushover_yield_base_shear_g(truth), 6)
-            strength = [["response", "yielding"], ["yield_base_shear_g", given]]
+            strength = given_strength(truth)
             for route, rows in (("system's", strength),
                                 ("building's", strength + [["lateral_stiffness_ratio", alpha]])):
                 result = assess(workbook(folder, truth, suite, "DE", rows), "DE")

@@ -123,16 +123,15 @@ FLOOR_SCALES = (0.995, 1.005)
 @pytest.fixture(scope="module")
 def measured(tmp_path_factory):
     pytest.importorskip("pyslammer")
-    from peers.opensees_buildings import pushover_yield_base_shear_g
-    from peers.yielding_equipment import assess, compare, ground_suite, own_alpha, truth_result, workbook
+    from peers.yielding_equipment import (assess, compare, given_strength, ground_suite, own_alpha, truth_result,
+                                          workbook)
 
     out = {}
     for name, truth in BUILDINGS.items():
         suite = ground_suite(11, truth.period_s, 1.0)
         folder = tmp_path_factory.mktemp(name)
         reference = truth_result(truth, suite, "DE", folder)
-        given = round(pushover_yield_base_shear_g(truth), 6)
-        routes = {"given": [["response", "yielding"], ["yield_base_shear_g", given]],
+        routes = {"given": given_strength(truth),
                   "elastic": [["response", "elastic"]]}
         routes["given + own α"] = routes["given"] + [["lateral_stiffness_ratio", own_alpha(truth)]]
         routes["design"] = [["response", "yielding"]]
