@@ -21,7 +21,7 @@ import numpy as np
 import pandas as pd
 
 from assess.building import BuildingModes, building_modes
-from assess.building.design import design_storey_stiffness
+from assess.building.design import OVERSTRENGTH_SOURCE_BY_SYSTEM, design_storey_stiffness
 from assess.building.floors import floors_table
 from assess.building.period import approximate_period
 from assess.building.response import floor_records
@@ -252,9 +252,11 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
                 "ones. The "
                 "building's own collapse is not assessed.")
         if strength.overstrength_assumed:
-            text += (" The overstrength is a judgement, not this building's, and the strength moves the floors' "
-                     "motions most: give yield_base_shear_g (from a pushover or an evaluation) or overstrength "
-                     "where known.")
+            basis = OVERSTRENGTH_SOURCE_BY_SYSTEM.get(sheet.system)
+            said = f"the literature's typical one, {basis}" if basis else "a judgement"
+            text += (f" The overstrength is {said}, "
+                     "not this building's, and the strength moves the floors' motions most: give yield_base_shear_g "
+                     "(from a pushover or an evaluation) or overstrength where known.")
         if sheet.lateral_stiffness_ratio is None and not hinged:
             text += (" The lateral stiffness ratio α, the system's typical value and not this building's, moves the "
                      "floors' motions nearly as much as the strength does (it sets how the columns spread the storeys' "

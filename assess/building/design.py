@@ -159,6 +159,11 @@ OVERSTRENGTH_BY_SYSTEM = {
     "shear wall": DEFAULT_OVERSTRENGTH,
     "other": DEFAULT_OVERSTRENGTH,
 }
+#: Where each system's :data:`OVERSTRENGTH_BY_SYSTEM` comes from, as the run's note says it: the systems with a
+#: source in the literature; the others' is :data:`DEFAULT_OVERSTRENGTH`, a judgement.
+OVERSTRENGTH_SOURCE_BY_SYSTEM = {
+    "steel moment frame": "Elkady & Lignos' (2015) for steel moment frames with their gravity framing and slabs",
+}
 #: C_u of ASCE 7-22 Table 12.8-1 against S_D1 [g] (interpolated, constant beyond the ends).
 UPPER_LIMIT_TABLE = ((0.1, 1.7), (0.15, 1.6), (0.2, 1.5), (0.3, 1.4), (0.4, 1.4))
 

@@ -16,6 +16,7 @@ import pytest
 from assess.assessment.motions import level_motions, simulated_motions
 from assess.assessment.pipeline import run_assessment
 from assess.building import building_modes, floor_records
+from assess.building.design import OVERSTRENGTH_BY_SYSTEM
 from assess.building import yielding as yielding_module
 from assess.building.nonlinear import yielding_response, yielding_stick
 from assess.inventory import read_workbook
@@ -270,19 +271,25 @@ def test_the_reports_wording_follows_the_model_that_ran_not_the_empty_cells(weak
     assert "at its base only" in building_context(dataclasses.replace(weak, floors=one_storey))["lead"]
 
 
-@pytest.mark.parametrize("rows, assumed", [([], True), ([("overstrength", 2.0)], False),
-                                           ([("yield_base_shear_g", 0.5)], False)])
-def test_the_note_says_an_assumed_overstrength_is_a_judgement_and_what_to_give(make_workbook, rows, assumed):
-    """Only the design data (no ``yield_base_shear_g``, no ``overstrength``): the run's building note says the
-    overstrength is a judgement that moves the answer most and names the two cells that replace it; where the
-    engineer gave either, it does not."""
-    path = make_workbook(_sheets(("system", "steel moment frame"), ("response", "yielding"), *rows), record=False)
+@pytest.mark.parametrize("system, rows, said", [
+    ("steel moment frame", [], "The overstrength is the literature's typical one, Elkady & Lignos' (2015) for steel "
+                               "moment frames with their gravity framing and slabs, not this building's"),
+    ("concrete moment frame", [], "The overstrength is a judgement, not this building's"),
+    ("steel moment frame", [("overstrength", 2.0)], None),
+    ("steel moment frame", [("yield_base_shear_g", 0.5)], None)])
+def test_the_note_says_where_an_assumed_overstrength_comes_from_and_what_to_give(make_workbook, system, rows, said):
+    """Only the design data (no ``yield_base_shear_g``, no ``overstrength``): the run's building note says where
+    the assumed overstrength comes from (the literature's for a steel moment frame, a judgement for the systems
+    without a source), that it moves the answer most, and names the two cells that replace it; where the
+    engineer gave either, it says none of this."""
+    path = make_workbook(_sheets(("system", system), ("response", "yielding"), *rows), record=False)
     result = run_assessment(read_workbook(path), "DE", seed=3)
     note = next(n for n in result.hazard_notes if "modelled as yielding" in n)
-    said = "The overstrength is a judgement, not this building's" in note
-    assert said == assumed, note
-    if assumed:
-        assert "times an assumed overstrength 2.5;" in note  # a steel moment frame's default
+    assert ("The overstrength is" in note) == (said is not None), note
+    if said is not None:
+        assert said in note, note
+        default = OVERSTRENGTH_BY_SYSTEM[system]
+        assert f"times an assumed overstrength {default:g};" in note
         assert "give yield_base_shear_g (from a pushover or an evaluation) or overstrength where known." in note
 
 
