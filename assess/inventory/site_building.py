@@ -59,6 +59,11 @@ OVERSTRENGTH_RANGE = (1.0, 6.0)
 #: ∞ a shear building; walls 0 to 2, dual systems 1.5 to 6, moment frames 5 to 20). Below 0.1 the building
 #: bends as a cantilever, beyond 30 it shears as a shear building: nothing changes outside these.
 LATERAL_STIFFNESS_RATIO_RANGE = (0.1, 30.0)
+#: Bounds of the site sheet's T_s = S_D1/S_DS [s], the corner of its design spectrum: a mapped site's is about 0.15
+#: to 2 s (rock in a high-hazard region to soft soil in a low one, ASCE 7 Tables 11.4-1 and 11.4-2's site
+#: coefficients over the maps' S_S and S_1); outside these, one of the two values is not the site's (a
+#: factor slipped, or the two come from different lookups).
+CORNER_PERIOD_RANGE_S = (0.05, 5.0)
 #: The largest ratio of one storey's stiffness to another's that the building sheet's ``storey_stiffness`` may give.
 STOREY_STIFFNESS_SPREAD = 20.0
 _YES, _NO = ("yes", "y", "true", "1"), ("no", "n", "false", "0")
@@ -355,6 +360,11 @@ def read_site(table, folder: Path, report) -> SiteSheet | None:
         missing = ({"sds", "sd1"} - set(design)).pop()
         report.at(values[design[0]][1], table.headers.get("key"), f"the site sheet gives {design[0]}_g "
                   f"without {missing}_g.", f"add a row {missing}_g (both come from the site's hazard lookup).")
+    elif design and not CORNER_PERIOD_RANGE_S[0] <= out["sd1"] / out["sds"] <= CORNER_PERIOD_RANGE_S[1]:
+        at("sd1", f"sd1_g {out['sd1']:g} over sds_g {out['sds']:g} puts the design spectrum's corner T_s = "
+           f"S_D1/S_DS at {out['sd1'] / out['sds']:.3g} s, outside the {CORNER_PERIOD_RANGE_S[0]:g} to "
+           f"{CORNER_PERIOD_RANGE_S[1]:g} s any mapped site has (about 0.15 to 2 s).",
+           "check both values: each in g, the design (not the mapped MCE_R) values, from the same hazard lookup.")
     elif mapped and (len(mapped) < 2 or "site_class" not in out):
         missing = sorted({"ss", "s1", "site_class"} - set(mapped) - set(out))
         report.at(values[mapped[0]][1], table.headers.get("key"), f"the site sheet gives "

@@ -90,6 +90,8 @@ def test_unit_slip_in_height_is_refused(make_workbook):
     ([("ss_g", 1.0), ("s1_g", 0.4), ("site_class", "CD"), ("code", "ASCE 7-16")], "B4", "not one of ASCE 7-16's"),
     ([("sds_g", 1.0), ("sd1_g", 0.6), ("risk_category", "V")], "B4", "risk category"),
     ([("sds_g", 9.0), ("sd1_g", 0.6)], "B2", "not plausible"),
+    ([("sds_g", 5.0), ("sd1_g", 0.01)], "B3", "T_s = S_D1/S_DS at 0.002 s, outside the 0.05 to 5 s"),
+    ([("sd1_g", 1.2), ("sds_g", 0.2)], "B2", "T_s = S_D1/S_DS at 6 s, outside the 0.05 to 5 s"),
     ([("sds_g", 1.0), ("sd1_g", 0.6), ("records", "../elsewhere")], "B4", "outside the workbook's folder"),
     ([("sds_g", 1.0), ("sd1_g", 0.6), ("records", "missing")], "B4", "is not a folder"),
     ([("sds_g", 1.0), ("sd1_g", 0.6), ("sds", 1.1)], "A4", "given twice"),
@@ -101,6 +103,22 @@ def test_site_refusals(make_workbook, pairs, cell, words):
     located = _located(problems, "site", cell)
     assert located, [str(p) for p in problems]
     assert words in located[0].message, str(located[0])
+
+
+def test_the_design_spectrums_corner_is_checked_against_real_sites(make_workbook):
+    """Sites read from engineers' own calculation packages (tests/data/asce7/worked_examples.csv, T_s 0.54 s) and
+    two sites near the ends of what ASCE 7-16's site coefficients give (Tables 11.4-1 and 11.4-2: rock, site class B,
+    under S_S 1.5 and S_1 0.6: S_DS 2/3 x 1.5 x 0.9 = 0.9, S_D1 2/3 x 0.6 x 0.8 = 0.32, T_s 0.36 s; a soft soil, class E,
+    S_S 0.1 and S_1 0.04: S_DS 2/3 x 0.1 x 2.4 = 0.16, S_D1 2/3 x 0.04 x 4.2 = 0.112, T_s 0.7 s) pass the corner
+    check; an S_D1 a thirtieth of a high S_DS (2.0 and 0.06 g, T_s 0.03 s) does not. A tenfold slip in the first
+    site's S_D1 (T_s 0.054 s) is within the bounds: the check catches values from different lookups, not every
+    slip."""
+    for sds, sd1 in ((1.060, 0.575), (0.9, 0.32), (0.16, 0.112), (1.060, 0.0575), (2.0, 0.06)):
+        if not 0.05 <= sd1 / sds <= 5.0:
+            problems = _problems(make_workbook, site=[("sds_g", sds), ("sd1_g", sd1)])
+            assert ["T_s = S_D1/S_DS" in p.message for p in problems] == [True], [str(p) for p in problems]
+        else:
+            assert read_workbook(make_workbook(_sheets(site=[("sds_g", sds), ("sd1_g", sd1)]))).site.sd1_g == sd1
 
 
 def test_no_hazard_anywhere_is_refused(make_workbook):
