@@ -69,6 +69,11 @@ at 0.275, 0.125 and 0.188 W; 0.36 for both walls). What is claimed, and checked:
   (DE: gm 0.96-1.18, σ ln 0.13-0.36; MCE_R: 1.02-1.18, 0.10-0.38), risk class ≥ 80 % on all but ``wall6`` at DE
   (75 %, a strict xfail; MCE_R 0.83-1.0); the per-case overturn share stays at 0.45-0.89, as coarse as the
   truth's own floors half a per cent off (:func:`test_the_issue_targets_with_the_buildings_strength_and_alpha`).
+  That class miss is the suite's resolution: over all 15 of the harness's records, where a motion moves p by
+  7 % and not 9 %, the risk class agrees on 0.92-1.0 of the items with the building's α and 0.83-1.0 with the
+  strength alone at DE, 0.92-1.0 for both at MCE_R (:func:`test_the_risk_class_over_the_whole_suite`; ``wall6``
+  at DE: 1.0); the sliding with α gm 0.95-1.21, σ ln ≤ 0.38; with the strength alone σ ln stays above 0.45 on
+  ``rcf5`` at DE (0.451) and ``wall6`` at MCE_R (0.48).
   α is what the strength alone leaves open: ``rcf5``'s σ ln 0.48 at DE with the system's 12 is 0.31 with its 10,
   ``wall6``'s 0.50 at MCE_R with 1 (a wall's) is 0.38 with a shear building's 30 (test_yielding_alpha.py
   rebuilds the frames with α 5 and 20).
@@ -258,3 +263,37 @@ def test_the_issue_targets_with_the_buildings_strength_and_alpha(measured, targe
         assert 0.8 <= n["gm"] <= 1.25 and n["sigma_ln"] <= 0.45, (name, n)
     else:
         assert n["class_agree"] >= 0.8, (name, n)
+
+
+@pytest.fixture(scope="module")
+def whole_suite(tmp_path_factory):
+    """The two given routes at DE over every record of the harness (peers.yielding_equipment.RECORDS, 15), where
+    ``measured`` takes the first 11: a risk class from p over 11 motions moves by 1/11 = 9 % a motion, as
+    wide as a class's band."""
+    pytest.importorskip("pyslammer")
+    from peers.yielding_equipment import (RECORDS, assess, compare, given_strength, ground_suite, own_alpha,
+                                          truth_result, workbook)
+
+    out = {}
+    for name, truth in BUILDINGS.items():
+        suite = ground_suite(len(RECORDS), truth.period_s, 1.0)
+        folder = tmp_path_factory.mktemp(f"{name}-whole")
+        reference = truth_result(truth, suite, "DE", folder)
+        routes = {"given": given_strength(truth)}
+        routes["given + own α"] = routes["given"] + [["lateral_stiffness_ratio", own_alpha(truth)]]
+        out[name] = {route: compare(assess(workbook(folder, truth, suite, "DE", rows), "DE"), reference)
+                     for route, rows in routes.items()}
+    return out
+
+
+@pytest.mark.parametrize("route, name", list(_marked(("given", "given + own α"), {})))
+def test_the_risk_class_over_the_whole_suite(whole_suite, route, name):
+    # Over all 15 records the risk class agrees on ≥ 80 % of the items for both given routes: measured at DE
+    # 0.83-1.0 with the strength alone, 0.92-1.0 with its α too (wall6's 0.75 over 11 is 1.0 over 15), and at
+    # MCE_R 0.92-1.0 and 0.92-1.0 (bench_yielding_equipment.py --motions 15 --own-alpha). With the building's α
+    # the sliding targets hold over the 15 too (gm 0.95-1.21, σ ln ≤ 0.38 at DE and MCE_R); with the strength
+    # alone σ ln is 0.45 on rcf5 at DE and 0.48 on wall6 at MCE_R.
+    n = whole_suite[name][route]
+    assert n["class_agree"] >= 0.8, (name, route, n)
+    if route == "given + own α":
+        assert 0.8 <= n["gm"] <= 1.25 and n["sigma_ln"] <= 0.45, (name, route, n)
