@@ -186,20 +186,6 @@ def site_suite(site: SiteSheet, level: HazardLevel, modes: BuildingModes | None,
     return SiteSuite(suite, design, periods)
 
 
-def through_building(building, histories: list[Record], floors, progress=None) -> tuple[dict[int, list[Record]],
-                                                                                      list[bool]]:
-    """Each history (a ground motion's) through the building (its elastic modes or its yielding stick,
-    :func:`building_model_of`): ``{floor: [history per ground history]}``, and for each ground history whether
-    the yielding stick's storey drift passed :attr:`~assess.building.yielding.YieldingBuilding.drift_limit`
-    under it (what the model is trusted to; never for the elastic modes); ``progress(done, total)`` after each
-    history through a yielding stick."""
-    wanted = sorted(int(f) for f in floors)
-    if not isinstance(building, YieldingBuilding):
-        return floor_records(building, histories, floors=wanted), [False] * len(histories)
-    records, sticks = yielding_histories(building, histories, wanted, progress)
-    return records, [bool(building.beyond_drift_limit(stick).any()) for stick in sticks]
-
-
 def floors_csv(building, ground: list[Record], floors, level_label: str) -> pd.DataFrame:
     """``floors.csv`` of a level: the modes used and PFA, PFA/PGA per floor over the ground suite; a yielding
     building has a row for every floor, with what each storey did

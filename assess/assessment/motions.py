@@ -22,7 +22,7 @@ import numpy as np
 import pandas as pd
 
 from assess.assessment import floors as site_and_building
-from assess.building.yielding import pass_progress
+from assess.building.yielding import pass_progress, through_building
 from assess.calibration.apply import scaled_motions
 from assess.errors import InputError, Problem
 from assess.fragility.governing import PULSE, RECORD, SYNTHETIC
@@ -280,8 +280,7 @@ def _through_building(motions: LevelMotions, histories: dict, kinds: dict, pairs
     # every ground history (and each pair's second) through the building in one pass, side by side
     widths = [record for key in grounds for record, _ in histories[key]]
     depths = [pairs[key][1] for key in grounds if key in pairs]
-    through, beyond = site_and_building.through_building(modes, widths + depths, floors,
-                                                         progress=pass_progress(progress))
+    through, beyond = through_building(modes, widths + depths, floors, progress=pass_progress(progress))
     counts = [len(histories[key]) for key in grounds]
     first = dict(zip(grounds, np.cumsum([0] + counts[:-1]).tolist()))  # where each ground's histories start
     depth_of = {key: len(widths) + j for j, key in enumerate(key for key in grounds if key in pairs)}

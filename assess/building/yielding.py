@@ -337,14 +337,23 @@ def pass_progress(progress: Callable[[str], None], lead: str = "") -> Callable[[
     return report
 
 
-def building_floor_records(building, ground_motions: Sequence[Record], floors: Optional[Sequence[int]] = None,
-                           progress: Optional[Callable[[int, int], None]] = None) -> dict[int, list[Record]]:
+def through_building(building, ground_motions: Sequence[Record], floors: Optional[Sequence[int]] = None,
+                     progress: Optional[Callable[[int, int], None]] = None) -> tuple[dict[int, list[Record]], list[bool]]:
     """The floors' histories under each ground motion, through the building as it is modelled: its elastic
     modes (:class:`~assess.building.modes.BuildingModes`) or its yielding stick (:class:`YieldingBuilding`,
-    ``progress`` as :func:`yielding_histories` takes it)."""
+    ``progress`` as :func:`yielding_histories` takes it); with, for each ground motion, whether the stick's
+    storey drift passed :attr:`YieldingBuilding.drift_limit` under it (what the model is trusted to; never for
+    the elastic modes)."""
     if isinstance(building, YieldingBuilding):
-        return yielding_histories(building, ground_motions, floors, progress)[0]
-    return floor_records(building, ground_motions, floors=floors)
+        records, sticks = yielding_histories(building, ground_motions, floors, progress)
+        return records, [bool(building.beyond_drift_limit(stick).any()) for stick in sticks]
+    return floor_records(building, ground_motions, floors=floors), [False] * len(ground_motions)
+
+
+def building_floor_records(building, ground_motions: Sequence[Record], floors: Optional[Sequence[int]] = None,
+                           progress: Optional[Callable[[int, int], None]] = None) -> dict[int, list[Record]]:
+    """The floors' histories of :func:`through_building`, without the drift flags."""
+    return through_building(building, ground_motions, floors, progress)[0]
 
 
 def storey_table(building: YieldingBuilding, histories: Sequence[StickHistory], floors) -> pd.DataFrame:
