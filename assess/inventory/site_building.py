@@ -362,8 +362,8 @@ def read_site(table, folder: Path, report) -> SiteSheet | None:
                   f"without {missing}_g.", f"add a row {missing}_g (both come from the site's hazard lookup).")
     elif design and not CORNER_PERIOD_RANGE_S[0] <= out["sd1"] / out["sds"] <= CORNER_PERIOD_RANGE_S[1]:
         at("sd1", f"sd1_g {out['sd1']:g} over sds_g {out['sds']:g} puts the design spectrum's corner T_s = "
-           f"S_D1/S_DS at {out['sd1'] / out['sds']:.3g} s, outside the {CORNER_PERIOD_RANGE_S[0]:g} to "
-           f"{CORNER_PERIOD_RANGE_S[1]:g} s any mapped site has (about 0.15 to 2 s).",
+           f"S_D1/S_DS at {out['sd1'] / out['sds']:.3g} s, outside {CORNER_PERIOD_RANGE_S[0]:g} to "
+           f"{CORNER_PERIOD_RANGE_S[1]:g} s (a mapped site's T_s is about 0.15 to 2 s).",
            "check both values: each in g, the design (not the mapped MCE_R) values, from the same hazard lookup.")
     elif mapped and (len(mapped) < 2 or "site_class" not in out):
         missing = sorted({"ss", "s1", "site_class"} - set(mapped) - set(out))
