@@ -33,7 +33,8 @@ def build_cases(equipment: pd.DataFrame, motions, workbook_name: str, progress: 
     (``motions``: :class:`assess.assessment.motions.LevelMotions`)."""
     freestanding = equipment[~equipment["anchored"]]
     pairs = motions_by_item(freestanding, motions.table, motions.level_label, workbook_name)
-    progress(f"{len(freestanding)} freestanding items, {len(motions.table)} motions at level "
+    items = f"{len(freestanding)} freestanding item{'' if len(freestanding) == 1 else 's'}"
+    progress(f"{items}, {len(motions.table)} motions at level "
              f"{motions.level_label}: {len(pairs) * len(DIRECTIONS)} item x motion x direction cases")
     return Cases(freestanding, item_motion_direction_cases(freestanding, pairs))
 

@@ -58,7 +58,9 @@ def lowered_contents(cases: pd.DataFrame, motions, runner, progress: Progress, c
     contents would be moved low, with their centre of mass lowered
     (:func:`assess.assessment.cases.with_centre_of_mass_at`), simulated under the same histories as the
     level (:func:`run_level`), through the same runner."""
-    progress(f"what if: {cases['id'].nunique()} items that rock or overturn, with their heavy contents low")
+    count = cases["id"].nunique()
+    progress(f"what if: {count} {'item that rocks or overturns' if count == 1 else 'items that rock or overturn'}, "
+             "with their heavy contents low")
     return run_level(cases, motions, runner, progress, calibration)
 
 
