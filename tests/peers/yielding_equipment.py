@@ -70,7 +70,8 @@ def own_alpha(truth) -> float:
 
 
 #: (R, Ω_0) of ASCE 7-22 Table 12.2-1 for the systems (I_e 1), for R_μ.
-SYSTEM_R = {"steel moment frame": (8.0, 3.0), "concrete moment frame": (8.0, 3.0), "shear wall": (5.0, 2.5)}
+SYSTEM_R = {"steel moment frame": (8.0, 3.0), "concrete moment frame": (8.0, 3.0), "shear wall": (5.0, 2.5),
+            "braced frame": (6.0, 2.0)}
 
 
 def windowed(record):

@@ -1,0 +1,93 @@
+"""A sixth system: the yielding route on a steel braced frame against an OpenSees braced frame (issue 29).
+
+The truth is ``bf6`` (tests/peers/opensees_buildings.py, :data:`peers.opensees_buildings.BRACED`): a 6-storey
+steel special concentrically braced frame designed by ASCE 7-22's ELF procedure at S_DS 1.0 g, S_D1 0.6 g, its
+braces one section over two storeys, each storey as strong as its braces are stiff, and its braced bay bending as a
+truss (α 2.4 from a chevron bay's brace and column areas, where the tool takes 4 for braced frames). The harness
+and the items are the other buildings' (tests/peers/yielding_equipment.py): 11 of pyslammer's real records scaled
+to the design spectrum at T_1, six items on the mid-height floor and the roof, the product itself with only the
+floor histories differing. Measured (``benchmarks/bench_yielding_equipment.py --buildings bf6 --levels DE,MCE_R
+--overstrengths "" --own-alpha``), DE / MCE_R:
+
+============================  ===========  ===========  ===========
+route                         sliding gm   σ ln         risk class
+============================  ===========  ===========  ===========
+given strength (0.439 W)      1.13 / 1.00  0.35 / 0.23  0.75 / 0.75
+given strength and α 2.4      1.01 / 0.97  0.23 / 0.17  1.0 / 0.92
+design data (Ω 2)             0.92 / 0.83  0.41 / 0.28  1.0 / 0.58
+elastic modes                 1.40 / 1.33  0.39 / 0.36  0.75 / 0.92
+============================  ===========  ===========  ===========
+
+Over all 15 of the harness's records the strength alone still agrees on the risk class of 0.75 of the items at both
+levels (with α 1.0 and 0.92). Over the 11 the three items that differ are the same at both levels (the mid-height
+Kelvinator and ASP, the roof's rack): at DE the tool puts them at moderate where the truth has low, their chance
+of sliding past their room 2/11 against 1/11 or 0; at MCE_R at moderate where the truth has high, 4-5/11 against
+6/11. For a braced frame the stiffness ratio α, which the strength leaves open, decides
+the class, as it decides σ ln on the concrete frame (test_yielding_alpha.py). The truth yields little (storey
+ductility up to 2.1 at DE, 3.1 at MCE_R; peak drift 0.8 % and 1.2 %), so the elastic route is nearer here than
+on the moment frames. Neither model has the braces' buckling (the truth's springs are ``Steel01``, the tool's
+bilinear). An exploratory truth with pinched loops in their place (OpenSees ``Hysteretic``, pinch 0.7/0.3, β 0.3;
+not in the repository) gave, DE / MCE_R: gm 1.10 / 0.95 with the strength, 0.97 / 0.93 with α 2.4, and a risk
+class with α of 0.92 / 0.75: the bilinear springs the tool gives braced frames hold for sliding there too, less
+so for the class.
+
+Skipped, with the reason, where openseespy or pyslammer is not importable.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from peers.opensees_buildings import BRACED
+from peers.opensees_shear import load_opensees
+
+OPS, WHY = load_opensees()
+pytestmark = pytest.mark.skipif(OPS is None, reason=str(WHY))
+
+
+@pytest.fixture(scope="module")
+def braced(tmp_path_factory):
+    pytest.importorskip("pyslammer")
+    from peers.yielding_equipment import (assess, compare, given_strength, ground_suite, own_alpha, truth_result,
+                                          workbook)
+
+    truth = BRACED["bf6"]
+    suite = ground_suite(11, truth.period_s, 1.0)
+    folder = tmp_path_factory.mktemp("bf6")
+    reference = truth_result(truth, suite, "DE", folder)
+    routes = {"given": given_strength(truth), "design": [["response", "yielding"]],
+              "elastic": [["response", "elastic"]]}
+    routes["given + own α"] = routes["given"] + [["lateral_stiffness_ratio", own_alpha(truth)]]
+    return {route: compare(assess(workbook(folder, truth, suite, "DE", rows), "DE"), reference)
+            for route, rows in routes.items()}
+
+
+def test_the_truth_is_what_its_text_says():
+    """The braced bay's α and the design's C_s as the peer module works them out by hand."""
+    truth = BRACED["bf6"]
+    assert truth.column_alpha == pytest.approx(24 * np.sqrt(1.29e9 / 1.25e11), abs=0.05)
+    assert truth.design_cs == pytest.approx(min(1.0 / 6, 0.6 / (0.6 * 6)))
+    shares = truth.storey_shear_ratios() / truth.storey_shear_ratios()[0]
+    assert shares == pytest.approx([1, 0.956, 0.864, 0.723, 0.532, 0.292], abs=0.002)
+
+
+def test_with_the_given_strength_the_sliding_targets_hold(braced):
+    n = braced["given"]
+    assert n["n_sliding"] >= 100
+    assert 0.8 <= n["gm"] <= 1.25 and n["sigma_ln"] <= 0.45, n
+
+
+@pytest.mark.xfail(strict=True, reason="risk class 75 % (9 of 12 items) with the strength alone, over 11 and over "
+                                       "15 records; 100 % with the braced bay's α")
+def test_with_the_given_strength_the_risk_class_holds(braced):
+    assert braced["given"]["class_agree"] >= 0.8, braced["given"]
+
+
+def test_with_the_strength_and_the_braced_bays_alpha_every_target_but_the_per_case_overturn_holds(braced):
+    n = braced["given + own α"]
+    assert 0.8 <= n["gm"] <= 1.25 and n["sigma_ln"] <= 0.45 and n["class_agree"] >= 0.8, n
+
+
+def test_from_the_design_data_within_a_factor_of_one_and_a_half_and_nearer_than_the_elastic_route(braced):
+    gm, elastic = braced["design"]["gm"], braced["elastic"]["gm"]
+    assert 1 / 1.5 <= gm <= 1.5 and abs(np.log(gm)) < abs(np.log(elastic)), (gm, elastic)
