@@ -338,7 +338,8 @@ def pass_progress(progress: Callable[[str], None], lead: str = "") -> Callable[[
 
 
 def through_building(building, ground_motions: Sequence[Record], floors: Optional[Sequence[int]] = None,
-                     progress: Optional[Callable[[int, int], None]] = None) -> tuple[dict[int, list[Record]], list[bool]]:
+                     progress: Optional[Callable[[int, int], None]] = None
+                     ) -> tuple[dict[int, list[Record]], list[bool]]:
     """The floors' histories under each ground motion, through the building as it is modelled: its elastic
     modes (:class:`~assess.building.modes.BuildingModes`) or its yielding stick (:class:`YieldingBuilding`,
     ``progress`` as :func:`yielding_histories` takes it); with, for each ground motion, whether the stick's
