@@ -99,8 +99,8 @@ sys.path[:0] = [str(REPO / "tests")]
 
 from assess.building.floors import height_factor  # noqa: E402
 from peers.opensees_buildings import BRACED, BUILDINGS  # noqa: E402
-from peers.yielding_equipment import (LEVELS, SYSTEM_R, assess, compare, given_strength,  # noqa: E402
-                                      ground_suite, own_alpha, truth_result, workbook)
+from peers.yielding_equipment import (LEVELS, SYSTEM_R, assess, compare, given_routes,  # noqa: E402
+                                      given_strength, ground_suite, truth_result, workbook)
 
 
 def markdown(frame: pd.DataFrame) -> str:
@@ -170,9 +170,8 @@ def main(argv=None):
             suite = ground_suite(args.motions, truth.period_s, LEVELS[level])
             with tempfile.TemporaryDirectory() as tmp:
                 folder = Path(tmp)
-                routes = {"given": given_strength(truth)}
-                if args.own_alpha:
-                    routes["given + own α"] = routes["given"] + [["lateral_stiffness_ratio", own_alpha(truth)]]
+                given = given_routes(truth)
+                routes = given if args.own_alpha else {"given": given["given"]}
                 if args.truth_profile and hasattr(truth, "stiffness_profile"):
                     profile = ", ".join(f"{k:g}" for k in truth.stiffness_profile)
                     routes["given + truth's stiffness"] = routes["given"] + [["storey_stiffness", profile]]

@@ -316,7 +316,8 @@ class DesignStrength:
         One sentence: where the strength came from.
     overstrength_assumed : bool
         Whether ``overstrength`` is the system's :data:`OVERSTRENGTH_BY_SYSTEM`, taken because neither it nor the
-        yield base shear was given (a judgement, which the run's note says).
+        yield base shear was given (the run's note says so, and where the value comes from:
+        :data:`OVERSTRENGTH_SOURCE_BY_SYSTEM`, else a judgement).
     """
 
     yield_base_shear_g: float

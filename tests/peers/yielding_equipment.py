@@ -69,6 +69,31 @@ def own_alpha(truth) -> float:
     return float(min(truth.column_alpha, LATERAL_STIFFNESS_RATIO_RANGE[1]))
 
 
+def given_routes(truth) -> dict:
+    """The building sheet's rows of the two routes of what the engineer knows: ``given`` (:func:`given_strength`)
+    and ``given + own α`` (that and :func:`own_alpha` in ``lateral_stiffness_ratio``)."""
+    strength = given_strength(truth)
+    return {"given": strength, "given + own α": strength + [["lateral_stiffness_ratio", own_alpha(truth)]]}
+
+
+#: Issue 29's targets with the strength given: sliding gm within these, σ of ln at most this; the share of items
+#: whose risk class agrees, and of the cases where either overturns that agree, at least these.
+TARGET_GM = (0.8, 1.25)
+TARGET_SIGMA_LN = 0.45
+TARGET_CLASS_AGREE = 0.8
+TARGET_OVERTURN_AGREE = 0.75
+
+
+def meets_sliding_targets(numbers: dict) -> bool:
+    """Whether a route's :func:`compare` numbers meet the sliding targets (gm and σ ln)."""
+    return TARGET_GM[0] <= numbers["gm"] <= TARGET_GM[1] and numbers["sigma_ln"] <= TARGET_SIGMA_LN
+
+
+def meets_class_target(numbers: dict) -> bool:
+    """Whether a route's :func:`compare` numbers meet the risk-class target."""
+    return numbers["class_agree"] >= TARGET_CLASS_AGREE
+
+
 #: (R, Ω_0) of ASCE 7-22 Table 12.2-1 for the systems (I_e 1), for R_μ.
 SYSTEM_R = {"steel moment frame": (8.0, 3.0), "concrete moment frame": (8.0, 3.0), "shear wall": (5.0, 2.5),
             "braced frame": (6.0, 2.0)}
@@ -159,6 +184,13 @@ def truth_result(truth, suite, level, folder: Path, floor_scale=1.0):
     histories times it (no model error, only the floors' amplitude off by a known factor)."""
     with opensees_floors(truth, suite, floor_scale):
         return assess(workbook(folder, truth, suite, level, [["response", "yielding"]]), level)
+
+
+def compared(truth, suite, level, folder: Path, routes: dict) -> dict:
+    """Each route's :func:`compare` numbers against the truth's, ``routes`` the building sheet's rows by route."""
+    reference = truth_result(truth, suite, level, folder)
+    return {route: compare(assess(workbook(folder, truth, suite, level, rows), level), reference)
+            for route, rows in routes.items()}
 
 
 def overturn_class(p_overturn):
