@@ -16,6 +16,7 @@ level's motions.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -29,13 +30,13 @@ from assess.building.yielding import (BASE_HINGE, STABILITY_COEFFICIENT_MAX, Yie
                                       yielding_building, yielding_histories)
 from assess.errors import InputError, Problem
 from assess.hazard.levels import HazardLevel
+from assess.hazard.openquake import SiteChoiceError, parse_site_choice
 from assess.hazard.records import Record
 from assess.inventory.site_building import MAX_YIELDING_STOREYS, BuildingSheet, SiteSheet
 from assess.quantity_text import floor_text, floors_text
 from assess.site.asce7 import DesignSpectrum, from_design_values, from_mapped_values
 from assess.site.suite import GroundSuite, ground_suite
 from assess.site.target import level_target
-from assess.site.uhs import parse_site_choice
 
 #: Shortest and longest period of an item's rocking 2π/p that the suite's period range follows [s].
 #: Below 0.05 s a target spectrum is PGA; beyond 4 s a block is so large that it does not rock.
@@ -134,6 +135,23 @@ def design_spectrum_of(site: SiteSheet, workbook_name: str) -> DesignSpectrum | 
     return None
 
 
+def site_level_target(site: SiteSheet, level: HazardLevel, workbook_name: str):
+    """The site sheet's target spectrum of ``level`` (:func:`assess.site.target.level_target`).
+
+    Raises :class:`~assess.errors.InputError`; where ``oq_site`` names no site of the ``uhs`` file, at the
+    site sheet's ``oq_site`` cell as well as the file.
+    """
+    try:
+        return level_target(level, design=design_spectrum_of(site, workbook_name), uhs_path=site.uhs_path or None,
+                            oq_site=parse_site_choice(site.oq_site) if site.oq_site else None,
+                            workbook=workbook_name, sheet=site.sheet)
+    except SiteChoiceError as error:
+        file = Path(error.problems[0].file).name
+        raise InputError([Problem(workbook_name, f"oq_site names no site of {file}: {error.problems[0].message}",
+                                  error.problems[0].fix, sheet=site.sheet,
+                                  row=site.rows.get("oq_site", site.rows.get("uhs")), column="value")]) from None
+
+
 def periods_that_matter_s(modes: BuildingModes | None) -> tuple[np.ndarray, float | None]:
     """The periods a level's ground suite is matched over, and the shortest 90 %-mass mode's [s].
 
@@ -164,9 +182,7 @@ def site_suite(site: SiteSheet, level: HazardLevel, modes: BuildingModes | None,
     the sheet can give, or the suite cannot be made from the records folder.
     """
     design = design_spectrum_of(site, workbook_name)
-    target = level_target(level, design=design, uhs_path=site.uhs_path or None,
-                          oq_site=parse_site_choice(site.oq_site) if site.oq_site else None,
-                          workbook=workbook_name, sheet=site.sheet)
+    target = site_level_target(site, level, workbook_name)
     periods, mass_period = periods_that_matter_s(modes)
     name = level.label or level.name
     try:

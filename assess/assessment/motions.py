@@ -36,8 +36,6 @@ from assess.hazard.records import MIN_DURATION_S, Record, pulse_record, read_rec
 from assess.hazard.synthesis import synthesize_motion
 from assess.inventory.settings import Settings
 from assess.quantity_text import floor_numbering_of, floor_text, floors_text
-from assess.site.target import level_target
-from assess.site.uhs import parse_site_choice
 
 Progress = Callable[[str], None]
 #: ``pulse_source`` of a motion with no pulse to identify (synthetic, or through the building): its Tp and vp are
@@ -167,10 +165,7 @@ def check_level(inventory, level_text: str) -> None:
     level, motions = _level_rows(inventory, level_text, workbook_name)
     if inventory.site is not None and not _has_ground_motions(motions):
         site = inventory.site
-        level_target(level, design=site_and_building.design_spectrum_of(site, workbook_name),
-                     uhs_path=site.uhs_path or None,
-                     oq_site=parse_site_choice(site.oq_site) if site.oq_site else None,
-                     workbook=workbook_name, sheet=site.sheet)
+        site_and_building.site_level_target(site, level, workbook_name)
 
 
 def _level_rows(inventory, level_text: str, workbook_name: str) -> tuple[HazardLevel, pd.DataFrame]:

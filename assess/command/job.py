@@ -32,6 +32,7 @@ from assess.command.cache import CachingRunner
 from assess.command.folders import check_output_folder
 from assess.errors import InputError, Problem
 from assess.hazard.levels import parse_level
+from assess.hazard.openquake import SITE_FORMS, parse_site_choice
 from assess.hazard.usgs import read_hazard_curve_file
 from assess.inventory import read_workbook
 from assess.mechanics.runner import LocalRunner
@@ -114,23 +115,15 @@ def level_out_dir(out: Path | None, workbook: Path, level_name: str, several: bo
 
 def oq_site(text: str | None):
     """``--oq-site`` as :func:`~assess.hazard.usgs.read_hazard_curve_file` takes it: None, a row
-    index, (lon, lat) or an id (an OpenQuake custom_site_id, an nshmp-haz site name)."""
-    if text is None:
-        return None
-    if text.strip().isdigit():
-        return int(text)
-    parts = [part for part in re.split(r"[,\s]+", text.strip()) if part]
-    if len(parts) == 2:
-        try:
-            return (float(parts[0]), float(parts[1]))
-        except ValueError:
-            pass
-    if re.match(r"^[-+]?(\d|\.\d)", text.strip()) and not re.fullmatch(r"[\w.:-]+", text.strip()):
+    index, (lon, lat) or an id (an OpenQuake custom_site_id, an nshmp-haz site name), read as the site
+    sheet's ``oq_site`` is (:func:`~assess.hazard.openquake.parse_site_choice`); what starts as a number but
+    is neither a row nor a pair is refused."""
+    site = parse_site_choice(text)
+    if isinstance(site, str) and re.match(r"^[-+(\[]?(\d|\.\d)", site) and not re.fullmatch(r"[\w.:-]+", site):
         raise InputError([Problem(file="--oq-site", message=f"'{text}' is neither a row number, nor lon,lat "
                                   "(two numbers in degrees), nor a site id.",
-                                  fix="give the site as lon,lat, e.g. --oq-site -122.5,38.1, or its row number "
-                                      "(0 = first) or custom_site_id.")])
-    return text
+                                  fix=f"give the site as {SITE_FORMS}, e.g. --oq-site -122.5,38.1.")])
+    return site
 
 
 def with_units(inventory, units: str | None):

@@ -557,39 +557,80 @@ def _site_list(sites) -> str:
     return listed + (f"; ... and {more} more" if more > 0 else "")
 
 
+class SiteChoiceError(InputError):
+    """The site asked for (``--oq-site``, the site sheet's ``oq_site``) is not one of the file's: raised as an
+    :class:`~assess.errors.InputError` naming the file, so that a caller that knows where the choice was written
+    can name that cell too (:func:`assess.site.target.level_target`)."""
+
+
+#: How a site is written: a row number, ``lon,lat`` (also ``lon lat``, ``(lon, lat)``, ``[lon, lat]``) or an id.
+SITE_FORMS = "lon,lat in degrees (e.g. -122.25,37.87), its row number (0 = first) or its custom_site_id"
+
+
+def parse_site_choice(text):
+    """A site choice as the user writes it (``--oq-site``, the site sheet's ``oq_site``): ``lon,lat`` ->
+    (lon, lat), also with a space between, in parentheses or brackets; a whole number -> row index; anything else
+    -> an id (OpenQuake's ``custom_site_id``, an nshmp-haz site name). None stays None.
+
+    >>> parse_site_choice("-123.23738, 49.27479"), parse_site_choice("(-122.25, 37.87)"), parse_site_choice(2)
+    ((-123.23738, 49.27479), (-122.25, 37.87), 2)
+    >>> parse_site_choice("-122.3 37.9"), parse_site_choice("0"), parse_site_choice("HOSP-1")
+    ((-122.3, 37.9), 0, 'HOSP-1')
+    """
+    if text is None:
+        return None
+    if isinstance(text, (int, np.integer)) and not isinstance(text, bool):
+        return int(text)
+    if isinstance(text, float) and text.is_integer():
+        return int(text)
+    value = str(text).strip()
+    if re.fullmatch(r"\d+", value):
+        return int(value)
+    parts = [part for part in re.split(r"[,\s]+", value.strip("()[] ")) if part]
+    if len(parts) == 2:
+        try:
+            return (float(parts[0]), float(parts[1]))
+        except ValueError:
+            pass
+    return value
+
+
+def _fail_choice(path, message, fix) -> SiteChoiceError:
+    return SiteChoiceError([Problem(file=str(path), message=message, fix=fix)])
+
+
 def _choose_site(path, sites, site) -> int:
     count = len(sites)
     if site is None:
         if count == 1:
             return 0
-        raise _fail(path, f"the file holds {count} sites: {_site_list(sites)}.",
-                    "choose the facility's site (assess: --oq-site) by its coordinates lon,lat, its "
-                    "row index (0 = first) or its custom_site_id.")
+        raise _fail_choice(path, f"the file holds {count} sites: {_site_list(sites)}.",
+                           f"choose the facility's site (--oq-site, or oq_site in the site sheet) as {SITE_FORMS}.")
     if isinstance(site, (int, np.integer)) and not isinstance(site, bool):
         if 0 <= site < count:
             return int(site)
-        raise _fail(path, f"site index {site} is not in the file, which holds {count} site(s) "
-                    f"(index 0 to {count - 1}): {_site_list(sites)}.",
-                    "give an index from 0 to %d." % (count - 1))
+        raise _fail_choice(path, f"site index {site} is not in the file, which holds {count} site(s) "
+                           f"(index 0 to {count - 1}): {_site_list(sites)}.",
+                           "give an index from 0 to %d." % (count - 1))
     if isinstance(site, str):
         matches = [s.index for s in sites if s.custom_site_id == site.strip()]
         if matches:
             return matches[0]
-        raise _fail(path, f"no site has custom_site_id '{site}'; the sites are: "
-                    f"{_site_list(sites)}.", "give one of these ids, an index or (lon, lat).")
+        raise _fail_choice(path, f"no site has custom_site_id '{site}'; the sites are: "
+                           f"{_site_list(sites)}.", f"give one of these sites as {SITE_FORMS}.")
     try:
         lon, lat = (float(v) for v in site)
     except (TypeError, ValueError):
-        raise _fail(path, f"the site {site!r} is neither an index, a custom_site_id nor "
-                    "(lon, lat).", "give the site as (lon, lat) in degrees.") from None
+        raise _fail_choice(path, f"the site {site!r} is neither an index, a custom_site_id nor "
+                           "lon,lat.", f"give the site as {SITE_FORMS}.") from None
     distance = [max(abs(s.lon - lon), abs(s.lat - lat)) for s in sites]
     best = int(np.argmin(distance))
     if distance[best] <= SITE_TOL_DEG:
         return best
     nearest = sorted(range(count), key=distance.__getitem__)[:3]
-    raise _fail(path, f"no site at lon {lon:g}, lat {lat:g} (within {SITE_TOL_DEG:g} deg); the "
-                f"nearest are {'; '.join(sites[i].label() for i in nearest)}.",
-                "give the coordinates of a site of the file, as written there.")
+    raise _fail_choice(path, f"no site at lon {lon:g}, lat {lat:g} (within {SITE_TOL_DEG:g} deg); the "
+                       f"nearest are {'; '.join(sites[i].label() for i in nearest)}.",
+                       "give the coordinates of a site of the file, as written there.")
 
 
 # --------------------------------------------------------------------------- the level

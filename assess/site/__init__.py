@@ -9,7 +9,7 @@ The sequence a job follows with a ``site`` sheet (read and checked by
 :mod:`assess.inventory.site_building`; :mod:`assess.assessment.floors` runs it)::
 
     design = asce7.from_design_values(sds_g, sd1_g, tl_s, code)   # or from_mapped_values(...), or None
-    target = target.level_target(level, design=design, uhs_path=..., oq_site=uhs.parse_site_choice(...))
+    target = target.level_target(level, design=design, uhs_path=..., oq_site=parse_site_choice(...))
     ground = suite.ground_suite(target, periods_that_matter_s, level=level.name,
                                 records_folder=folder_or_None, suite_size=11, base_seed=seed)
     ground.motions / ground.records          # the level's ground motions (Record, scaled or matched)

@@ -376,27 +376,3 @@ def _from_curves(path, level, site) -> UniformHazardSpectrum:
     _check_spectrum(path, periods, sa, chosen.line)
     return UniformHazardSpectrum(str(path), "curves", np.array(periods)[order], np.array(sa)[order], poe,
                                  investigation_time, chosen, statistic, tuple(str(f) for f in files))
-
-
-def parse_site_choice(text):
-    """``oq_site`` as the sheet gives it: ``lon,lat`` -> (lon, lat); an integer -> row index; else an id.
-
-    >>> parse_site_choice("-123.23738, 49.27479"), parse_site_choice(2), parse_site_choice("HOSP-1")
-    ((-123.23738, 49.27479), 2, 'HOSP-1')
-    """
-    if text is None:
-        return None
-    if isinstance(text, (int, np.integer)) and not isinstance(text, bool):
-        return int(text)
-    if isinstance(text, float) and text.is_integer():
-        return int(text)
-    value = str(text).strip()
-    parts = [p.strip() for p in value.split(",")]
-    if len(parts) == 2:
-        try:
-            return (float(parts[0]), float(parts[1]))
-        except ValueError:
-            pass
-    if re.fullmatch(r"\d+", value):
-        return int(value)
-    return value

@@ -7,7 +7,8 @@ import pytest
 
 from assess.errors import InputError
 from assess.hazard.levels import parse_level
-from assess.site.uhs import parse_site_choice, read_target_spectrum
+from assess.hazard.openquake import parse_site_choice
+from assess.site.uhs import read_target_spectrum
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "openquake"
 TEN_IN_50 = parse_level("10in50")  # 1 - exp(-1/474.56) = 0.002105 in 1 yr: case_18's poe
@@ -94,6 +95,36 @@ def test_site_choice_text():
     assert parse_site_choice("0") == 0
     assert parse_site_choice(" -122.3 , 37.9 ") == (-122.3, 37.9)
     assert parse_site_choice(None) is None
+
+
+@pytest.mark.parametrize("text", ["-122.25,37.87", "(-122.25, 37.87)", "[-122.25, 37.87]", "-122.25 37.87", " 0 ",
+                                  "HOSP"])
+def test_a_site_written_any_of_the_ways_the_fix_names_is_the_same_site(text):
+    """The site sheet's ``oq_site`` and ``--oq-site`` read the same (one parser): a new user who followed the old
+    fix text, "(lon, lat)", was told no site had that id. Each form picks the file's first site, HOSP."""
+    from assess.command.job import oq_site
+
+    path = DATA / "constructed-hazard_uhs-mean_1.csv"
+    for site in (parse_site_choice(text), oq_site(text)):
+        uhs = read_target_spectrum(path, parse_level("10in50"), site=site)
+        assert uhs.site.custom_site_id == "HOSP", text
+
+
+def test_a_wrong_oq_site_in_the_site_sheet_names_its_cell_and_the_files_sites(tmp_path):
+    from assess.assessment.motions import check_level
+    from assess.inventory import read_workbook
+    from tests.assessment.test_floor_motions import BUILDING, EQUIPMENT
+    from workbooks import write_workbook
+
+    site = [["key", "value"], ["uhs", "oq/uhs.csv"], ["oq_site", "HOSPX"], ["suite_size", 3]]
+    path = write_workbook(tmp_path / "w.xlsx", {"equipment": [dict(item) for item in EQUIPMENT], "site": site,
+                                                "building": BUILDING},
+                          files={"oq/uhs.csv": (DATA / "constructed-hazard_uhs-mean_1.csv").read_text()})
+    with pytest.raises(InputError) as raised:
+        check_level(read_workbook(path), "10in50")
+    text = str(raised.value)
+    assert "w.xlsx, sheet 'site', row 3, column 'value'" in text and "oq_site names no site of uhs.csv" in text
+    assert "'HOSP'" in text and "'LAB'" in text and "lon,lat in degrees" in text
 
 
 def test_level_names_its_target():
