@@ -60,7 +60,7 @@ def lowered_contents(cases: pd.DataFrame, motions, runner, progress: Progress, c
     level (:func:`run_level`), through the same runner."""
     count = cases["id"].nunique()
     progress(f"what if: {count} {'item that rocks or overturns' if count == 1 else 'items that rock or overturn'}, "
-             "with their heavy contents low")
+             f"with {'its' if count == 1 else 'their'} heavy contents low")
     return run_level(cases, motions, runner, progress, calibration)
 
 
