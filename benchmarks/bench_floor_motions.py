@@ -50,7 +50,8 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tests"))
 
-from assess.building import building_modes, floor_accelerations, height_factor  # noqa: E402
+from assess.anchorage.equations import height_factor  # noqa: E402
+from assess.building import building_modes, floor_accelerations  # noqa: E402
 from assess.building.design import design_storey_stiffness  # noqa: E402
 from assess.hazard.records import read_record  # noqa: E402
 from assess.mechanics.block import Block  # noqa: E402

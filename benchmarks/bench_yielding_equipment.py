@@ -97,7 +97,7 @@ import pandas as pd
 REPO = Path(__file__).resolve().parents[1]
 sys.path[:0] = [str(REPO / "tests")]
 
-from assess.building.floors import height_factor  # noqa: E402
+from assess.anchorage.equations import height_factor  # noqa: E402
 from peers.opensees_buildings import BRACED, BUILDINGS  # noqa: E402
 from peers.yielding_equipment import (LEVELS, SYSTEM_R, assess, compare, given_routes,  # noqa: E402
                                       given_strength, ground_suite, truth_result, workbook)

@@ -22,7 +22,8 @@ import numpy as np
 import pandas as pd
 
 from assess.building import BuildingModes, building_modes
-from assess.building.design import OVERSTRENGTH_SOURCE_BY_SYSTEM, design_storey_stiffness
+from assess.anchorage.equations import ductility_reduction, height_factor
+from assess.building.design import OVERSTRENGTH_SOURCE_BY_SYSTEM, SYSTEM_FACTORS, design_storey_stiffness
 from assess.building.floors import floors_table
 from assess.building.period import approximate_period
 from assess.building.response import floor_records
@@ -209,10 +210,34 @@ def floors_csv(building, ground: list[Record], floors, level_label: str) -> pd.D
     if isinstance(building, YieldingBuilding):
         wanted = list(range(building.storeys + 1))
         records, histories = yielding_histories(building, ground, floors=wanted)
-        table = floors_table(building.modes, records, level=level_label)
+        table = with_code_check(floors_table(building.modes, records, level=level_label), building)
         return pd.concat([table, storey_table(building, histories, wanted)], axis=1)
     wanted = sorted({0, *(int(f) for f in floors)})
-    return floors_table(building, floor_records(building, ground, floors=wanted), level=level_label)
+    return with_code_check(floors_table(building, floor_records(building, ground, floors=wanted), level=level_label),
+                           building)
+
+
+def ductility_reduction_of(building: YieldingBuilding) -> float:
+    """R_μ of ASCE 7-22 eq. 13.3-6 for a yielding building: its system's R and Ω_0 (Table 12.2-1,
+    :data:`~assess.building.design.SYSTEM_FACTORS`) and its risk category's I_e
+    (:func:`assess.anchorage.equations.ductility_reduction`) [-]."""
+    r_factor, omega0, _ = SYSTEM_FACTORS[building.system]
+    return ductility_reduction(r_factor, building.importance, omega0)
+
+
+def with_code_check(table: pd.DataFrame, building) -> pd.DataFrame:
+    """``floors.csv``'s check beside each floor's PFA/PGA (not a target): ASCE 7-22's H_f at the floor for the
+    building's T_1 (eq. 13.3-4, ``hf_asce7_22``); for a building that yields, also its R_μ (eq. 13.3-6,
+    ``rmu_asce7_22``) and H_f/R_μ (``hf_over_rmu_asce7_22``, empty at the ground), the floor acceleration over the
+    ground's that §13.3.1 takes for a building yielding as its design assumes. ``building`` as
+    :func:`building_model_of` gives it."""
+    modes = building.modes if isinstance(building, YieldingBuilding) else building
+    table = table.assign(hf_asce7_22=height_factor(table["z_over_h"].to_numpy(dtype=float), modes.periods_s[0]))
+    if isinstance(building, YieldingBuilding):
+        r_mu = ductility_reduction_of(building)
+        table = table.assign(rmu_asce7_22=r_mu, hf_over_rmu_asce7_22=np.where(
+            table["floor"].to_numpy() > 0, table["hf_asce7_22"].to_numpy() / r_mu, np.nan))
+    return table
 
 
 def site_note(site: SiteSuite, sheet: SiteSheet) -> str:

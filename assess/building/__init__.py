@@ -16,10 +16,10 @@ the floors' histories from a stick of yielding storey springs instead
 :mod:`assess.building.hysteresis` and :mod:`assess.building.design`). A
 structural engineer's floor motions, where given in the ``hazard`` sheet, govern.
 """
-from .floors import floors_table, height_factor
+from .floors import floors_table
 from .modes import ALPHA_BY_SYSTEM, BuildingModes, building_modes
 from .period import SYSTEMS, approximate_period
 from .response import floor_accelerations, floor_records
 
 __all__ = ["ALPHA_BY_SYSTEM", "BuildingModes", "SYSTEMS", "approximate_period", "building_modes",
-           "floor_accelerations", "floor_records", "floors_table", "height_factor"]
+           "floor_accelerations", "floor_records", "floors_table"]

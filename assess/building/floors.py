@@ -1,17 +1,8 @@
 """The floors table: the modes used and each floor's peak acceleration over the suite (``floors.csv``).
 
-Beside the measured PFA/PGA each row shows the code's height factor H_f of ASCE 7-22
-§13.3.1.1 [1]_ for the building's T_1, as a sanity check (not a target: H_f is a
-design envelope fitted to instrumented buildings' records, the floors here are
-an elastic model's answer to this suite):
-
-.. math::  H_f = 1 + a_1\\frac{z}{h} + a_2\\left(\\frac{z}{h}\\right)^{10},\\qquad
-           a_1 = \\frac{1}{T_a} \\le 2.5,\\qquad a_2 = 1 - \\left(\\frac{0.4}{T_a}\\right)^2 \\ge 0
-
-References
-----------
-.. [1] ASCE/SEI 7-22 (2022). Minimum Design Loads and Associated Criteria for
-   Buildings and Other Structures. §13.3.1.1, Eqs. 13.3-4 and 13.3-5.
+Its check columns beside PFA/PGA, the code's floor acceleration (ASCE 7-22 §13.3.1's H_f, and H_f/R_μ
+for a building that yields), are added where the code's provisions live
+(:func:`assess.assessment.floors.with_code_check`).
 """
 from __future__ import annotations
 
@@ -26,33 +17,6 @@ from .modes import BuildingModes
 
 #: Modes whose period and Γφ the table shows in columns of their own (all are used).
 MODES_SHOWN = 3
-
-
-def height_factor(height_ratio, period_s=None):
-    """ASCE 7-22 floor amplification H_f (Eq. 13.3-4; Eq. 13.3-5 without a period) [-].
-
-    Parameters
-    ----------
-    height_ratio : float or array-like
-        z/h, the floor's height over the roof's (0 at the ground, 1 at the roof).
-    period_s : float, optional
-        T_a [s], the building's fundamental period (§13.3.1.1 takes the approximate
-        period of §12.8.2.1); without it H_f = 1 + 2.5 z/h (Eq. 13.3-5).
-
-    Examples
-    --------
-    T_a = 1.0 s at the roof: a1 = 1, a2 = 1 - 0.16 = 0.84, H_f = 2.84; T_a = 0.35 s:
-    a1 = 2.5 (2.857 capped), a2 = 0 (negative), H_f = 3.5:
-
-    >>> float(height_factor(1.0, 1.0)), float(height_factor(1.0, 0.35)), float(height_factor(0.5))
-    (2.84, 3.5, 2.25)
-    """
-    ratio = np.asarray(height_ratio, dtype=float)
-    if period_s is None:
-        return 1.0 + 2.5 * ratio
-    a1 = min(1.0 / float(period_s), 2.5)
-    a2 = max(1.0 - (0.4 / float(period_s)) ** 2, 0.0)
-    return 1.0 + a1 * ratio + a2 * ratio ** 10
 
 
 def floors_table(modes: BuildingModes, floors: Mapping[int, Sequence[Record]], level: str = "") -> pd.DataFrame:
@@ -77,8 +41,7 @@ def floors_table(modes: BuildingModes, floors: Mapping[int, Sequence[Record]], l
         stiffness over the first storey's, empty at the ground); the floor's ``gamma_phi_1`` .. ``gamma_phi_3``
         (Γ_j φ_j at the floor); over the suite, ``motions``, ``pfa_median_g``, ``pfa_min_g``,
         ``pfa_max_g``, ``pfa_over_pga_median``, ``pfa_over_pga_min``, ``pfa_over_pga_max``
-        (each motion's PFA over its own PGA), ``pfa_over_pga_mean``; and ``hf_asce7_22``,
-        the code's H_f at the floor for T_1.
+        (each motion's PFA over its own PGA) and ``pfa_over_pga_mean``.
     """
     heights = modes.floor_heights_m
     if 0 not in floors or any(not 0 <= int(k) < heights.size for k in floors):
@@ -100,7 +63,6 @@ def floors_table(modes: BuildingModes, floors: Mapping[int, Sequence[Record]], l
         row.update(motions=pfa.size, pfa_median_g=float(np.median(pfa)), pfa_min_g=float(pfa.min()),
                    pfa_max_g=float(pfa.max()), pfa_over_pga_median=float(np.median(ratio)),
                    pfa_over_pga_min=float(ratio.min()), pfa_over_pga_max=float(ratio.max()),
-                   pfa_over_pga_mean=float(ratio.mean()),
-                   hf_asce7_22=float(height_factor(heights[k] / heights[-1], modes.periods_s[0])))
+                   pfa_over_pga_mean=float(ratio.mean()))
         rows.append(row)
     return pd.DataFrame(rows)

@@ -59,7 +59,7 @@ import pandas as pd
 
 from assess.hazard.records import Record
 
-from .design import DesignStrength, design_strength
+from .design import IMPORTANCE_BY_RISK_CATEGORY, DesignStrength, design_strength
 from .modes import BuildingModes
 from .nonlinear import FLEXURE_BY_SYSTEM, STRENGTH_BY_SYSTEM, YieldingStick, elastic_periods, yielding_response, yielding_stick
 from .response import floor_records
@@ -108,6 +108,9 @@ class YieldingBuilding:
         Whether the stick carries the gravity loads' P-Delta stiffness.
     key : str
         A digest of the stick (what its histories depend on), for :func:`yielding_histories`'s memory.
+    importance : float
+        I_e of the building's risk category (ASCE 7-22 Table 1.5-2), with the system's R and Ω_0 what the code's
+        R_μ of its floors is made of (:func:`assess.assessment.floors.with_code_check`) [-].
     """
 
     modes: BuildingModes
@@ -117,6 +120,7 @@ class YieldingBuilding:
     drift_limit: float
     p_delta: bool
     key: str
+    importance: float = 1.0
 
     @property
     def yielding_model(self) -> str:
@@ -218,6 +222,7 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
     arguments = dict(system=system, period_s=period_s, alpha=modes.alpha, storey_stiffness=modes.storey_stiffness,
                      damping=damping, p_delta=p_delta)
     stick = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, **arguments)
+    importance = IMPORTANCE_BY_RISK_CATEGORY[risk_category]
     if isinstance(stick, HingedWall):  # only the base yields: the storeys above have no yield shear
         strength = replace(strength, storey_yield_ratio=np.concatenate([strength.storey_yield_ratio[:1],
                                                                         np.full(modes.storeys - 1, np.nan)]),
@@ -225,7 +230,7 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
                                   f"carrying the moment of {code} §12.8.3's lateral forces at that base shear, and stays "
                                   "elastic above")
         return YieldingBuilding(modes, stick, strength, system, DRIFT_LIMIT_BY_SYSTEM[system], bool(p_delta),
-                                _stick_key(stick))
+                                _stick_key(stick), importance)
     code = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, strength_profile="code",
                           **arguments)
     profile = STRENGTH_BY_SYSTEM[system]
@@ -235,7 +240,7 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
                               + ("its stiffness makes it at the first storey's yield drift" if profile == "stiffness"
                                  else "a capacity-designed wall's linear moment envelope makes it"))
     return YieldingBuilding(modes, stick, strength, system, DRIFT_LIMIT_BY_SYSTEM[system], bool(p_delta),
-                            _stick_key(stick))
+                            _stick_key(stick), importance)
 
 
 @dataclass(frozen=True)

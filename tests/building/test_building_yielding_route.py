@@ -399,3 +399,36 @@ def test_items_under_motions_beyond_the_trusted_drift_are_flagged(weak):
     assert "building_beyond_drift" not in summary.loc["G-1", "flags"]
     html = render_html(weak).replace("&#39;", "'")
     assert "Floor motions from the building's model beyond the drift it is trusted to" in html
+
+
+@pytest.mark.parametrize("system, risk_category, expected", [
+    # ASCE 7-22 Table 12.2-1's R and Ω0, Table 1.5-2's I_e, eq. 13.3-6 by hand: sqrt(1.1 R / (I_e Ω0)) >= 1.3
+    ("steel moment frame", "II", (1.1 * 8 / (1.0 * 3)) ** 0.5),  # C.1: R 8, Ω0 3 -> 1.713
+    ("eccentrically braced frame", "IV", (1.1 * 8 / (1.5 * 2)) ** 0.5),  # B.1: R 8, Ω0 2 -> 1.713
+    ("braced frame", "III", (1.1 * 6 / (1.25 * 2)) ** 0.5),  # B.2: R 6, Ω0 2 -> 1.625
+    ("shear wall", "II", (1.1 * 5 / (1.0 * 2.5)) ** 0.5),  # A.1: R 5, Ω0 2.5 -> 1.483
+    ("other", "IV", 1.3),  # H: R 3, Ω0 3 -> 0.856, the floor 1.3
+])
+def test_the_buildings_ductility_reduction_is_the_codes_for_its_system_and_risk_category(system, risk_category,
+                                                                                        expected):
+    from assess.assessment.floors import ductility_reduction_of
+    from assess.building.yielding import yielding_building
+
+    modes = building_modes(4, 4.0, system=system, period_s=0.5)
+    building = yielding_building(modes, system, sds_g=1.0, sd1_g=0.6, risk_category=risk_category)
+    assert ductility_reduction_of(building) == pytest.approx(expected, abs=1e-12)
+
+
+def test_the_building_page_sets_pfa_over_pga_beside_hf_and_hf_over_rmu(weak):
+    """floors.csv's H_f/R_μ is H_f over the building's R_μ ('other' in Risk Category IV: the floor, 1.3), empty at
+    the ground; the report's building page prints both columns from it and names R_μ in its lead."""
+    from assess.report.building import building_context
+
+    floors = weak.floors.set_index("floor")
+    assert (floors["rmu_asce7_22"] == 1.3).all() and np.isnan(floors.loc[0, "hf_over_rmu_asce7_22"])
+    np.testing.assert_allclose(floors.loc[1:, "hf_over_rmu_asce7_22"], floors.loc[1:, "hf_asce7_22"] / 1.3)
+    section = building_context(weak)
+    expected = [f"{v:.2f}" for v in floors.loc[1:, "hf_over_rmu_asce7_22"]]
+    assert [row["hf_over_rmu"] for row in section["rows"]] == expected
+    assert "H_f/R_μ with R_μ 1.30 (eq. 13.3-6" in section["lead"]
+    assert "H<sub>f</sub>/R<sub>μ</sub>" in render_html(weak)

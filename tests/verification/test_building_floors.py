@@ -2,7 +2,9 @@
 import numpy as np
 import pytest
 
-from assess.building import building_modes, floor_records, floors_table, height_factor
+from assess.anchorage.equations import height_factor
+from assess.assessment.floors import with_code_check
+from assess.building import building_modes, floor_records, floors_table
 from assess.hazard.records import Record
 
 
@@ -24,7 +26,7 @@ def test_floors_table_rows_and_statistics():
     rng = np.random.default_rng(5)
     suite = [Record(rng.normal(size=1500) * s, 0.01, f"m{i}") for i, s in enumerate((0.1, 0.2, 0.3))]
     floors = floor_records(modes, suite)
-    table = floors_table(modes, floors, level="DE")
+    table = with_code_check(floors_table(modes, floors, level="DE"), modes)
     assert list(table["floor"]) == [0, 1, 2, 3]
     assert (table["level"] == "DE").all() and (table["motions"] == 3).all()
     np.testing.assert_allclose(table["height_m"], [0, 3.5, 7.0, 10.5])

@@ -113,7 +113,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from assess.building.floors import height_factor
+from assess.anchorage.equations import height_factor
 from peers.opensees_buildings import BUILDINGS
 from peers.opensees_shear import load_opensees
 from peers.yielding_equipment import TARGET_OVERTURN_AGREE, meets_class_target, meets_sliding_targets
