@@ -12,8 +12,10 @@ and where each comes from (:func:`anchorage_site` says it in ``AnchorageSite.bas
   :func:`assess.building.period.approximate_period`), as §13.3.1.1 asks ("the lowest approximate fundamental
   period"), from the building sheet's ``height`` and ``system``; without a building sheet H_f = 1 + 2.5 z/h
   (eq. 13.3-5);
-- R_μ: 1.3, eq. 13.3-6's least value (the workbook does not give the building's R, Ω0 and I_e): the largest
-  force the equation allows; R_μ = 1.0 at grade.
+- R_μ (ASCE 7-22 eq. 13.3-6): sqrt(1.1 R/(I_e Ω0)), not less than 1.3, from the building sheet's ``system``
+  (Table 12.2-1's R and Ω0, :data:`assess.building.design.SYSTEM_FACTORS`; ``other`` when not given, whose R 3
+  and Ω0 3 give the least value) and the Risk Category's I_e (Table 1.5-2); without a building sheet 1.3, the
+  largest force the equation allows; R_μ = 1.0 at grade.
 
 Per item: ``component_type`` (a row of Table 13.5-1 / 13.6-1, or an alias; empty: laboratory equipment,
 :data:`~assess.anchorage.coefficients.DEFAULT_COMPONENT_TYPE`), ``ip`` (1.0 or 1.5; empty: from the
@@ -27,9 +29,10 @@ import math
 from dataclasses import dataclass
 
 from assess.anchorage.coefficients import DEFAULT_COMPONENT_TYPE, canonical_edition, component_coefficients
+from assess.building.design import IMPORTANCE_BY_RISK_CATEGORY, SYSTEM_FACTORS
 from assess.building.period import approximate_period
 from assess.anchorage.design import AnchorageForces, design_force
-from assess.anchorage.equations import component_importance_factor
+from assess.anchorage.equations import component_importance_factor, ductility_reduction
 from assess.site.asce7 import from_mapped_values
 from assess.units import conversion_factor
 
@@ -57,7 +60,8 @@ class AnchorageSite:
     """What the design force takes from the site, the building and the settings, and where it came from.
 
     ``sds_g`` is NaN when nothing gives it; ``storeys`` is the roof's floor number (NaN: z/h = 1);
-    ``period_s`` T_a [s] for H_f (None: eq. 13.3-5). ``basis`` says where each came from, in words.
+    ``period_s`` T_a [s] for H_f (None: eq. 13.3-5); ``building_r``, ``building_omega0``, ``building_ie`` the
+    building's R, Ω0 and I_e for R_μ (None: R_μ 1.3). ``basis`` says where each came from, in words.
     """
 
     edition: str = DEFAULT_EDITION
@@ -65,6 +69,9 @@ class AnchorageSite:
     sds_g: float = math.nan
     storeys: float = math.nan
     period_s: float | None = None
+    building_r: float | None = None
+    building_omega0: float | None = None
+    building_ie: float = 1.0
     basis: str = ""
 
     def z_over_h(self, floor) -> float:
@@ -110,12 +117,14 @@ def anchorage_site(site=None, building=None, settings=None) -> AnchorageSite:
         sds_g, source = (given, "the settings' sds_g") if given > 0.0 else (math.nan, "")
     if source:
         notes.append(f"S_DS {sds_g:g} g from {source}")
-    period_s = None
+    period_s = building_r = building_omega0 = None
+    building_ie = IMPORTANCE_BY_RISK_CATEGORY[risk]
     if building is not None:
         storeys = float(building.storeys)
         period_s = float(approximate_period(building.height_m, building.system))
         notes.append(f"z/h = storeys from the ground floor to the item's / {building.storeys} storeys; T_a = {period_s:.3f} s (eq. 12.8-7, "
                      f"{building.system}, h_n {building.height_m:.1f} m)")
+        building_r, building_omega0, row = SYSTEM_FACTORS[building.system]
     else:
         roof = settings.roof_floor if settings is not None else 0.0
         storeys = roof if roof > 0.0 else math.nan
@@ -123,9 +132,14 @@ def anchorage_site(site=None, building=None, settings=None) -> AnchorageSite:
                      "roof_floor: the roof's force)")
         if edition == "ASCE 7-22":
             notes.append("H_f = 1 + 2.5 z/h (eq. 13.3-5: no building period)")
-    if edition == "ASCE 7-22":
-        notes.append("R_mu 1.3 (eq. 13.3-6, the building's R not given; 1.0 at grade)")
+    if edition == "ASCE 7-22" and building_r is not None:
+        r_mu = ductility_reduction(building_r, building_ie, building_omega0)
+        notes.append(f"R_mu {r_mu:.3f} (eq. 13.3-6: R {building_r:g} and Omega0 {building_omega0:g} of Table 12.2-1's "
+                     f"{row}, I_e {building_ie:g}; 1.0 at grade)")
+    elif edition == "ASCE 7-22":
+        notes.append("R_mu 1.3 (eq. 13.3-6, no building sheet: the building's R not known; 1.0 at grade)")
     return AnchorageSite(edition=edition, risk_category=risk, sds_g=sds_g, storeys=storeys, period_s=period_s,
+                         building_r=building_r, building_omega0=building_omega0, building_ie=building_ie,
                          basis="; ".join(notes))
 
 
@@ -141,8 +155,8 @@ def item_forces(item, consequence: str, site: AnchorageSite) -> AnchorageForces:
     ``mass_kg``, ``width_m``, ``depth_m``, ``cg_height_m`` and, where given, ``component_type``, ``ip``)."""
     return design_force(
         site.edition, _type_name(item), float(item.mass_kg) * STANDARD_GRAVITY_M_S2, site.sds_g,
-        site.z_over_h(item.floor), ip=getattr(item, "ip", None), period_s=site.period_s,
-        consequence=consequence, risk_category=site.risk_category, cg_height_m=float(item.cg_height_m),
+        site.z_over_h(item.floor), ip=getattr(item, "ip", None), period_s=site.period_s, building_r=site.building_r,
+        building_omega0=site.building_omega0, building_ie=site.building_ie, consequence=consequence, risk_category=site.risk_category, cg_height_m=float(item.cg_height_m),
         half_width_m=min(float(item.width_m), float(item.depth_m)) / 2.0)
 
 

@@ -7,7 +7,8 @@ and x 0.8 in metres, Table 12.8-2):
     T_a = 0.0724 · 16.0^0.8 = 0.0724 · 9.18959 = 0.665326 s
     a_1 = min(1/T_a, 2.5) = 1.503022;   a_2 = max(1 − (0.4/T_a)², 0) = 1 − 0.361452 = 0.638548
 
-R_μ = 1.3 above grade (the building's R is not given: eq. 13.3-6's least value) and 1.0 at grade. W_p = m·g,
+R_μ = sqrt(1.1 R/(I_e Ω0)) = sqrt(1.1 · 8/(1.5 · 3)) = 1.398412 above grade (eq. 13.3-6: Table 12.2-1's C.1,
+steel special moment frames, R 8 and Ω0 3; I_e 1.5 in Risk Category IV, Table 1.5-2) and 1.0 at grade. W_p = m·g,
 g = 9.80665 m/s². Tension: 0.9D − 1.0E with E_v = 0.2 S_DS D, so the weight holds with
 (0.9 − 0.24) W_p = 0.66 W_p; T = (F h_cg − 0.66 W_p b)/(2b), and with Omega_0 = 2 the same with 2F.
 1 kip = 4448.2216 N. Coefficients: the rows named, from assess/data/components.csv (their sources there).
@@ -60,6 +61,8 @@ def _check(out, force_n, tension_n, tension_omega_n, ip):
 def test_the_building_terms():
     site = _site("ASCE 7-22")
     assert site.period_s == pytest.approx(0.665326, abs=5e-7)
+    assert (site.building_r, site.building_omega0, site.building_ie) == (8.0, 3.0, 1.5)
+    assert "R_mu 1.398 (eq. 13.3-6: R 8 and Omega0 3 of Table 12.2-1's C.1" in site.basis
     assert site.edition == "ASCE 7-22" and site.risk_category == "IV" and site.sds_g == 1.2
     assert site.z_over_h(1) == 0.25 and site.z_over_h(4) == 1.0 and site.z_over_h(-1) == 0.0
 
@@ -69,7 +72,7 @@ def test_freezer_critical_first_floor():
     (§13.1.3); component type 'freezer' = refrigeration. Base 0.7 m (b 0.35), h_cg 0.9 m. W_p = 2941.995 N.
 
     7-22 (C_AR 1.4 above grade, R_po 2.0): H_f = 1 + 1.503022·0.25 + 0.638548·0.25^10 = 1.375756;
-    0.4·1.2·1.5·2941.995·(1.375756/1.3)·(1.4/2.0) = 2118.24·1.058274·0.7 = 1569.17 N
+    0.4·1.2·1.5·2941.995·(1.375756/1.398412)·(1.4/2.0) = 2118.24·0.983799·0.7 = 1458.74 N
     < 0.3·1.2·1.5·2941.995 = 1588.68 N: the minimum governs, F_p = 1588.68 N.
     T = (1588.68·0.9 − 0.66·2941.995·0.35)/0.7 = (1429.81 − 679.60)/0.7 = 1071.73 N;
     Omega_0: (3177.35·0.9 − 679.60)/0.7 = (2859.62 − 679.60)/0.7 = 3114.31 N.
@@ -90,15 +93,15 @@ def test_server_rack_on_the_roof():
     Base 0.6 m (b 0.3), h_cg 1.0 m. W_p = 5883.99 N.
 
     7-22 (C_AR 1.0, R_po 1.5): H_f = 1 + 1.503022 + 0.638548 = 3.141570;
-    0.4·1.2·1.5·5883.99·(3.141570/1.3)·(1.0/1.5) = 4236.47·2.416592·0.666667 = 6825.22 N (< 16945.89 N).
-    T = (6825.22·1.0 − 0.66·5883.99·0.3)/0.6 = (6825.22 − 1165.03)/0.6 = 9433.65 N;
-    Omega_0: (13650.44 − 1165.03)/0.6 = 20809.01 N.
+    0.4·1.2·1.5·5883.99·(3.141570/1.398412)·(1.0/1.5) = 4236.47·2.246527·0.666667 = 6344.90 N (< 16945.89 N).
+    T = (6344.90·1.0 − 0.66·5883.99·0.3)/0.6 = (6344.90 − 1165.03)/0.6 = 8633.12 N;
+    Omega_0: (12689.80 − 1165.03)/0.6 = 19207.95 N.
 
     7-16 (a_p 1.0, R_p 2.5): 0.4·1.0·1.2·5883.99/(2.5/1.5)·3 = 1694.59·3 = 5083.77 N;
     T = (5083.77 − 1165.03)/0.6 = 6531.23 N; Omega_0: (10167.54 − 1165.03)/0.6 = 15004.17 N.
     """
     item = _item(4, 600.0, 0.6, 1.1, 1.0, "server rack")
-    _check(item_anchorage(item, "critical", "anchor", _site("ASCE 7-22")), 6825.22, 9433.65, 20809.01, 1.5)
+    _check(item_anchorage(item, "critical", "anchor", _site("ASCE 7-22")), 6344.90, 8633.12, 19207.95, 1.5)
     _check(item_anchorage(item, "critical", "anchor", _site("ASCE 7-16")), 5083.77, 6531.23, 15004.17, 1.5)
 
 
@@ -123,15 +126,15 @@ def test_ip_given_in_the_workbook():
     'storage cabinet' = storage shelving. Base 0.45 m (b 0.225), h_cg 0.9 m. W_p = 1470.997 N.
 
     7-22 (C_AR 1.0, R_po 1.5): H_f = 1 + 1.503022·0.5 + 0.638548·0.5^10 = 1.751511 + 0.000624 = 1.752135;
-    0.4·1.2·1.5·1470.997·(1.752135/1.3)·(1/1.5) = 1059.12·1.347796·0.666667 = 951.65 N (> 794.34 N minimum).
-    T = (951.65·0.9 − 0.66·1470.997·0.225)/0.45 = (856.49 − 218.44)/0.45 = 1417.87 N;
-    Omega_0: (1713.0 − 218.44)/0.45 = 3321.17 N.
+    0.4·1.2·1.5·1470.997·(1.752135/1.398412)·(1/1.5) = 1059.12·1.252946·0.666667 = 884.68 N (> 794.34 N minimum).
+    T = (884.68·0.9 − 0.66·1470.997·0.225)/0.45 = (796.21 − 218.44)/0.45 = 1283.93 N;
+    Omega_0: (1592.42 − 218.44)/0.45 = 3053.29 N.
 
     7-16 (a_p 1, R_p 2.5): 0.4·1.2·1470.997/(2.5/1.5)·2 = 423.65·2 = 847.29 N;
     T = (762.56 − 218.44)/0.45 = 1209.16 N; Omega_0: (1525.12 − 218.44)/0.45 = 2903.75 N.
     """
     item = _item(2, 150.0, 0.45, 0.6, 0.9, "storage cabinet", ip=1.5)
-    _check(item_anchorage(item, "ordinary", "anchor", _site("ASCE 7-22")), 951.65, 1417.87, 3321.17, 1.5)
+    _check(item_anchorage(item, "ordinary", "anchor", _site("ASCE 7-22")), 884.68, 1283.93, 3053.29, 1.5)
     _check(item_anchorage(item, "ordinary", "anchor", _site("ASCE 7-16")), 847.29, 1209.16, 2903.75, 1.5)
     assert item_anchorage(_item(2, 150.0, 0.45, 0.6, 0.9, "storage cabinet"), "ordinary", "anchor",
                           _site("ASCE 7-22"))["ip"] == 1.0
@@ -142,15 +145,15 @@ def test_switchgear_third_floor():
     Base 0.6 m (b 0.3), h_cg 1.1 m. W_p = 7845.32 N.
 
     7-22 (C_AR 1.4, R_po 2.0): H_f = 1 + 1.503022·0.75 + 0.638548·0.75^10 = 2.127267 + 0.035960 = 2.163227;
-    0.4·1.2·1.5·7845.32·(2.163227/1.3)·(1.4/2.0) = 5648.63·1.664021·0.7 = 6579.60 N.
-    T = (6579.60·1.1 − 0.66·7845.32·0.3)/0.6 = (7237.56 − 1553.37)/0.6 = 9473.65 N;
-    Omega_0: (14475.12 − 1553.37)/0.6 = 21536.25 N.
+    0.4·1.2·1.5·7845.32·(2.163227/1.398412)·(1.4/2.0) = 5648.63·1.546916·0.7 = 6116.57 N.
+    T = (6116.57·1.1 − 0.66·7845.32·0.3)/0.6 = (6728.23 − 1553.37)/0.6 = 8624.76 N;
+    Omega_0: (13456.45 − 1553.37)/0.6 = 19838.47 N.
 
     7-16 (a_p 2.5, R_p 6.0): 0.4·2.5·1.2·7845.32/(6/1.5)·(1 + 1.5) = 2353.60·2.5 = 5883.99 N;
     T = (6472.39 − 1553.37)/0.6 = 8198.36 N; Omega_0: (12944.78 − 1553.37)/0.6 = 18985.67 N.
     """
     item = _item(3, 800.0, 0.6, 1.5, 1.1, "Switchgear")
-    _check(item_anchorage(item, "critical", "anchor", _site("ASCE 7-22")), 6579.60, 9473.65, 21536.25, 1.5)
+    _check(item_anchorage(item, "critical", "anchor", _site("ASCE 7-22")), 6116.57, 8624.76, 19838.47, 1.5)
     _check(item_anchorage(item, "critical", "anchor", _site("ASCE 7-16")), 5883.99, 8198.36, 18985.67, 1.5)
 
 
@@ -246,11 +249,11 @@ def test_the_five_items_from_the_anchorage_table():
 
     five = {  # id: (item, consequence, action, hand F_p [N], T [N], T with Omega_0 [N], I_p)
         "FRZ": (_item(1, 300.0, 0.7, 0.8, 0.9, "freezer"), "critical", "anchor", 1588.68, 1071.73, 3114.31, 1.5),
-        "RACK": (_item(4, 600.0, 0.6, 1.1, 1.0, "server rack"), "critical", "anchor", 6825.22, 9433.65, 20809.01, 1.5),
+        "RACK": (_item(4, 600.0, 0.6, 1.1, 1.0, "server rack"), "critical", "anchor", 6344.90, 8633.12, 19207.95, 1.5),
         "GRADE": (_item(0, 200.0, 0.6, 0.9, 0.5), "ordinary", "restrain", 706.08, 0.0, 529.56, 1.0),
-        "CAB": (_item(2, 150.0, 0.45, 0.6, 0.9, "storage cabinet", ip=1.5), "ordinary", "anchor", 951.65, 1417.87,
-                3321.17, 1.5),
-        "SWG": (_item(3, 800.0, 0.6, 1.5, 1.1, "Switchgear"), "critical", "anchor", 6579.60, 9473.65, 21536.25, 1.5),
+        "CAB": (_item(2, 150.0, 0.45, 0.6, 0.9, "storage cabinet", ip=1.5), "ordinary", "anchor", 884.68, 1283.93,
+                3053.29, 1.5),
+        "SWG": (_item(3, 800.0, 0.6, 1.5, 1.1, "Switchgear"), "critical", "anchor", 6116.57, 8624.76, 19838.47, 1.5),
     }
     site = _site("ASCE 7-22")
     decisions = {item_id: ItemDecision(item_id, "high", consequence, None,
