@@ -250,9 +250,10 @@ def site_note(site: SiteSuite, sheet: SiteSheet) -> str:
         where = "the site's uniform-hazard spectrum"
     how = ("records selected from the records folder and scaled to" if suite.method == "records"
            else "spectrum-compatible synthetic ground motions matched to")
+    cautions = "".join(f" {caution[0].upper()}{caution[1:]}." for caution in suite.cautions)
     return (f"Ground floor: {len(suite.motions)} {how} {where} at level {suite.level}, over periods "
             f"{suite.lower_s:.3g} to {suite.upper_s:.3g} s (the suite's mean is at least "
-            f"{suite.min_mean_ratio:.0%} of the target there; ground_motions.csv and spectrum.csv).")
+            f"{suite.min_mean_ratio:.0%} of the target there; ground_motions.csv and spectrum.csv).{cautions}")
 
 
 def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, numbering: str = "ground_0") -> str:

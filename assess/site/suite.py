@@ -280,6 +280,11 @@ class GroundSuite:
         One row per period: ``level, period_s, target_g, suite_mean_g, ratio, in_range,
         range_lower_s, range_upper_s`` (spectrum.csv).
     notes : tuple of str
+        How the suite was made, in clauses.
+    cautions : tuple of str
+        Those of ``notes`` that say where the suite falls short of what ASCE 7-22 §16.2 asks (the period range cut
+        at the target's longest period, the mean below 90 % of the target, records scaled beyond the bounds):
+        the report's note on the ground motions says them (:func:`assess.assessment.floors.site_note`).
     """
 
     level: str
@@ -292,6 +297,7 @@ class GroundSuite:
     ground_motions: pd.DataFrame
     spectrum: pd.DataFrame
     notes: tuple[str, ...] = field(default_factory=tuple)
+    cautions: tuple[str, ...] = field(default_factory=tuple)
 
     @property
     def records(self) -> list[Record]:
@@ -388,21 +394,21 @@ def select_and_scale(candidates: Sequence[Motion], target: Callable, periods_s, 
     factors = factors * common
     notes = [f"{suite_size} of {len(candidates)} motions selected by least log misfit after scaling over "
              f"{lower:.3g}-{upper:.3g} s (ASCE 7-22 §16.2.3.1: 0.2 T_min to 2 T_max)"]
-    if clipped:
-        notes.append(clipped)
+    cautions = [clipped] if clipped else []
     if common > 1.0:
         notes.append(f"common factor {common:.3f} so that the suite's mean is at least {mean_ratio_min:.0%} of the "
                      "target over the range (ASCE 7-22 §16.2.3.2)")
     outside = [candidates[k].name for k, f in zip(chosen, factors) if not (low * (1 - 1e-9) <= f <= high * (1 + 1e-9))]
     if outside:
-        notes.append(f"{len(outside)} motion(s) scaled beyond {low:g}-{high:g} by the common factor")
+        cautions.append(f"{len(outside)} motion(s) scaled beyond {low:g}-{high:g} by the common factor")
     motions = tuple(candidates[k].scaled(float(f)) for k, f in zip(chosen, factors))
     min_ratio = float(ratio.min() * common)
     scaled_ln = np.log(spectra[chosen]) + np.log(factors)[:, None] - log_target[None, :]
     ground, spectrum = _tables(level, motions, factors, target, lower, upper, max_period,
                                np.sqrt(np.mean(scaled_ln ** 2, axis=1)), np.max(np.abs(np.expm1(scaled_ln)), axis=1),
                                [None] * len(chosen))
-    return GroundSuite(level, "records", motions, factors, lower, upper, min_ratio, ground, spectrum, tuple(notes))
+    return GroundSuite(level, "records", motions, factors, lower, upper, min_ratio, ground, spectrum,
+                       tuple(notes + cautions), tuple(cautions))
 
 
 # --------------------------------------------------------------------------- synthetic motions
@@ -653,16 +659,19 @@ def synthetic_suite(target: Callable, periods_s, *, level: str, suite_size: int 
              "of it"]
     beyond = int(np.sum(errors > tolerance))
     if beyond:
-        notes.append(f"{beyond} of the {suite_size} motions deviate from the target by more than {tolerance:.0%} "
-                     f"somewhere in the range (at most {errors.max():.1%}): the closest match of their one "
-                     "realisation, kept so that every level and hazard value uses the same realisations")
+        one = beyond == 1
+        notes.append(f"{beyond} of the {suite_size} motions deviate{'s' if one else ''} from the target by more than "
+                     f"{tolerance:.0%} somewhere in the range (at most {errors.max():.1%}): the closest match of "
+                     f"{'its' if one else 'their'} one realisation, kept so that every level and hazard value uses "
+                     "the same realisations")
+    cautions = []
     if ratio.min() < MEAN_RATIO_MIN:
-        notes.append(f"the suite's mean falls to {ratio.min():.1%} of the target in the range, below the "
-                     f"{MEAN_RATIO_MIN:.0%} ASCE 7-22 §16.2.3.3 asks of a matched suite")
+        cautions.append(f"the suite's mean falls to {ratio.min():.1%} of the target in the range, below the "
+                        f"{MEAN_RATIO_MIN:.0%} ASCE 7-22 §16.2.3.3 asks of a matched suite")
     if clipped:
-        notes.append(clipped)
+        cautions.append(clipped)
     return GroundSuite(level, "synthetic", tuple(motions), factors, lower, upper, float(ratio.min()), ground,
-                       spectrum, tuple(notes))
+                       spectrum, tuple(notes + cautions), tuple(cautions))
 
 
 def ground_suite(target: Callable, periods_s, *, level: str, records_folder=None, workbook_folder=None,

@@ -179,6 +179,21 @@ def test_a_uhs_shorter_than_the_range_clips_it_and_says_so():
     assert any("longest period" in note for note in built.notes)
 
 
+def test_what_the_suite_falls_short_of_is_said_in_the_reports_note_on_the_ground_motions():
+    """The range cut at the uniform-hazard spectrum's longest period is a caution, and the note on the ground floor
+    (the report's first page, the console) says it, where before it stayed in ``notes``, which nothing printed
+    (seen on a new user's Vancouver-style tower whose UHS ends at 2 s). A suite within its range says none."""
+    from assess.assessment.floors import SiteSuite, site_note
+    from assess.inventory.site_building import SiteSheet
+
+    clipped = suite.synthetic_suite(_uhs_target(), [0.3, 4.0], level="2in50", suite_size=1)
+    assert any("longest period" in caution for caution in clipped.cautions)
+    note = site_note(SiteSuite(clipped, None, None), SiteSheet(uhs_path="uhs.csv"))
+    assert "The period range would reach 8 s, beyond the target spectrum's longest period" in note
+    within = suite.synthetic_suite(DE.design_g, [0.3, 1.0], level="DE", suite_size=11)
+    assert within.cautions == () and site_note(SiteSuite(within, None, None), SiteSheet()).endswith("spectrum.csv).")
+
+
 def test_records_folder_outside_the_workbook_refused(tmp_path):
     (tmp_path / "site").mkdir()
     (tmp_path / "elsewhere").mkdir()
