@@ -137,7 +137,7 @@ def anchorage_site(site=None, building=None, settings=None) -> AnchorageSite:
         notes.append(f"R_mu {r_mu:.3f} (eq. 13.3-6: R {building_r:g} and Omega0 {building_omega0:g} of Table 12.2-1's "
                      f"{row}, I_e {building_ie:g}; 1.0 at grade)")
     elif edition == "ASCE 7-22":
-        notes.append("R_mu 1.3 (eq. 13.3-6, no building sheet: the building's R not known; 1.0 at grade)")
+        notes.append("R_mu 1.3 (eq. 13.3-6, the building's R not given; 1.0 at grade)")
     return AnchorageSite(edition=edition, risk_category=risk, sds_g=sds_g, storeys=storeys, period_s=period_s,
                          building_r=building_r, building_omega0=building_omega0, building_ie=building_ie,
                          basis="; ".join(notes))
