@@ -40,7 +40,7 @@ from assess.report.sentences import (
     DASH, action_groups, after_text, case_outcomes, changes, class_rule_paragraph, cm_interval_text, finite,
     flag_groups, floor_text, format_cm, format_length, format_percent, format_significant, given_by_parameters,
     hazard_limit_text, history_phrases, integer_text, interval_text, level_text, list_text, method_notes,
-    regression_items, risk_units, slides_in_both, source_definitions, suite_text, text,
+    regression_items, rest_sentence, risk_units, slides_in_both, source_definitions, suite_text, text,
     total_units, what_happens, worst_run_text,
 )
 from assess.report.title import title_block
@@ -505,6 +505,7 @@ def report_context(result, with_figures: bool = True) -> dict:
         "total_items": len(rows),
         "total_units": total_units(summary),
         "action_groups": action_groups(rows),
+        "rest_sentence": rest_sentence(rows, counts),
         "details": _item_details(rows, summary, result.suite_runs, {str(h["id"]): h for h in result.histories},
                                  system, lambda history: worst_run_text(history, result)),
         "u": report_units(system, numbering),

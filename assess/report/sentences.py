@@ -167,6 +167,27 @@ ACTION_GROUPS = (
 )
 
 
+def rest_sentence(rows: list[dict], counts: dict) -> str:
+    """The sentence under page 2's lists: the low-risk and anchored items that need no action, and apart from
+    them the low-risk items a code still asks to restrain (``action_reference``), named, so that it counts what
+    page 1's "No action" counts.
+
+    >>> rest_sentence([{"id": "R", "risk": "low", "action_reference": "NFPA 99"}, {"id": "F", "risk": "low"}],
+    ...               {"low": 2, "anchored": 0})
+    '1 item at low risk and 0 anchored items need no action from this assessment; 1 more at low risk, R, is to be restrained as the codes require (page 1 and the work orders).'
+    """
+    coded = [r["id"] for r in rows if r.get("risk") == "low" and r.get("action_reference")]
+    free = counts.get("low", 0) - len(coded)
+    anchored = counts.get("anchored", 0)
+    sentence = (f"{free} item{'s' if free != 1 else ''} at low risk and {anchored} anchored "
+                f"item{'s' if anchored != 1 else ''} need no action from this assessment")
+    if coded:
+        named = ", ".join(coded[:5]) + (f" and {len(coded) - 5} more" if len(coded) > 5 else "")
+        sentence += (f"; {len(coded)} more at low risk, {named}, {'is' if len(coded) == 1 else 'are'} to be "
+                     "restrained as the codes require (page 1 and the work orders)")
+    return sentence + "."
+
+
 def after_text(row) -> str:
     """"If done: overturning 0%, past its room 10%" from ``p_overturn_after`` and ``p_beyond_clearance_after``
     ("" for an item that needs no action or is anchored)."""

@@ -151,3 +151,22 @@ def test_the_lab_keeps_the_regression_where_it_applies(lab_run):
         assert row["pf_sliding"] == pytest.approx(pf, rel=1e-3, abs=1e-6), row["id"]
     assert free.loc[~applies & (free["im"] > 0), REGRESSION].isna().all().all()
     assert np.isfinite(free.loc[~applies, "im"]).all()
+
+
+def test_page_two_counts_what_page_one_counts_and_names_the_items_a_code_restrains(lab_run):
+    """Page 2's sentence on the rest counts the low-risk items with no action as page 1's "No action" does; a
+    low-risk item a code still asks to restrain (the lab's rack SRV-G-01) is named apart, where before it was one
+    of "7 items at low risk ... need no action" while page 1 listed it to restrain (a new user's hospital: 5 beside
+    page 1's 4)."""
+    scratch, done = lab_run
+    assert done.returncode == 0, done.stderr
+    summary = pd.read_csv(scratch / "reports" / "lab-2in50" / "summary.csv")
+    low = summary[summary["risk"] == "low"]
+    coded = low[low["action_reference"].notna()]
+    html = (scratch / "reports" / "lab-2in50" / "report.html").read_text()
+    free = len(low) - len(coded)
+    assert len(coded) == 1 and coded["id"].iloc[0] == "SRV-G-01"  # what the summary says, not the report
+    assert re.search(rf"<b>No action: {free} items?</b>", html), re.findall(r"<b>No action: \d+ items?</b>", html)
+    assert (f"{free} items at low risk and {int((summary['risk'] == 'anchored').sum())} anchored items need no "
+            "action from this assessment; 1 more at low risk, SRV-G-01, is to be restrained as the codes require"
+            ) in html
