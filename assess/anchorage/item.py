@@ -156,7 +156,8 @@ def item_forces(item, consequence: str, site: AnchorageSite) -> AnchorageForces:
     return design_force(
         site.edition, _type_name(item), float(item.mass_kg) * STANDARD_GRAVITY_M_S2, site.sds_g,
         site.z_over_h(item.floor), ip=getattr(item, "ip", None), period_s=site.period_s, building_r=site.building_r,
-        building_omega0=site.building_omega0, building_ie=site.building_ie, consequence=consequence, risk_category=site.risk_category, cg_height_m=float(item.cg_height_m),
+        building_omega0=site.building_omega0, building_ie=site.building_ie, consequence=consequence,
+        risk_category=site.risk_category, cg_height_m=float(item.cg_height_m),
         half_width_m=min(float(item.width_m), float(item.depth_m)) / 2.0)
 
 
