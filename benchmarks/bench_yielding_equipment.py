@@ -69,7 +69,8 @@ a ``building`` sheet of the building's storeys, height, system and T_1): only th
 Columns, each route against the truth over the (item, motion, direction) cases: PFA tool/truth at the
 mid-height floor and the roof (median over the motions), sliding: geometric mean and σ of
 ln(tool/truth) over the cases where the truth slides 1 cm or more and neither overturns (tool floored at
-0.1 cm); overturn verdicts, two ways: per case, the share of the (item, motion, direction) cases where
+0.1 cm), each with its 90 % interval over the motions (``gm_low``..``sigma_ln_high``: the motions resampled,
+``peers.yielding_equipment.motion_bootstrap``); overturn verdicts, two ways: per case, the share of the (item, motion, direction) cases where
 either overturns on which both agree (``overturn_agree``; and over all cases, ``overturn_agree_all``), and
 per item, the share of the items whose overturning verdict is the same (``overturn_class_agree``: low,
 moderate or high from ``p_overturn`` and the default ``risk_overturn_moderate``/``risk_overturn_high``, the
@@ -223,6 +224,8 @@ def main(argv=None):
     for route, group in table.groupby("route", sort=False):
         pooled.append({"route": route, "gm (range over buildings)": f"{group['gm'].min():.2f}-{group['gm'].max():.2f}",
                        "sigma_ln max": round(group["sigma_ln"].max(), 2),
+                       "sigma_ln max, its 90 % interval over the motions": (
+                           "{:.2f}-{:.2f}".format(*group.loc[group["sigma_ln"].idxmax(), ["sigma_ln_low", "sigma_ln_high"]])),
                        "overturn agree min": round(group["overturn_agree"].min(), 2),
                        "overturn class agree min": round(group["overturn_class_agree"].min(), 2),
                        "class agree min": round(group["class_agree"].min(), 2)})

@@ -203,6 +203,30 @@ def overturn_class(p_overturn):
     return pd.Series(verdict, index=getattr(p_overturn, "index", None))
 
 
+#: Resamples of the ground motions behind :func:`motion_bootstrap`'s intervals, and their seed.
+BOOTSTRAP_RESAMPLES, BOOTSTRAP_SEED = 2000, 29
+
+
+def motion_bootstrap(ratio: pd.Series, level=0.90) -> dict:
+    """90 % intervals of the sliding gm and σ ln over the suite's motions: the ground motions resampled with
+    replacement (Efron & Tibshirani 1993, the percentile interval), each motion's cases kept together (an item's
+    cases under one motion are not independent of each other), ``ratio`` ln(tool/truth) indexed by ``ground``.
+
+    How finely 11-15 motions fix σ ln: a σ ln of 0.45 and one of 0.48 cannot be told apart when both intervals
+    span 0.38-0.55."""
+    groups = [values.to_numpy() for _, values in ratio.groupby(level="ground")]
+    rng = np.random.default_rng(BOOTSTRAP_SEED)
+    gm, sigma = [], []
+    for _ in range(BOOTSTRAP_RESAMPLES):
+        sample = np.concatenate([groups[k] for k in rng.integers(0, len(groups), len(groups))])
+        gm.append(np.exp(sample.mean()))
+        sigma.append(sample.std(ddof=1) if sample.size > 1 else np.nan)
+    tails = [50 * (1 - level), 50 * (1 + level)]
+    (gm_low, gm_high), (sigma_low, sigma_high) = np.nanpercentile(gm, tails), np.nanpercentile(sigma, tails)
+    return {"gm_low": float(gm_low), "gm_high": float(gm_high), "sigma_ln_low": float(sigma_low),
+            "sigma_ln_high": float(sigma_high)}
+
+
 def compare(tool, truth):
     """The route's numbers against the truth's (module text)."""
     (_, t), (_, r) = tool, truth
@@ -224,6 +248,7 @@ def compare(tool, truth):
     return {"pfa_mid": pfa["mid"], "pfa_roof": pfa["roof"], "n_sliding": int(slides.sum()),
             "gm": float(np.exp(ratio.mean())) if len(ratio) else np.nan,
             "sigma_ln": float(ratio.std(ddof=1)) if len(ratio) > 1 else np.nan,
+            **(motion_bootstrap(ratio) if len(ratio) > 1 else {}),
             "n_overturn": int(either.sum()),
             "overturn_tool_only": int((over_t & ~over_r).sum()), "overturn_truth_only": int((~over_t & over_r).sum()),
             "overturn_agree": float((over_t[either] == over_r[either]).mean()) if either.any() else np.nan,
