@@ -336,7 +336,8 @@ def _within_target(target, lower, upper):
     if max_period <= lower * (1 + 1e-9):
         raise ValueError(f"the target spectrum ends at {max_period:.3g} s, below the period range's lower end "
                          f"{lower:.3g} s")
-    note = (f"the period range would reach {upper:.3g} s, beyond the target spectrum's longest period "
+    note = (f"the period range (ASCE 7-22 §16.2.3.1: up to twice the longest period that matters, the building's or "
+            f"an item's rocking) would reach {upper:.3g} s, beyond the target spectrum's longest period "
             f"{max_period:.3g} s: the suite is matched and checked up to {max_period:.3g} s")
     return lower, max_period, max_period, note
 

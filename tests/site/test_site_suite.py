@@ -189,7 +189,7 @@ def test_what_the_suite_falls_short_of_is_said_in_the_reports_note_on_the_ground
     clipped = suite.synthetic_suite(_uhs_target(), [0.3, 4.0], level="2in50", suite_size=1)
     assert any("longest period" in caution for caution in clipped.cautions)
     note = site_note(SiteSuite(clipped, None, None), SiteSheet(uhs_path="uhs.csv"))
-    assert "The period range would reach 8 s, beyond the target spectrum's longest period" in note
+    assert "The period range (ASCE 7-22 §16.2.3.1" in note and "would reach 8 s, beyond the target spectrum's longest" in note
     within = suite.synthetic_suite(DE.design_g, [0.3, 1.0], level="DE", suite_size=11)
     assert within.cautions == () and site_note(SiteSuite(within, None, None), SiteSheet()).endswith("spectrum.csv).")
 
