@@ -190,8 +190,11 @@ def test_what_the_suite_falls_short_of_is_said_in_the_reports_note_on_the_ground
     assert any("longest period" in caution for caution in clipped.cautions)
     note = site_note(SiteSuite(clipped, None, None), SiteSheet(uhs_path="uhs.csv"))
     assert "The period range (ASCE 7-22 §16.2.3.1" in note and "would reach 8 s, beyond the target spectrum's longest" in note
+    # the suite's mean is said once: by its caution where below the 90 % §16.2.3.3 asks (one motion: 85 %)
+    assert clipped.min_mean_ratio < suite.MEAN_RATIO_MIN and note.count("suite's mean") == 1
     within = suite.synthetic_suite(DE.design_g, [0.3, 1.0], level="DE", suite_size=11)
-    assert within.cautions == () and site_note(SiteSuite(within, None, None), SiteSheet()).endswith("spectrum.csv).")
+    within_note = site_note(SiteSuite(within, None, None), SiteSheet())
+    assert within.cautions == () and within_note.endswith("spectrum.csv).") and within_note.count("suite's mean") == 1
 
 
 def test_records_folder_outside_the_workbook_refused(tmp_path):
