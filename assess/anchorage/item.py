@@ -29,7 +29,7 @@ import math
 from dataclasses import dataclass
 
 from assess.anchorage.coefficients import DEFAULT_COMPONENT_TYPE, canonical_edition, component_coefficients
-from assess.building.design import IMPORTANCE_BY_RISK_CATEGORY, SYSTEM_FACTORS
+from assess.building.design import SYSTEM_FACTORS, importance_factor
 from assess.building.period import approximate_period
 from assess.anchorage.design import AnchorageForces, design_force
 from assess.anchorage.equations import component_importance_factor, ductility_reduction
@@ -118,7 +118,7 @@ def anchorage_site(site=None, building=None, settings=None) -> AnchorageSite:
     if source:
         notes.append(f"S_DS {sds_g:g} g from {source}")
     period_s = building_r = building_omega0 = None
-    building_ie = IMPORTANCE_BY_RISK_CATEGORY[risk]
+    building_ie = importance_factor(risk)
     if building is not None:
         storeys = float(building.storeys)
         period_s = float(approximate_period(building.height_m, building.system))
@@ -133,7 +133,7 @@ def anchorage_site(site=None, building=None, settings=None) -> AnchorageSite:
         if edition == "ASCE 7-22":
             notes.append("H_f = 1 + 2.5 z/h (eq. 13.3-5: no building period)")
     if edition == "ASCE 7-22" and building_r is not None:
-        r_mu = ductility_reduction(building_r, building_ie, building_omega0)
+        r_mu = system_ductility_reduction(building.system, building_ie)
         notes.append(f"R_mu {r_mu:.3f} (eq. 13.3-6: R {building_r:g} and Omega0 {building_omega0:g} of Table 12.2-1's "
                      f"{row}, I_e {building_ie:g}; 1.0 at grade)")
     elif edition == "ASCE 7-22":
@@ -141,6 +141,18 @@ def anchorage_site(site=None, building=None, settings=None) -> AnchorageSite:
     return AnchorageSite(edition=edition, risk_category=risk, sds_g=sds_g, storeys=storeys, period_s=period_s,
                          building_r=building_r, building_omega0=building_omega0, building_ie=building_ie,
                          basis="; ".join(notes))
+
+
+def system_ductility_reduction(system: str, importance: float) -> float:
+    """R_μ of ASCE 7-22 eq. 13.3-6 for a building of lateral ``system``: its R and Ω0 of Table 12.2-1
+    (:data:`assess.building.design.SYSTEM_FACTORS`) and its I_e ``importance`` [-]; the anchorage forces and
+    ``floors.csv``'s H_f/R_μ both take it from here.
+
+    >>> round(system_ductility_reduction("steel moment frame", 1.5), 4), system_ductility_reduction("other", 1.0)
+    (1.3984, 1.3)
+    """
+    r_factor, omega0, _ = SYSTEM_FACTORS[system]
+    return ductility_reduction(r_factor, importance, omega0)
 
 
 def _type_name(item) -> str:

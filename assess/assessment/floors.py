@@ -22,8 +22,9 @@ import numpy as np
 import pandas as pd
 
 from assess.building import BuildingModes, building_modes
-from assess.anchorage.equations import ductility_reduction, height_factor
-from assess.building.design import OVERSTRENGTH_SOURCE_BY_SYSTEM, SYSTEM_FACTORS, design_storey_stiffness
+from assess.anchorage.equations import height_factor
+from assess.anchorage.item import system_ductility_reduction
+from assess.building.design import OVERSTRENGTH_SOURCE_BY_SYSTEM, design_storey_stiffness
 from assess.building.floors import floors_table
 from assess.building.period import approximate_period
 from assess.building.response import floor_records
@@ -136,14 +137,15 @@ def design_spectrum_of(site: SiteSheet, workbook_name: str) -> DesignSpectrum | 
     return None
 
 
-def site_level_target(site: SiteSheet, level: HazardLevel, workbook_name: str):
-    """The site sheet's target spectrum of ``level`` (:func:`assess.site.target.level_target`).
+def site_level_target(site: SiteSheet, level: HazardLevel, workbook_name: str, design: DesignSpectrum | None):
+    """The site sheet's target spectrum of ``level`` (:func:`assess.site.target.level_target`), ``design`` the
+    site's ASCE 7 spectrum (:func:`design_spectrum_of`).
 
     Raises :class:`~assess.errors.InputError`; where ``oq_site`` names no site of the ``uhs`` file, at the
     site sheet's ``oq_site`` cell as well as the file.
     """
     try:
-        return level_target(level, design=design_spectrum_of(site, workbook_name), uhs_path=site.uhs_path or None,
+        return level_target(level, design=design, uhs_path=site.uhs_path or None,
                             oq_site=parse_site_choice(site.oq_site) if site.oq_site else None,
                             workbook=workbook_name, sheet=site.sheet)
     except SiteChoiceError as error:
@@ -183,7 +185,7 @@ def site_suite(site: SiteSheet, level: HazardLevel, modes: BuildingModes | None,
     the sheet can give, or the suite cannot be made from the records folder.
     """
     design = design_spectrum_of(site, workbook_name)
-    target = site_level_target(site, level, workbook_name)
+    target = site_level_target(site, level, workbook_name, design)
     periods, mass_period = periods_that_matter_s(modes)
     name = level.label or level.name
     try:
@@ -218,11 +220,9 @@ def floors_csv(building, ground: list[Record], floors, level_label: str) -> pd.D
 
 
 def ductility_reduction_of(building: YieldingBuilding) -> float:
-    """R_μ of ASCE 7-22 eq. 13.3-6 for a yielding building: its system's R and Ω_0 (Table 12.2-1,
-    :data:`~assess.building.design.SYSTEM_FACTORS`) and its risk category's I_e
-    (:func:`assess.anchorage.equations.ductility_reduction`) [-]."""
-    r_factor, omega0, _ = SYSTEM_FACTORS[building.system]
-    return ductility_reduction(r_factor, building.importance, omega0)
+    """R_μ of ASCE 7-22 eq. 13.3-6 for a yielding building, as its items' anchorage takes it
+    (:func:`assess.anchorage.item.system_ductility_reduction`) [-]."""
+    return system_ductility_reduction(building.system, building.importance)
 
 
 def with_code_check(table: pd.DataFrame, building) -> pd.DataFrame:

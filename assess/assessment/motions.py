@@ -165,7 +165,8 @@ def check_level(inventory, level_text: str) -> None:
     level, motions = _level_rows(inventory, level_text, workbook_name)
     if inventory.site is not None and not _has_ground_motions(motions):
         site = inventory.site
-        site_and_building.site_level_target(site, level, workbook_name)
+        site_and_building.site_level_target(site, level, workbook_name,
+                                            site_and_building.design_spectrum_of(site, workbook_name))
 
 
 def _level_rows(inventory, level_text: str, workbook_name: str) -> tuple[HazardLevel, pd.DataFrame]:

@@ -59,7 +59,7 @@ import pandas as pd
 
 from assess.hazard.records import Record
 
-from .design import IMPORTANCE_BY_RISK_CATEGORY, DesignStrength, design_strength
+from .design import DesignStrength, design_strength, importance_factor
 from .modes import BuildingModes
 from .nonlinear import FLEXURE_BY_SYSTEM, STRENGTH_BY_SYSTEM, YieldingStick, elastic_periods, yielding_response, yielding_stick
 from .response import floor_records
@@ -222,7 +222,7 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
     arguments = dict(system=system, period_s=period_s, alpha=modes.alpha, storey_stiffness=modes.storey_stiffness,
                      damping=damping, p_delta=p_delta)
     stick = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, **arguments)
-    importance = IMPORTANCE_BY_RISK_CATEGORY[risk_category]
+    importance = importance_factor(risk_category)
     if isinstance(stick, HingedWall):  # only the base yields: the storeys above have no yield shear
         strength = replace(strength, storey_yield_ratio=np.concatenate([strength.storey_yield_ratio[:1],
                                                                         np.full(modes.storeys - 1, np.nan)]),

@@ -34,27 +34,15 @@ def _drift_range(low: float, high: float) -> str:
     return f"{100.0 * low:.2g}–{100.0 * high:.2g} %"
 
 
-def _ratio(value: float) -> str:
-    """A ratio of accelerations, two decimals; a dash where there is none.
-
-    >>> _ratio(1.6789), _ratio(float("nan"))
-    ('1.68', '–')
-    """
-    return "–" if math.isnan(value) else f"{value:.2f}"
-
-
 def ductility_text(floors) -> str:
-    """How the building page's last two columns are meant: H_f, and H_f/R_μ with the building's R_μ where
-    ``floors`` (``floors.csv``) has it.
+    """How the building page's last two columns are meant: H_f, and H_f/R_μ with the building's R_μ
+    (``floors.csv`` of a yielding building).
 
     >>> import pandas as pd
     >>> ductility_text(pd.DataFrame({"rmu_asce7_22": [1.7127]}))[:62]
     ': H_f for a building that stays elastic, H_f/R_μ with R_μ 1.71'
     """
-    column = floors.get("rmu_asce7_22") if hasattr(floors, "get") else None
-    if column is None or column.isna().all():
-        return " (H_f)"
-    return (f": H_f for a building that stays elastic, H_f/R_μ with R_μ {float(column.dropna().iloc[0]):.2f} "
+    return (f": H_f for a building that stays elastic, H_f/R_μ with R_μ {float(floors['rmu_asce7_22'].iloc[0]):.2f} "
             "(eq. 13.3-6, from the system's R and Ω0 and the risk category's I_e) for one that yields as its design "
             "assumes,")
 
@@ -113,7 +101,7 @@ def building_context(result) -> dict | None:
             "beyond": count,
             "pfa_over_pga": f"{row['pfa_over_pga_median']:.2f}",
             "hf": f"{row['hf_asce7_22']:.2f}",
-            "hf_over_rmu": _ratio(row.get("hf_over_rmu_asce7_22", math.nan)),
+            "hf_over_rmu": f"{row['hf_over_rmu_asce7_22']:.2f}",
         })
     shear = f"a base shear of {float(table['yield_base_shear_g'].iloc[0]):.3f} times its weight (the notes at the top say where " \
             "that comes from)"
