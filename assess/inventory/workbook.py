@@ -117,8 +117,9 @@ def read_workbook(path: str | Path) -> Inventory:
                            ("site", SITE), ("building", BUILDING)):
             if name in sheets:
                 cells = sheet_cells(book, sheets[name], reports[name])
-                if cells is not None:
-                    tables[name] = read_table(spec, cells, reports[name])
+                if cells is not None:  # a site sheet gives the hazard: a hazard sheet may then hold no rows
+                    tables[name] = read_table(spec, cells, reports[name],
+                                              rows_required=not (spec is HAZARD and "site" in sheets))
     equipment = hazard = []
     if "equipment" in tables:
         equipment = _check_equipment(tables["equipment"], reports["equipment"])
@@ -236,20 +237,23 @@ def _marker_problem(marker) -> tuple[str, str]:
 
 # ---------------------------------------------------------------- rows
 
-def read_table(spec: SheetSpec, cells: xlsx.SheetCells, report: SheetReport) -> Table:
-    """Headers recognised and every non-blank row parsed cell by cell."""
+def read_table(spec: SheetSpec, cells: xlsx.SheetCells, report: SheetReport, *, rows_required: bool = True) -> Table:
+    """Headers recognised and every non-blank row parsed cell by cell; a sheet without rows (or even headers)
+    is refused unless ``rows_required`` is false (the settings sheet, a hazard sheet beside a site sheet)."""
     title = cells.title
     rows = [(number, row) for number, row in cells.data_rows()
             if not all(schema.is_empty(v) for v in row.values())]
     header_row = cells.header
     if all(schema.is_empty(v) for v in header_row.values()) and not rows:
+        if not rows_required:
+            return Table(title, {}, [])
         report(f"sheet '{schema.clip(title, 40)}' is empty.",
                f"write the column headers in row 1: {', '.join(c.header() for c in spec.columns)}.",
                row=1)
         return Table(title, {}, [])
     headers = schema.map_headers(spec, header_row, rows, report)
     parsed = [_read_row(spec, headers, number, row, report) for number, row in rows]
-    if not parsed and spec is not SETTINGS:
+    if not parsed and spec is not SETTINGS and rows_required:
         report(f"sheet '{schema.clip(title, 40)}' has no data rows below its headers.",
                f"add one row per {spec.subject.split(' ', 1)[1]}.", row=2)
     return Table(title, headers, parsed)

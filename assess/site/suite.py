@@ -313,7 +313,7 @@ def _tables(level, motions, factors, target, lower, upper, max_period, misfits, 
     rows = []
     for k, motion in enumerate(motions):
         row = {"level": level, "motion": motion.name, "record": motion.source,
-               "seed": "" if seeds[k] is None else int(seeds[k]), "scale_factor": float(factors[k]),
+               "seed": None if seeds[k] is None else int(seeds[k]), "scale_factor": float(factors[k]),
                "pga_g": motion.pga_g, "misfit_ln": float(misfits[k]), "max_deviation": float(deviations[k])}
         row.update({f"sa_{p:g}s_g": float(s) for p, s in zip(periods, spectra[k])})
         rows.append(row)

@@ -65,6 +65,29 @@ def test_a_us_site_and_building_run_has_the_declared_columns(us_site_run, file):
         assert sum(column.startswith("sa_") for column in columns) >= 10
 
 
+def test_a_records_route_run_has_the_declared_columns(tmp_path):
+    """A site sheet whose ground suite is selected from a records folder, beside a hazard sheet that holds its
+    headers only (the site gives the hazard): the run writes every file, and ground_motions.csv names each record
+    with an empty seed (a seed is a synthetic motion's). Both were refused or failed before: the empty hazard
+    sheet at its row 2 (exit 2), the seed column as a bug (exit 1)."""
+    from importlib import resources
+    folder = tmp_path / "records"
+    folder.mkdir()
+    source = resources.files("pyslammer") / "sample_ground_motions"
+    for name in ("Kobe_1995_TAK-090", "Landers_1992_LCN-345", "Northridge_1994_PAC-175", "Loma_Prieta_1989_HSP-000"):
+        (folder / f"{name}.csv").write_text((source / f"{name}.csv").read_text())
+    site = [["key", "value"], ["sds_g", 1.0], ["sd1_g", 0.6], ["records", "records"], ["suite_size", 3]]
+    path = write_workbook(tmp_path / "r.xlsx", {"equipment": [dict(EQUIPMENT[0])], "site": site,
+                                                "hazard": [["level", "motion", "floor", "pta_g", "tp_s"]]})
+    done = run(path, "--hazard", "DE", "--format", "xlsx", "--out", tmp_path / "out", "--quiet", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    check_file(tmp_path / "out" / "ground_motions.csv", "ground_motions.csv")
+    ground = pd.read_csv(tmp_path / "out" / "ground_motions.csv")
+    assert len(ground) == 3 and ground["seed"].isna().all() and (ground["record"] != "synthetic").all()
+    assert set(ground["motion"]) < {"Kobe_1995_TAK-090", "Landers_1992_LCN-345", "Northridge_1994_PAC-175",
+                                    "Loma_Prieta_1989_HSP-000"}
+
+
 def test_the_writer_refuses_an_undeclared_column_or_values_of_another_kind():
     table = pd.DataFrame({"level": ["DE"], "floor": [0], "motions": [3]})
     assert declared_csv_text("floors.csv", table).splitlines()[0] == "level,floor,motions"
