@@ -401,7 +401,11 @@ def select_and_scale(candidates: Sequence[Motion], target: Callable, periods_s, 
                      "target over the range (ASCE 7-22 §16.2.3.2)")
     outside = [candidates[k].name for k, f in zip(chosen, factors) if not (low * (1 - 1e-9) <= f <= high * (1 + 1e-9))]
     if outside:
-        cautions.append(f"{len(outside)} motion(s) scaled beyond {low:g}-{high:g} by the common factor")
+        one = len(outside) == 1
+        cautions.append(f"{len(outside)} motion{'' if one else 's'} ({', '.join(outside[:5])}"
+                        f"{', …' if len(outside) > 5 else ''}) {'is' if one else 'are'} scaled beyond {low:g}-{high:g} "
+                        "by the common factor (ground_motions.csv's scale_factor): records nearer the target's "
+                        "level in the records folder would need less")
     motions = tuple(candidates[k].scaled(float(f)) for k, f in zip(chosen, factors))
     min_ratio = float(ratio.min() * common)
     scaled_ln = np.log(spectra[chosen]) + np.log(factors)[:, None] - log_target[None, :]

@@ -244,3 +244,16 @@ def test_records_far_too_weak_for_the_target_are_refused_not_scaled_by_1e30(cand
         suite.select_and_scale(weak, DE.design_g, BUILDING_AND_ITEMS_S, level="DE")
     selected = suite.select_and_scale(candidates, DE.design_g, BUILDING_AND_ITEMS_S, level="DE")
     assert selected.scale_factors.max() < 10  # the real records still make a suite
+
+
+def test_motions_scaled_beyond_the_bounds_are_named_in_the_caution(candidates):
+    """A target far above the records (six times the design spectrum): the common factor that lifts the suite's
+    mean to 90 % of it takes some records beyond the 0.25-4 ASCE 7-22 §16.2.3.2 bounds; the caution counts and
+    names exactly those, as ground_motions.csv's scale_factor shows them."""
+    built = suite.select_and_scale(candidates, lambda period_s: 6.0 * DE.design_g(period_s), BUILDING_AND_ITEMS_S,
+                                   level="DE")
+    beyond = built.ground_motions[built.ground_motions.scale_factor > 4.0 * (1 + 1e-9)]
+    assert len(beyond) >= 1
+    caution, = [c for c in built.cautions if "scaled beyond 0.25-4" in c]
+    assert caution.startswith(f"{len(beyond)} motion")
+    assert all(name in caution for name in beyond.motion[:5])
