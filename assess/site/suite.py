@@ -86,6 +86,17 @@ SYNTHETIC_SUITE_SIZE = 120
 DEFAULT_SCALE_BOUNDS = (0.25, 4.0)
 #: The suite's mean spectrum is at least this share of the target over the range (§16.2.3.2).
 MEAN_RATIO_MIN = 0.9
+#: A suite whose mean is this many times the target or more at the median period of its range is said to
+#: overshoot (a caution): §16.2.3.2 bounds the mean from below only, and one common factor that lifts a suite's
+#: weakest period to 90 % lifts every other period with it, so a pool of records shaped unlike the target gives a
+#: suite of a stronger earthquake than the level's. 1.3: the overshoot an 11-record suite's spread alone gives
+#: (the arithmetic mean of records centred on the target in ln, with a spread σ ln of 0.7, is e^(σ²/2) = 1.28
+#: times it); a judgement, not a code value.
+OVERSHOOT_RATIO = 1.3
+#: The suite's mean PGA is said (a caution) where it is outside these shares of the target's PGA (its value at
+#: T = 0): items on the ground floor stand on the ground motion itself, whose peak is their demand. A judgement:
+#: the band within which the code spectra's suites stay (0.94-1.11 of 0.4 S_DS, synthetic and records).
+PGA_RATIO_BOUNDS = (0.8, 1.25)
 #: Period range bounds as multiples of the shortest and longest period that matters (§16.2.3.1).
 LOWER_FACTOR, UPPER_FACTOR = 0.2, 2.0
 #: Periods [s] of the checks (log-spaced over the range).
@@ -112,7 +123,9 @@ _COMPONENT = re.compile(r"[-_ ](\d{3}|H1|H2|HN1|HN2|HNE|HNN|HLE|HLN|N|E|S|W|NS|E
 #: Shortest period [s] a suite is matched or checked at: below it an ASCE 7 or uniform-hazard spectrum is the
 #: peak ground acceleration's straight line, and a 5 %-damped oscillator follows the ground (Sa = PGA): nothing
 #: there shapes a floor's motion or an item's response, and matching there chases a few time steps' worth of
-#: content (at 0.005 s, 0.05 s is 10 steps a cycle). The suite's PGA is still the target's at T = 0.
+#: content (at 0.005 s, 0.05 s is 10 steps a cycle). The suite's PGA is not matched: it is checked against the
+#: target's at T = 0 (:func:`amplitude_cautions`), since a UHS's straight line from its PGA to its first SA period
+#: need not be what a motion's spectrum does there.
 MIN_PERIOD_S = 0.05
 #: The fewest time steps a cycle at the range's shortest period may hold.
 MIN_STEPS_PER_CYCLE = 10
@@ -342,6 +355,48 @@ def _within_target(target, lower, upper):
     return lower, max_period, max_period, note
 
 
+def amplitude_cautions(motions: Sequence[Motion], target: Callable, periods_s, ratio, *, common_factor=1.0) -> list:
+    """What a suite's amplitude says that its 90 % floor does not: a mean far above the target over most of the
+    range (:data:`OVERSHOOT_RATIO`), a mean PGA outside :data:`PGA_RATIO_BOUNDS` of the target's.
+
+    ``ratio`` is the suite's mean over the target at ``periods_s`` (the range's check grid); ``common_factor`` the
+    factor the suite was lifted by, if any. A target without a value at T = 0 (a UHS without PGA) gives no PGA
+    check.
+
+    >>> from assess.hazard.records import Record
+    >>> flat = lambda period_s: np.full(np.shape(period_s), 0.5)
+    >>> motion = Motion("m", Record(np.array([0.0, 0.6, -0.3, 0.0]), 0.01, "m"), None, "records", None)
+    >>> amplitude_cautions([motion], flat, [0.1, 1.0, 2.0], [2.0, 2.4, 0.9], common_factor=1.8)[0][:61]
+    "the suite's mean is 2.0 times the target at the median period"
+    >>> amplitude_cautions([motion], flat, [0.1, 1.0], [1.0, 1.1])
+    []
+    """
+    cautions = []
+    periods, ratio = np.asarray(periods_s, dtype=float), np.asarray(ratio, dtype=float)
+    typical = float(np.median(ratio))
+    if typical >= OVERSHOOT_RATIO:
+        weakest = float(periods[np.argmin(ratio)])
+        lifted = (f"the common factor {common_factor:.2f} that lifts its weakest period ({weakest:.3g} s) to "
+                  f"{MEAN_RATIO_MIN:.0%} of the target lifts every other period with it, so " if common_factor > 1.0
+                  else "")
+        cautions.append(f"the suite's mean is {typical:.1f} times the target at the median period of the range "
+                        f"({ratio.max():.1f} at most): {lifted}the items are assessed under stronger shaking than "
+                        "the level's; records shaped like the target spectrum, or no records folder (synthetic "
+                        "motions matched to it), give the level's own")
+    try:
+        target_pga = float(np.asarray(target(np.array([0.0])), dtype=float)[0])
+    except ValueError:  # a UHS without PGA: nothing to check against
+        return cautions
+    pga = float(np.mean([motion.pga_g for motion in motions]))
+    low, high = PGA_RATIO_BOUNDS
+    if target_pga > 0 and not low <= pga / target_pga <= high:
+        cautions.append(f"the suite's mean PGA is {pga / target_pga:.0%} of the target's ({pga:.3g} g against "
+                        f"{target_pga:.3g} g), which the fit over the range does not set: items on the ground "
+                        f"floor stand on the motions' own peaks, {'below' if pga < target_pga else 'above'} the "
+                        "level's")
+    return cautions
+
+
 def select_and_scale(candidates: Sequence[Motion], target: Callable, periods_s, *, level: str,
                      suite_size: int = DEFAULT_SUITE_SIZE, scale_bounds=DEFAULT_SCALE_BOUNDS,
                      mean_ratio_min: float = MEAN_RATIO_MIN, mass_period_s=None) -> GroundSuite:
@@ -407,6 +462,7 @@ def select_and_scale(candidates: Sequence[Motion], target: Callable, periods_s, 
                         "by the common factor (ground_motions.csv's scale_factor): records nearer the target's "
                         "level in the records folder would need less")
     motions = tuple(candidates[k].scaled(float(f)) for k, f in zip(chosen, factors))
+    cautions += amplitude_cautions(motions, target, grid, ratio * common, common_factor=common)
     min_ratio = float(ratio.min() * common)
     scaled_ln = np.log(spectra[chosen]) + np.log(factors)[:, None] - log_target[None, :]
     ground, spectrum = _tables(level, motions, factors, target, lower, upper, max_period,
@@ -675,6 +731,7 @@ def synthetic_suite(target: Callable, periods_s, *, level: str, suite_size: int 
                         f"{MEAN_RATIO_MIN:.0%} ASCE 7-22 §16.2.3.3 asks of a matched suite")
     if clipped:
         cautions.append(clipped)
+    cautions += amplitude_cautions(motions, target, grid, ratio)
     return GroundSuite(level, "synthetic", tuple(motions), factors, lower, upper, float(ratio.min()), ground,
                        spectrum, tuple(notes + cautions), tuple(cautions))
 

@@ -257,3 +257,30 @@ def test_motions_scaled_beyond_the_bounds_are_named_in_the_caution(candidates):
     caution, = [c for c in built.cautions if "scaled beyond 0.25-4" in c]
     assert caution.startswith(f"{len(beyond)} motion")
     assert all(name in caution for name in beyond.motion[:5])
+
+
+def test_a_suite_far_above_its_target_or_off_its_pga_says_so(candidates):
+    """§16.2.3.2 bounds a scaled suite's mean from below only. pyslammer's 18 records over the range a site sheet
+    uses (0.05-8 s: an item's rocking reaches 4 s) are weak at 8 s against the design spectrum, so the common
+    factor lifts the rest far above it: the caution gives the median ratio and the PGA, each recomputed here from
+    the scaled histories. A synthetic suite matched to the ASCE spectrum, whose PGA is 0.4 S_DS within a few per
+    cent, says neither; one matched to the constructed UHS (its PGA 0.72 of SA(0.1), a straight line between that
+    no motion's spectrum follows) says its PGA."""
+    built = suite.select_and_scale(candidates, DE.design_g, [0.05, 4.0], level="DE")
+    assert (built.lower_s, built.upper_s) == pytest.approx((0.05, 8.0))
+    grid = suite.check_periods_s(built.lower_s, built.upper_s)
+    mean = np.mean([m.spectrum_g(grid) for m in built.motions], axis=0)
+    typical = float(np.median(mean / DE.design_g(grid)))
+    pga_ratio = np.mean([np.max(np.abs(m.first.accel_g)) for m in built.motions]) / (0.4 * 1.0)
+    assert typical > 2.0 and pga_ratio > 2.0  # what the cautions are for
+    overshoot, = [c for c in built.cautions if "times the target at the median period" in c]
+    assert f"the suite's mean is {typical:.1f} times" in overshoot and "common factor" in overshoot
+    pga, = [c for c in built.cautions if "mean PGA" in c]
+    assert f"mean PGA is {pga_ratio:.0%} of the target's" in pga and pga.endswith("above the level's")
+    matched = suite.synthetic_suite(DE.design_g, [0.3, 1.0], level="DE", suite_size=11)
+    assert not [c for c in matched.cautions if "PGA" in c or "median period" in c]
+    uhs = suite.synthetic_suite(_uhs_target(), [0.3, 0.9], level="2in50", suite_size=11)
+    pga_uhs = np.mean([m.pga_g for m in uhs.motions]) / float(_uhs_target()(np.array([0.0]))[0])
+    assert pga_uhs < suite.PGA_RATIO_BOUNDS[0]
+    caution, = [c for c in uhs.cautions if "mean PGA" in c]
+    assert f"{pga_uhs:.0%}" in caution and caution.endswith("below the level's")
