@@ -95,7 +95,8 @@ MEAN_RATIO_MIN = 0.9
 OVERSHOOT_RATIO = 1.3
 #: The suite's mean PGA is said (a caution) where it is outside these shares of the target's PGA (its value at
 #: T = 0): items on the ground floor stand on the ground motion itself, whose peak is their demand. A judgement:
-#: the band within which the code spectra's suites stay (0.94-1.11 of 0.4 S_DS, synthetic and records).
+#: synthetic suites matched to ASCE 7 spectra stay within it (0.94-1.11 of 0.4 S_DS, two sites and three
+#: period ranges), the constructed UHS's fall to 0.53-0.63 of its PGA.
 PGA_RATIO_BOUNDS = (0.8, 1.25)
 #: Period range bounds as multiples of the shortest and longest period that matters (§16.2.3.1).
 LOWER_FACTOR, UPPER_FACTOR = 0.2, 2.0
@@ -296,7 +297,9 @@ class GroundSuite:
         How the suite was made, in clauses.
     cautions : tuple of str
         Those of ``notes`` that say where the suite falls short of what ASCE 7-22 §16.2 asks (the period range cut
-        at the target's longest period, the mean below 90 % of the target, records scaled beyond the bounds):
+        at the target's longest period, the mean below 90 % of the target, records scaled beyond the bounds) or is
+        not of the level's amplitude (a mean far above the target, a mean PGA off the target's:
+        :func:`amplitude_cautions`):
         the report's note on the ground motions says them (:func:`assess.assessment.floors.site_note`).
     """
 
