@@ -179,9 +179,10 @@ def ground_curve_risk(cases: pd.DataFrame, motions: dict, sources: dict, modes, 
     floors, stripes_by_floor = {}, {}
     for floor in sorted(set(int(f) for f in cases["floor"])):
         ground = ground_histories(cases, floor, motions, sources, record_pairs)
+        through = "" if floor == 0 else " and passed through the building"  # the ground floor stands on them
         floors[floor] = {"pfa_per_pga": 1.0, "max_peak_ratio": max_peak_ratio(modes, ground, floor),
-                         "basis": (f"floor {floor_text(floor, numbering)}: stripes of ground acceleration, the ground suite of level "
-                                   f"{level_label} scaled and passed through the building")}
+                         "basis": (f"floor {floor_text(floor, numbering)}: stripes of ground acceleration, the ground "
+                                   f"suite of level {level_label} scaled{through}")}
         stripes_by_floor[floor] = stripe_levels_g(1.0)
     progress(f"fragilities over the hazard curve: {N_STRIPES} stripes of ground acceleration "
              f"({STRIPE_PGA_G[0]:g} to {STRIPE_PGA_G[1]:g} g) passed through the building to "

@@ -140,6 +140,16 @@ def test_the_stripes_floor_histories_are_the_pga_scaled_ground_suite_through_the
             assert any(g.size == w.size and np.max(np.abs(g - w)) <= 1e-12 * np.max(np.abs(w)) for g in used[floor])
 
 
+def test_each_floors_basis_says_what_its_stripes_went_through(de_run):
+    """The ground floor's stripes are the scaled ground suite itself (the histories above: ``expected[0]`` is the
+    ground history), the upper floors' that suite through the building; the basis the report prints says which."""
+    _, _, _, result = de_run
+    basis = {floor: f["basis"] for floor, f in result.curve_risk.floors.items()}
+    assert sorted(basis) == [0, 1, 2]
+    assert basis[0].startswith("floor 0: stripes of ground acceleration") and "building" not in basis[0]
+    assert all(basis[floor].endswith("scaled and passed through the building") for floor in (1, 2))
+
+
 def test_the_fragility_is_in_pga_and_exported_as_pelicuns_peak_ground_acceleration(de_run):
     _, _, _, result = de_run
     curve = result.curve_risk
