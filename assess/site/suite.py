@@ -31,7 +31,7 @@ time-varying filter), seeded per motion from the level and the motion's index
 scaling of SIMQKE (Gasparini & Vanmarcke 1976): the amplitudes are multiplied by the ratio of
 target to response spectrum at the frequency 1/T, phases kept, until the spectrum is within
 ``match_tolerance`` of the target over the range. After each pass the acceleration is
-baseline-corrected (:func:`baseline_corrected`: a linear correction of the acceleration that
+baseline-corrected (:func:`assess.site.matching.baseline_corrected`: a linear correction of the acceleration that
 brings the end velocity and displacement to zero, Boore 2001 style), so the final history
 both matches and ends at rest. One horizontal component per motion, matched to the target as
 it is (maximum-direction when the target is).
@@ -59,7 +59,6 @@ from __future__ import annotations
 import hashlib
 import re
 from dataclasses import dataclass, field
-from functools import lru_cache
 from pathlib import Path
 from typing import Callable, Sequence
 
@@ -70,6 +69,7 @@ from assess.errors import InputError, Problem
 from assess.hazard.records import DT_TOLERANCE, MIN_DURATION_S, Record, check_record_location, read_record
 from assess.hazard.synthesis import rezaeian_residual
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
+from assess.site.matching import check_periods_s, match_spectrum
 from assess.site.spectrum import pseudo_acceleration_spectrum, rotd_spectrum
 
 #: Records in a suite selected from a records folder (ASCE 7-22 §16.2.2: at least 11).
@@ -100,8 +100,6 @@ OVERSHOOT_RATIO = 1.3
 PGA_RATIO_BOUNDS = (0.8, 1.25)
 #: Period range bounds as multiples of the shortest and longest period that matters (§16.2.3.1).
 LOWER_FACTOR, UPPER_FACTOR = 0.2, 2.0
-#: Periods [s] of the checks (log-spaced over the range).
-CHECK_POINTS = 100
 #: Periods [s] shown in spectrum.csv besides the range's own (an NGA-West2-like ladder).
 REPORT_PERIODS_S = (0.01, 0.02, 0.03, 0.05, 0.075, 0.1, 0.15, 0.2, 0.25, 0.3, 0.4, 0.5, 0.75,
                     1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 7.5, 10.0)
@@ -159,11 +157,6 @@ def period_range_s(periods_s, *, mass_period_s=None, lower_factor=LOWER_FACTOR, 
         lower = min(lower, float(mass_period_s))
     upper = float(upper_factor * periods.max())
     return float(min(max(lower, min_period_s), max_period_s)), float(max(min(upper, max_period_s), min_period_s))
-
-
-def check_periods_s(lower_s, upper_s, points=CHECK_POINTS):
-    """Log-spaced periods [s] from ``lower_s`` to ``upper_s`` where the suite is checked."""
-    return np.geomspace(lower_s, upper_s, points)
 
 
 def report_periods_s(lower_s, upper_s, max_period_s=np.inf):
@@ -460,9 +453,9 @@ def select_and_scale(candidates: Sequence[Motion], target: Callable, periods_s, 
     outside = [candidates[k].name for k, f in zip(chosen, factors) if not (low * (1 - 1e-9) <= f <= high * (1 + 1e-9))]
     if outside:
         one = len(outside) == 1
-        cautions.append(f"{len(outside)} motion{'' if one else 's'} ({', '.join(outside[:5])}"
-                        f"{', …' if len(outside) > 5 else ''}) {'is' if one else 'are'} scaled beyond {low:g}-{high:g} "
-                        "by the common factor (ground_motions.csv's scale_factor): records nearer the target's "
+        named = ", ".join(outside[:5]) + (", …" if len(outside) > 5 else "")
+        cautions.append(f"{len(outside)} motion{'' if one else 's'} ({named}) {'is' if one else 'are'} scaled "
+                        f"beyond {low:g}-{high:g} by the common factor (ground_motions.csv's scale_factor): records nearer the target's "
                         "level in the records folder would need less")
     motions = tuple(candidates[k].scaled(float(f)) for k, f in zip(chosen, factors))
     cautions += amplitude_cautions(motions, target, grid, ratio * common, common_factor=common)
@@ -490,119 +483,6 @@ def motion_seed(index: int, base_seed: int = 0) -> int:
     """
     digest = hashlib.sha256(f"assess-ground-suite|{int(base_seed)}|{int(index)}".encode()).digest()
     return int.from_bytes(digest[:8], "big") >> 1
-
-
-def _end_velocity_displacement(accel, dt_s):
-    """v(T) and d(T) of an acceleration from rest (trapezoidal integration)."""
-    v = np.concatenate([[0.0], np.cumsum(0.5 * (accel[1:] + accel[:-1]) * dt_s)])
-    d = np.concatenate([[0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * dt_s)])
-    return v[-1], d[-1]
-
-
-@lru_cache(maxsize=16)
-def _baseline_matrix(samples, dt_s):
-    """End velocity and displacement of a unit constant and a unit ramp (columns): the system of
-    :func:`baseline_corrected`, the same for every motion of a length and step."""
-    unit_v = _end_velocity_displacement(np.ones(samples), dt_s)
-    unit_d = _end_velocity_displacement(np.arange(samples) * dt_s, dt_s)
-    return np.array([[unit_v[0], unit_d[0]], [unit_v[1], unit_d[1]]])
-
-
-def baseline_corrected(accel_g, dt_s):
-    """Acceleration [g] less the line c0 + c1 t that brings end velocity and displacement to zero.
-
-    With v(T) = ∫a dt and d(T) = ∫∫a (trapezoidal, from rest), c0 and c1 solve
-
-    .. math:: c_0 T + c_1 T^2/2 = v(T), \\qquad c_0 T^2/2 + c_1 T^3/6 = d(T)
-
-    (a linear baseline of the acceleration, the lowest-order correction of Boore 2001).
-
-    >>> a = baseline_corrected(np.full(101, 0.01), 0.01)
-    >>> v = np.concatenate([[0], np.cumsum(0.5 * (a[1:] + a[:-1]) * 0.01)])
-    >>> abs(float(v[-1])) < 1e-12
-    True
-    """
-    a = np.asarray(accel_g, dtype=float)
-    t = np.arange(a.size) * dt_s
-    v_end, d_end = _end_velocity_displacement(a, dt_s)
-    c0, c1 = np.linalg.solve(_baseline_matrix(a.size, float(dt_s)), [v_end, d_end])
-    return a - c0 - c1 * t
-
-
-#: Periods of :func:`match_spectrum`'s band (log-spaced over 2.25 times the range's span in log period:
-#: about 39 per decade for 0.07-2.8 s). Measured on 22 motions (level DE's seeds 0-21, SDS 1.0 g,
-#: SD1 0.6 g, 0.07-2.8 s): 80 periods needed 176 realisations in all, 120 needed 59, 160 needed 53,
-#: 200 56, 320 67 (a coarse band leaves narrow peaks between its periods for the dense check to find,
-#: a fine one chases them pass after pass).
-MATCH_POINTS = 160
-#: The dense check of :func:`match_spectrum` looks at every ``_CHECK_SUBSET``-th period first.
-_CHECK_SUBSET = 4
-
-
-def _largest_error(accel_g, dt_s, period_s, target_g, free_vibration_s):
-    """Largest |Sa/target − 1| over ``period_s`` (the exact spectrum; each period's Sa is the same
-    number whichever other periods are computed with it, so a grid checked in parts gives its max)."""
-    sa = pseudo_acceleration_spectrum(accel_g, dt_s, period_s, free_vibration_s=free_vibration_s)
-    return float(np.max(np.abs(sa / target_g - 1.0)))
-
-
-def match_spectrum(accel_g, dt_s, target: Callable, lower_s: float, upper_s: float, *,
-                   tolerance: float = 0.05, max_iterations: int = 30, points: int = MATCH_POINTS,
-                   check_points: int = 8 * CHECK_POINTS):
-    """Acceleration [g] matched to ``target`` over [lower_s, upper_s] by iterative Fourier scaling.
-
-    Each pass (Gasparini & Vanmarcke 1976, SIMQKE): Sa at ``points`` log-spaced periods from
-    lower_s/1.5 to 1.5 upper_s (clipped to the target's domain), the ratio R = target/Sa,
-    interpolated in log frequency at f = 1/T (held at its last value above the band, 1 below it:
-    periods longer than the band are left as generated), multiplies the
-    Fourier amplitudes (phases kept, mean removed); then :func:`baseline_corrected`. The
-    largest |Sa/target − 1| is measured on ``check_points`` log-spaced periods over
-    [lower_s, upper_s] (the exact Nigam-Jennings spectrum; only for a pass whose band is
-    within ``tolerance``, and on every fourth of those periods first: a pass is ranked by the
-    largest error found, the band's or the dense one's); the best pass is returned, early once
-    the dense check is within ``tolerance``.
-
-    Returns
-    -------
-    (ndarray, float)
-        The matched acceleration [g] and its largest |Sa/target − 1| over the range.
-    """
-    max_period = getattr(target, "max_period_s", np.inf)
-    band = np.geomspace(max(lower_s / 1.5, 2.0 * dt_s), min(upper_s * 1.5, max_period), points)
-    goal = np.asarray(target(band), dtype=float)
-    check = check_periods_s(lower_s, upper_s, check_points)
-    check_goal = np.asarray(target(check), dtype=float)
-    coarse = np.arange(check.size) % _CHECK_SUBSET == 0
-    accel = np.asarray(accel_g, dtype=float).copy()
-    n = accel.size
-    frequency = np.fft.rfftfreq(n, dt_s)
-    band_frequency = 1.0 / band[::-1]
-    inside = (band >= lower_s * (1 - 1e-9)) & (band <= upper_s * (1 + 1e-9))
-    best_error, best, best_checked = np.inf, accel, False
-    for _ in range(max_iterations):
-        sa = pseudo_acceleration_spectrum(accel, dt_s, band)
-        error = float(np.max(np.abs(sa[inside] / goal[inside] - 1.0)))
-        checked = False
-        # the dense check (it costs most) only when the band's own periods are within tolerance, first on
-        # every SUBSET-th of its periods, then on the rest once those are within tolerance too; otherwise
-        # the largest error found so far, close to a lower bound of the dense one, ranks the pass
-        if error <= tolerance:
-            error = max(error, _largest_error(accel, dt_s, check[coarse], check_goal[coarse], upper_s))
-            if error <= tolerance:
-                error = max(error, _largest_error(accel, dt_s, check[~coarse], check_goal[~coarse], upper_s))
-                checked = True
-        if error < best_error:
-            best_error, best, best_checked = error, accel, checked
-        if error <= tolerance:
-            break
-        gain = np.interp(np.log(np.maximum(frequency, 1e-12)), np.log(band_frequency), (goal / sa)[::-1])
-        gain[frequency < band_frequency[0]] = 1.0  # below the band: left as it is, never pumped up pass after pass
-        spectrum = np.fft.rfft(accel) * gain
-        spectrum[0] = 0.0
-        accel = baseline_corrected(np.fft.irfft(spectrum, n), dt_s)
-    if not best_checked:  # never checked densely: say what the dense grid says
-        best_error = _largest_error(best, dt_s, check, check_goal, upper_s)
-    return best, best_error
 
 
 #: Significant duration D5-95 [s] of the synthetic motions' stochastic model, and its filter's
