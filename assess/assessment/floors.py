@@ -191,7 +191,8 @@ def site_suite(site: SiteSheet, level: HazardLevel, modes: BuildingModes | None,
     try:
         suite = ground_suite(target, periods, level=name, records_folder=site.records_folder or None,
                              workbook_folder=workbook_folder, suite_size=suite_size or site.suite_size,
-                             base_seed=seed, mass_period_s=mass_period, progress=progress)
+                             base_seed=seed, mass_period_s=mass_period, progress=progress,
+                             records_scaling=site.records_scaling)
     except ValueError as error:
         # the cause's own cell: the records folder (too few records), else the uhs file (a target that ends
         # below the range); a synthetic suite from an ASCE 7 spectrum is never refused
@@ -248,8 +249,9 @@ def site_note(site: SiteSuite, sheet: SiteSheet) -> str:
                  + (f", site class {sheet.site_class}" if sheet.site_class else "") + ")")
     else:
         where = "the site's uniform-hazard spectrum"
-    how = ("records selected from the records folder and scaled to" if suite.method == "records"
-           else "spectrum-compatible synthetic ground motions matched to")
+    how = {"records": "records selected from the records folder and scaled to",
+           "matched records": "records selected from the records folder and each matched to"}.get(
+        suite.method, "spectrum-compatible synthetic ground motions matched to")
     cautions = "".join(f" {caution[0].upper()}{caution[1:]}." for caution in suite.cautions)
     # a mean below what §16.2.3 asks is said by its caution, once
     mean = (f"the suite's mean is at least {suite.min_mean_ratio:.0%} of the target there; "

@@ -135,7 +135,7 @@ class AssessmentResult:
         (``floors.csv``).
     ground_method : str
         How the site made the level's ground suite (:attr:`assess.site.suite.GroundSuite.method`:
-        ``records`` or ``synthetic``); "" where the level's motions are the hazard sheet's.
+        ``records``, ``matched records`` or ``synthetic``); "" where the level's motions are the hazard sheet's.
     design_spectrum : DesignSpectrum or None
         The site's ASCE 7 spectrum (:class:`assess.site.asce7.DesignSpectrum`) where the site sheet gives one;
         ``site_class`` the site sheet's site class ("" where it gives none).
@@ -145,7 +145,7 @@ class AssessmentResult:
         (:func:`assess.report.advice.with_words`), absent from ``summary`` until then.
     floor_origins : dict
         Where each floor's time histories come from (:func:`assess.assessment.summary.floor_origins`):
-        floor (None: every floor) -> ``workbook``, ``site records``, ``site synthetic``, with
+        floor (None: every floor) -> ``workbook``, ``site records``, ``site matched records``, ``site synthetic``, with
         ``+building`` where they passed through the building.
     """
 

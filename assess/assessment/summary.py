@@ -32,6 +32,8 @@ HISTORY_ORIGINS = {
     "workbook": ("records", "the workbook's records"),
     "site records": ("scaled records", "records selected from the site's records folder and scaled to the "
                                        "site's spectrum"),
+    "site matched records": ("matched records", "records selected from the site's records folder and each "
+                                                "matched to the site's spectrum"),
     "site synthetic": ("synthetic ground motions", "synthetic ground motions matched to the site's spectrum"),
 }
 #: Added to an origin (``site synthetic+building``) whose ground motions passed through the building to the floor.
@@ -65,8 +67,8 @@ def floor_origins(motions: pd.DataFrame, ground_method: str = "") -> dict:
 
     ``motions``: the level's motions (:class:`assess.assessment.motions.LevelMotions` ``table``: ``floor``,
     ``all_floors``, ``record_path``, ``motion_key`` and, with a building, ``from_ground``); ``ground_method``
-    the site's ground suite's (``records`` or ``synthetic``; "" without one). A row with no record (PTA, Tp
-    and vp) has no history of its own: the engine's synthetic histories of it are ``synthetic``.
+    the site's ground suite's (``records``, ``matched records`` or ``synthetic``; "" without one). A row with no
+    record (PTA, Tp and vp) has no history of its own: the engine's synthetic histories of it are ``synthetic``.
 
     >>> table = pd.DataFrame({"motion_key": [0, 1, 2], "floor": [0, 2, 1], "all_floors": False,
     ...                       "record_path": ["memory:DE/1", "a.at2", ""], "from_ground": [-1, -1, 0]})

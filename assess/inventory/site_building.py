@@ -33,6 +33,9 @@ DEFAULT_RISK_CATEGORY = "II"
 MIN_SUITE_SIZE, MAX_SUITE_SIZE = 3, 500
 DEFAULT_DAMPING = 0.05
 MAX_STOREYS = 200
+#: How a records folder's suite is fitted to its target (``records_scaling`` of the site sheet): each record
+#: amplitude-scaled, or spectrally matched (ASCE 7-22 §16.2.3.2, §16.2.3.3; :func:`assess.site.suite.ground_suite`).
+RECORDS_SCALINGS = ("amplitude", "matched")
 #: How the building answers its ground motions (``response`` of the building sheet): its elastic modes, or a
 #: stick of yielding storey springs (:mod:`assess.building.yielding`). Without the key: yielding where the
 #: storeys' strength is known (the site sheet's design values, or ``yield_base_shear_g``), elastic otherwise.
@@ -105,6 +108,8 @@ class SiteSheet:
         The site to pick in a ``uhs`` file of several ("" when not given).
     records_folder : str
         Absolute path of a folder of ground-motion records, "" when none.
+    records_scaling : str
+        How the records are fitted to the target, one of :data:`RECORDS_SCALINGS` (``amplitude`` when not given).
     suite_size : int or None
         Motions in a level's ground suite; None: the default of its route
         (:data:`assess.site.suite.DEFAULT_SUITE_SIZE` records, :data:`assess.site.suite.SYNTHETIC_SUITE_SIZE`
@@ -127,6 +132,7 @@ class SiteSheet:
     oq_site: str = ""
     records_folder: str = ""
     suite_size: int | None = None
+    records_scaling: str = "amplitude"
     rows: dict = field(default_factory=dict, compare=False)
     sheet: str = "site"
 
@@ -229,6 +235,7 @@ _SITE_KEYS = {
     "oq_site": Column("oq_site", "text", max_chars=100),
     "records": Column("records", "path", max_chars=255),
     "suite_size": Column("suite_size", "integer", low=MIN_SUITE_SIZE, high=MAX_SUITE_SIZE),
+    "records_scaling": Column("records_scaling", "text", max_chars=20),
 }
 #: Keys written with their only unit, g (``sds_g``), besides the bare name.
 _G_KEYS = ("sds", "sd1", "ss", "s1", "yield_base_shear")
@@ -391,12 +398,21 @@ def read_site(table, folder: Path, report) -> SiteSheet | None:
                    "give the folder of ground-motion records, relative to the workbook's folder.")
             else:
                 paths[name] = str(path)
+    scaling = str(out.get("records_scaling", "amplitude")).strip().lower()
+    if scaling not in RECORDS_SCALINGS:
+        at("records_scaling", f"records_scaling {schema.quote(out['records_scaling'])} is not "
+           + " or ".join(RECORDS_SCALINGS) + ".", "write amplitude (each record scaled by one factor, ASCE 7-22 "
+           "§16.2.3.2) or matched (each record's spectrum matched to the target, §16.2.3.3), or delete the row.")
+    elif "records_scaling" in out and "records" not in out and "records" not in invalid:
+        at("records_scaling", "records_scaling says how the records of a records folder are fitted to the "
+           "target, and the sheet names no records folder.", "add a row records (the folder of ground-motion "
+           "records), or delete this row: the synthetic motions are matched to the target already.")
     if len(report.problems) > before:
         return None
     return SiteSheet(code=code, sds_g=out.get("sds"), sd1_g=out.get("sd1"), ss_g=out.get("ss"),
                      s1_g=out.get("s1"), site_class=site_class, tl_s=out.get("tl"),
                      risk_category=risk, uhs_path=paths.get("uhs", ""), oq_site=out.get("oq_site", ""),
-                     records_folder=paths.get("records", ""),
+                     records_folder=paths.get("records", ""), records_scaling=scaling,
                      suite_size=int(out["suite_size"]) if "suite_size" in out else None,
                      rows={name: row for name, (_, row) in values.items()}, sheet=table.title)
 

@@ -15,8 +15,9 @@ def floor_motion_route(result: AssessmentResult) -> dict:
     """Which routes gave this report's floor motions: ``given`` (the hazard sheet's floor motions, unless a
     site sheet gives the level), ``derived`` (``--derive-floors``: floors without one derived from the
     ground's), ``site`` (a site sheet's ground suite) and ``building`` (that suite through the building's
-    modes to the upper floors), ``yielding`` (through its yielding stick instead); and ``ground``, how the site made its ground suite (``records`` or ``synthetic``,
-    the result's ``ground_method``; "" without one)."""
+    modes to the upper floors), ``yielding`` (through its yielding stick instead); and ``ground``, how the site
+    made its ground suite (``records``, ``matched records`` or ``synthetic``, the result's ``ground_method``; ""
+    without one)."""
     site = result.ground_motions is not None
     building = result.floors is not None
     yielding = building and "response" in result.floors  # floors.csv of a yielding building says so

@@ -539,6 +539,7 @@ def hazard_limit_text(result: AssessmentResult) -> str:
     parts = []
     if result.ground_motions is not None:
         how = {"records": "records selected from the site's records folder and scaled to",
+               "matched records": "records selected from the site's records folder and each matched to",
                "synthetic": "synthetic ground motions matched to"}.get(text(result.ground_method), "motions matched to")
         parts.append(f"The ground motions are {how} the site's spectrum ({len(result.ground_motions)} motions)")
     if result.floors is not None and "response" in result.floors:  # a yielding building (floors.csv says so)

@@ -69,7 +69,7 @@ from assess.errors import InputError, Problem
 from assess.hazard.records import DT_TOLERANCE, MIN_DURATION_S, Record, check_record_location, read_record
 from assess.hazard.synthesis import rezaeian_residual
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
-from assess.site.matching import check_periods_s, match_spectrum
+from assess.site.matching import check_periods_s, match_pair, match_spectrum
 from assess.site.spectrum import pseudo_acceleration_spectrum, rotd_spectrum
 
 #: Records in a suite selected from a records folder (ASCE 7-22 §16.2.2: at least 11).
@@ -270,7 +270,7 @@ class GroundSuite:
     level : str
         The level's name.
     method : str
-        ``"records"`` or ``"synthetic"``.
+        ``"records"`` (amplitude-scaled), ``"matched records"`` or ``"synthetic"``.
     motions : tuple of Motion
         The suite, scaled (records) or matched (synthetic).
     scale_factors : ndarray
@@ -377,8 +377,9 @@ def amplitude_cautions(motions: Sequence[Motion], target: Callable, periods_s, r
                   else "")
         cautions.append(f"the suite's mean is {typical:.1f} times the target at the median period of the range "
                         f"({ratio.max():.1f} at most): {lifted}the items are assessed under stronger shaking than "
-                        "the level's; records shaped like the target spectrum, or no records folder (synthetic "
-                        "motions matched to it), give the level's own")
+                        "the level's; records shaped like the target spectrum, the site sheet's records_scaling "
+                        "matched (each record matched to it), or no records folder (synthetic motions matched to it) "
+                        "give the level's own")
     try:
         target_pga = float(np.asarray(target(np.array([0.0])), dtype=float)[0])
     except ValueError:  # a UHS without PGA: nothing to check against
@@ -391,6 +392,26 @@ def amplitude_cautions(motions: Sequence[Motion], target: Callable, periods_s, r
                         f"floor stand on the motions' own peaks, {'below' if pga < target_pga else 'above'} the "
                         "level's")
     return cautions
+
+
+def _selected(candidates, target, periods_s, suite_size, scale_bounds, mass_period_s):
+    """The range and the ``suite_size`` candidates of least log misfit to ``target`` over it, each scaled by the
+    factor (within ``scale_bounds``) that centres it on the target in ln: ``lower, upper, max_period, clipped``
+    (:func:`_within_target`), the check grid, ln of the target there, the candidates' spectra there, every
+    candidate's ln factor and the indices chosen."""
+    lower, upper, max_period, clipped = _within_target(target, *period_range_s(periods_s, mass_period_s=mass_period_s))
+    if len(candidates) < suite_size:
+        raise ValueError(f"{len(candidates)} candidate motions for a suite of {suite_size}")
+    grid = check_periods_s(lower, upper)
+    log_target = np.log(np.asarray(target(grid), dtype=float))
+    spectra = np.array([m.spectrum_g(grid) for m in candidates])
+    if np.any(spectra <= 0):
+        raise ValueError("a candidate motion has a zero spectrum over the range")
+    low, high = scale_bounds
+    log_factor = np.clip(np.mean(log_target - np.log(spectra), axis=1), np.log(low), np.log(high))
+    misfit = np.sqrt(np.mean((np.log(spectra) + log_factor[:, None] - log_target) ** 2, axis=1))
+    order = sorted(range(len(candidates)), key=lambda k: (round(float(misfit[k]), 12), candidates[k].name))
+    return lower, upper, max_period, clipped, grid, log_target, spectra, log_factor, order[:suite_size]
 
 
 def select_and_scale(candidates: Sequence[Motion], target: Callable, periods_s, *, level: str,
@@ -421,19 +442,9 @@ def select_and_scale(candidates: Sequence[Motion], target: Callable, periods_s, 
     ValueError
         Fewer candidates than ``suite_size``; a range beyond the target's periods.
     """
-    lower, upper, max_period, clipped = _within_target(target, *period_range_s(periods_s, mass_period_s=mass_period_s))
-    if len(candidates) < suite_size:
-        raise ValueError(f"{len(candidates)} candidate motions for a suite of {suite_size}")
-    grid = check_periods_s(lower, upper)
-    log_target = np.log(np.asarray(target(grid), dtype=float))
-    spectra = np.array([m.spectrum_g(grid) for m in candidates])
-    if np.any(spectra <= 0):
-        raise ValueError("a candidate motion has a zero spectrum over the range")
+    lower, upper, max_period, clipped, grid, log_target, spectra, log_factor, chosen = _selected(
+        candidates, target, periods_s, suite_size, scale_bounds, mass_period_s)
     low, high = scale_bounds
-    log_factor = np.clip(np.mean(log_target - np.log(spectra), axis=1), np.log(low), np.log(high))
-    misfit = np.sqrt(np.mean((np.log(spectra) + log_factor[:, None] - log_target) ** 2, axis=1))
-    order = sorted(range(len(candidates)), key=lambda k: (round(float(misfit[k]), 12), candidates[k].name))
-    chosen = order[:suite_size]
     factors = np.exp(log_factor[chosen])
     mean = (spectra[chosen] * factors[:, None]).mean(axis=0)
     ratio = mean / np.exp(log_target)
@@ -455,8 +466,8 @@ def select_and_scale(candidates: Sequence[Motion], target: Callable, periods_s, 
         one = len(outside) == 1
         named = ", ".join(outside[:5]) + (", …" if len(outside) > 5 else "")
         cautions.append(f"{len(outside)} motion{'' if one else 's'} ({named}) {'is' if one else 'are'} scaled "
-                        f"beyond {low:g}-{high:g} by the common factor (ground_motions.csv's scale_factor): records nearer the target's "
-                        "level in the records folder would need less")
+                        f"beyond {low:g}-{high:g} by the common factor (ground_motions.csv's scale_factor): records "
+                        "nearer the target's level in the records folder would need less")
     motions = tuple(candidates[k].scaled(float(f)) for k, f in zip(chosen, factors))
     cautions += amplitude_cautions(motions, target, grid, ratio * common, common_factor=common)
     min_ratio = float(ratio.min() * common)
@@ -619,10 +630,84 @@ def synthetic_suite(target: Callable, periods_s, *, level: str, suite_size: int 
                        spectrum, tuple(notes + cautions), tuple(cautions))
 
 
+def matched_records(candidates: Sequence[Motion], target: Callable, periods_s, *, level: str,
+                    suite_size: int = DEFAULT_SUITE_SIZE, tolerance: float = SYNTHETIC_TOLERANCE,
+                    mass_period_s=None) -> GroundSuite:
+    """``suite_size`` records of ``candidates``, selected as :func:`select_and_scale` selects them, each matched to
+    ``target`` over the range instead of scaled (ASCE 7-22 §16.2.3.3, spectral matching): its Fourier amplitudes
+    scaled pass by pass as a synthetic motion's are (:func:`assess.site.matching.match_spectrum`; a pair's both
+    components by the gain of its RotD100, :func:`assess.site.matching.match_pair`), its phases, so its
+    duration, pulses and the order of its cycles, kept.
+
+    What it is for: one factor per record leaves a suite's mean as far above the target as the records are
+    shaped unlike it, wherever its weakest period has to be lifted to 90 % (:func:`amplitude_cautions`); a
+    matched suite's mean is the target's. A record is matched to the target's shape over the range at unit
+    amplitude, then scaled to the target's (as :func:`synthetic_motion`): the motions of two levels whose targets
+    differ by a factor (ASCE 7's DE and MCE_R) differ by that factor exactly. A record is never refused for its
+    match: each one's largest deviation is in ground_motions.csv (``max_deviation``), those beyond
+    ``tolerance`` are counted in the notes; its ``scale_factor`` is 1.
+
+    Raises
+    ------
+    ValueError
+        As :func:`select_and_scale`: fewer candidates than ``suite_size``, a range beyond the target's periods.
+    """
+    lower, upper, max_period, clipped, grid, _, _, _, chosen = _selected(
+        candidates, target, periods_s, suite_size, DEFAULT_SCALE_BOUNDS, mass_period_s)
+    band = np.geomspace(lower, upper, 64)
+    amplitude = float(np.max(np.asarray(target(band), dtype=float)))
+
+    def unit_target(period_s):
+        return np.asarray(target(period_s), dtype=float) / amplitude
+    unit_target.max_period_s = getattr(target, "max_period_s", np.inf)
+    motions, errors = [], []
+    for k in chosen:
+        motion = candidates[k]
+        dt_s = motion.first.dt_s
+        if motion.second is None:
+            accel, error = match_spectrum(motion.first.accel_g, dt_s, unit_target, lower, upper,
+                                          tolerance=0.9 * tolerance, max_iterations=MATCH_PASSES)
+            second = None
+        else:
+            (accel, other), error = match_pair(motion.first.accel_g, motion.second.accel_g, dt_s, unit_target,
+                                               lower, upper, tolerance=0.9 * tolerance, max_iterations=MATCH_PASSES)
+            second = Record(other * amplitude, dt_s, motion.second.name)
+        motions.append(Motion(motion.name, Record(accel * amplitude, dt_s, motion.first.name), second,
+                              motion.source, None))
+        errors.append(error)
+    errors = np.array(errors)
+    spectra = np.array([m.spectrum_g(grid) for m in motions])
+    target_grid = np.asarray(target(grid), dtype=float)
+    ratio = spectra.mean(axis=0) / target_grid
+    misfit_ln = np.sqrt(np.mean(np.log(spectra / target_grid) ** 2, axis=1))
+    ground, spectrum = _tables(level, motions, np.ones(len(motions)), target, lower, upper, max_period, misfit_ln,
+                               errors, [None] * len(motions))
+    notes = [f"{suite_size} of {len(candidates)} records selected by least log misfit over {lower:.3g}-{upper:.3g} s "
+             "and each matched to the target (its Fourier amplitudes scaled, its phases kept; a pair by its "
+             f"RotD100): each within {errors.max():.1%} of it (median {np.median(errors):.1%}); the suite's mean "
+             f"within {ratio.min():.1%}-{ratio.max():.1%} of it"]
+    beyond = [m.name for m, e in zip(motions, errors) if e > tolerance]
+    if beyond:
+        notes.append(f"{len(beyond)} of the {suite_size} records deviate{'s' if len(beyond) == 1 else ''} from the "
+                     f"target by more than {tolerance:.0%} somewhere in the range (at most {errors.max():.1%}): "
+                     f"{', '.join(beyond[:5])}{', …' if len(beyond) > 5 else ''}, their closest match")
+    cautions = []
+    if ratio.min() < MEAN_RATIO_MIN:
+        cautions.append(f"the suite's mean falls to {ratio.min():.1%} of the target in the range, below the "
+                        f"{MEAN_RATIO_MIN:.0%} ASCE 7-22 §16.2.3.3 asks of a matched suite")
+    if clipped:
+        cautions.append(clipped)
+    cautions += amplitude_cautions(motions, target, grid, ratio)
+    return GroundSuite(level, "matched records", tuple(motions), np.ones(len(motions)), lower, upper,
+                       float(ratio.min()), ground, spectrum, tuple(notes + cautions), tuple(cautions))
+
+
 def ground_suite(target: Callable, periods_s, *, level: str, records_folder=None, workbook_folder=None,
                  suite_size: int | None = None, base_seed: int = 0, mass_period_s=None,
-                 progress: Callable | None = None) -> GroundSuite:
-    """A level's ground suite: selected and scaled from ``records_folder``, or synthetic without it.
+                 progress: Callable | None = None, records_scaling: str = "amplitude") -> GroundSuite:
+    """A level's ground suite: selected from ``records_folder`` and scaled to the target (``records_scaling``
+    ``amplitude``, :func:`select_and_scale`) or matched to it (``matched``, :func:`matched_records`), or
+    synthetic without it.
 
     Raises InputError for the folder and its records (:func:`read_records_folder`), ValueError
     when the suite cannot be made (fewer records than ``suite_size``, a target that gives no spectrum
@@ -630,9 +715,9 @@ def ground_suite(target: Callable, periods_s, *, level: str, records_folder=None
     A synthetic suite is never refused for its match (:func:`synthetic_suite`).
     """
     if records_folder is not None:
-        return select_and_scale(read_records_folder(records_folder, workbook_folder=workbook_folder), target,
-                                periods_s, level=level, suite_size=suite_size or DEFAULT_SUITE_SIZE,
-                                mass_period_s=mass_period_s)
+        choose = matched_records if records_scaling == "matched" else select_and_scale
+        return choose(read_records_folder(records_folder, workbook_folder=workbook_folder), target, periods_s,
+                      level=level, suite_size=suite_size or DEFAULT_SUITE_SIZE, mass_period_s=mass_period_s)
     return synthetic_suite(target, periods_s, level=level, suite_size=suite_size or SYNTHETIC_SUITE_SIZE,
                            base_seed=base_seed,
                            mass_period_s=mass_period_s, progress=progress)

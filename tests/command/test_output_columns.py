@@ -65,18 +65,21 @@ def test_a_us_site_and_building_run_has_the_declared_columns(us_site_run, file):
         assert sum(column.startswith("sa_") for column in columns) >= 10
 
 
-def test_a_records_route_run_has_the_declared_columns(tmp_path):
+@pytest.mark.parametrize("scaling", ["amplitude", "matched"])
+def test_a_records_route_run_has_the_declared_columns(tmp_path, scaling):
     """A site sheet whose ground suite is selected from a records folder, beside a hazard sheet that holds its
     headers only (the site gives the hazard): the run writes every file, and ground_motions.csv names each record
     with an empty seed (a seed is a synthetic motion's). Both were refused or failed before: the empty hazard
-    sheet at its row 2 (exit 2), the seed column as a bug (exit 1)."""
+    sheet at its row 2 (exit 2), the seed column as a bug (exit 1). The records scaled, or each matched to the
+    target (``records_scaling``), which the item's demand_source says."""
     from importlib import resources
     folder = tmp_path / "records"
     folder.mkdir()
     source = resources.files("pyslammer") / "sample_ground_motions"
     for name in ("Kobe_1995_TAK-090", "Landers_1992_LCN-345", "Northridge_1994_PAC-175", "Loma_Prieta_1989_HSP-000"):
         (folder / f"{name}.csv").write_text((source / f"{name}.csv").read_text())
-    site = [["key", "value"], ["sds_g", 1.0], ["sd1_g", 0.6], ["records", "records"], ["suite_size", 3]]
+    site = [["key", "value"], ["sds_g", 1.0], ["sd1_g", 0.6], ["records", "records"], ["suite_size", 3],
+            ["records_scaling", scaling]]
     path = write_workbook(tmp_path / "r.xlsx", {"equipment": [dict(EQUIPMENT[0])], "site": site,
                                                 "hazard": [["level", "motion", "floor", "pta_g", "tp_s"]]})
     done = run(path, "--hazard", "DE", "--format", "xlsx", "--out", tmp_path / "out", "--quiet", cwd=tmp_path)
@@ -86,6 +89,10 @@ def test_a_records_route_run_has_the_declared_columns(tmp_path):
     assert len(ground) == 3 and ground["seed"].isna().all() and (ground["record"] != "synthetic").all()
     assert set(ground["motion"]) < {"Kobe_1995_TAK-090", "Landers_1992_LCN-345", "Northridge_1994_PAC-175",
                                     "Loma_Prieta_1989_HSP-000"}
+    summary = pd.read_csv(tmp_path / "out" / "summary.csv")
+    word = "matched records" if scaling == "matched" else "scaled records"
+    assert summary["demand_source"].str.contains(word).all(), summary["demand_source"].tolist()
+    assert ((ground["scale_factor"] == 1.0).all()) == (scaling == "matched")
 
 
 def test_the_writer_refuses_an_undeclared_column_or_values_of_another_kind():

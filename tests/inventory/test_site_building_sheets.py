@@ -97,12 +97,23 @@ def test_unit_slip_in_height_is_refused(make_workbook):
     ([("sds_g", 1.0), ("sd1_g", 0.6), ("sds", 1.1)], "A4", "given twice"),
     ([("sds_g", 1.0), ("sd1_g", 0.6), ("pga", 0.4)], "A4", "unknown key"),
     ([("sds_g", 1.0), ("sd1_g", 0.6), ("suite_size", 2)], "B4", "not plausible"),
+    ([("sds_g", 1.0), ("sd1_g", 0.6), ("records_scaling", "matched")], "B4", "names no records folder"),
+    ([("sds_g", 1.0), ("sd1_g", 0.6), ("records_scaling", "spectral")], "B4", "is not amplitude or matched"),
 ])
 def test_site_refusals(make_workbook, pairs, cell, words):
     problems = _problems(make_workbook, site=pairs)
     located = _located(problems, "site", cell)
     assert located, [str(p) for p in problems]
     assert words in located[0].message, str(located[0])
+
+
+def test_records_scaling_is_read_any_case_and_amplitude_by_default(make_workbook, tmp_path):
+    (tmp_path / "recs").mkdir()
+    given = read_workbook(make_workbook(_sheets(site=[("sds_g", 1.0), ("sd1_g", 0.6), ("records", "recs"),
+                                                      ("records_scaling", " Matched ")], hazard=False))).site
+    assert given.records_scaling == "matched"
+    plain = read_workbook(make_workbook(_sheets(site=[("sds_g", 1.0), ("sd1_g", 0.6)], hazard=False))).site
+    assert plain.records_scaling == "amplitude"
 
 
 def test_the_design_spectrums_corner_is_checked_against_real_sites(make_workbook):

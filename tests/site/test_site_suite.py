@@ -284,3 +284,40 @@ def test_a_suite_far_above_its_target_or_off_its_pga_says_so(candidates):
     assert pga_uhs < suite.PGA_RATIO_BOUNDS[0]
     caution, = [c for c in uhs.cautions if "mean PGA" in c]
     assert f"{pga_uhs:.0%}" in caution and caution.endswith("below the level's")
+
+
+def test_records_matched_to_the_target_are_its_amplitude_where_scaled_ones_overshoot(candidates, tmp_path):
+    """The pool and range of the test above, each selected record matched instead of scaled: the suite's mean,
+    recomputed from the matched histories on a finer grid, is within the matching's tolerance of the target
+    everywhere (where the scaled suite stood at twice it), the same records are chosen, each one's stated
+    deviation is its own, and the levels' motions differ by their targets' factor. A pair is matched by its
+    RotD100 (two records of one step named as one station's components)."""
+    scaled = suite.select_and_scale(candidates, DE.design_g, [0.05, 4.0], level="DE")
+    matched = suite.matched_records(candidates, DE.design_g, [0.05, 4.0], level="DE")
+    assert matched.method == "matched records"
+    assert [m.name for m in matched.motions] == [m.name for m in scaled.motions]
+    grid = np.geomspace(matched.lower_s, matched.upper_s, 300)
+    spectra = np.array([pseudo_acceleration_spectrum(m.first.accel_g, m.first.dt_s, grid) for m in matched.motions])
+    ratio = spectra.mean(axis=0) / DE.design_g(grid)
+    assert ratio.min() >= suite.MEAN_RATIO_MIN and ratio.max() <= 1.0 + suite.SYNTHETIC_TOLERANCE
+    deviation = np.max(np.abs(spectra / DE.design_g(grid) - 1.0), axis=1)
+    stated = matched.ground_motions["max_deviation"].to_numpy()  # found on the matching's own 800 periods
+    assert np.all(deviation <= stated + 0.005) and np.all(deviation >= stated - 0.03)  # two discrete grids
+    assert (matched.ground_motions["scale_factor"] == 1.0).all() and matched.ground_motions["seed"].isna().all()
+    assert not [c for c in matched.cautions if "median period" in c]
+    mce = suite.matched_records(candidates, DE.mce_r_g, [0.05, 4.0], level="MCE_R")
+    for de, mce_r in zip(matched.motions, mce.motions):
+        np.testing.assert_allclose(1.5 * de.first.accel_g, mce_r.first.accel_g, rtol=0, atol=1e-12)
+    source = sorted(Path(str(p)) for p in RECORDS.iterdir() if p.name.endswith(".csv"))
+    same_step = [p for p in source if p.stem in ("Landers_1992_LCN-345", "Loma_Prieta_1989_HSP-000",
+                                                  "Coalinga_1983_PVB-045", "Coyote_Lake_1979_G02-050")]
+    for k, path in enumerate(same_step):
+        (tmp_path / f"STA{k // 2}_H{k % 2 + 1}.csv").write_text(path.read_text())
+    pairs = suite.read_records_folder(tmp_path)
+    assert all(m.second is not None for m in pairs)
+    both = suite.matched_records(pairs, DE.design_g, [0.3, 1.0], level="DE", suite_size=2)
+    for motion, stated in zip(both.motions, both.ground_motions["max_deviation"]):
+        check = np.geomspace(both.lower_s, both.upper_s, 300)
+        rotd = rotd_spectrum(motion.first.accel_g, motion.second.accel_g, motion.first.dt_s, check)[100.0]
+        found = np.max(np.abs(rotd / DE.design_g(check) - 1.0))
+        assert stated - 0.03 <= found <= stated + 0.005 and found <= suite.SYNTHETIC_TOLERANCE
