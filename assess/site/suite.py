@@ -414,6 +414,20 @@ def _selected(candidates, target, periods_s, suite_size, scale_bounds, mass_peri
     return lower, upper, max_period, clipped, grid, log_target, spectra, log_factor, order[:suite_size]
 
 
+def matched_suite_cautions(motions: Sequence[Motion], target: Callable, periods_s, ratio, clipped: str) -> list:
+    """The cautions of a suite matched to its target, synthetic or recorded: its mean below the 90 % ASCE 7-22
+    §16.2.3.3 asks of a matched suite, the range cut at the target's longest period (``clipped``, "" when not),
+    and :func:`amplitude_cautions`; ``ratio`` the suite's mean over the target at ``periods_s``."""
+    ratio = np.asarray(ratio, dtype=float)
+    cautions = []
+    if ratio.min() < MEAN_RATIO_MIN:
+        cautions.append(f"the suite's mean falls to {ratio.min():.1%} of the target in the range, below the "
+                        f"{MEAN_RATIO_MIN:.0%} ASCE 7-22 §16.2.3.3 asks of a matched suite")
+    if clipped:
+        cautions.append(clipped)
+    return cautions + amplitude_cautions(motions, target, periods_s, ratio)
+
+
 def select_and_scale(candidates: Sequence[Motion], target: Callable, periods_s, *, level: str,
                      suite_size: int = DEFAULT_SUITE_SIZE, scale_bounds=DEFAULT_SCALE_BOUNDS,
                      mean_ratio_min: float = MEAN_RATIO_MIN, mass_period_s=None) -> GroundSuite:
@@ -619,13 +633,7 @@ def synthetic_suite(target: Callable, periods_s, *, level: str, suite_size: int 
                      f"{tolerance:.0%} somewhere in the range (at most {errors.max():.1%}): the closest match of "
                      f"{'its' if one else 'their'} one realisation, kept so that every level and hazard value uses "
                      "the same realisations")
-    cautions = []
-    if ratio.min() < MEAN_RATIO_MIN:
-        cautions.append(f"the suite's mean falls to {ratio.min():.1%} of the target in the range, below the "
-                        f"{MEAN_RATIO_MIN:.0%} ASCE 7-22 §16.2.3.3 asks of a matched suite")
-    if clipped:
-        cautions.append(clipped)
-    cautions += amplitude_cautions(motions, target, grid, ratio)
+    cautions = matched_suite_cautions(motions, target, grid, ratio, clipped)
     return GroundSuite(level, "synthetic", tuple(motions), factors, lower, upper, float(ratio.min()), ground,
                        spectrum, tuple(notes + cautions), tuple(cautions))
 
@@ -691,13 +699,7 @@ def matched_records(candidates: Sequence[Motion], target: Callable, periods_s, *
         notes.append(f"{len(beyond)} of the {suite_size} records deviate{'s' if len(beyond) == 1 else ''} from the "
                      f"target by more than {tolerance:.0%} somewhere in the range (at most {errors.max():.1%}): "
                      f"{', '.join(beyond[:5])}{', …' if len(beyond) > 5 else ''}, their closest match")
-    cautions = []
-    if ratio.min() < MEAN_RATIO_MIN:
-        cautions.append(f"the suite's mean falls to {ratio.min():.1%} of the target in the range, below the "
-                        f"{MEAN_RATIO_MIN:.0%} ASCE 7-22 §16.2.3.3 asks of a matched suite")
-    if clipped:
-        cautions.append(clipped)
-    cautions += amplitude_cautions(motions, target, grid, ratio)
+    cautions = matched_suite_cautions(motions, target, grid, ratio, clipped)
     return GroundSuite(level, "matched records", tuple(motions), np.ones(len(motions)), lower, upper,
                        float(ratio.min()), ground, spectrum, tuple(notes + cautions), tuple(cautions))
 
