@@ -232,11 +232,12 @@ def read_record(path, *, min_duration_s: float = 0.0, max_pga_g: float = MAX_PLA
 
 
 #: What an operating-system error opening a record means, and what to do.
+#: Where a relative record path starts: a workbook's folder, or for ``assess simulate --record`` the current one.
+_WHERE_PATHS_START = ("check the path (a workbook's record paths start from its folder, assess simulate's --record "
+                      "from the current folder).")
 _OPEN_ERRORS = {
-    errno.ENOENT: ("the record file does not exist.",
-                   "check the path (relative paths are taken from the workbook's folder)."),
-    errno.ENOTDIR: ("the record file does not exist (a part of its path is not a folder).",
-                    "check the path (relative paths are taken from the workbook's folder)."),
+    errno.ENOENT: ("the record file does not exist.", _WHERE_PATHS_START),
+    errno.ENOTDIR: ("the record file does not exist (a part of its path is not a folder).", _WHERE_PATHS_START),
     errno.ELOOP: ("the path is a loop of symbolic links: it leads back to itself and names no file.",
                   "point the record path (or the link) at the record file itself."),
     errno.ENAMETOOLONG: ("the path is too long for the file system (a file or folder name over 255 "
