@@ -412,7 +412,7 @@ def _record_pairs(level_motions: pd.DataFrame, motions: dict, workbook_name: str
                   progress: Progress, memory: dict | None = None) -> dict[int, tuple[Record, Record]]:
     """Per motion with ``record_2``: its accelerations along the items' width and depth
     (:func:`assess.hazard.record_pairs.item_axes_pair`); ``motions`` then holds the width one."""
-    pairs = {}
+    pairs, uneven = {}, []
     for row in level_motions.itertuples(index=False):
         second_path = str(getattr(row, "record_2_path", "") or "")
         if not second_path or not row.record_path:
@@ -427,9 +427,15 @@ def _record_pairs(level_motions: pd.DataFrame, motions: dict, workbook_name: str
         width, depth, note = item_axes_pair(first, second, float(row.azimuth_deg), row.motion, row.row,
                                             workbook_name)
         if note:
-            notes.append(note)
-            progress(note)
+            uneven.append(f"'{row.motion}' ({note})")
         pairs[k] = (width, depth)
         motions[k] = [(width, f"records {first.name} + {second.name} x {float(row.scale):g}"
                        + (f", turned {float(row.azimuth_deg):g} deg" if float(row.azimuth_deg) else ""))]
+    if uneven:  # one note for all: a suite of pairs may hold many
+        one = len(uneven) == 1
+        note = (f"{'Motion' if one else f'{len(uneven)} motions'} {'; '.join(uneven)}: "
+                f"{'its' if one else 'each'} shorter component is taken as zero (the floor at rest along its axis) "
+                "after its last sample.")
+        notes.append(note)
+        progress(note)
     return pairs

@@ -50,7 +50,9 @@ def rotate_to_item_axes(accel_1_g, accel_2_g, azimuth_deg: float):
 
 def item_axes_pair(first: Record, second: Record, azimuth_deg: float, motion: str, row: int,
                    workbook_name: str) -> tuple[Record, Record, str]:
-    """The motion's accelerations along the items' width and depth, and a note ("" when nothing to say).
+    """The motion's accelerations along the items' width and depth, and what to say of them: "" when nothing,
+    else which component ends how long before the other (``STA1_H2.csv ends 26.58 s before STA1_H1.csv``), the
+    shorter being taken as zero after its last sample.
 
     Raises :class:`~assess.errors.InputError` naming the hazard row when the two steps differ.
     """
@@ -66,10 +68,9 @@ def item_axes_pair(first: Record, second: Record, azimuth_deg: float, motion: st
     r1[:first.accel_g.size], r2[:second.accel_g.size] = first.accel_g, second.accel_g
     note = ""
     if first.accel_g.size != second.accel_g.size:
-        shorter = "record" if first.accel_g.size < second.accel_g.size else "record_2"
+        shorter, longer = (first, second) if first.accel_g.size < second.accel_g.size else (second, first)
         extra_s = abs(first.accel_g.size - second.accel_g.size) * first.dt_s
-        note = (f"Motion '{motion}': {shorter} ends {extra_s:.2f} s before the other component; it is taken "
-                "as zero (the floor at rest along its axis) after its last sample.")
+        note = f"{shorter.name} ends {extra_s:.2f} s before {longer.name}"
     a1, a2 = rotate_to_item_axes(r1, r2, azimuth_deg)
     turned = f", turned by {float(azimuth_deg):g} deg" if float(azimuth_deg) else ""
     return (Record(a1, first.dt_s, f"{first.name} (+ {second.name}{turned}, along width)"),

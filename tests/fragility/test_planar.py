@@ -106,7 +106,14 @@ def test_components_with_different_steps_are_refused_and_different_lengths_expla
     assert "different time steps" in problem.message
     shorter = component(0.4, 1.3, 1.1, seconds=6.0)
     result = run_assessment(pair_inventory(tmp_path, first, shorter, name="short.csv"), "test")
-    assert any("record_2 ends 2.00 s before" in note for note in result.hazard_notes)
+    said = [note for note in result.hazard_notes if "short.csv ends 2.00 s before x.csv" in note]
+    assert len(said) == 1 and said[0].startswith("Motion 'pair' (") and "taken as zero" in said[0]
+    # several uneven pairs (a site's suite of recorded pairs may hold many): one note names each
+    two = pair_inventory(tmp_path, first, shorter, name="short.csv")
+    two.hazard.loc[1] = {**two.hazard.iloc[0].to_dict(), "motion": "other", "row": 3}
+    two.hazard["floor"] = two.hazard["floor"].astype("Int64")
+    notes = [n for n in run_assessment(two, "test").hazard_notes if "taken as zero" in n]
+    assert len(notes) == 1 and notes[0].startswith("2 motions 'pair' (") and "'other' (short.csv" in notes[0]
 
 
 # ----------------------------------------------------------------------------- the workbook's refusals
