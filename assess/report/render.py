@@ -165,7 +165,7 @@ def _item_row(row: pd.Series, system: str = "si", numbering: str = "ground_0") -
         "b_over_h": format_significant(row.get("b_over_h"), 2),
         "mu": format_significant(row.get("mu"), 2),
         "motion": motion or DASH,
-        "direction": f"{direction:.0f}" if direction is not None else "",
+        "direction": f"{direction:.0f}" if direction is not None and motion else "",  # no motion, no direction
         "pta": format_significant(row.get("pta_g"), 2),
         "tp": format_significant(row.get("tp_s"), 2),
         "im": format_significant(row.get("im"), 3),

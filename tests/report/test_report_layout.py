@@ -51,6 +51,17 @@ def test_a_tiny_theta_over_alpha_reads_below_a_thousandth_in_the_report():
     assert "peak θ/α &lt; 0.001" in html  # the item's details
 
 
+def test_an_item_without_a_governing_motion_shows_no_direction():
+    """An anchored item is not analysed: its governing motion is empty, and the direction its b/h is taken in
+    is no motion's direction (the table read "– dir. 2")."""
+    result = make_result(simulated=True)
+    row = result.summary.iloc[0].copy()
+    row["governing_direction"] = 2
+    assert _item_row(row)["direction"] == "2" and _item_row(row)["motion"] != "–"
+    row["governing_motion"] = float("nan")
+    assert _item_row(row)["motion"] == "–" and _item_row(row)["direction"] == ""
+
+
 # --------------------------------------------------------------------------- the all-items table on paper
 def _cell_lines(html: str) -> list[tuple[str, list[str]]]:
     """Every table cell of the report's body as WeasyPrint lays it out: its class and the text of each line."""
