@@ -181,7 +181,8 @@ def test_file_of_comments_only(tmp_path):
 
 def test_missing_file(tmp_path):
     problem = refused(tmp_path / "nowhere.csv")
-    assert problem.message == "the record file does not exist." and "start from its folder" in problem.fix and "--record from the current folder" in problem.fix
+    assert problem.message == "the record file does not exist."
+    assert "start from its folder" in problem.fix and "--record from the current folder" in problem.fix
 
 
 @pytest.mark.parametrize("unit, values, suggested", [
