@@ -113,6 +113,7 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path[:0] = [str(REPO / "tests")]
 
 from assess.anchorage.equations import height_factor  # noqa: E402
+from assess.fragility.suite import binomial_interval  # noqa: E402
 from peers.opensees_buildings import BRACED, BUILDINGS  # noqa: E402
 from peers.yielding_equipment import (LEVELS, SYSTEM_R, assess, compare, given_routes,  # noqa: E402
                                       given_strength, ground_suite, truth_result, workbook)
@@ -137,16 +138,14 @@ def stronger(truth, factor: float):
 def overturn_misses(table: pd.DataFrame) -> str:
     """Where the overturn verdicts part, pooled per route over the buildings and levels: the cases where the tool
     alone overturns (on the safe side) and where the truth alone does, and the share of agreement where either
-    overturns with its 90 % Clopper-Pearson interval (the per-case share rests on few cases)."""
-    from scipy import stats
-
+    overturns with its 90 % Clopper-Pearson interval
+    (:func:`assess.fragility.suite.binomial_interval`; the per-case share rests on few cases)."""
     lines = ["| route | both | tool only | truth only | agreement (90 % interval) |", "|---|---|---|---|---|"]
     for route, group in table.groupby("route", sort=False):
         either = int(group["n_overturn"].sum())
         both = int(round(float((group["overturn_agree"].fillna(0.0) * group["n_overturn"]).sum())))
-        low = stats.beta.ppf(0.05, both, either - both + 1) if both > 0 else 0.0
-        high = stats.beta.ppf(0.95, both + 1, either - both) if both < either else 1.0
         share = both / either if either else float("nan")
+        low, high = binomial_interval(share, either, 0.90) if either else (float("nan"), float("nan"))
         lines.append(f"| {route} | {both} | {int(group['overturn_tool_only'].sum())} | "
                      f"{int(group['overturn_truth_only'].sum())} | {share:.2f} ({low:.2f}-{high:.2f}) |")
     return "\n".join(lines)
@@ -175,14 +174,11 @@ def held_agreement(tool, reference, held: pd.Series) -> dict:
 
 def held_misses(table: pd.DataFrame) -> str:
     """:func:`overturn_misses`'s pooled agreement on the cases whose verdict the truth holds, per route."""
-    from scipy import stats
-
     lines = ["| route | cases where either overturns, verdict held | agreement (90 % interval) |", "|---|---|---|"]
     for route, group in table.dropna(subset=["overturn_agree_held"]).groupby("route", sort=False):
         either = int(group["n_overturn_held"].sum())
         both = int(round(float((group["overturn_agree_held"] * group["n_overturn_held"]).sum())))
-        low = stats.beta.ppf(0.05, both, either - both + 1) if both > 0 else 0.0
-        high = stats.beta.ppf(0.95, both + 1, either - both) if both < either else 1.0
+        low, high = binomial_interval(both / either, either, 0.90)
         lines.append(f"| {route} | {either} | {both / either:.2f} ({low:.2f}-{high:.2f}) |")
     return "\n".join(lines)
 

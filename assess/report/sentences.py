@@ -538,10 +538,10 @@ def hazard_limit_text(result: AssessmentResult) -> str:
     the building's elastic model, the hazard sheet's motions and how they were changed)."""
     parts = []
     if result.ground_motions is not None:
-        how = {"records": "records selected from the site's records folder and scaled to",
-               "matched records": "records selected from the site's records folder and each matched to",
-               "synthetic": "synthetic ground motions matched to"}.get(text(result.ground_method), "motions matched to")
-        parts.append(f"The ground motions are {how} the site's spectrum ({len(result.ground_motions)} motions)")
+        from assess.assessment.summary import HISTORY_ORIGINS  # the suite's origin in the items' own words
+        _, how = HISTORY_ORIGINS.get(f"site {text(result.ground_method)}",
+                                     ("", "motions matched to the site's spectrum"))
+        parts.append(f"The ground motions are {how} ({len(result.ground_motions)} motions)")
     if result.floors is not None and "response" in result.floors:  # a yielding building (floors.csv says so)
         parts.append("the upper floors' motions are the ground motions through a model of the building that "
                      "yields, trusted up to the storey drift its section gives; the building's own collapse is "

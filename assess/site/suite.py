@@ -541,6 +541,33 @@ _MATCHED: dict = {}
 _MATCHED_MAX = 4096
 
 
+def _unit_target(target: Callable, lower_s: float, upper_s: float):
+    """``target``'s shape over [lower_s, upper_s] at unit amplitude, what a motion is matched to before it is scaled
+    to the target's (so that two levels whose targets differ by a factor get motions that differ by it): the unit
+    target (a callable with ``max_period_s``), the amplitude [g] (the target's largest Sa on 64 log-spaced periods
+    of the range) and the unit shape on those periods.
+
+    Raises ValueError where the target is not positive over the range."""
+    band = np.geomspace(lower_s, upper_s, 64)
+    shape = np.asarray(target(band), dtype=float)
+    if np.any(~np.isfinite(shape)) or np.any(shape <= 0):
+        raise ValueError(f"the target spectrum is not positive over {lower_s:.3g}-{upper_s:.3g} s")
+    amplitude = float(shape.max())
+
+    def unit_target(period_s):
+        return np.asarray(target(period_s), dtype=float) / amplitude
+    unit_target.max_period_s = getattr(target, "max_period_s", np.inf)
+    return unit_target, amplitude, shape / amplitude
+
+
+def _fit(motions: Sequence[Motion], target: Callable, grid):
+    """A suite's spectra against ``target`` on ``grid``: the mean over the target there, and each motion's root mean
+    square of ln(Sa/target)."""
+    spectra = np.array([m.spectrum_g(grid) for m in motions])
+    target_grid = np.asarray(target(grid), dtype=float)
+    return spectra.mean(axis=0) / target_grid, np.sqrt(np.mean(np.log(spectra / target_grid) ** 2, axis=1))
+
+
 def synthetic_motion(target: Callable, lower_s: float, upper_s: float, seed: int, *, dt_s: float = 0.005,
                      d5_95_s: float = SYNTHETIC_D5_95_S, tolerance: float = SYNTHETIC_TOLERANCE,
                      name: str = "synthetic") -> tuple[Record, float]:
@@ -566,17 +593,10 @@ def synthetic_motion(target: Callable, lower_s: float, upper_s: float, seed: int
     (Record, float)
         The motion [g] and its largest |Sa/target − 1| over the range.
     """
-    band = np.geomspace(lower_s, upper_s, 64)
-    shape = np.asarray(target(band), dtype=float)
-    if np.any(~np.isfinite(shape)) or np.any(shape <= 0):
-        raise ValueError(f"the target spectrum is not positive over {lower_s:.3g}-{upper_s:.3g} s")
-    amplitude = float(shape.max())
+    unit_target, amplitude, unit_shape = _unit_target(target, lower_s, upper_s)
     key = (int(seed), float(dt_s), float(d5_95_s), float(lower_s), float(upper_s), float(tolerance),
-           tuple(np.round(shape / amplitude, 12)))
+           tuple(np.round(unit_shape, 12)))
     if key not in _MATCHED:
-        def unit_target(period_s):
-            return np.asarray(target(period_s), dtype=float) / amplitude
-        unit_target.max_period_s = getattr(target, "max_period_s", np.inf)
         if len(_MATCHED) >= _MATCHED_MAX:
             _MATCHED.clear()
         _MATCHED[key] = match_spectrum(_realisation_g(seed, dt_s, d5_95_s), dt_s, unit_target, lower_s, upper_s,
@@ -616,11 +636,8 @@ def synthetic_suite(target: Callable, periods_s, *, level: str, suite_size: int 
             progress(index + 1, suite_size)
     factors = np.ones(suite_size)
     grid = check_periods_s(lower, upper)
-    spectra = np.array([m.spectrum_g(grid) for m in motions])
-    target_grid = np.asarray(target(grid), dtype=float)
-    ratio = spectra.mean(axis=0) / target_grid
+    ratio, misfit_ln = _fit(motions, target, grid)
     errors = np.array(errors)
-    misfit_ln = np.sqrt(np.mean(np.log(spectra / target_grid) ** 2, axis=1))
     ground, spectrum = _tables(level, motions, factors, target, lower, upper, max_period, misfit_ln, errors, seeds)
     notes = [f"{suite_size} synthetic motions (Rezaeian & Der Kiureghian 2008 model, matched by iterative "
              f"Fourier scaling) over {lower:.3g}-{upper:.3g} s: each within {errors.max():.1%} of the target "
@@ -662,12 +679,7 @@ def matched_records(candidates: Sequence[Motion], target: Callable, periods_s, *
     """
     lower, upper, max_period, clipped, grid, _, _, _, chosen = _selected(
         candidates, target, periods_s, suite_size, DEFAULT_SCALE_BOUNDS, mass_period_s)
-    band = np.geomspace(lower, upper, 64)
-    amplitude = float(np.max(np.asarray(target(band), dtype=float)))
-
-    def unit_target(period_s):
-        return np.asarray(target(period_s), dtype=float) / amplitude
-    unit_target.max_period_s = getattr(target, "max_period_s", np.inf)
+    unit_target, amplitude, _ = _unit_target(target, lower, upper)
     motions, errors = [], []
     for k in chosen:
         motion = candidates[k]
@@ -684,10 +696,7 @@ def matched_records(candidates: Sequence[Motion], target: Callable, periods_s, *
                               motion.source, None))
         errors.append(error)
     errors = np.array(errors)
-    spectra = np.array([m.spectrum_g(grid) for m in motions])
-    target_grid = np.asarray(target(grid), dtype=float)
-    ratio = spectra.mean(axis=0) / target_grid
-    misfit_ln = np.sqrt(np.mean(np.log(spectra / target_grid) ** 2, axis=1))
+    ratio, misfit_ln = _fit(motions, target, grid)
     ground, spectrum = _tables(level, motions, np.ones(len(motions)), target, lower, upper, max_period, misfit_ln,
                                errors, [None] * len(motions))
     notes = [f"{suite_size} of {len(candidates)} records selected by least log misfit over {lower:.3g}-{upper:.3g} s "
