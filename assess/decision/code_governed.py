@@ -16,7 +16,7 @@ References
 FEMA E-74 (2012), Reducing the Risks of Nonstructural Earthquake Damage - A Practical Guide, chapter 6.
 IAPMO, Uniform Plumbing Code, §507.2 (water heaters: seismic provisions).
 NFPA 99 (2021), Health Care Facilities Code, chapter 11 (cylinder storage).
-ASCE 7-22, §13.5 and Table 13.5-1 (storage cabinets and shelving more than 6 ft tall).
+ASCE 7-16 and 7-22, §13.5 and Table 13.5-1 (storage cabinets and shelving more than 6 ft tall: the same row in both).
 FEMA E-74 (2012) §6.4.1.3, p. 6-182: flexible connections for fuel lines and piping.
 """
 from __future__ import annotations

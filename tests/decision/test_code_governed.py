@@ -7,6 +7,7 @@ NFPA 99: cylinders secured; ASCE 7-22 Table 13.5-1: storage more than 6 ft tall)
 component table the workbook reader checks types with (assess/data/components.csv), not against this code's
 own output.
 """
+import re
 from types import SimpleNamespace
 
 import pytest
@@ -39,6 +40,19 @@ def test_every_name_of_the_table_is_a_component_type_the_workbook_accepts():
         assert rule.reference and rule.detail
         for name in matches:
             assert parse_component_type(name, None) == component_coefficients("ASCE 7-22", name).component_type
+
+
+def test_a_reference_to_asce_7_holds_on_a_site_of_either_edition():
+    """The work orders print a rule's reference whatever edition the site sheet names: one that cited
+    "ASCE 7-22 §13.5" read so on an ASCE 7-16 site. A reference to ASCE 7 names no edition, or both, and the
+    component type its rule takes is a row of both editions' tables."""
+    cited = [rule for _, rule in code_rules() if "ASCE 7" in rule.reference]
+    assert cited, "the table's tall-shelving row cites ASCE 7 Table 13.5-1"
+    for rule in cited:
+        editions = set(re.findall(r"7-(\d\d)", rule.reference))
+        assert editions in (set(), {"16", "22"}), rule.reference
+        for edition in ("ASCE 7-16", "ASCE 7-22"):
+            assert component_coefficients(edition, rule.component_type).component_type == rule.component_type
 
 
 def test_a_water_heater_is_strapped_whatever_the_analysis_says():
