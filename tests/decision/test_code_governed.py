@@ -85,6 +85,17 @@ def test_gas_cylinders_are_chained_and_tall_shelving_anchored_with_its_contents_
     assert low.code is None and low.kind == ActionKind.NONE
 
 
+def test_a_ups_battery_cabinet_is_anchored_whatever_the_analysis_says():
+    """A data centre's 2,800 lb UPS battery cabinet that the analysis gave room to (a new user's, 2026-11-29):
+    FEMA E-74's batteries and battery racks are anchored and their batteries held in the rack."""
+    for typed in ("battery rack", "UPS", "uninterruptible power supply"):
+        ups = actions.decide_action(_item(typed, "UPS-1 battery cabinet", 2.0), _row(p_beyond=0.3, risk="moderate"),
+                                    False, None, SETTINGS)
+        assert ups.kind == ActionKind.ANCHOR and ups.analysis_kind != ActionKind.ANCHOR
+        assert "§6.4.7" in ups.code.reference and "end rails" in ups.code.detail
+    # a generator or a transformer shares the battery rack's anchorage force but is left to the analysis
+    assert code_rule(_item("generator", "Backup generator")) is None
+
 @pytest.mark.parametrize("kind", ["", "laboratory equipment", "refrigerator"])
 def test_equipment_the_table_does_not_name_is_left_to_the_analysis(kind):
     assert code_rule(_item(component_coefficients("ASCE 7-22", kind or None).component_type, kind)) is None
@@ -131,6 +142,11 @@ from assess.inventory.kinds import default_connections, item_type, kind_from_nam
     ("Supply shelving, 6 shelves, loaded", "tall shelving"),
     ("Bulk IV-fluid storage rack, 5 shelves", "tall shelving"),
     ("Anesthesia supply cabinet", "tall shelving"),
+    ("UPS-1 battery cabinet, 2,800 lb", "battery rack"),
+    ("Rackmount UPS", "battery rack"),
+    ("Battery rack, two tiers", "battery rack"),
+    ("Uninterruptible power supply, 40 kVA", "battery rack"),
+    ("Server rack, 42U, UPS batteries in base", "computer rack"),  # the first row with a phrase in the name wins
 ])
 def test_the_name_selects_the_kind_its_phrase_names(name, kind):
     assert kind_from_name(name).equipment == kind
@@ -143,7 +159,9 @@ def test_the_name_selects_the_kind_its_phrase_names(name, kind):
     "Supply cart, stainless, 3 shelves",  # nor are its shelves shelving
     "Cartridge filter housing",        # "cart" inside a word
     "Hydraulic cylinder press",        # a cylinder that holds no gas
-    "Rackmount UPS",                   # "rack" inside a word, no rack named
+    "Rackmount KVM console",           # "rack" inside a word, no rack named
+    "Battery charger, bench",          # a battery alone is not a battery rack
+    "Groups of shelves",               # "ups" inside a word
     "Serverless kiosk",
     "MRI gradient cabinet",            # a cabinet alone is not storage
     "Biological safety cabinet, class II",
