@@ -356,11 +356,6 @@ def through_building(building, ground_motions: Sequence[Record], floors: Optiona
     return floor_records(building, ground_motions, floors=floors), [False] * len(ground_motions)
 
 
-def building_floor_records(building, ground_motions: Sequence[Record], floors: Optional[Sequence[int]] = None,
-                           progress: Optional[Callable[[int, int], None]] = None) -> dict[int, list[Record]]:
-    """The floors' histories of :func:`through_building`, without the drift flags."""
-    return through_building(building, ground_motions, floors, progress)[0]
-
 
 def storey_table(building: YieldingBuilding, histories: Sequence[StickHistory], floors) -> pd.DataFrame:
     """What each storey did over the suite, one row per floor of ``floors`` (storey k below floor k; floor 0

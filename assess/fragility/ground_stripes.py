@@ -12,7 +12,7 @@ ground history of the level's suite through the building: its elastic modes,
    (a pair of records by one factor that brings the larger peak to x_j, as at
    the floor);
 2. the scaled ground histories pass through the building
-   (:func:`assess.building.yielding.building_floor_records`: the level's elastic
+   (:func:`assess.building.yielding.through_building`: the level's elastic
    modes or yielding stick) to the
    floors the items stand on; the items of a floor run under its histories,
    the ground floor's under the scaled ground histories (the engine, both base
@@ -37,13 +37,18 @@ rounding. A yielding building (``response: yielding``,
 :mod:`assess.building.yielding`) is not: each stripe's scaled ground
 histories pass through its nonlinear stick, so that a stronger stripe yields
 its storeys more and its floors' motions are not the scaled weaker ones.
+Where a stripe drives its storeys' drift past what the stick is trusted to
+(:attr:`~assess.building.yielding.YieldingBuilding.drift_limit`), its outcomes
+still count, and the curve's notes say at which stripes and under how many
+ground histories (:func:`beyond_drift_note`), as ``floors.csv`` says it of the
+level's suite.
 """
 from __future__ import annotations
 
 import numpy as np
 import pandas as pd
 
-from assess.building.yielding import YieldingBuilding, building_floor_records, pass_progress
+from assess.building.yielding import YieldingBuilding, pass_progress, through_building
 from assess.quantity_text import floor_text
 from assess.fragility.stripes import (N_STRIPES, STRIPE_PGA_G, CurveRisk, StripeBatch, checked_curve,
                                       fit_and_integrate, stripe_levels_g)
@@ -88,10 +93,12 @@ def ground_histories(cases: pd.DataFrame, floor: int, motions: dict, sources: di
     return out
 
 
-def stripe_histories(modes, ground: list, pga_g: float, floors, progress=None) -> dict[int, list]:
+def stripe_histories(modes, ground: list, pga_g: float, floors, progress=None) -> tuple[dict[int, list], list[bool]]:
     """Per floor of ``floors``: ``(width, depth)`` histories under each ground history of ``ground`` scaled
     to PGA ``pga_g`` [g] (a pair by one factor: its larger peak at ``pga_g``) and passed through the
-    building (:func:`assess.building.yielding.building_floor_records`); floor 0 gets the scaled ground histories."""
+    building (:func:`assess.building.yielding.through_building`); floor 0 gets the scaled ground histories.
+    With them, per ground history of ``ground``, whether a yielding building's storey drift passed its limit
+    under it (either component of a pair; never for elastic modes, nor without a floor above the ground)."""
     scaled = []
     for first, second in ground:
         factor = pga_g / max(float(np.max(np.abs(first.accel_g))), float(np.max(np.abs(second.accel_g))))
@@ -100,9 +107,10 @@ def stripe_histories(modes, ground: list, pga_g: float, floors, progress=None) -
     upper = [f for f in wanted if f > 0]
     paired = [k for k, (_, d) in enumerate(scaled) if d is not None]
     # every history of the stripe (each pair's second after the firsts) through the building in one pass
-    through = building_floor_records(modes, [w for w, _ in scaled] + [scaled[k][1] for k in paired],
-                                     floors=upper, progress=progress) if upper else {}
+    through, beyond = through_building(modes, [w for w, _ in scaled] + [scaled[k][1] for k in paired],
+                                       floors=upper, progress=progress) if upper else ({}, [False] * len(scaled))
     depth_at = {k: len(scaled) + j for j, k in enumerate(paired)}
+    beyond_any = [bool(beyond[k]) or (k in depth_at and bool(beyond[depth_at[k]])) for k in range(len(scaled))]
     out = {}
     for floor in wanted:
         histories = []
@@ -113,16 +121,19 @@ def stripe_histories(modes, ground: list, pga_g: float, floors, progress=None) -
             else:
                 histories.append((first, d if floor == 0 else through[floor][depth_at[k]]))
         out[floor] = histories
-    return out
+    return out, beyond_any
 
 
 def ground_stripe_runs(cases: pd.DataFrame, motions: dict, sources: dict, modes, plan, runner,
-                       progress=None, record_pairs: dict | None = None, say=None) -> pd.DataFrame:
+                       progress=None, record_pairs: dict | None = None, say=None,
+                       beyond: dict | None = None) -> pd.DataFrame:
     """Simulate items under their floor's histories for the ground suite scaled to stripes of PGA.
 
     ``plan``: ``(floor, pga_g, ids)`` as for :func:`assess.fragility.stripes.stripe_runs` (``pga_g`` in
     place of the floor's PFA); the same columns are returned, ``pfa_g`` holding the stripe's PGA [g].
     ``say(text)``, where given, hears how far each stripe's pass through a yielding building has got.
+    ``beyond``, where given, gathers ``{pga_g: [flag per ground history passed]}``: whether each pass took the
+    storeys' drift past the building's limit (:func:`stripe_histories`).
     """
     record_pairs = record_pairs or {}
     per_item = cases.drop_duplicates(["id", "direction"])
@@ -139,8 +150,10 @@ def ground_stripe_runs(cases: pd.DataFrame, motions: dict, sources: dict, modes,
         for floor in floors:
             by_ground.setdefault(tuple(id(w) for w, _ in ground_of[floor]), []).append(floor)
         for group in by_ground.values():
-            through = stripe_histories(modes, ground_of[group[0]], pga_g, group,
-                                       progress=pass_progress(say, f"stripe {pga_g:.3g} g: ") if say else None)
+            through, flags = stripe_histories(modes, ground_of[group[0]], pga_g, group,
+                                              progress=pass_progress(say, f"stripe {pga_g:.3g} g: ") if say else None)
+            if beyond is not None:
+                beyond.setdefault(pga_g, []).extend(flags)
             for floor in group:
                 histories_at[(floor, pga_g)] = through[floor]
     batch = StripeBatch()
@@ -160,7 +173,7 @@ def max_peak_ratio(modes, ground: list, floor: int) -> float:
     modes' ratio (what it does under a stripe too weak to yield it) and its ratio at 1 g (yielding lowers
     it, so the elastic one is the larger in practice)."""
     def ratio(building, pga_g):
-        through = stripe_histories(building, ground, pga_g, [floor])[floor]
+        through = stripe_histories(building, ground, pga_g, [floor])[0][floor]
         return max(max(float(np.max(np.abs(w.accel_g))), float(np.max(np.abs(d.accel_g)))) / pga_g
                    for w, d in through)
 
@@ -188,10 +201,36 @@ def ground_curve_risk(cases: pd.DataFrame, motions: dict, sources: dict, modes, 
              f"({STRIPE_PGA_G[0]:g} to {STRIPE_PGA_G[1]:g} g) passed through the building to "
              f"{len(floors)} floors")
 
+    beyond = {}
+
     def run_plan(plan, report=None):
         return ground_stripe_runs(cases, motions, sources, modes, plan, runner, progress=report,
-                                  record_pairs=record_pairs, say=progress)
+                                  record_pairs=record_pairs, say=progress, beyond=beyond)
 
     prefix = f"{NOTE}, from the stripes of level {level_label}'s suite; " if level_label else f"{NOTE}; "
-    return fit_and_integrate(cases, hazard, levels_g, rates_per_yr, floors, stripes_by_floor, run_plan, progress,
+    risk = fit_and_integrate(cases, hazard, levels_g, rates_per_yr, floors, stripes_by_floor, run_plan, progress,
                              intensity="PGA", note_prefix=prefix)
+    note = beyond_drift_note(beyond, getattr(modes, "drift_limit", None))
+    if note:
+        risk.notes.append(note)
+    return risk
+
+
+def beyond_drift_note(beyond: dict, drift_limit: float | None) -> str:
+    """The curve's note on the stripes whose pass took a yielding building's storey drift past ``drift_limit``
+    (``beyond``: ``{pga_g: [flag per ground history]}`` as :func:`ground_stripe_runs` gathers it); empty where
+    none did.
+
+    >>> beyond_drift_note({0.5: [False, False], 2.0: [True, False], 1.0: [False, True]}, 0.02)
+    "the yielding building's storey drift passed its limit (2 %) at the stripes of 1 and 2 g (under 1 of 2 ground histories at 2 g): its floors' motions there come from a model past what it is trusted to, and those stripes' outcomes still count in the fragilities and rates"
+    """
+    passed = {pga: flags for pga, flags in sorted(beyond.items()) if any(flags)}
+    if not passed or drift_limit is None:
+        return ""
+    levels = [f"{pga:.3g}" for pga in passed]
+    top = max(passed)
+    named = levels[0] if len(levels) == 1 else ", ".join(levels[:-1]) + " and " + levels[-1]
+    return (f"the yielding building's storey drift passed its limit ({100 * drift_limit:g} %) at the stripe"
+            f"{'s' if len(levels) > 1 else ''} of {named} g (under {sum(passed[top])} of {len(passed[top])} ground "
+            f"histories at {top:.3g} g): its floors' motions there come from a model past what it is trusted to, "
+            "and those stripes' outcomes still count in the fragilities and rates")

@@ -256,3 +256,33 @@ def test_each_stripes_pass_through_a_yielding_building_says_how_far_it_has_got(d
         assert not ends, recording.said
         return
     assert {f"{x:.3g}" for x in STRIPES_G} <= ends, recording.said
+
+
+def test_the_curve_says_which_stripes_took_the_yielding_building_past_its_drift_limit(de_run):
+    """A stripe's pass through the yielding stick can drive its storeys past the drift it is trusted to (2 % for
+    ``other``): those stripes still count, and the curve's notes name them and how many ground histories did it
+    at the strongest, from the stick's own peak drifts (recomputed here); the elastic modes name none."""
+    import re
+
+    path, _, _, result = de_run
+    yielding = result.floors["response"].iloc[0] == "yielding" if "response" in result.floors else False
+    notes = [n for n in result.curve_risk.notes if "drift passed its limit" in n]
+    if not yielding:
+        assert not notes
+        return
+    level = level_motions(read_workbook(path), "DE", lambda m: None, seed=3)
+    ground = [level.records[key] for key in level.table.loc[level.table["floor"] == 0, "record_path"]]
+    strength = design_strength("other", [1.0, 1.0], [4.0, 8.0], 0.3, sds_g=1.0, sd1_g=0.6, risk_category="IV")
+    stick = yielding_stick(2, 4.0, strength.storey_yield_ratio, system="other", period_s=0.3, damping=0.05)
+    passed = {}
+    for x in STRIPES_G:
+        drifts = [yielding_response(stick, g.accel_g * (x / np.max(np.abs(g.accel_g))), g.dt_s).peak_drift_ratio.max()
+                  for g in ground]
+        passed[f"{x:.3g}"] = sum(d > 0.02 for d in drifts)
+    assert passed[f"{STRIPES_G[-1]:.3g}"] > 0 and passed[f"{STRIPES_G[0]:.3g}"] == 0  # the check can go both ways
+    note, = notes
+    named = re.search(r"at the stripes? of (.+?) g \(under (\d) of (\d) ground histories at ([\d.]+) g\)", note)
+    stripes = set(re.split(r", | and ", named.group(1)))
+    assert {x for x, k in passed.items() if k} == stripes & set(passed)  # the ten stripes (refined ones besides)
+    assert "(2 %)" in note and named.group(4) == f"{STRIPES_G[-1]:.3g}"
+    assert (int(named.group(2)), int(named.group(3))) == (passed[named.group(4)], 3)
