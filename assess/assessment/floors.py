@@ -26,6 +26,7 @@ from assess.anchorage.equations import height_factor
 from assess.anchorage.item import system_ductility_reduction
 from assess.building.design import OVERSTRENGTH_SOURCE_BY_SYSTEM, design_storey_stiffness
 from assess.building.floors import floors_table
+from assess.building.nonlinear import STRENGTH_BY_SYSTEM
 from assess.building.period import approximate_period
 from assess.building.response import floor_records
 from assess.building.yielding import (BASE_HINGE, STABILITY_COEFFICIENT_MAX, YieldingBuilding, storey_table,
@@ -293,6 +294,10 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
             text += (" The lateral stiffness ratio α, the system's typical value and not this building's, moves the "
                      "floors' motions nearly as much as the strength does (it sets how the columns spread the storeys' "
                      "drift over the height): give lateral_stiffness_ratio where the building's own is known.")
+        if sheet.storey_stiffness is None and not hinged and STRENGTH_BY_SYSTEM[sheet.system] == "stiffness":
+            text += (" Each storey is as strong as its stiffness makes it at one yield drift ratio, and the storeys' "
+                     "stiffnesses the system's default profile, not this building's: give storey_stiffness from the "
+                     "building's model where known.")
     else:
         text = (f"{which}: each ground motion through the building's elastic modes "
                 f"({sheet.storeys} storeys, {sheet.system}, T1 {modes.periods_s[0]:.2f} s ({source}), {stiffness}, "

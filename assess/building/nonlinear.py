@@ -8,8 +8,9 @@ flexural column of the shear-flexural model of :mod:`assess.building.modes`, and
 where asked, the P-Delta geometric stiffness, -P_i/h_i per storey) stays linear.
 Each spring's yield force is its share of the code's distribution of the strength,
 raised where the design makes the storey stronger (:data:`STRENGTH_BY_SYSTEM`):
-frames as strong as they are stiff at the first storey's yield drift
-(:func:`stiffness_strength`, after Priestley et al. [4]_), walls on the linear moment
+frames as strong as they are stiff at one yield drift ratio, the storey whose share
+asks most yielding first at the given strength (:func:`stiffness_strength`, after
+Priestley et al. [4]_), walls on the linear moment
 envelope of capacity design (:func:`capacity_design_strength`, Paulay & Priestley [6]_).
 With every spring elastic, K = K_springs + K_lin is exactly the stiffness of
 :func:`~assess.building.modes.building_modes`, so that the elastic limit is the
@@ -379,21 +380,24 @@ def yielding_response(stick: YieldingStick, ground_accel_g, dt_s, *, substep_s=D
 
 
 def stiffness_strength(code_force_n, storey_stiffness_n_m, storey_heights_m):
-    """Each storey spring's yield force [N]: its code share, or its stiffness at the first storey's yield drift.
+    """Each storey spring's yield force [N]: every spring at one yield drift ratio, the first to yield at its share.
 
-    .. math::  F_{y,i} = \\max\\Big(F^{code}_{y,i},\\; F^{code}_{y,1}\\,
-               \\frac{k_i h_i}{k_1 h_1}\\Big)
+    .. math::  F_{y,i} = k_i h_i\\,\\theta_y,\\qquad
+               \\theta_y = \\max_j \\frac{F^{code}_{y,j}}{k_j h_j}
 
-    A storey is at least as strong as the code's distribution of the strength asks (every
-    storey is designed for its own shear, ASCE 7-22 §12.8.4), and at least as strong as its
-    stiffness makes it: the yield drift of a frame storey is set by its geometry and the
-    steel's yield strain, not by its strength (Priestley, Calvi & Kowalsky [4]_; Priestley
-    [5]_), so a storey sized for drift, gravity or least member sizes, stiffer than its design
-    shear asks, is stronger in proportion, and a storey with the base storey's yield drift
-    ratio carries k_i θ_y h_i. Where the code's shares follow the stiffness (a stick whose
-    springs are the elastic model's under the code's forces, :func:`yielding_stick`'s
-    ``"equivalent shear"``) the rule changes little; where the upper storeys are stiffer than
-    their share (uniform storeys, a continuous column) they are stronger in proportion.
+    The yield drift of a frame storey is set by its geometry and the steel's yield strain,
+    not by its strength (Priestley, Calvi & Kowalsky [4]_; Priestley [5]_): a storey sized
+    for drift, gravity or least member sizes is as strong as it is stiff, so every storey
+    carries k_i θ_y h_i at one yield drift ratio θ_y. θ_y is the least that keeps every storey
+    at least as strong as the code's share of the strength asks (each storey is designed for
+    its own shear, ASCE 7-22 §12.8.4): under the code's forces the storey whose share asks
+    most of its stiffness yields first, exactly at the given strength (``yield_base_shear_g``:
+    a pushover's base shear when its first storey, whichever, yields), and every other storey
+    later. Where the code's shares follow the stiffness (a stick whose springs are the elastic
+    model's under the code's forces, :func:`yielding_stick`'s ``"equivalent shear"``) every
+    storey yields at once and the rule changes nothing; where a storey is stiffer than its
+    share (uniform storeys, a continuous column that carries much of the lower storeys'
+    shear) it is stronger in proportion.
 
     Examples
     --------
@@ -402,14 +406,21 @@ def stiffness_strength(code_force_n, storey_stiffness_n_m, storey_heights_m):
     >>> stiffness_strength([10.0, 7.0, 4.0], [5.0, 5.0, 5.0], [3.0, 3.0, 3.0]).tolist()
     [10.0, 10.0, 10.0]
 
-    A top storey softer than its share keeps its share: k 1, 0.5, 0.2:
+    Springs that follow the shares: the shares themselves:
 
-    >>> stiffness_strength([10.0, 7.0, 4.0], [1.0, 0.5, 0.2], [3.0, 3.0, 3.0]).tolist()
-    [10.0, 7.0, 4.0]
+    >>> stiffness_strength([8.0, 4.0, 2.0], [2.0, 1.0, 0.5], [2.0, 2.0, 2.0]).tolist()
+    [8.0, 4.0, 2.0]
+
+    A first storey whose spring carries little of its share (a continuous column beside it): the
+    second, whose share asks most of its stiffness, yields first at its share; the first is as strong
+    as it is stiff at that yield drift:
+
+    >>> stiffness_strength([4.0, 7.0, 4.0], [1.0, 1.0, 1.0], [3.0, 3.0, 3.0]).tolist()
+    [7.0, 7.0, 7.0]
     """
     code = np.asarray(code_force_n, dtype=float)
     stiffness_height = np.asarray(storey_stiffness_n_m, dtype=float) * np.asarray(storey_heights_m, dtype=float)
-    return np.maximum(code, code[0] * stiffness_height / stiffness_height[0])
+    return stiffness_height * float(np.max(code / stiffness_height))
 
 
 def capacity_design_strength(code_force_n, floor_forces, floor_heights_m):
@@ -493,10 +504,10 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
     p_delta : bool
         Add the gravity loads' geometric stiffness (:func:`p_delta_stiffness`); T_1 stays that without it.
     strength_profile : str, optional
-        How the springs' strength rises above their share of ``storey_yield_ratio`` (the first storey
-        keeps its share): by default the system's (:data:`STRENGTH_BY_SYSTEM`); ``"stiffness"``
-        (:func:`stiffness_strength`), ``"capacity design"`` (:func:`capacity_design_strength`) or
-        ``"code"`` (the shares as given).
+        How the springs' strength rises above their share of ``storey_yield_ratio`` (under the code's
+        forces the first spring to yield does so at its share): by default the system's
+        (:data:`STRENGTH_BY_SYSTEM`); ``"stiffness"`` (:func:`stiffness_strength`), ``"capacity design"``
+        (:func:`capacity_design_strength`) or ``"code"`` (the shares as given).
     """
     n = int(storeys)
     flexure = FLEXURE_BY_SYSTEM[system] if flexure is None else flexure

@@ -237,7 +237,8 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
     strength = replace(strength, storey_yield_ratio=strength.storey_yield_ratio * stick.yield_force_n
                        / code.yield_force_n,
                        source=f"{strength.source}; each storey at least as strong as "
-                              + ("its stiffness makes it at the first storey's yield drift" if profile == "stiffness"
+                              + ("its stiffness makes it at one yield drift ratio, the first to yield doing so at "
+                                 "that base shear" if profile == "stiffness"
                                  else "a capacity-designed wall's linear moment envelope makes it"))
     return YieldingBuilding(modes, stick, strength, system, DRIFT_LIMIT_BY_SYSTEM[system], bool(p_delta),
                             _stick_key(stick), importance)

@@ -116,6 +116,20 @@ def test_the_note_says_which_alpha_ran_and_whose():
     assert "give lateral_stiffness_ratio" not in building_note(building_model_of(wall, SITE), wall, [6], None)
 
 
+def test_the_note_asks_for_the_storey_stiffnesses_where_a_yielding_frames_strength_follows_them():
+    """A yielding frame's storeys are as strong as they are stiff (assess.building.nonlinear.stiffness_strength):
+    where the sheet gives no storey_stiffness the note says the profile is the system's and asks for the model's; not
+    where it is given, nor for an elastic building or a wall on its base hinge (whose strength does not follow it)."""
+    asked = "give storey_stiffness from the building's model"
+    frame = BuildingSheet(storeys=4, height_m=16.0, system="steel moment frame")
+    assert asked in building_note(building_model_of(frame, SITE), frame, [4], None)
+    given = BuildingSheet(storeys=4, height_m=16.0, system="steel moment frame", storey_stiffness=(1.0, 0.9, 0.8, 0.6))
+    elastic = BuildingSheet(storeys=4, height_m=16.0, system="steel moment frame", response="elastic")
+    wall = BuildingSheet(storeys=6, height_m=21.0, system="shear wall")
+    for sheet, floor in ((given, 4), (elastic, 4), (wall, 6)):
+        assert asked not in building_note(building_model_of(sheet, SITE), sheet, [floor], None), sheet
+
+
 def test_the_users_page_gives_the_key_its_range():
     rows = {row["key"].strip("`"): row for row in table_rows(section("workbook.md", "Sheet `building` (optional)"))
             if "key" in row}

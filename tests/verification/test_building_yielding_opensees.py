@@ -10,7 +10,8 @@ degrading law (OpenSees ``Hysteretic``, pinchX 0.8, pinchY 0.4, β 0.4, no damag
 5 % at modes 1 and 3 on the committed tangent stiffness. Records: pyslammer's Northridge
 Pacoima Dam (PAC-175, 20 s) and Kobe Takatori (TAK-090, first 20 s), scaled so that their
 5 %-damped S_a(T_1) is the design spectrum's (DE) and 1.5 times it (MCE_R): every building
-yields (first-storey ductility 2-30). Both step Newmark's average acceleration with
+yields (its most ductile storey 2.2-27, the first storey 0.5-14: each storey as strong as it is stiff at
+one yield drift ratio, the first to yield not always the first storey). Both step Newmark's average acceleration with
 Newton iterations at the same substep, so that what is compared is the model, not the
 discretisation: floor histories RMS(ours - OpenSees)/RMS(OpenSees) ≤ 1 % on every floor,
 storey ductilities within 2 %.
@@ -82,6 +83,8 @@ def test_yielding_floor_histories_against_opensees(storeys, period_s, law, level
         print(f"\n| {storeys} | {law}, {flexure} | {name} | {level} | {error.max():.2e} | {ours.ductility[0]:.2f} | "
               f"{ours.ductility.max():.2f} | {difference.max():.2e} |")
         assert ours.unconverged_steps == 0
-        assert ours.ductility[0] > 1.5, "the building must yield for the comparison to mean something"
+        # the building must yield for the comparison to mean something: its first storey to yield, whichever (each
+        # storey as strong as it is stiff at one yield drift ratio, assess.building.nonlinear.stiffness_strength)
+        assert ours.ductility.max() > 1.5, "the building must yield for the comparison to mean something"
         assert error.max() <= 0.01, (name, error)
         assert difference.max() <= 0.02, (name, difference)
