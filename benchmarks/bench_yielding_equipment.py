@@ -32,7 +32,7 @@ a ``building`` sheet of the building's storeys, height, system and T_1): only th
 * ``elastic``: ``response: elastic``, today's modal route;
 * ``given + truth's stiffness`` (``--truth-profile``): ``given`` with the OpenSees building's storey
   stiffnesses in ``storey_stiffness`` (what an engineer who knows the building would write); the
-  other routes take the system's design profile;
+  other routes but ``given + own α + own stiffness`` (below) take the system's design profile;
 * ``truth, strength x f`` (``--truth-strengths``, e.g. ``0.95,1.05``): the OpenSees building itself with every
   storey's (or the hinge's) strength times f, against the truth. No model error at all, only a strength a few
   per cent off, as no pushover knows it better: how finely each column can tell a model from the truth
@@ -61,24 +61,31 @@ a ``building`` sheet of the building's storeys, height, system and T_1): only th
   (0.59-0.72); over all the cases where either overturns 0.72, 0.73, 0.68 and 0.59.
 * ``given + own α`` (``--own-alpha``): ``given`` with the building's own α in ``lateral_stiffness_ratio``
   (``peers.yielding_equipment.own_alpha``: the frames' column's 10, the shear-building wall the sheet's 30, the
-  bending wall its 0.1), what an engineer with the building's model writes. Measured on the five buildings at DE
-  and MCE_R (``--levels DE,MCE_R --overstrengths "" --own-alpha``): sliding gm 0.96-1.18, σ ln 0.10-0.38, risk
-  class 0.83-1.0 but ``wall6`` at DE (0.75), per-case overturn share 0.45-0.89. Over all 18 of pyslammer's
-  records (``--motions 18``, the last three Kocaeli, Mammoth Lakes-2 and Nisqually; 200 s) the misses grow: with
-  the strength alone gm 0.85-1.10, σ ln up to 0.56 (``smf8`` at MCE_R, 90 % interval 0.31-0.79), risk class
-  0.75-1.0, the per-case overturn share 0.69 pooled (0.63-0.74); with the building's α too gm 0.97-1.16,
-  σ ln up to 0.55 (the same, 0.28-0.81), class 0.75-1.0, 0.70 (0.64-0.75); the elastic modes gm 1.51-4.16, 0.57.
-  ``smf8``'s σ ln at MCE_R is one record's: under Kocaeli the tool's mid-height PFA is 22 % below the truth's,
-  and items at the edge of sliding (the truth 1.4-3.3 cm) stay put, ten cases carrying 55 % of the variance
-  (0.44-0.47 without the five largest deviations);
+  bending wall its 0.1); and ``given + own α + own stiffness``, with the building's storey stiffnesses as well in
+  ``storey_stiffness`` (``peers.yielding_equipment.OWN_MODEL``; the four shear buildings, not the bending wall):
+  what an engineer with the building's model writes. Measured with the frames' storeys at one yield drift ratio
+  (``assess.building.nonlinear.stiffness_strength``, 2026-11-29) over all 18 of pyslammer's records
+  (``--levels DE,MCE_R --motions 18 --overstrengths "" --own-alpha --truth-profile``, 501 s; the last three
+  records Kocaeli, Mammoth Lakes-2 and Nisqually): with the strength alone gm 0.85-1.25, σ ln up to 0.57
+  (``smf8`` at MCE_R, 90 % interval 0.32-0.79), risk class 0.83-1.0, the per-case overturn share 0.71 pooled
+  (0.66-0.76); with the building's α too gm 1.04-1.27, σ ln up to 0.54 (the same), class 0.75-1.0, 0.69
+  (0.64-0.75); with its own model gm 1.04-1.20, σ ln 0.15-0.44 (the frames 0.15-0.29, ``smf8`` at MCE_R 0.25,
+  0.19-0.29; ``wall6`` 0.42-0.44; the bending wall with its α 0.15), class 0.83-1.0 but ``wall6`` at DE (0.75),
+  0.70 (0.64-0.76); the design data gm 0.98-1.24, σ ln up to 0.58; the elastic modes gm 1.51-4.16, 0.57. Over
+  the first 11 records: given 0.92-1.22, σ ln ≤ 0.50, class 0.75-1.0, per case 0.75 (0.67-0.82); own α
+  1.01-1.28; own model 1.01-1.20, σ ln ≤ 0.42. Before (the frames' storeys at the first storey's yield
+  drift), over the 18: the strength alone gm 0.85-1.10, σ ln up to 0.56, with α 0.97-1.16, 0.55, where
+  ``smf8``'s σ ln at MCE_R was one record's (under Kocaeli the tool's mid-height PFA 22 % below the truth's, ten
+  cases carrying 55 % of the variance), and the own model left it at 0.48;
 * ``given, truth α a`` and ``given + α, truth α a`` (``--truth-alphas``, e.g. ``5,20``; the frames only): the frame
   rebuilt with its continuous column at α = a in place of its own 10 (stiffer columns at 5, softer at 20, both
   within Miranda & Taghavi's 5-20 for moment frames), its own pushover base shear given, against the tool with
-  the system's α (12) and with ``lateral_stiffness_ratio`` a. Measured on the three frames at DE and MCE_R
-  (``--levels DE,MCE_R --overstrengths 2 --truth-alphas 5,20``, 134 s for ``smf4,rcf5``): sliding gm 0.39-1.72
-  with the system's α (outside [0.8, 1.25] on 7 of the 12), 0.87-1.16 with the building's; σ ln 0.17-0.40 with
-  the building's except at α 20 and DE (``rcf5`` 0.53, ``smf8`` 0.59); risk class ≥ 0.83 on 10 of the 12 with the
-  building's α, down to 0.25 with the system's.
+  the system's α (12) and with ``lateral_stiffness_ratio`` a. Measured on the three frames at DE
+  (``--levels DE --buildings smf4,smf8,rcf5 --overstrengths "" --truth-alphas 5,20``, the frames' storeys at one
+  yield drift ratio): sliding gm 0.44-1.78 with the system's α (outside [0.8, 1.25] on 2 of the 6), 0.96-1.18
+  with the building's; σ ln 0.13-0.30 with the building's except at α 20 on ``rcf5`` (0.54) and ``smf8`` (0.64);
+  risk class ≥ 0.83 on 4 of the 6 with the building's α (0.75 on two), down to 0.25 with the system's.
+  Before, at the first storey's yield drift, at DE and MCE_R: 0.39-1.72 and 0.87-1.16.
 
 Columns, each route against the truth over the (item, motion, direction) cases: PFA tool/truth at the
 mid-height floor and the roof (median over the motions), sliding: geometric mean and σ of
@@ -116,7 +123,7 @@ from assess.anchorage.equations import height_factor  # noqa: E402
 from assess.fragility.suite import binomial_interval  # noqa: E402
 from peers.opensees_buildings import BRACED, BUILDINGS  # noqa: E402
 from peers.yielding_equipment import (LEVELS, SYSTEM_R, assess, compare, given_routes,  # noqa: E402
-                                      given_strength, ground_suite, truth_result, workbook)
+                                      given_strength, ground_suite, own_stiffness, truth_result, workbook)
 
 
 def markdown(frame: pd.DataFrame) -> str:
@@ -202,8 +209,9 @@ def main(argv=None):
                              "in place of their own 10, each against the routes 'given' (the system's α) and "
                              "'given + α' (lateral_stiffness_ratio the building's)")
     parser.add_argument("--own-alpha", action="store_true",
-                        help="add the route 'given + own α': yield_base_shear_g and the building's own α in "
-                             "lateral_stiffness_ratio (peers.yielding_equipment.own_alpha)")
+                        help="add the routes 'given + own α': yield_base_shear_g and the building's own α in "
+                             "lateral_stiffness_ratio (peers.yielding_equipment.own_alpha), and 'given + own α + "
+                             "own stiffness': those and its storey stiffnesses in storey_stiffness (its model's)")
     parser.add_argument("--truth-profile", action="store_true",
                         help="add the route 'given + truth's stiffness': yield_base_shear_g and the OpenSees "
                              "building's storey stiffnesses in storey_stiffness")
@@ -218,9 +226,8 @@ def main(argv=None):
                 folder = Path(tmp)
                 given = given_routes(truth)
                 routes = given if args.own_alpha else {"given": given["given"]}
-                if args.truth_profile and hasattr(truth, "stiffness_profile"):
-                    profile = ", ".join(f"{k:g}" for k in truth.stiffness_profile)
-                    routes["given + truth's stiffness"] = routes["given"] + [["storey_stiffness", profile]]
+                if args.truth_profile and own_stiffness(truth) is not None:
+                    routes["given + truth's stiffness"] = routes["given"] + [["storey_stiffness", own_stiffness(truth)]]
                 routes["design"] = [["response", "yielding"]]
                 for omega in filter(None, args.overstrengths.split(",")):
                     routes[f"design x {omega}"] = [["response", "yielding"], ["overstrength", float(omega)]]

@@ -71,11 +71,27 @@ def own_alpha(truth) -> float:
     return float(min(truth.column_alpha, LATERAL_STIFFNESS_RATIO_RANGE[1]))
 
 
+def own_stiffness(truth) -> str | None:
+    """The relative storey stiffnesses an engineer with the truth building's own model would write in the building
+    sheet's ``storey_stiffness``: its profile (first storey 1), as the sheet takes it; None for the flexural wall,
+    a cantilever with no storeys of its own (``lateral_stiffness_ratio`` says what it is)."""
+    profile = getattr(truth, "stiffness_profile", None)
+    return None if profile is None else ", ".join(f"{k:g}" for k in profile)
+
+
+#: The route of an engineer with the building's own model: its pushover strength, α and storey stiffnesses.
+OWN_MODEL = "given + own α + own stiffness"
+
+
 def given_routes(truth) -> dict:
-    """The building sheet's rows of the two routes of what the engineer knows: ``given`` (:func:`given_strength`)
-    and ``given + own α`` (that and :func:`own_alpha` in ``lateral_stiffness_ratio``)."""
+    """The building sheet's rows of the routes of what the engineer knows: ``given`` (:func:`given_strength`),
+    ``given + own α`` (that and :func:`own_alpha` in ``lateral_stiffness_ratio``) and, where the building has
+    storeys of its own, :data:`OWN_MODEL` (those and :func:`own_stiffness` in ``storey_stiffness``)."""
     strength = given_strength(truth)
-    return {"given": strength, "given + own α": strength + [["lateral_stiffness_ratio", own_alpha(truth)]]}
+    routes = {"given": strength, "given + own α": strength + [["lateral_stiffness_ratio", own_alpha(truth)]]}
+    if own_stiffness(truth) is not None:
+        routes[OWN_MODEL] = routes["given + own α"] + [["storey_stiffness", own_stiffness(truth)]]
+    return routes
 
 
 #: Issue 29's targets with the strength given: sliding gm within these, σ of ln at most this; the share of items
