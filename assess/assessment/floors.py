@@ -295,9 +295,8 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
                      "floors' motions nearly as much as the strength does (it sets how the columns spread the storeys' "
                      "drift over the height): give lateral_stiffness_ratio where the building's own is known.")
         if sheet.storey_stiffness is None and not hinged and STRENGTH_BY_SYSTEM[sheet.system] == "stiffness":
-            text += (" Each storey is as strong as its stiffness makes it at one yield drift ratio, and the storeys' "
-                     "stiffnesses the system's default profile, not this building's: give storey_stiffness from the "
-                     "building's model where known.")
+            text += (" The storeys' stiffnesses, which set their strengths, are the system's default profile, not "
+                     "this building's: give storey_stiffness from the building's model where known.")
     else:
         text = (f"{which}: each ground motion through the building's elastic modes "
                 f"({sheet.storeys} storeys, {sheet.system}, T1 {modes.periods_s[0]:.2f} s ({source}), {stiffness}, "
