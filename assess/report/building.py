@@ -110,7 +110,8 @@ def building_context(result) -> dict | None:
          "Each storey's peak drift (over its height) is the median over the motions, with their range; the "
          "ductility, in storey 1's row, is the wall's at its base (its peak rotation there over the rotation at "
          "which it yields)") if hinged else
-        (f"its storeys yield at {shear}", "yielded at least one storey",
+        (f"the first of its storeys to yield does so at {shear}, the others later (the yield shear: each storey's "
+         "shear when it yields under the code's lateral forces)", "yielded at least one storey",
          "Each storey's peak drift (over its height) and ductility (peak drift over the drift at which it yields) "
          "are the median over the motions, with their range"))
     lead = (f"The upper floors' motions come from a model of the building that yields: {what_yields}. {yielded} of "
