@@ -279,7 +279,8 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
                 f"{sheet.system}, T1 {modes.periods_s[0]:.2f} s ({source}), {stiffness}, {ratio}, "
                 f"{sheet.damping:.0%} Rayleigh damping; {springs}"
                 + (", with P-Delta" if building.p_delta else "") + "): the floor's absolute acceleration in time "
-                f"(floors.csv). {'It yields' if hinged else 'The first of its storeys to yield does so'} at a base shear of "
+                "(floors.csv). " + ("It yields" if hinged else "The first of its storeys to yield does so")
+                + " at a base shear of "
                 f"{strength.yield_base_shear_g:.3g} W: {strength.source}. Under a motion that "
                 f"{'does not yield it' if hinged else 'yields no storey'} the floors' motions are the elastic modes' "
                 "ones. The "

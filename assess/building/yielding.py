@@ -357,7 +357,6 @@ def through_building(building, ground_motions: Sequence[Record], floors: Optiona
     return floor_records(building, ground_motions, floors=floors), [False] * len(ground_motions)
 
 
-
 def storey_table(building: YieldingBuilding, histories: Sequence[StickHistory], floors) -> pd.DataFrame:
     """What each storey did over the suite, one row per floor of ``floors`` (storey k below floor k; floor 0
     has none): the columns ``floors.csv`` adds for a yielding building (docs/outputs.md).

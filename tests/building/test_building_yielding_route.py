@@ -271,7 +271,8 @@ def test_the_reports_wording_follows_the_model_that_ran_not_the_empty_cells(weak
     wall_floors = weak.floors.copy()
     wall_floors.loc[wall_floors["floor"] > 1, ["storey_yield_ratio", "ductility_median", "ductility_min",
                                                "ductility_max"]] = np.nan
-    assert "the first of its storeys to yield" in building_context(dataclasses.replace(weak, floors=wall_floors))["lead"]
+    walled = building_context(dataclasses.replace(weak, floors=wall_floors))["lead"]
+    assert "the first of its storeys to yield" in walled
     assert "at its base only" in building_context(dataclasses.replace(
         weak, floors=wall_floors.assign(yielding_model="base hinge")))["lead"]
     # a one-storey wall has no empty storey to guess from: the field still gives the hinge's words
