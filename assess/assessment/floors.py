@@ -32,14 +32,14 @@ from assess.building.response import floor_records
 from assess.building.yielding import (BASE_HINGE, STABILITY_COEFFICIENT_MAX, YieldingBuilding, storey_table,
                                       yielding_building, yielding_histories)
 from assess.errors import InputError, Problem
-from assess.hazard.levels import HazardLevel
+from assess.hazard.levels import HazardLevel, parse_level
 from assess.hazard.openquake import SiteChoiceError, parse_site_choice
 from assess.hazard.records import Record
 from assess.inventory.site_building import MAX_YIELDING_STOREYS, BuildingSheet, SiteSheet
 from assess.quantity_text import floor_text, floors_text
-from assess.site.asce7 import DesignSpectrum, from_design_values, from_mapped_values
+from assess.site.asce7 import MCE_R_OVER_DESIGN, DesignSpectrum, from_design_values, from_mapped_values
 from assess.site.suite import MEAN_RATIO_MIN, GroundSuite, ground_suite
-from assess.site.target import level_target
+from assess.site.target import asce7_level, level_target
 
 #: Shortest and longest period of an item's rocking 2π/p that the suite's period range follows [s].
 #: Below 0.05 s a target spectrum is PGA; beyond 4 s a block is so large that it does not rock.
@@ -246,8 +246,10 @@ def site_note(site: SiteSuite, sheet: SiteSheet) -> str:
     """Where the level's ground motions come from, in a sentence for the report."""
     suite = site.suite
     if site.design is not None:
-        where = (f"the {sheet.code} spectrum (S_DS {site.design.sds_g:.3g} g, S_D1 {site.design.sd1_g:.3g} g"
-                 + (f", site class {sheet.site_class}" if sheet.site_class else "") + ")")
+        # MCE_R's target is 1.5 times the design spectrum whose S_DS and S_D1 the sentence quotes (ASCE 7 §11.4.7)
+        times = "" if asce7_level(parse_level(suite.level)) != "MCE_R" else f"{MCE_R_OVER_DESIGN:g} times "
+        where = (f"{times}the {sheet.code} design spectrum (S_DS {site.design.sds_g:.3g} g, S_D1 "
+                 f"{site.design.sd1_g:.3g} g" + (f", site class {sheet.site_class}" if sheet.site_class else "") + ")")
     else:
         where = "the site's uniform-hazard spectrum"
     how = {"records": "records selected from the records folder and scaled to",
