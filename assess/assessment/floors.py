@@ -32,7 +32,7 @@ from assess.building.response import floor_records
 from assess.building.yielding import (BASE_HINGE, STABILITY_COEFFICIENT_MAX, YieldingBuilding, storey_table,
                                       yielding_building, yielding_histories)
 from assess.errors import InputError, Problem
-from assess.hazard.levels import HazardLevel, parse_level
+from assess.hazard.levels import HazardLevel
 from assess.hazard.openquake import SiteChoiceError, parse_site_choice
 from assess.hazard.records import Record
 from assess.inventory.site_building import MAX_YIELDING_STOREYS, BuildingSheet, SiteSheet
@@ -58,11 +58,15 @@ class SiteSuite:
         The site's ASCE 7 spectrum, where the site sheet gives one.
     periods_s : ndarray
         The periods that matter, which set the suite's period range [s].
+    spectrum : str or None
+        Which ASCE 7 spectrum the level's target is (:func:`assess.site.target.asce7_level`: ``design`` or
+        ``MCE_R``, 1.5 times it); None for a uniform-hazard spectrum.
     """
 
     suite: GroundSuite
     design: DesignSpectrum | None
     periods_s: np.ndarray
+    spectrum: str | None = None
 
 
 def storey_stiffness_of(building: BuildingSheet) -> np.ndarray:
@@ -204,7 +208,7 @@ def site_suite(site: SiteSheet, level: HazardLevel, modes: BuildingModes | None,
                                "DE or MCE_R.")
         raise InputError([Problem(workbook_name, f"the ground suite of level '{name}' cannot be made: {error}.",
                                   fix, sheet=site.sheet, row=site.rows.get(key))]) from None
-    return SiteSuite(suite, design, periods)
+    return SiteSuite(suite, design, periods, asce7_level(level))
 
 
 def floors_csv(building, ground: list[Record], floors, level_label: str) -> pd.DataFrame:
@@ -247,7 +251,7 @@ def site_note(site: SiteSuite, sheet: SiteSheet) -> str:
     suite = site.suite
     if site.design is not None:
         # MCE_R's target is 1.5 times the design spectrum whose S_DS and S_D1 the sentence quotes (ASCE 7 §11.4.7)
-        times = "" if asce7_level(parse_level(suite.level)) != "MCE_R" else f"{MCE_R_OVER_DESIGN:g} times "
+        times = f"{MCE_R_OVER_DESIGN:g} times " if site.spectrum == "MCE_R" else ""
         where = (f"{times}the {sheet.code} design spectrum (S_DS {site.design.sds_g:.3g} g, S_D1 "
                  f"{site.design.sd1_g:.3g} g" + (f", site class {sheet.site_class}" if sheet.site_class else "") + ")")
     else:

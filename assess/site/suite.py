@@ -394,6 +394,15 @@ def amplitude_cautions(motions: Sequence[Motion], target: Callable, periods_s, r
     return cautions
 
 
+def _first_names(names, shown=5) -> str:
+    """The first ``shown`` of ``names``, comma-separated, with ", …" where there are more.
+
+    >>> _first_names(["a", "b"]), _first_names(list("abcdefg"), 3)
+    ('a, b', 'a, b, c, …')
+    """
+    return ", ".join(names[:shown]) + (", …" if len(names) > shown else "")
+
+
 def _selected(candidates, target, periods_s, suite_size, scale_bounds, mass_period_s):
     """The range and the ``suite_size`` candidates of least log misfit to ``target`` over it, each scaled by the
     factor (within ``scale_bounds``) that centres it on the target in ln: ``lower, upper, max_period, clipped``
@@ -478,8 +487,8 @@ def select_and_scale(candidates: Sequence[Motion], target: Callable, periods_s, 
     outside = [candidates[k].name for k, f in zip(chosen, factors) if not (low * (1 - 1e-9) <= f <= high * (1 + 1e-9))]
     if outside:
         one = len(outside) == 1
-        named = ", ".join(outside[:5]) + (", …" if len(outside) > 5 else "")
-        cautions.append(f"{len(outside)} motion{'' if one else 's'} ({named}) {'is' if one else 'are'} scaled "
+        cautions.append(f"{len(outside)} motion{'' if one else 's'} ({_first_names(outside)}) "
+                        f"{'is' if one else 'are'} scaled "
                         f"beyond {low:g}-{high:g} by the common factor (ground_motions.csv's scale_factor): records "
                         "nearer the target's level in the records folder would need less")
     motions = tuple(candidates[k].scaled(float(f)) for k, f in zip(chosen, factors))
@@ -707,7 +716,7 @@ def matched_records(candidates: Sequence[Motion], target: Callable, periods_s, *
     if beyond:
         notes.append(f"{len(beyond)} of the {suite_size} records deviate{'s' if len(beyond) == 1 else ''} from the "
                      f"target by more than {tolerance:.0%} somewhere in the range (at most {errors.max():.1%}): "
-                     f"{', '.join(beyond[:5])}{', …' if len(beyond) > 5 else ''}, their closest match")
+                     f"{_first_names(beyond)}, their closest match")
     cautions = matched_suite_cautions(motions, target, grid, ratio, clipped)
     return GroundSuite(level, "matched records", tuple(motions), np.ones(len(motions)), lower, upper,
                        float(ratio.min()), ground, spectrum, tuple(notes + cautions), tuple(cautions))

@@ -329,13 +329,15 @@ def test_the_note_on_the_ground_motions_says_mce_r_is_one_and_a_half_times_the_d
     0.95 g, …) at level MCE_R", its heading S_MS 1.42 g). Each suite is checked against that target by its own
     spectrum here: MCE_R's over DE's is 1.5 at 1 s."""
     from assess.assessment.floors import SiteSuite, site_note
+    from assess.hazard.levels import parse_level
     from assess.inventory.site_building import SiteSheet
+    from assess.site.target import asce7_level
 
     sheet = SiteSheet(code="ASCE 7-16", sds_g=1.0, sd1_g=0.6)
     notes = {}
     for level, target in (("DE", DE.design_g), ("MCE_R", DE.mce_r_g)):
         built = suite.synthetic_suite(target, [0.3, 1.0], level=level, suite_size=11)
-        notes[level] = site_note(SiteSuite(built, DE, None), sheet)
+        notes[level] = site_note(SiteSuite(built, DE, None, asce7_level(parse_level(level))), sheet)
     assert float(DE.mce_r_g(1.0)) == pytest.approx(1.5 * float(DE.design_g(1.0)))
     assert "matched to the ASCE 7-16 design spectrum (S_DS 1 g, S_D1 0.6 g) at level DE" in notes["DE"]
     assert "matched to 1.5 times the ASCE 7-16 design spectrum (S_DS 1 g, S_D1 0.6 g) at level MCE_R" in notes["MCE_R"]
