@@ -35,7 +35,9 @@ A stick's history depends only on the stick and the ground history, so the same 
 the same floor histories bit for bit: the equipment cases simulated under them are found in the case
 cache (:mod:`assess.command.cache`) on the next run, a curve update included. Within a run, the
 stick's answers are kept up to :data:`MEMORY_BYTES` (:func:`stick_history`), so that the floors table
-and the stripes' onset do not simulate a ground history twice.
+and the stripes' onset do not simulate a ground history twice; and a hazard curve's stripes, which pass
+each ground history through at many scales, do not run the stick under a copy weaker than one that yielded
+no storey (:class:`ElasticBound`: the stick is linear below its first yield).
 
 References
 ----------
@@ -284,10 +286,7 @@ def stick_history(building: YieldingBuilding, ground_accel_g, dt_s: float) -> St
                 else yielding_response(building.stick, ground, dt_s))
     ductility = response.ductility[np.isfinite(response.ductility)]
     elastic = bool(np.all(ductility < 1.0))
-    accel = response.floor_accel_g
-    if elastic:
-        history = floor_records(building.modes, [Record(ground, dt_s, "")])
-        accel = np.vstack([history[k][0].accel_g for k in range(building.storeys + 1)])
+    accel = _elastic_floors(building, ground, dt_s) if elastic else response.floor_accel_g
     out = StickHistory(accel, response.peak_drift_ratio, response.ductility, elastic)
     with _MEMORY_LOCK:
         if key not in _MEMORY:
@@ -299,12 +298,83 @@ def stick_history(building: YieldingBuilding, ground_accel_g, dt_s: float) -> St
     return out
 
 
+def _elastic_floors(building: YieldingBuilding, ground: np.ndarray, dt_s: float) -> np.ndarray:
+    """Every floor's acceleration [g] (row 0 the ground) under a ground history that yields no storey: the
+    elastic route's (module text)."""
+    history = floor_records(building.modes, [Record(ground, dt_s, "")])
+    return np.vstack([history[k][0].accel_g for k in range(building.storeys + 1)])
+
+
+@dataclass(frozen=True)
+class ElasticUnder:
+    """What the stick did under a ground history that yielded no storey: the history's scale factor (to the
+    unscaled ground history it is a copy of) and each storey's peak drift ratio and ductility there."""
+
+    factor: float
+    peak_drift_ratio: np.ndarray
+    ductility: np.ndarray
+
+
+class ElasticBound:
+    """For each unscaled ground history passed through one yielding building at several scales (the stripes
+    of a hazard curve), the strongest scale under which no storey yielded.
+
+    The stick is linear until its first spring yields, from rest, whatever its springs' law: under a
+    weaker copy of a ground history that yielded no storey, no storey yields either and every drift is
+    that copy's factor times the stronger one's. Such a copy's floors are the elastic route's histories
+    (:func:`stick_history`), found without running the stick (:func:`weaker_elastic_history`); the same
+    answers, with less work, in any order of the scales (the stronger first leaves the most to skip).
+    """
+
+    def __init__(self):
+        self._known: dict[tuple, ElasticUnder] = {}
+        self._lock = threading.Lock()
+
+    @staticmethod
+    def _key(ground: Record) -> tuple:
+        accel = np.ascontiguousarray(ground.accel_g, dtype=float)
+        return float(ground.dt_s), accel.size, hashlib.blake2b(accel.tobytes(), digest_size=16).digest()
+
+    def below(self, ground: Record, factor: float) -> Optional[ElasticUnder]:
+        """What the stick did under the strongest copy of ``ground`` that yielded no storey, where ``ground``
+        times ``factor`` is no stronger than it; else None."""
+        with self._lock:
+            known = self._known.get(self._key(ground))
+        return known if known is not None and 0.0 < factor <= known.factor else None
+
+    def learn(self, ground: Record, factor: float, history: StickHistory) -> None:
+        """Keep ``history``, the stick under ``ground`` times ``factor``, where it yielded no storey and is the
+        strongest such copy so far."""
+        if not history.elastic:
+            return
+        key = self._key(ground)
+        with self._lock:
+            if key not in self._known or factor > self._known[key].factor:
+                self._known[key] = ElasticUnder(float(factor), history.peak_drift_ratio, history.ductility)
+
+
+def weaker_elastic_history(building: YieldingBuilding, ground_accel_g, dt_s: float, stronger: ElasticUnder,
+                           factor: float) -> StickHistory:
+    """``ground_accel_g``, a copy ``factor`` times an unscaled ground history of which ``stronger`` is a stronger
+    copy that yielded no storey, through ``building`` without running its stick (:class:`ElasticBound`): the
+    elastic route's floors, and the stronger copy's drifts and ductilities times ``factor / stronger.factor``."""
+    ratio = float(factor) / stronger.factor
+    if not 0.0 < ratio <= 1.0:
+        raise ValueError("a copy is known to stay elastic only where it is no stronger than one that did")
+    ground = np.ascontiguousarray(ground_accel_g, dtype=float)
+    return StickHistory(_elastic_floors(building, ground, dt_s), stronger.peak_drift_ratio * ratio,
+                        stronger.ductility * ratio, True)
+
+
 def yielding_histories(building: YieldingBuilding, ground_motions: Sequence[Record],
-                       floors: Optional[Sequence[int]] = None, progress: Optional[Callable[[int, int], None]] = None
+                       floors: Optional[Sequence[int]] = None, progress: Optional[Callable[[int, int], None]] = None,
+                       scaled_from: Optional[tuple[Sequence[Record], Sequence[float], ElasticBound]] = None
                        ) -> tuple[dict[int, list[Record]], list[StickHistory]]:
     """Every ground motion through the yielding building: the floors' histories as records (as
     :func:`~assess.building.response.floor_records` gives them) and each motion's :class:`StickHistory`;
-    ``progress(done, total)`` after each motion, where given."""
+    ``progress(done, total)`` after each motion, where given. With ``scaled_from`` ``(grounds, factors, bound)``,
+    motion m is ``grounds[m]`` times ``factors[m]``: one the ``bound`` knows to stay elastic is not run through
+    the stick (:class:`ElasticBound`), and the bound learns those that stay elastic."""
     wanted = list(range(building.storeys + 1)) if floors is None else [int(k) for k in floors]
     if any(not 0 <= k <= building.storeys for k in wanted):
         raise ValueError(f"floors must lie between 0 and {building.storeys}")
@@ -312,9 +382,19 @@ def yielding_histories(building: YieldingBuilding, ground_motions: Sequence[Reco
     grounds = [np.ascontiguousarray(motion.accel_g, dtype=float) for motion in ground_motions]
     # each motion on its own thread (the kernel releases the GIL): what changes is when, not what
     histories = []
+    known = [None] * len(grounds) if scaled_from is None else [
+        scaled_from[2].below(ground, factor) for ground, factor in zip(scaled_from[0], scaled_from[1])]
+
+    def through(m: int) -> StickHistory:
+        if known[m] is not None:
+            return weaker_elastic_history(building, grounds[m], ground_motions[m].dt_s, known[m], scaled_from[1][m])
+        history = stick_history(building, grounds[m], ground_motions[m].dt_s)
+        if scaled_from is not None:
+            scaled_from[2].learn(scaled_from[0][m], scaled_from[1][m], history)
+        return history
+
     with ThreadPoolExecutor(max(1, min(numba.get_num_threads(), len(grounds)))) as pool:
-        for history in pool.map(lambda m: stick_history(building, grounds[m], ground_motions[m].dt_s),
-                                range(len(grounds))):
+        for history in pool.map(through, range(len(grounds))):
             histories.append(history)
             if progress is not None:
                 progress(len(histories), len(grounds))
@@ -344,15 +424,16 @@ def pass_progress(progress: Callable[[str], None], lead: str = "") -> Callable[[
 
 
 def through_building(building, ground_motions: Sequence[Record], floors: Optional[Sequence[int]] = None,
-                     progress: Optional[Callable[[int, int], None]] = None
+                     progress: Optional[Callable[[int, int], None]] = None,
+                     scaled_from: Optional[tuple[Sequence[Record], Sequence[float], ElasticBound]] = None
                      ) -> tuple[dict[int, list[Record]], list[bool]]:
     """The floors' histories under each ground motion, through the building as it is modelled: its elastic
     modes (:class:`~assess.building.modes.BuildingModes`) or its yielding stick (:class:`YieldingBuilding`,
-    ``progress`` as :func:`yielding_histories` takes it); with, for each ground motion, whether the stick's
-    storey drift passed :attr:`YieldingBuilding.drift_limit` under it (what the model is trusted to; never for
-    the elastic modes)."""
+    ``progress`` and ``scaled_from`` as :func:`yielding_histories` takes them); with, for each ground motion,
+    whether the stick's storey drift passed :attr:`YieldingBuilding.drift_limit` under it (what the model is
+    trusted to; never for the elastic modes)."""
     if isinstance(building, YieldingBuilding):
-        records, sticks = yielding_histories(building, ground_motions, floors, progress)
+        records, sticks = yielding_histories(building, ground_motions, floors, progress, scaled_from)
         return records, [bool(building.beyond_drift_limit(stick).any()) for stick in sticks]
     return floor_records(building, ground_motions, floors=floors), [False] * len(ground_motions)
 

@@ -36,7 +36,12 @@ the building at each stripe, as documented, and equal the scaled ones to
 rounding. A yielding building (``response: yielding``,
 :mod:`assess.building.yielding`) is not: each stripe's scaled ground
 histories pass through its nonlinear stick, so that a stronger stripe yields
-its storeys more and its floors' motions are not the scaled weaker ones.
+its storeys more and its floors' motions are not the scaled weaker ones. Below
+its first yield, though, the stick is linear: the stripes pass through it from
+the strongest down, and a ground history's copy weaker than one that yielded no
+storey takes the elastic route's floors without running the stick
+(:class:`~assess.building.yielding.ElasticBound`), the same floors the stick
+would give (it gives the elastic route's wherever no storey yields).
 Where a stripe drives its storeys' drift past what the stick is trusted to
 (:attr:`~assess.building.yielding.YieldingBuilding.drift_limit`), its outcomes
 still count, and the curve's notes say at which stripes and under how many
@@ -48,9 +53,9 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from assess.building.yielding import YieldingBuilding, pass_progress, through_building
+from assess.building.yielding import ElasticBound, YieldingBuilding, pass_progress, through_building
 from assess.quantity_text import floor_text
-from assess.fragility.stripes import (N_STRIPES, STRIPE_PGA_G, CurveRisk, StripeBatch, checked_curve,
+from assess.fragility.stripes import (N_STRIPES, STRIPE_PGA_G, CurveRisk, FloorItems, StripeBatch, checked_curve,
                                       fit_and_integrate, stripe_levels_g)
 
 #: Opens every item's ``curve_note`` when its fragility is in ground acceleration.
@@ -93,22 +98,30 @@ def ground_histories(cases: pd.DataFrame, floor: int, motions: dict, sources: di
     return out
 
 
-def stripe_histories(modes, ground: list, pga_g: float, floors, progress=None) -> tuple[dict[int, list], list[bool]]:
+def stripe_histories(modes, ground: list, pga_g: float, floors, progress=None,
+                     bound: ElasticBound | None = None) -> tuple[dict[int, list], list[bool]]:
     """Per floor of ``floors``: ``(width, depth)`` histories under each ground history of ``ground`` scaled
     to PGA ``pga_g`` [g] (a pair by one factor: its larger peak at ``pga_g``) and passed through the
     building (:func:`assess.building.yielding.through_building`); floor 0 gets the scaled ground histories.
     With them, per ground history of ``ground``, whether a yielding building's storey drift passed its limit
-    under it (either component of a pair; never for elastic modes, nor without a floor above the ground)."""
-    scaled = []
+    under it (either component of a pair; never for elastic modes, nor without a floor above the ground).
+    ``bound``, where given, keeps what a yielding building did under each ground history from one stripe to the
+    next: a copy weaker than one that yielded no storey is not run through its stick again
+    (:class:`~assess.building.yielding.ElasticBound`)."""
+    scaled, factors = [], []
     for first, second in ground:
         factor = pga_g / max(float(np.max(np.abs(first.accel_g))), float(np.max(np.abs(second.accel_g))))
         scaled.append((first.scaled(factor), second.scaled(factor) if second is not first else None))
+        factors.append(factor)
     wanted = sorted(set(int(f) for f in floors))
     upper = [f for f in wanted if f > 0]
     paired = [k for k, (_, d) in enumerate(scaled) if d is not None]
     # every history of the stripe (each pair's second after the firsts) through the building in one pass
+    scaled_from = None if bound is None else ([w for w, _ in ground] + [ground[k][1] for k in paired],
+                                              factors + [factors[k] for k in paired], bound)
     through, beyond = through_building(modes, [w for w, _ in scaled] + [scaled[k][1] for k in paired],
-                                       floors=upper, progress=progress) if upper else ({}, [False] * len(scaled))
+                                       floors=upper, progress=progress, scaled_from=scaled_from) \
+        if upper else ({}, [False] * len(scaled))
     depth_at = {k: len(scaled) + j for j, k in enumerate(paired)}
     beyond_any = [bool(beyond[k]) or (k in depth_at and bool(beyond[depth_at[k]])) for k in range(len(scaled))]
     out = {}
@@ -126,14 +139,16 @@ def stripe_histories(modes, ground: list, pga_g: float, floors, progress=None) -
 
 def ground_stripe_runs(cases: pd.DataFrame, motions: dict, sources: dict, modes, plan, runner,
                        progress=None, record_pairs: dict | None = None, say=None,
-                       beyond: dict | None = None) -> pd.DataFrame:
+                       beyond: dict | None = None, bound: ElasticBound | None = None) -> pd.DataFrame:
     """Simulate items under their floor's histories for the ground suite scaled to stripes of PGA.
 
     ``plan``: ``(floor, pga_g, ids)`` as for :func:`assess.fragility.stripes.stripe_runs` (``pga_g`` in
     place of the floor's PFA); the same columns are returned, ``pfa_g`` holding the stripe's PGA [g].
     ``say(text)``, where given, hears how far each stripe's pass through a yielding building has got.
     ``beyond``, where given, gathers ``{pga_g: [flag per ground history passed]}``: whether each pass took the
-    storeys' drift past the building's limit (:func:`stripe_histories`).
+    storeys' drift past the building's limit (:func:`stripe_histories`). The stripes pass through the building
+    from the strongest down, so that ``bound`` (:func:`stripe_histories`), where given, spares the stick the
+    copies of a ground history weaker than one that yielded no storey.
     """
     record_pairs = record_pairs or {}
     per_item = cases.drop_duplicates(["id", "direction"])
@@ -142,7 +157,7 @@ def ground_stripe_runs(cases: pd.DataFrame, motions: dict, sources: dict, modes,
     for floor, pga_g, _ in plan:
         at_stripe.setdefault(pga_g, set()).add(floor)
     histories_at = {}
-    for pga_g, floors in at_stripe.items():
+    for pga_g, floors in sorted(at_stripe.items(), reverse=True):
         for floor in floors:
             if floor not in ground_of:
                 ground_of[floor] = ground_histories(cases, floor, motions, sources, record_pairs)
@@ -151,7 +166,8 @@ def ground_stripe_runs(cases: pd.DataFrame, motions: dict, sources: dict, modes,
             by_ground.setdefault(tuple(id(w) for w, _ in ground_of[floor]), []).append(floor)
         for group in by_ground.values():
             through, flags = stripe_histories(modes, ground_of[group[0]], pga_g, group,
-                                              progress=pass_progress(say, f"stripe {pga_g:.3g} g: ") if say else None)
+                                              progress=pass_progress(say, f"stripe {pga_g:.3g} g: ") if say else None,
+                                              bound=bound)
             if beyond is not None:
                 beyond.setdefault(pga_g, []).extend(flags)
             for floor in group:
@@ -161,6 +177,7 @@ def ground_stripe_runs(cases: pd.DataFrame, motions: dict, sources: dict, modes,
         on_floor = per_item[per_item["floor"] == floor]
         if ids is not None:
             on_floor = on_floor[on_floor["id"].isin(ids)]
+        on_floor = FloorItems.of(on_floor)
         for h, (first, second) in enumerate(histories_at[(floor, pga_g)]):
             batch.add(first, second, on_floor, pga_g, h)
     return batch.run(runner, progress)
@@ -203,9 +220,11 @@ def ground_curve_risk(cases: pd.DataFrame, motions: dict, sources: dict, modes, 
 
     beyond = {}
 
+    bound = ElasticBound()  # what the stick did under each ground history, from one stripe to the next
+
     def run_plan(plan, report=None):
         return ground_stripe_runs(cases, motions, sources, modes, plan, runner, progress=report,
-                                  record_pairs=record_pairs, say=progress, beyond=beyond)
+                                  record_pairs=record_pairs, say=progress, beyond=beyond, bound=bound)
 
     prefix = f"{NOTE}, from the stripes of level {level_label}'s suite; " if level_label else f"{NOTE}; "
     risk = fit_and_integrate(cases, hazard, levels_g, rates_per_yr, floors, stripes_by_floor, run_plan, progress,

@@ -226,10 +226,26 @@ def stripe_runs(cases: pd.DataFrame, motions: dict, plan, runner,
         on_floor = per_item[per_item["floor"] == floor]
         if ids is not None:
             on_floor = on_floor[on_floor["id"].isin(ids)]
+        on_floor = FloorItems.of(on_floor)
         for h, (first, second) in enumerate(histories_of[floor]):
             factor = pfa_g / max(float(np.max(np.abs(first.accel_g))), float(np.max(np.abs(second.accel_g))))
             batch.add(first, second, on_floor, pfa_g, h, factor)
     return batch.run(runner, progress)
+
+
+@dataclass(frozen=True)
+class FloorItems:
+    """The items of a floor a stripe runs, read once from their cases (one row per item and direction):
+    each one's ``block``, ``id`` and ``direction``, in the cases' order."""
+
+    blocks: tuple
+    ids: tuple
+    directions: tuple
+
+    @classmethod
+    def of(cls, on_floor: pd.DataFrame) -> "FloorItems":
+        return cls(tuple(on_floor["block"]), tuple(on_floor["id"]),
+                   tuple(int(d) for d in on_floor["direction"]))
 
 
 class StripeBatch:
@@ -238,9 +254,10 @@ class StripeBatch:
     def __init__(self):
         self.blocks, self.records, self.dts, self.index, self.rows = [], [], [], [], []
 
-    def add(self, first, second, on_floor: pd.DataFrame, level_g: float, history: int, factor: float = 1.0):
-        """The items ``on_floor`` under one history at a stripe: direction 1 under ``first``, 2 under
-        ``second`` (the same record where the history is one component), both times ``factor``."""
+    def add(self, first, second, on_floor, level_g: float, history: int, factor: float = 1.0):
+        """The items ``on_floor`` (:class:`FloorItems`, or their cases) under one history at a stripe: direction 1
+        under ``first``, 2 under ``second`` (the same record where the history is one component), both times
+        ``factor``."""
         slot = {1: len(self.records)}
         self.records.append(first.accel_g * factor if factor != 1.0 else first.accel_g)
         self.dts.append(first.dt_s)
@@ -250,10 +267,11 @@ class StripeBatch:
             slot[2] = len(self.records)
             self.records.append(second.accel_g * factor if factor != 1.0 else second.accel_g)
             self.dts.append(second.dt_s)
-        for case in on_floor.itertuples(index=False):
-            self.blocks.append(case.block)
-            self.index.append(slot[int(case.direction)])
-            self.rows.append((case.id, int(case.direction), float(level_g), history))
+        items = on_floor if isinstance(on_floor, FloorItems) else FloorItems.of(on_floor)
+        self.blocks.extend(items.blocks)
+        self.index.extend(slot[direction] for direction in items.directions)
+        self.rows.extend((item_id, direction, float(level_g), history)
+                         for item_id, direction in zip(items.ids, items.directions))
 
     def run(self, runner, progress=None) -> pd.DataFrame:
         """One row per run: ``id``, ``direction``, ``pfa_g`` (the stripe), ``history``, ``sliding_max_cm``,
