@@ -558,15 +558,18 @@ def fit_and_integrate(cases: pd.DataFrame, hazard: OpenQuakeHazard, levels_g, ra
     if rarest_g > STRIPE_PGA_G[1]:
         curve_notes.append(f"the curve's 10,000-year ground acceleration, {rarest_g:.2f} g, lies above the top stripe "
                      f"({STRIPE_PGA_G[1]:g} g): the fragilities are extrapolated there")
-    last = [-1]
+    def reporter(what: str):
+        """``report(done, total)``: says ``stripes: simulated done of total what`` at every fifth, and at the end."""
+        last = [-1]
 
-    def report(done, total_runs):
-        if done == total_runs or done - last[0] >= max(1, total_runs // 5):
-            last[0] = done
-            progress(f"stripes: simulated {done} of {total_runs} runs")
+        def report(done, total_runs):
+            if done == total_runs or done - last[0] >= max(1, total_runs // 5):
+                last[0] = done
+                progress(f"stripes: simulated {done} of {total_runs} {what}")
+        return report
 
     plan = [(floor, float(x), None) for floor, levels in stripes_by_floor.items() for x in levels]
-    runs = run_plan(plan, report)
+    runs = run_plan(plan, reporter("runs"))
     clearance_cm = cases.drop_duplicates("id").set_index("id")["clearance_m"] * CM_PER_M
     floor_of = cases.drop_duplicates("id").set_index("id")["floor"]
     fits, stripes = fit_items(stripe_outcomes(runs, clearance_cm))
@@ -579,7 +582,7 @@ def fit_and_integrate(cases: pd.DataFrame, hazard: OpenQuakeHazard, levels_g, ra
     if refine:  # steep rises between two stripes: look inside them
         progress(f"stripes: {len(refine)} more where the failures of {len({p[2][0] for p in refine})} items "
                  "rise steeply")
-        runs = pd.concat([runs, run_plan(refine)], ignore_index=True)
+        runs = pd.concat([runs, run_plan(refine, reporter("more runs"))], ignore_index=True)
         fits, stripes = fit_items(stripe_outcomes(runs, clearance_cm))
     rows, fit_p = [], {}
     outcomes_of = {key: group for key, group in stripes.groupby(["id", "mode"], sort=False)}

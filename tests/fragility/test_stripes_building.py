@@ -286,3 +286,20 @@ def test_the_curve_says_which_stripes_took_the_yielding_building_past_its_drift_
     assert {x for x, k in passed.items() if k} == stripes & set(passed)  # the ten stripes (refined ones besides)
     assert "(2 %)" in note and named.group(4) == f"{STRIPES_G[-1]:.3g}"
     assert (int(named.group(2)), int(named.group(3))) == (passed[named.group(4)], 3)
+
+
+def test_the_stripes_and_the_refined_stripes_both_say_how_far_their_runs_have_got(de_run):
+    """Both batches of stripe runs report their progress up to their whole count: the ten stripes', then the runs
+    added where the failures rise steeply (each count the cases the runner was handed for it)."""
+    import re
+
+    _, _, recording, _ = de_run
+    peaks = [len(b) for b in recording.batches if b.kind == PEAKS]
+    said = recording.said
+    refine_at = next(k for k, line in enumerate(said) if re.fullmatch(r"stripes: \d+ more where .+", line))
+    done = [re.fullmatch(r"stripes: simulated (\d+) of (\d+) (runs|more runs)", line) for line in said]
+    ends = [(k, m.group(3), int(m.group(2))) for k, m in enumerate(done) if m and m.group(1) == m.group(2)]
+    (first_at, first_kind, first_total), (more_at, more_kind, more_total) = ends
+    assert first_at < refine_at < more_at and (first_kind, more_kind) == ("runs", "more runs")
+    # the level's own cases, the ten stripes', the refined ones' (the cache hands every one on: none run before)
+    assert (first_total, more_total) == (peaks[1], peaks[2])
