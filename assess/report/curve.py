@@ -63,8 +63,27 @@ def curve_context(result, numbering: str = "ground_0") -> dict | None:
         rows.append(entry)
     notable = {mode: [str(i) for i in free.loc[_at_least(free, mode), "id"]] for mode in MODE_WORDS}
     return {"curve": curve.curve, "rows": rows, "lead": lead_sentence(notable, len(free)),
-            "floors": [f["basis"] for _, f in sorted(curve.floors.items())], "runs": curve.runs,
-            "stripes": _stripes_sentence(curve), "notes": list(curve.notes), **governs_sentences(free)}
+            "floors": floors_sentence([f["basis"] for _, f in sorted(curve.floors.items())]), "runs": curve.runs,
+            "stripes": _stripes_sentence(curve), "intensity": getattr(curve, "intensity", "PFA"),
+            "notes": list(curve.notes), **governs_sentences(free)}
+
+
+def floors_sentence(bases: list) -> str:
+    """The floors' bases (each ``floor LABEL: what``) joined, the floors whose ``what`` reads the same named
+    together, in the order they come.
+
+    >>> floors_sentence(["floor 1: the ground", "floor 2: through it", "floor 3: through it", "floor 4: through it"])
+    'floor 1: the ground; floors 2, 3 and 4: through it'
+    """
+    groups: dict[str, list[str]] = {}
+    for basis in bases:
+        label, _, what = basis.partition(": ")
+        groups.setdefault(what, []).append(label.removeprefix("floor "))
+    parts = []
+    for what, labels in groups.items():
+        named = labels[0] if len(labels) == 1 else ", ".join(labels[:-1]) + " and " + labels[-1]
+        parts.append(f"floor{'s' if len(labels) > 1 else ''} {named}: {what}")
+    return "; ".join(parts)
 
 
 def governs_sentences(free: pd.DataFrame) -> dict:
@@ -116,8 +135,10 @@ def lead_sentence(notable: dict, n_items: int) -> str:
 
 
 def _stripes_sentence(curve) -> str:
-    """"10 stripes per floor (31 more where an item's failures rise steeply), from 0.05 g to 3.25 g of floor
-    acceleration; 22620 simulations"."""
+    """What the fragilities were fitted from: "its floor's motions scaled to 10 stripes per floor (31 more where
+    an item's failures rise steeply), from 0.05 g to 3.25 g of floor acceleration; 22620 simulations", or, through
+    a building, "the level's ground motions scaled to 10 stripes (…) of ground acceleration, and, above the ground
+    floor, passed through the building to the item's floor; …"."""
     from assess.fragility.stripes import N_STRIPES
 
     if curve.stripes.empty:
@@ -125,8 +146,9 @@ def _stripes_sentence(curve) -> str:
     per_item = curve.stripes.drop_duplicates(["id", "pfa_g"]).groupby("id").size()
     extra = int((per_item - N_STRIPES).clip(lower=0).sum())
     more = f" ({extra} more where an item's failures rise steeply)" if extra else ""
-    return (f"{N_STRIPES} stripes per floor{more}, from {curve.stripes['pfa_g'].min():.2f} g to "
-            f"{curve.stripes['pfa_g'].max():.2f} g of "
-            + ("floor acceleration" if getattr(curve, "intensity", "PFA") == "PFA" else
-               "ground acceleration, passed through the building to each floor")
-            + f"; {curve.runs} simulations")
+    span = f"from {curve.stripes['pfa_g'].min():.2f} g to {curve.stripes['pfa_g'].max():.2f} g"
+    if getattr(curve, "intensity", "PFA") == "PFA":
+        return (f"its floor's motions scaled to {N_STRIPES} stripes per floor{more}, {span} of floor acceleration; "
+                f"{curve.runs} simulations")
+    return (f"the level's ground motions scaled to {N_STRIPES} stripes{more}, {span} of ground acceleration, and, "
+            f"above the ground floor, passed through the building to the item's floor; {curve.runs} simulations")

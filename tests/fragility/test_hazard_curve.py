@@ -385,6 +385,9 @@ def test_the_fragility_at_the_level_beside_the_level_answer_and_which_governs(tw
     assert math.isnan(row["p_overturn_fragility"])  # never overturns: no fit, no number
     context = curve_context(result)
     assert "the level's answer governs" in context["governs"]
+    # stripes of floor acceleration: the median the page's table heads is the floor's
+    assert context["intensity"] == "PFA" and context["stripes"].startswith("its floor's motions scaled to 10 stripes")
+    assert "of floor acceleration" in context["stripes"]
     apart = abs(row["p_beyond_clearance"] - row["p_beyond_clearance_fragility"]) >= APART
     assert bool(context["apart"]) == apart
     if apart:

@@ -303,3 +303,22 @@ def test_the_stripes_and_the_refined_stripes_both_say_how_far_their_runs_have_go
     assert first_at < refine_at < more_at and (first_kind, more_kind) == ("runs", "more runs")
     # the level's own cases, the ten stripes', the refined ones' (the cache hands every one on: none run before)
     assert (first_total, more_total) == (peaks[1], peaks[2])
+
+
+def test_the_curve_page_names_ground_acceleration_and_each_floors_basis_once(de_run):
+    """Through a building the fragilities are in PGA (test above): the curve page's table heads their median
+    "PGA", its lead says the level's ground motions were scaled and passed through the building, and the floors
+    whose stripes went through the same (every floor above the ground) are named together before their basis."""
+    import html as html_module
+
+    from assess.report.render import render_html
+
+    _, _, _, result = de_run
+    page = html_module.unescape(render_html(result))
+    assert "(median PGA, β)" in page and "(median PFA, β)" not in page
+    assert "under the level's ground motions scaled to 10 stripes" in page and "of ground acceleration, and, above " \
+        "the ground floor, passed through the building to the item's floor" in page
+    basis = {floor: f["basis"] for floor, f in result.curve_risk.floors.items()}
+    shared = basis[1].partition(": ")[2]
+    assert basis[2].partition(": ")[2] == shared
+    assert f"floor 0: {basis[0].partition(': ')[2]}; floors 1 and 2: {shared}." in page
