@@ -120,17 +120,19 @@ def lead_sentence(notable: dict, n_items: int) -> str:
     """Page 1's sentence on the whole curve, from the items named in ``notable`` (mode -> ids).
 
     >>> lead_sentence({"beyond_clearance": ["A", "B"], "overturn": []}, 9)
-    'Over 50 years (the whole hazard curve, not only this level): 2 of the 9 freestanding items have a 10% chance or more of sliding past their room (A, B); none of overturning.'
+    'Over 50 years (the whole hazard curve, not only this level): 2 of the 9 freestanding items have a 10% chance or more of sliding past their room (A, B); none has one of overturning.'
+    >>> lead_sentence({"beyond_clearance": [], "overturn": ["C"]}, 9)
+    'Over 50 years (the whole hazard curve, not only this level): none of the 9 freestanding items has a 10% chance or more of sliding past its room; 1 has one of overturning (C).'
     """
+    chance = f"a {NOTABLE_P50YR:.0%} chance or more"
     parts = []
-    for mode, words in (("beyond_clearance", "sliding past their room"), ("overturn", "overturning")):
+    for mode, words in (("beyond_clearance", "sliding past {} room"), ("overturn", "overturning")):
         ids = notable.get(mode, [])
-        if ids:
-            shown = ", ".join(ids[:8]) + (f" and {len(ids) - 8} more" if len(ids) > 8 else "")
-            parts.append(f"{len(ids)} of the {n_items} freestanding items have a {NOTABLE_P50YR:.0%} chance or more "
-                         f"of {words} ({shown})" if not parts else f"{len(ids)} of {words} ({shown})")
-        else:
-            parts.append(f"none has a {NOTABLE_P50YR:.0%} chance of {words}" if not parts else f"none of {words}")
+        has = "has" if len(ids) <= 1 else "have"
+        subject = (f"{len(ids) if ids else 'none'} of the {n_items} freestanding items {has} {chance}" if not parts
+                   else f"{len(ids) if ids else 'none'} {has} one")
+        parts.append(f"{subject} of {words.format('their' if len(ids) > 1 else 'its')}"
+                     + (f" ({', '.join(ids[:8])}{f' and {len(ids) - 8} more' if len(ids) > 8 else ''})" if ids else ""))
     return "Over 50 years (the whole hazard curve, not only this level): " + "; ".join(parts) + "."
 
 
