@@ -272,11 +272,17 @@ def forget() -> None:
         _MEMORY_USED[0] = 0
 
 
+def _ground_key(ground_accel_g, dt_s: float) -> tuple:
+    """What tells one ground history from another: its interval, its length and a digest of its samples."""
+    ground = np.ascontiguousarray(ground_accel_g, dtype=float)
+    return float(dt_s), ground.size, hashlib.blake2b(ground.tobytes(), digest_size=16).digest()
+
+
 def stick_history(building: YieldingBuilding, ground_accel_g, dt_s: float) -> StickHistory:
     """One ground history through ``building`` (module text: the elastic route's histories where no storey
     yields), kept in memory up to :data:`MEMORY_BYTES` of the most recent."""
     ground = np.ascontiguousarray(ground_accel_g, dtype=float)
-    key = (building.key, float(dt_s), ground.size, hashlib.blake2b(ground.tobytes(), digest_size=16).digest())
+    key = (building.key, *_ground_key(ground, dt_s))
     with _MEMORY_LOCK:
         if key in _MEMORY:
             _MEMORY.move_to_end(key)
@@ -330,16 +336,11 @@ class ElasticBound:
         self._known: dict[tuple, ElasticUnder] = {}
         self._lock = threading.Lock()
 
-    @staticmethod
-    def _key(ground: Record) -> tuple:
-        accel = np.ascontiguousarray(ground.accel_g, dtype=float)
-        return float(ground.dt_s), accel.size, hashlib.blake2b(accel.tobytes(), digest_size=16).digest()
-
     def below(self, ground: Record, factor: float) -> Optional[ElasticUnder]:
         """What the stick did under the strongest copy of ``ground`` that yielded no storey, where ``ground``
         times ``factor`` is no stronger than it; else None."""
         with self._lock:
-            known = self._known.get(self._key(ground))
+            known = self._known.get(_ground_key(ground.accel_g, ground.dt_s))
         return known if known is not None and 0.0 < factor <= known.factor else None
 
     def learn(self, ground: Record, factor: float, history: StickHistory) -> None:
@@ -347,7 +348,7 @@ class ElasticBound:
         strongest such copy so far."""
         if not history.elastic:
             return
-        key = self._key(ground)
+        key = _ground_key(ground.accel_g, ground.dt_s)
         with self._lock:
             if key not in self._known or factor > self._known[key].factor:
                 self._known[key] = ElasticUnder(float(factor), history.peak_drift_ratio, history.ductility)
@@ -382,15 +383,15 @@ def yielding_histories(building: YieldingBuilding, ground_motions: Sequence[Reco
     grounds = [np.ascontiguousarray(motion.accel_g, dtype=float) for motion in ground_motions]
     # each motion on its own thread (the kernel releases the GIL): what changes is when, not what
     histories = []
-    known = [None] * len(grounds) if scaled_from is None else [
-        scaled_from[2].below(ground, factor) for ground, factor in zip(scaled_from[0], scaled_from[1])]
+    unscaled, factors, bound = scaled_from if scaled_from is not None else (None, None, None)
+    known = [None] * len(grounds) if bound is None else [bound.below(g, f) for g, f in zip(unscaled, factors)]
 
     def through(m: int) -> StickHistory:
         if known[m] is not None:
-            return weaker_elastic_history(building, grounds[m], ground_motions[m].dt_s, known[m], scaled_from[1][m])
+            return weaker_elastic_history(building, grounds[m], ground_motions[m].dt_s, known[m], factors[m])
         history = stick_history(building, grounds[m], ground_motions[m].dt_s)
-        if scaled_from is not None:
-            scaled_from[2].learn(scaled_from[0][m], scaled_from[1][m], history)
+        if bound is not None:
+            bound.learn(unscaled[m], factors[m], history)
         return history
 
     with ThreadPoolExecutor(max(1, min(numba.get_num_threads(), len(grounds)))) as pool:

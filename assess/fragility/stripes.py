@@ -254,10 +254,9 @@ class StripeBatch:
     def __init__(self):
         self.blocks, self.records, self.dts, self.index, self.rows = [], [], [], [], []
 
-    def add(self, first, second, on_floor, level_g: float, history: int, factor: float = 1.0):
-        """The items ``on_floor`` (:class:`FloorItems`, or their cases) under one history at a stripe: direction 1
-        under ``first``, 2 under ``second`` (the same record where the history is one component), both times
-        ``factor``."""
+    def add(self, first, second, on_floor: FloorItems, level_g: float, history: int, factor: float = 1.0):
+        """The items ``on_floor`` under one history at a stripe: direction 1 under ``first``, 2 under ``second``
+        (the same record where the history is one component), both times ``factor``."""
         slot = {1: len(self.records)}
         self.records.append(first.accel_g * factor if factor != 1.0 else first.accel_g)
         self.dts.append(first.dt_s)
@@ -267,11 +266,10 @@ class StripeBatch:
             slot[2] = len(self.records)
             self.records.append(second.accel_g * factor if factor != 1.0 else second.accel_g)
             self.dts.append(second.dt_s)
-        items = on_floor if isinstance(on_floor, FloorItems) else FloorItems.of(on_floor)
-        self.blocks.extend(items.blocks)
-        self.index.extend(slot[direction] for direction in items.directions)
+        self.blocks.extend(on_floor.blocks)
+        self.index.extend(slot[direction] for direction in on_floor.directions)
         self.rows.extend((item_id, direction, float(level_g), history)
-                         for item_id, direction in zip(items.ids, items.directions))
+                         for item_id, direction in zip(on_floor.ids, on_floor.directions))
 
     def run(self, runner, progress=None) -> pd.DataFrame:
         """One row per run: ``id``, ``direction``, ``pfa_g`` (the stripe), ``history``, ``sliding_max_cm``,

@@ -9,7 +9,7 @@ import math
 
 import pandas as pd
 
-from assess.report.sentences import floor_text
+from assess.report.sentences import floor_text, runs_text
 
 #: A chance in 50 years at or above this is named on page 1.
 NOTABLE_P50YR = 0.10
@@ -63,27 +63,24 @@ def curve_context(result, numbering: str = "ground_0") -> dict | None:
         rows.append(entry)
     notable = {mode: [str(i) for i in free.loc[_at_least(free, mode), "id"]] for mode in MODE_WORDS}
     return {"curve": curve.curve, "rows": rows, "lead": lead_sentence(notable, len(free)),
-            "floors": floors_sentence([f["basis"] for _, f in sorted(curve.floors.items())]), "runs": curve.runs,
+            "floors": floors_sentence(curve.floors, numbering), "runs": curve.runs,
             "stripes": _stripes_sentence(curve), "intensity": getattr(curve, "intensity", "PFA"),
             "notes": list(curve.notes), **governs_sentences(free)}
 
 
-def floors_sentence(bases: list) -> str:
-    """The floors' bases (each ``floor LABEL: what``) joined, the floors whose ``what`` reads the same named
-    together, in the order they come.
+def floors_sentence(floors: dict, numbering: str = "ground_0") -> str:
+    """The floors' bases (``floors``: floor -> ``{"basis": "floor LABEL: what", ...}``, as the curve gives them)
+    joined, the floors whose ``what`` reads the same named together (:func:`~assess.report.sentences.runs_text`),
+    in the order of the floors.
 
-    >>> floors_sentence(["floor 1: the ground", "floor 2: through it", "floor 3: through it", "floor 4: through it"])
-    'floor 1: the ground; floors 2, 3 and 4: through it'
+    >>> floors_sentence({k: {"basis": f"floor {k}: " + ("the ground" if k == 0 else "through it")} for k in range(5)})
+    'floor 0: the ground; floors 1 to 4: through it'
     """
-    groups: dict[str, list[str]] = {}
-    for basis in bases:
-        label, _, what = basis.partition(": ")
-        groups.setdefault(what, []).append(label.removeprefix("floor "))
-    parts = []
-    for what, labels in groups.items():
-        named = labels[0] if len(labels) == 1 else ", ".join(labels[:-1]) + " and " + labels[-1]
-        parts.append(f"floor{'s' if len(labels) > 1 else ''} {named}: {what}")
-    return "; ".join(parts)
+    groups: dict[str, list[int]] = {}
+    for floor, entry in sorted(floors.items()):
+        groups.setdefault(entry["basis"].partition(": ")[2], []).append(int(floor))
+    return "; ".join(f"{runs_text(numbers, 'floor', lambda f: floor_text(f, numbering))}: {what}"
+                     for what, numbers in groups.items())
 
 
 def governs_sentences(free: pd.DataFrame) -> dict:
