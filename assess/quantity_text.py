@@ -210,10 +210,42 @@ def floor_text(value, numbering: str = "ground_0") -> str:
     return f"{shown:d}".replace("-", "−")
 
 
-def floors_text(floors, numbering: str = "ground_0") -> str:
-    """Floor numbers of the workbook as a list of labels (:func:`floor_text`), in ascending order.
+def runs_text(numbers, noun: str, label=str) -> str:
+    """Numbers after their noun (its plural with an "s" for two or more), each as ``label`` writes it, runs of
+    three or more written as a range.
 
-    >>> floors_text([3, 1, 4], "ground_1"), floors_text([2])
-    ('2, 4, 5', '2')
+    >>> runs_text([4], "storey"), runs_text(range(4, 41), "storey"), runs_text([0, 2, 3, 4, 7], "floor", lambda f: str(f + 1))
+    ('storey 4', 'storeys 4 to 40', 'floors 1, 3 to 5 and 8')
     """
-    return ", ".join(floor_text(f, numbering) for f in sorted(int(f) for f in floors))
+    ordered = sorted({int(n) for n in numbers})
+    runs: list[list[int]] = []
+    for number in ordered:
+        if runs and number == runs[-1][-1] + 1:
+            runs[-1].append(number)
+        else:
+            runs.append([number])
+    parts: list[str] = []
+    for run in runs:
+        labels = [label(n) for n in run]
+        parts += [f"{labels[0]} to {labels[-1]}"] if len(run) >= 3 else labels
+    words = parts[0] if len(parts) == 1 else ", ".join(parts[:-1]) + " and " + parts[-1]
+    return f"{noun}{'s' if len(ordered) > 1 else ''} {words}"
+
+
+def floors_text(floors, numbering: str = "ground_0") -> str:
+    """Floor numbers of the workbook after "floor" or "floors", each as :func:`floor_text` labels it, runs of
+    three or more written as a range (:func:`runs_text`): the one way notes, tables and pages name floors.
+
+    >>> floors_text([0]), floors_text([3, 1, 2, 4]), floors_text([0, 2]), floors_text([0, 1, 2, 5], "ground_1")
+    ('floor 0', 'floors 1 to 4', 'floors 0 and 2', 'floors 1 to 3 and 6')
+    """
+    return runs_text(floors, "floor", lambda f: floor_text(f, numbering))
+
+
+def sentence_start(words: str) -> str:
+    """``words`` with its first letter a capital, the rest as written (floor labels such as B1 kept).
+
+    >>> sentence_start("floors 2 to 6")
+    'Floors 2 to 6'
+    """
+    return words[:1].upper() + words[1:]

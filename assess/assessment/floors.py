@@ -36,7 +36,7 @@ from assess.hazard.levels import HazardLevel
 from assess.hazard.openquake import SiteChoiceError, parse_site_choice
 from assess.hazard.records import Record
 from assess.inventory.site_building import MAX_YIELDING_STOREYS, BuildingSheet, SiteSheet
-from assess.quantity_text import floor_text, floors_text
+from assess.quantity_text import floor_text, floors_text, sentence_start
 from assess.site.asce7 import MCE_R_OVER_DESIGN, DesignSpectrum, from_design_values, from_mapped_values
 from assess.site.suite import MEAN_RATIO_MIN, GroundSuite, ground_suite
 from assess.site.target import asce7_level, level_target
@@ -272,7 +272,7 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
     ``numbering``: :func:`assess.quantity_text.floor_text`); ``building`` as :func:`building_model_of` gives it."""
     modes = building.modes if isinstance(building, YieldingBuilding) else building
     source = "given" if sheet.period_s is not None else "ASCE 7 Table 12.8-2's estimate"
-    which = f"Floor{'s' if len(floors) > 1 else ''} {floors_text(floors, numbering)}"
+    which = sentence_start(floors_text(floors, numbering))
     stiffness = stiffness_note(modes, sheet)
     whose = "given" if sheet.lateral_stiffness_ratio is not None else "the system's typical one"
     ratio = f"lateral stiffness ratio α {modes.alpha:g} ({whose})"

@@ -35,7 +35,7 @@ from assess.hazard.record_pairs import item_axes_pair
 from assess.hazard.records import MIN_DURATION_S, Record, pulse_record, read_record
 from assess.hazard.synthesis import synthesize_motion
 from assess.inventory.settings import Settings
-from assess.quantity_text import floor_numbering_of, floor_text, floors_text
+from assess.quantity_text import floor_numbering_of, floor_text, floors_text, sentence_start
 
 Progress = Callable[[str], None]
 #: ``pulse_source`` of a motion with no pulse to identify (synthetic, or through the building): its Tp and vp are
@@ -146,8 +146,9 @@ def level_motions(inventory, level_text: str, progress: Progress, oq_hazard=None
                                        numbering)
         if motions["derived"].any():
             floors = sorted(set(int(f) for f in motions.loc[motions["derived"], "floor"]))
-            note = (f"Floors {floors_text(floors, numbering)} have no motion in the workbook: their motions are "
-                    "the ground motions amplified by 1 + 2z/h (ASCE 7-16 eq. 13.3-1, roof = floor "
+            have, their = ("have", "their") if len(floors) > 1 else ("has", "its")
+            note = (f"{sentence_start(floors_text(floors, numbering))} {have} no motion in the workbook: {their} motions "
+                    "are the ground motions amplified by 1 + 2z/h (ASCE 7-16 eq. 13.3-1, roof = floor "
                     f"{floor_text(derive_floors_roof, numbering)}), with the ground's pulse period.")
             notes.append(note)
             progress(note)

@@ -13,7 +13,7 @@ import math
 
 from assess.building.yielding import BASE_HINGE
 from assess.quantity_text import floor_numbering_of, floor_text
-from assess.report.sentences import runs_text
+from assess.quantity_text import runs_text
 
 #: Sentence closing the section, whatever the drifts.
 COLLAPSE_NOT_ASSESSED = ("The building's own collapse is not assessed: this report is about its contents, under "

@@ -9,7 +9,7 @@ import math
 
 import pandas as pd
 
-from assess.report.sentences import floor_text, runs_text
+from assess.quantity_text import floor_text, floors_text
 
 #: A chance in 50 years at or above this is named on page 1.
 NOTABLE_P50YR = 0.10
@@ -70,7 +70,7 @@ def curve_context(result, numbering: str = "ground_0") -> dict | None:
 
 def floors_sentence(floors: dict, numbering: str = "ground_0") -> str:
     """The floors' bases (``floors``: floor -> ``{"basis": "floor LABEL: what", ...}``, as the curve gives them)
-    joined, the floors whose ``what`` reads the same named together (:func:`~assess.report.sentences.runs_text`),
+    joined, the floors whose ``what`` reads the same named together (:func:`~assess.quantity_text.floors_text`),
     in the order of the floors.
 
     >>> floors_sentence({k: {"basis": f"floor {k}: " + ("the ground" if k == 0 else "through it")} for k in range(5)})
@@ -79,7 +79,7 @@ def floors_sentence(floors: dict, numbering: str = "ground_0") -> str:
     groups: dict[str, list[int]] = {}
     for floor, entry in sorted(floors.items()):
         groups.setdefault(entry["basis"].partition(": ")[2], []).append(int(floor))
-    return "; ".join(f"{runs_text(numbers, 'floor', lambda f: floor_text(f, numbering))}: {what}"
+    return "; ".join(f"{floors_text(numbers, numbering)}: {what}"
                      for what, numbers in groups.items())
 
 

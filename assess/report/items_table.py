@@ -23,9 +23,9 @@ from markupsafe import Markup
 
 from assess.fragility.governing import NO_PULSE_WORDS, OUTSIDE_WORDS, UPLIFT_WORDS
 from assess.fragility.suite import PULSE_SHARE_MIN
-from assess.quantity_text import floor_text
+from assess.quantity_text import floor_text, floors_text
 from assess.report.advice import CODE_REQUIRED
-from assess.report.sentences import DASH, finite, list_text, runs_text, suite_text, text
+from assess.report.sentences import DASH, finite, list_text, suite_text, text
 
 #: The short word of each reason why the regression does not apply, by the words of the item's
 #: ``regression_note`` (:func:`assess.fragility.governing.regression_note`) that give it, and what it means.
@@ -47,16 +47,6 @@ ACTION_TAGS = {
 def _analysed(summary: pd.DataFrame) -> pd.Series:
     """Which items the table shows numbers for: every item but the anchored ones."""
     return summary["risk"].astype(str) != "anchored"
-
-
-def floors_text(floors, numbering: str = "ground_0") -> str:
-    """Floors as the report labels them (:func:`~assess.quantity_text.floor_text`), runs of three or more
-    written as a range.
-
-    >>> floors_text([0]), floors_text([3, 1, 2, 4]), floors_text([0, 2]), floors_text([0, 1, 2, 5], "ground_1")
-    ('floor 0', 'floors 1 to 4', 'floors 0 and 2', 'floors 1 to 3 and 6')
-    """
-    return runs_text(floors, "floor", lambda f: floor_text(f, numbering))
 
 
 def demand_from(summary: pd.DataFrame, numbering: str = "ground_0") -> dict:

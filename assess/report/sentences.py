@@ -15,8 +15,8 @@ import pandas as pd
 from assess.assessment.result import RISK_CLASSES, AssessmentResult
 from assess.fragility import friction_range, planar
 from assess.inventory.settings import Settings
-from assess.quantity_text import (  # noqa: F401 (floor labels)
-    floor_text, floors_text, length_text, percent_text, rounded_length, significant_text,
+from assess.quantity_text import (  # noqa: F401 (floor labels, runs)
+    floor_text, floors_text, length_text, percent_text, rounded_length, runs_text, significant_text,
 )
 
 DASH = "–"
@@ -84,28 +84,6 @@ def text(value) -> str:
     if value is pd.NA or value is pd.NaT:
         return ""
     return str(value)
-
-
-def runs_text(numbers, noun: str, label=str) -> str:
-    """Numbers after their noun (its plural with an "s" for two or more), each as ``label`` writes it, runs of
-    three or more written as a range.
-
-    >>> runs_text([4], "storey"), runs_text(range(4, 41), "storey"), runs_text([0, 2, 3, 4, 7], "floor", lambda f: str(f + 1))
-    ('storey 4', 'storeys 4 to 40', 'floors 1, 3 to 5 and 8')
-    """
-    ordered = sorted({int(n) for n in numbers})
-    runs: list[list[int]] = []
-    for number in ordered:
-        if runs and number == runs[-1][-1] + 1:
-            runs[-1].append(number)
-        else:
-            runs.append([number])
-    parts: list[str] = []
-    for run in runs:
-        labels = [label(n) for n in run]
-        parts += [f"{labels[0]} to {labels[-1]}"] if len(run) >= 3 else labels
-    words = parts[0] if len(parts) == 1 else ", ".join(parts[:-1]) + " and " + parts[-1]
-    return f"{noun}{'s' if len(ordered) > 1 else ''} {words}"
 
 
 def list_text(value, separator: str) -> str:

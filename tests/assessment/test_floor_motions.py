@@ -54,7 +54,7 @@ def test_the_site_gives_the_ground_suite_and_the_building_every_floor(hospital):
     assert on_floor[2] == {f"{name} @ floor 2" for name in ground["motion"]}
     assert list(result.floors["floor"]) == [0, 1, 2]
     assert any(note.startswith("Ground floor: 3 spectrum-compatible synthetic") for note in result.hazard_notes)
-    assert any(note.startswith("Floors 1, 2: each ground motion through the building") for note in result.hazard_notes)
+    assert any(note.startswith("Floors 1 and 2: each ground motion through the building") for note in result.hazard_notes)
 
 
 def test_a_floor_motion_is_the_ground_motion_through_the_building(hospital):

@@ -105,7 +105,7 @@ def test_under_ground_1_motion_names_count_the_ground_floor_1(us_hospital):
 
 def test_under_ground_1_the_notes_label_floors_as_the_tables_and_say_which_is_the_roof(us_hospital):
     notes = us_hospital.hazard_notes
-    assert any(note.startswith("Floors 2, 3: each ground motion through the building") for note in notes), notes
+    assert any(note.startswith("Floors 2 and 3: each ground motion through the building") for note in notes), notes
     roof = [note for note in notes if "roof" in note and note.startswith("Floor 3 is the building's roof")]
     assert roof and "R-2" in roof[0] and "the workbook's floor 2" in roof[0]
     # no note labels a floor with the workbook's number 1 or 2 as if it were the label

@@ -18,7 +18,6 @@ import pytest
 from assess.fragility.governing import regression_note
 from assess.fragility.regression import RegressionConstants
 from assess.report import render_html
-from assess.report import items_table
 from assess.report.pdf import data_only_url_fetcher, split_appendix
 from tests.report.test_report import make_result
 
@@ -258,12 +257,6 @@ def test_no_word_of_the_building_table_runs_past_its_cell(building_html):
     from tests.report.test_report_layout import _cell_lines
 
     assert dict(_cell_lines(building_html))["past"] == []
-
-
-def test_floors_text_writes_runs_as_ranges():
-    assert items_table.floors_text([5, 1, 2, 3]) == "floors 1 to 3 and 5"
-    assert items_table.floors_text([2]) == "floor 2"
-    assert items_table.floors_text([0, 1], "ground_1") == "floors 1 and 2"
 
 
 def _table_ids(page: str) -> list[str]:
