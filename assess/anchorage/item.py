@@ -122,18 +122,18 @@ def anchorage_site(site=None, building=None, settings=None) -> AnchorageSite:
     if building is not None:
         storeys = float(building.storeys)
         period_s = float(approximate_period(building.height_m, building.system))
-        notes.append(f"z/h = storeys from the ground floor to the item's / {building.storeys} storeys; T_a = {period_s:.3f} s (eq. 12.8-7, "
-                     f"{building.system}, h_n {building.height_m:.1f} m)")
+        notes.append(f"z/h = storeys from the ground floor to the item's / {building.storeys} storeys; "
+                     f"T_a = {period_s:.3f} s (eq. 12.8-7, {building.system}, h_n {building.height_m:.1f} m)")
         building_r, building_omega0, row = SYSTEM_FACTORS[building.system]
     else:
         roof = settings.roof_floor if settings is not None else 0.0
         storeys = roof if roof > 0.0 else math.nan
-        notes.append(f"z/h = the workbook's floor / roof_floor {roof:g}" if roof > 0.0 else "z/h = 1 (no building sheet or "
-                     "roof_floor: the roof's force)")
+        notes.append(f"z/h = the workbook's floor / roof_floor {roof:g}" if roof > 0.0
+                     else "z/h = 1 (no building sheet or roof_floor: the roof's force)")
         if edition == "ASCE 7-22":
             notes.append("H_f = 1 + 2.5 z/h (eq. 13.3-5: no building period)")
     if edition == "ASCE 7-22" and building_r is not None:
-        r_mu = system_ductility_reduction(building.system, building_ie)
+        r_mu = ductility_reduction(building_r, building_ie, building_omega0)  # Table 12.2-1's row, read above
         notes.append(f"R_mu {r_mu:.3f} (eq. 13.3-6: R {building_r:g} and Omega0 {building_omega0:g} of Table 12.2-1's "
                      f"{row}, I_e {building_ie:g}; 1.0 at grade)")
     elif edition == "ASCE 7-22":
