@@ -76,6 +76,17 @@ Beside these five, a sixth system checked on its own (:data:`BRACED`, tests/veri
   1.29e9 N and EI = E · 2 A_c (L/2)² = 1.25e11 N m², α = H √(GA/EI) = 24 · 0.102 = **2.4** (heavier columns,
   W14×132, give 1.9; the tool takes 4 for braced frames where no α is given).
 
+And a taller one checked on its own (:data:`TALL`), where the higher modes carry more of the floors' motion:
+
+* ``smf12``: steel special moment frame, 12 storeys of 4 m, T_1 2.0 s (T_a = 0.0724 · 48^0.8 = 1.60 s; within
+  C_u T_a = 2.24 s, as a model of a frame with its panel zones and gravity framing gives a long period). R 8:
+  C_s = max(min(1.0/8, 0.6/(2.0·8)), 0.044 · 1.0) = 0.044 (ASCE 7-22 eq. 12.8-5's least governs: 0.6/16 is
+  0.0375), k = 1 + (2.0 − 0.5)/2 = 1.75. Members change every two storeys: stiffnesses 1, 1, 0.92, 0.92, 0.8,
+  0.8, 0.66, 0.66, 0.5, 0.5, 0.36, 0.36 (the roof pair at about a third of the base, as beams falling from
+  W36 to W24 sections give in a frame of this height; as recalled, no design read here); the overstrength
+  grows up the height as ``smf8``'s does, 2.0 at the base to 3.2 at the roof; the frames' column (α 10) and
+  ``Steel01`` (b 0.02). Set before the tool was run on it.
+
 ``yield_base_shear_g``, what the engineer writes in the building sheet, is what a static pushover of the
 building itself gives (:func:`pushover_yield_base_shear_g`): the base shear, every part of the lateral
 system included, when any storey first yields, over the weight (first yield, not an idealised bilinear
@@ -235,6 +246,13 @@ BUILDINGS = {
 BRACED = {
     "bf6": TruthBuilding("bf6", "braced frame", 6, 4.0, 0.6, 1.0 / 6.0, 1.05, (1.0, 1.0, 0.86, 0.86, 0.55, 0.55),
                          (1.6, 1.67, 1.59, 1.9, 1.65, 3.02), "steel01", 2.4),
+}
+
+#: The taller frame, checked on its own (module text).
+TALL = {
+    "smf12": TruthBuilding("smf12", "steel moment frame", 12, 4.0, 2.0, 0.044, 1.75,
+                           (1.0, 1.0, 0.92, 0.92, 0.8, 0.8, 0.66, 0.66, 0.5, 0.5, 0.36, 0.36),
+                           (2.0, 2.0, 2.1, 2.1, 2.2, 2.3, 2.4, 2.5, 2.6, 2.8, 3.0, 3.2), "steel01", 10.0),
 }
 
 

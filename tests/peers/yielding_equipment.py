@@ -125,12 +125,15 @@ def windowed(record):
     return accel[start:start + int(round(WINDOW_S / record.dt_s)) + 1]
 
 
-def ground_suite(count, period_s, factor):
+def ground_suite(count, period_s, factor, skip=()):
+    """The first ``count`` of :data:`RECORDS` but those named in ``skip``, each windowed (:func:`windowed`) and
+    scaled so that its 5 %-damped S_a(``period_s``) is ``factor`` times the design spectrum's: (name, accel_g,
+    dt_s) each."""
     import pyslammer
     folder = os.path.join(os.path.dirname(pyslammer.__file__), "sample_ground_motions")
     target = factor * float(design_spectral_acceleration_g(period_s, SDS_G, SD1_G))
     out = []
-    for name in RECORDS[:count]:
+    for name in [name for name in RECORDS if name not in skip][:count]:
         record = read_record(os.path.join(folder, name + ".csv"))
         accel = windowed(record)
         have = float(np.atleast_1d(pseudo_acceleration_spectrum(accel, record.dt_s, [period_s]))[0])

@@ -1,0 +1,92 @@
+"""A taller frame: the yielding route on a 12-storey steel moment frame against an OpenSees one (issue 29).
+
+The truth is ``smf12`` (tests/peers/opensees_buildings.py, :data:`peers.opensees_buildings.TALL`): 12 storeys of
+4 m, T_1 2.0 s, designed by ASCE 7-22's ELF procedure at S_DS 1.0 g, S_D1 0.6 g (C_s at its least, 0.044), its
+members changing every two storeys (the roof pair at 0.36 of the base's stiffness), its overstrength growing from
+2.0 at the base to 3.2 at the roof, the frames' continuous column (α 10), set before the tool was run on it. The
+harness and the items are the other buildings' (tests/peers/yielding_equipment.py): pyslammer's real records
+scaled to the design spectrum at T_1, six items on the mid-height floor and the roof, the product itself with
+only the floor histories differing. The higher modes carry more of a tall frame's floor motion, and the truth
+yields most at its top storeys (ductility up to 9 at DE, 13 at MCE_R).
+
+Measured over the first 11 records at DE (``benchmarks/bench_yielding_equipment.py --buildings smf12 --motions 11
+--overstrengths "" --own-alpha``), and over 17 records at DE / MCE_R (``--levels DE,MCE_R --motions 17 --skip
+Duzce_1999_375-090 --overstrengths "2,3" --own-alpha``: Düzce, scaled to S_a(2 s) at MCE_R, peaks at 5.7 g, which
+the workbook refuses as a likely unit mistake):
+
+==============================  ===========================  ===========================  ==================
+route                           sliding gm, 11 / 17 DE / 17   σ ln                         risk class
+                                MCE_R
+==============================  ===========================  ===========================  ==================
+given strength (0.087 W)        0.66 / 0.66 / 0.70           0.73 / 0.66 / 0.46           0.58 / 0.50 / 0.83
+given strength and α 10         0.84 / 0.87 / 0.88           0.48 / 0.46 / 0.45           0.75 / 0.83 / 0.83
+and its storeys' stiffnesses    0.99 / 0.98 / 0.94           0.35 / 0.38 / 0.36           0.83 / 0.92 / 1.0
+design data (Ω 2.5)             0.995 / 1.02 / 1.02          0.28 / 0.33 / 0.39           0.83 / 0.67 / 1.0
+elastic modes                   2.85 / 2.91 / 3.53           0.59 / 0.65 / 0.62           0.58 / 0.50 / 0.67
+==============================  ===========================  ===========================  ==================
+
+With the strength alone the tool slides the items a third less than the truth: the frame's α, which the
+strength leaves open, decides it. The tool's α for a moment frame is 12 where this building's is 10, and
+between those two the truth's own sliding moves by a third (the same routes against truths of α 12 and 14,
+``--truth-alphas 12,14``: the tool with its α 12 gives 0.89 against the truth of α 12 and 1.00 against the one
+of α 14; with α 14 given, 0.90). Given α, 0.84-0.90 on every one of those truths; given the storeys'
+stiffnesses as well, every target of the issue holds (the roof pair at 0.36 of the base where the system's
+design profile, storey stiffness with the storey shear, falls to 0.21). The design data alone come out near 1
+here because the default overstrength (2.5) is above this building's (2.0, the pushover's 0.087 over C_s 0.044):
+the two errors cancel, as ``design x 2`` (the building's own overstrength, 0.68 / 0.71) shows.
+
+Skipped, with the reason, where openseespy or pyslammer is not importable.
+"""
+from __future__ import annotations
+
+import pytest
+
+from peers.opensees_buildings import TALL
+from peers.opensees_shear import load_opensees
+from peers.yielding_equipment import OWN_MODEL, TARGET_GM, meets_class_target, meets_sliding_targets
+
+OPS, WHY = load_opensees()
+pytestmark = pytest.mark.skipif(OPS is None, reason=str(WHY))
+
+
+@pytest.fixture(scope="module")
+def tall(tmp_path_factory):
+    pytest.importorskip("pyslammer")
+    from peers.yielding_equipment import compared, given_routes, ground_suite
+
+    truth = TALL["smf12"]
+    routes = {**given_routes(truth), "design": [["response", "yielding"]], "elastic": [["response", "elastic"]]}
+    return compared(truth, ground_suite(11, truth.period_s, 1.0), "DE", tmp_path_factory.mktemp("smf12"), routes)
+
+
+def test_the_truth_is_what_its_text_says():
+    """C_s at ASCE 7-22 eq. 12.8-5's least and k at T_1 2.0 s, as the peer module works them out by hand."""
+    truth = TALL["smf12"]
+    assert truth.design_cs == pytest.approx(max(min(1.0 / 8, 0.6 / (2.0 * 8)), 0.044 * 1.0))
+    assert truth.exponent_k == pytest.approx(1 + (2.0 - 0.5) / 2)
+    assert 0.0724 * 48.0 ** 0.8 < truth.period_s < 1.4 * 0.0724 * 48.0 ** 0.8  # within C_u T_a
+
+
+def test_with_the_building_s_own_model_every_target_holds(tall):
+    n = tall[OWN_MODEL]
+    assert n["n_sliding"] >= 150
+    assert meets_sliding_targets(n), n
+    assert meets_class_target(n), n
+
+
+def test_with_the_building_s_alpha_the_sliding_is_within_the_targets_gm(tall):
+    """Given α, the geometric mean is within the issue's range; σ ln (0.48 over these 11 records) is not claimed."""
+    n = tall["given + own α"]
+    assert TARGET_GM[0] <= n["gm"] <= TARGET_GM[1], n
+
+
+@pytest.mark.xfail(strict=True, reason="sliding gm 0.66 with the strength alone: the system's α 12 against the "
+                                       "building's 10, between which the truth's own sliding moves by a third")
+def test_with_the_given_strength_the_sliding_targets_hold(tall):
+    assert meets_sliding_targets(tall["given"]), tall["given"]
+
+
+def test_the_design_data_alone_are_within_the_design_range_and_the_elastic_modes_are_not(tall):
+    """The issue's [0.67, 1.5] for the design data alone; the elastic modes slide the items well over twice as far."""
+    assert 0.67 <= tall["design"]["gm"] <= 1.5, tall["design"]
+    assert tall["elastic"]["gm"] > 2.0, tall["elastic"]
