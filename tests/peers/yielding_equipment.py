@@ -214,6 +214,14 @@ def compared(truth, suite, level, folder: Path, routes: dict) -> dict:
             for route, rows in routes.items()}
 
 
+def compared_on_its_own(truth, folder: Path, motions: int = 11) -> dict:
+    """:func:`compared` at DE over the first ``motions`` records for a building checked on its own (the braced frame,
+    the 12-storey frame): the routes of what the engineer knows (:func:`given_routes`), the design data alone
+    (``design``) and the elastic modes (``elastic``)."""
+    routes = {**given_routes(truth), "design": [["response", "yielding"]], "elastic": [["response", "elastic"]]}
+    return compared(truth, ground_suite(motions, truth.period_s, 1.0), "DE", folder, routes)
+
+
 def overturn_class(p_overturn):
     """Each item's overturning verdict as the summary's risk takes it from ``p_overturn`` alone: ``high`` from
     ``risk_overturn_high``, ``moderate`` from ``risk_overturn_moderate`` (the defaults), else ``low``."""

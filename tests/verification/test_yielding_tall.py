@@ -52,11 +52,9 @@ pytestmark = pytest.mark.skipif(OPS is None, reason=str(WHY))
 @pytest.fixture(scope="module")
 def tall(tmp_path_factory):
     pytest.importorskip("pyslammer")
-    from peers.yielding_equipment import compared, given_routes, ground_suite
+    from peers.yielding_equipment import compared_on_its_own
 
-    truth = TALL["smf12"]
-    routes = {**given_routes(truth), "design": [["response", "yielding"]], "elastic": [["response", "elastic"]]}
-    return compared(truth, ground_suite(11, truth.period_s, 1.0), "DE", tmp_path_factory.mktemp("smf12"), routes)
+    return compared_on_its_own(TALL["smf12"], tmp_path_factory.mktemp("smf12"))
 
 
 def test_the_truth_is_what_its_text_says():
