@@ -147,8 +147,8 @@ def level_motions(inventory, level_text: str, progress: Progress, oq_hazard=None
         if motions["derived"].any():
             floors = sorted(set(int(f) for f in motions.loc[motions["derived"], "floor"]))
             have, their = ("have", "their") if len(floors) > 1 else ("has", "its")
-            note = (f"{sentence_start(floors_text(floors, numbering))} {have} no motion in the workbook: {their} motions "
-                    "are the ground motions amplified by 1 + 2z/h (ASCE 7-16 eq. 13.3-1, roof = floor "
+            note = (f"{sentence_start(floors_text(floors, numbering))} {have} no motion in the workbook: {their} "
+                    "motions are the ground motions amplified by 1 + 2z/h (ASCE 7-16 eq. 13.3-1, roof = floor "
                     f"{floor_text(derive_floors_roof, numbering)}), with the ground's pulse period.")
             notes.append(note)
             progress(note)

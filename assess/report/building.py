@@ -12,8 +12,7 @@ from __future__ import annotations
 import math
 
 from assess.building.yielding import BASE_HINGE
-from assess.quantity_text import floor_numbering_of, floor_text
-from assess.quantity_text import runs_text
+from assess.quantity_text import floor_numbering_of, floor_text, runs_text
 
 #: Sentence closing the section, whatever the drifts.
 COLLAPSE_NOT_ASSESSED = ("The building's own collapse is not assessed: this report is about its contents, under "

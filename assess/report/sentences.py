@@ -15,8 +15,8 @@ import pandas as pd
 from assess.assessment.result import RISK_CLASSES, AssessmentResult
 from assess.fragility import friction_range, planar
 from assess.inventory.settings import Settings
-from assess.quantity_text import (  # noqa: F401 (floor labels, runs)
-    floor_text, floors_text, length_text, percent_text, rounded_length, runs_text, significant_text,
+from assess.quantity_text import (  # noqa: F401 (floor labels)
+    floor_text, floors_text, length_text, percent_text, rounded_length, significant_text,
 )
 
 DASH = "–"
