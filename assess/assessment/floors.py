@@ -301,7 +301,7 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
             text += (" The lateral stiffness ratio α, the system's typical value and not this building's, moves the "
                      "floors' motions nearly as much as the strength does (it sets how the columns spread the storeys' "
                      "drift over the height; on OpenSees frames of 4 to 12 storeys whose own α was 5 to 20, the "
-                     "system's slid their upper floors' items 0.44 to 1.78 times as far as theirs did, and 0.66 times "
+                     "system's α slid their upper floors' items 0.44 to 1.78 times as far as theirs did, and 0.66 times "
                      "on the 12-storey one whose α was 10): give lateral_stiffness_ratio where the building's own is "
                      "known.")
         if sheet.storey_stiffness is None and not hinged and STRENGTH_BY_SYSTEM[sheet.system] == "stiffness":
