@@ -42,11 +42,11 @@ import numpy as np
 import pandas as pd
 
 from assess.calibration.effects import EFFECTS, calibrated_block, theta_over_declared_alpha
-from assess.decision.flags import Flag
+from assess.decision.flags import Flag, result_state
 from assess.errors import InputError, Problem
 from assess.inventory.schema import clip
 from assess.mechanics.block import Block
-from assess.quantity_text import length_unit, length_value, percent_text, system_of
+from assess.quantity_text import system_of
 
 #: Largest calibration.json read [bytes] (a real one is a few kB).
 MAX_FILE_BYTES = 5_000_000
@@ -170,7 +170,7 @@ def with_declared(calibrated, declared, calibration: AppliedCalibration):
         changed.append(str(item_id))
         flags.append(Flag(str(item_id), FLAG_CODE, (
             f"with the calibration ({calibration.describe()}, from {calibration.file}): "
-            f"{_state(after.loc[item_id], system)}; as declared: {_state(before.loc[item_id], system)}.")))
+            f"{result_state(after.loc[item_id], system)}; as declared: {result_state(before.loc[item_id], system)}.")))
         codes[k] = tuple(codes[k]) + (FLAG_CODE,)
     summary = calibrated.summary.assign(flags=codes)
     scope = ("every item" if calibration.applies_to is None or calibration.motion_scale != 1.0
@@ -180,26 +180,6 @@ def with_declared(calibrated, declared, calibration: AppliedCalibration):
             f"was run twice, as declared and with it; each affected item's result both ways is under Flags "
             f"({FLAG_CODE}).")
     return replace(calibrated, summary=summary, flags=flags, hazard_notes=list(calibrated.hazard_notes) + [note])
-
-
-def _state(row, system: str = "si") -> str:
-    """'risk high (mode slide): sliding 12.3 cm median, 20.1 cm 84th percentile, 62 % chance past the
-    clearance, 0 % chance of overturning' from one summary row (the governing demand); lengths in inches
-    for ``system`` ``'us'``."""
-    def number(column, fmt, scale=1.0):
-        value = row.get(column)
-        try:
-            value = float(value)
-        except (TypeError, ValueError):
-            return "–"
-        return fmt.format(value * scale) if math.isfinite(value) else "–"
-
-    per_cm, unit = length_value(1.0, system), length_unit(system)
-    return (f"risk {row['risk']} (mode {row['mode'] or '–'}): sliding "
-            f"{number('demand_median_cm', '{:.1f}', per_cm)} {unit} median, "
-            f"{number('demand_p84_cm', '{:.1f}', per_cm)} {unit} 84th percentile, "
-            f"{percent_text(row.get('p_beyond_clearance'))} chance past the clearance, "
-            f"{percent_text(row.get('p_overturn'))} chance of overturning")
 
 
 def read_calibration(path) -> AppliedCalibration:
