@@ -17,15 +17,14 @@ from assess import __version__, startup
 from assess.command.folders import write_file_atomically
 from assess.command.interrupts import (Interrupt, caused_by, held_back, interrupted, reader_gone, sigint_recorded,
                                        write_uninterrupted)
+from assess.command.option_values import (FORMATS, JOB_FORMATS, alpha_range_value, coefficient, formats,
+                                          job_formats, positive_number, whole_number)
 from assess.command.site_option import joined_oq_site
 from assess.errors import InputError, Problem, printable
 
 EXIT_OK, EXIT_INTERNAL, EXIT_INPUT = 0, 1, 2
 EPILOG = ("Exit codes: 0 done; 2 the input is wrong (each problem is named); 1 internal error; "
           "130 interrupted (Ctrl-C).")
-FORMATS = ("html", "pdf")
-#: What the main job writes besides the CSV files: the report and summary.xlsx.
-JOB_FORMATS = ("html", "pdf", "xlsx")
 
 DESCRIPTION = """\
 Assess the freestanding equipment of a building under a design earthquake:
@@ -62,49 +61,6 @@ For a pulse the regression's median sliding (Konstantinidis & Makris 2010,
 eq. 21) is printed beside the simulation."""
 
 
-def _formats(text: str, allowed: tuple[str, ...] = FORMATS) -> tuple[str, ...]:
-    chosen = tuple(part.strip().lower() for part in text.split(",") if part.strip())
-    unknown = [part for part in chosen if part not in allowed]
-    if unknown or not chosen:
-        raise argparse.ArgumentTypeError(
-            f"'{text}' is not a list of formats; use {', '.join(allowed)}, comma-separated (e.g. {','.join(allowed)})")
-    return chosen
-
-
-def _job_formats(text: str) -> tuple[str, ...]:
-    return _formats(text, JOB_FORMATS)
-
-
-def _number(accept, requirement: str):
-    """An argparse type: a finite number for which ``accept(value)`` holds."""
-    def parse(text: str) -> float:
-        try:
-            value = float(text)
-        except ValueError:
-            raise argparse.ArgumentTypeError(f"'{text}' is not a number") from None
-        if not (value < float("inf") and accept(value)):
-            raise argparse.ArgumentTypeError(f"'{text}' must be {requirement}")
-        return value
-    return parse
-
-
-_positive_number = _number(lambda value: value > 0.0, "a positive number")
-_coefficient = _number(lambda value: value >= 0.0, "a number of 0 or more")
-
-
-def _whole_number(minimum: int):
-    """An argparse type: a whole number of at least ``minimum``."""
-    def parse(text: str) -> int:
-        try:
-            value = int(text)
-        except ValueError:
-            raise argparse.ArgumentTypeError(f"'{text}' is not a whole number") from None
-        if value < minimum:
-            raise argparse.ArgumentTypeError(f"'{text}' must be {minimum} or more")
-        return value
-    return parse
-
-
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="assess", description=DESCRIPTION, formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -116,7 +72,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--out", metavar="DIR", type=Path,
                         help="output folder (default: reports/<workbook stem>-<LEVEL>/); with several levels, "
                              "one folder per level: DIR/<LEVEL>/ (default reports/<workbook stem>-<LEVEL>/)")
-    parser.add_argument("--format", metavar="FORMATS", type=_job_formats, default=JOB_FORMATS,
+    parser.add_argument("--format", metavar="FORMATS", type=job_formats, default=JOB_FORMATS,
                         help="what to write besides the CSV files, comma-separated: html, pdf (the report), "
                              "xlsx (summary.xlsx, the summary table for a spreadsheet); default: html,pdf,xlsx")
     parser.add_argument("--units", choices=("si", "us"),
@@ -124,10 +80,10 @@ def build_parser() -> argparse.ArgumentParser:
                              "(in, lb, kip; letter paper; summary.csv adds _in and _kip columns beside its SI "
                              "ones); default: the settings' units, else us when the workbook's lengths are in "
                              "inches or feet, else si")
-    parser.add_argument("--jobs", metavar="N", type=_whole_number(1),
+    parser.add_argument("--jobs", metavar="N", type=whole_number(1),
                         help="threads for the time-history simulation (default: all cores); "
                              "the results do not depend on it")
-    parser.add_argument("--seed", metavar="N", type=_whole_number(0), default=0,
+    parser.add_argument("--seed", metavar="N", type=whole_number(0), default=0,
                         help="seed of every random draw; the same inputs and seed give the same numbers (default 0)")
     parser.add_argument("--oq-hazard", metavar="CSV", type=Path,
                         help="the site's PGA hazard: an OpenQuake hazard-curve or hazard-map CSV, or a USGS "
@@ -138,7 +94,7 @@ def build_parser() -> argparse.ArgumentParser:
                         help="which site of a multi-site hazard file: a row number (0 = first), an OpenQuake "
                              "custom_site_id or nshmp-haz site name, or lon,lat in degrees (e.g. --oq-site "
                              "-122.5,38.1)")
-    parser.add_argument("--derive-floors", metavar="ROOF_FLOOR", type=_whole_number(1),
+    parser.add_argument("--derive-floors", metavar="ROOF_FLOOR", type=whole_number(1),
                         help="floors without a motion take the ground motions amplified by 1 + 2z/h "
                              "(ASCE 7-16 eq. 13.3-1), z/h = floor / ROOF_FLOOR; such items are flagged "
                              "(default: a floor without a motion is an error)")
@@ -146,6 +102,12 @@ def build_parser() -> argparse.ArgumentParser:
                         help="the calibration.json of assess calibrate: its selected effect is applied to the "
                              "items it names (applies_to: its specimens, or all) and the report shows each "
                              "one's risk with and without it (the assessment runs twice)")
+    parser.add_argument("--alpha-range", metavar="LOW,HIGH", nargs="?", const=(), type=alpha_range_value,
+                        help="with a building sheet: run the level again with the building's lateral stiffness "
+                             "ratio alpha at both ends of its range (its system's: 5,20 for moment frames, 1.5,6 "
+                             "for braced frames, 0.1,2 for shear walls; or LOW,HIGH), for the items on the floors "
+                             "the building's motions reach, and show each one's risk class at both ends beside "
+                             "the level's (up to three times the run's time)")
     parser.add_argument("--compare-with", metavar="SUMMARY_CSV", type=Path,
                         help="a previous run's summary.csv: also write comparison.csv and a report section "
                              "on which items changed risk class and why (default: the summary.csv already "
@@ -191,30 +153,30 @@ def build_simulate_parser() -> argparse.ArgumentParser:
         formatter_class=argparse.RawDescriptionHelpFormatter,
         epilog=EPILOG)
     item = parser.add_argument_group("the item (one base direction)")
-    item.add_argument("--height-cm", metavar="H", type=_positive_number, required=True,
+    item.add_argument("--height-cm", metavar="H", type=positive_number, required=True,
                       help="overall height [cm]")
-    item.add_argument("--width-cm", metavar="W", type=_positive_number, required=True,
+    item.add_argument("--width-cm", metavar="W", type=positive_number, required=True,
                       help="base dimension in the direction of shaking [cm]")
-    item.add_argument("--cg-height-cm", metavar="C", type=_positive_number,
+    item.add_argument("--cg-height-cm", metavar="C", type=positive_number,
                       help="height of the centre of mass [cm] (default H/2, a uniform block)")
-    item.add_argument("--mu", metavar="MU", type=_coefficient, required=True,
+    item.add_argument("--mu", metavar="MU", type=coefficient, required=True,
                       help="kinetic friction coefficient, item on floor")
-    item.add_argument("--mu-static", metavar="MUS", type=_coefficient,
+    item.add_argument("--mu-static", metavar="MUS", type=coefficient,
                       help="static friction coefficient (default MU)")
-    item.add_argument("--restitution", metavar="E", type=_coefficient,
+    item.add_argument("--restitution", metavar="E", type=coefficient,
                       help="coefficient of restitution of rocking impacts "
                            "(default Housner's 1 - (2/kappa) sin^2 alpha)")
     motion = parser.add_argument_group("the motion: --record FILE, or --pulse with --ap-g and --tp-s")
     motion.add_argument("--record", metavar="FILE", type=Path, help="floor acceleration record")
-    motion.add_argument("--scale", metavar="S", type=_positive_number, default=1.0,
+    motion.add_argument("--scale", metavar="S", type=positive_number, default=1.0,
                         help="factor applied to the record (default 1)")
     motion.add_argument("--pulse", choices=("A", "B", "C", "rect"), help="pulse type")
-    motion.add_argument("--ap-g", metavar="A", type=_positive_number, help="pulse amplitude [g]")
-    motion.add_argument("--tp-s", metavar="T", type=_positive_number, help="pulse period Tp [s]")
-    motion.add_argument("--dt-s", metavar="DT", type=_positive_number,
+    motion.add_argument("--ap-g", metavar="A", type=positive_number, help="pulse amplitude [g]")
+    motion.add_argument("--tp-s", metavar="T", type=positive_number, help="pulse period Tp [s]")
+    motion.add_argument("--dt-s", metavar="DT", type=positive_number,
                         help="sampling step of the pulse [s] (default min(Tp/400, 0.005))")
     run = parser.add_argument_group("the run")
-    run.add_argument("--tail-s", metavar="S", type=_coefficient, default=10.0,
+    run.add_argument("--tail-s", metavar="S", type=coefficient, default=10.0,
                      help="seconds followed after the motion, floor at rest (default 10)")
     run.add_argument("--solver", choices=("auto", "general", "event-driven"), default="auto",
                      help="auto: the fastest solver proved right for the item (default); "
@@ -235,7 +197,7 @@ def build_calibrate_parser() -> argparse.ArgumentParser:
                         help="the measured tests (sheet tests)")
     parser.add_argument("--out", metavar="DIR", type=Path,
                         help="output folder (default: reports/<workbook stem>-calibration/)")
-    parser.add_argument("--format", metavar="FORMATS", type=_formats, default=FORMATS,
+    parser.add_argument("--format", metavar="FORMATS", type=formats, default=FORMATS,
                         help="report formats, comma-separated: html, pdf (default: html,pdf)")
     _add_allow_records_outside(parser)
     parser.add_argument("--quiet", action="store_true", help="do not print progress")
@@ -276,12 +238,12 @@ def build_batch_parser() -> argparse.ArgumentParser:
                         help="run the simulations on the Dask distributed cluster at ADDRESS "
                              "(default: this machine's cores); the numbers do not depend on it. " + _SCHEDULER_TRUST)
     _add_tls_options(parser)
-    parser.add_argument("--format", metavar="FORMATS", type=_job_formats, default=JOB_FORMATS,
+    parser.add_argument("--format", metavar="FORMATS", type=job_formats, default=JOB_FORMATS,
                         help="what to write into each building's folder besides the CSV files: html, pdf, "
                              "xlsx (default: html,pdf,xlsx)")
-    parser.add_argument("--seed", metavar="N", type=_whole_number(0), default=0,
+    parser.add_argument("--seed", metavar="N", type=whole_number(0), default=0,
                         help="seed of every random draw (default 0)")
-    parser.add_argument("--jobs", metavar="N", type=_whole_number(1),
+    parser.add_argument("--jobs", metavar="N", type=whole_number(1),
                         help="threads for the time-history simulation (default: all cores)")
     parser.add_argument("--allow-files-outside", action="store_true",
                         help="read workbooks and hazard curves outside the portfolio's folder, and records "
@@ -352,7 +314,7 @@ def _assess(args: argparse.Namespace, say) -> int:
         args.workbook, args.hazard, out=args.out, formats=args.format, units=args.units, jobs=args.jobs,
         seed=args.seed, oq_hazard=args.oq_hazard, oq_site=args.oq_site, derive_floors=args.derive_floors,
         calibration=args.calibration, compare_with=args.compare_with, scheduler=args.scheduler,
-        scheduler_tls=_tls(args), allow_records_outside=args.allow_records_outside),
+        scheduler_tls=_tls(args), allow_records_outside=args.allow_records_outside, alpha_range=args.alpha_range),
         say, warn=_warn)
     for level in levels:
         written = write_uninterrupted(level.files, level.out_dir)

@@ -303,7 +303,7 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
                      "drift over the height; on OpenSees frames of 4 to 12 storeys whose own α was 5 to 20, the "
                      "system's α slid their upper floors' items 0.44 to 1.78 times as far as theirs did, and 0.66 times "
                      "on the 12-storey one whose α was 10): give lateral_stiffness_ratio where the building's own is "
-                     "known.")
+                     "known; --alpha-range shows which items it moves here.")
         if sheet.storey_stiffness is None and not hinged and STRENGTH_BY_SYSTEM[sheet.system] == "stiffness":
             text += (" The storeys' stiffnesses, which set their strengths, are the system's default profile, not "
                      "this building's: give storey_stiffness from the building's model where known.")

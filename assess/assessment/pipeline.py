@@ -13,6 +13,8 @@
    (:mod:`assess.assessment.summary`)
 8. costs: expected loss, expected annual loss and the actions' benefit-cost ratios where the equipment
    gives a ``value`` (:mod:`assess.decision.costs`)
+9. with ``--alpha-range``: stages 2 to 8 again at both ends of the building's α, for the items on the
+   floors its motions reach (:mod:`assess.assessment.alpha_range`)
 
 The outputs (CSV, xlsx, report) are made from the result by :mod:`assess.command.output`.
 """
@@ -24,6 +26,7 @@ from typing import Callable
 import pandas as pd
 
 from assess.anchorage import anchorage_site
+from assess.assessment import alpha_range as alpha_ranges
 from assess.assessment import cases as case_stage
 from assess.assessment import demand as demand_stage
 from assess.assessment import inputs, motions as motion_stage, run as run_stage, summary as result_stage
@@ -44,7 +47,8 @@ Progress = Callable[[str], None]
 def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
                    progress: Progress = lambda message: None, oq_hazard=None,
                    derive_floors_roof: int | None = None, calibration=None, runner=None,
-                   hazard_curve=None, allow_records_outside: bool = False, curve_risk=None) -> AssessmentResult:
+                   hazard_curve=None, allow_records_outside: bool = False, curve_risk=None,
+                   alpha_range: tuple[float, float] | None = None) -> AssessmentResult:
     """Assess every item of ``inventory`` under the motions of hazard level ``level_text``.
 
     ``oq_hazard`` (an :class:`~assess.hazard.openquake.OpenQuakeHazard`)
@@ -69,6 +73,10 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
     stripes are fixed in ground acceleration, so one level's serve every level
     (:mod:`assess.fragility.ground_stripes`).
 
+    ``alpha_range`` (low, high: :func:`assess.assessment.alpha_range.alpha_ends`) runs the level again with the
+    building's lateral stiffness ratio α at each, for the items on the floors its motions reach, and puts their
+    risk classes and chances there beside the level's (:func:`~assess.assessment.alpha_range.with_alpha_range`).
+
     Raises :class:`~assess.errors.InputError` when the hazard sheet breaks a rule
     (:func:`assess.assessment.inputs.hazard_problems`: a record outside the workbook's folder unless
     ``allow_records_outside``, a vp of 0), the level is missing, a floor has no motion, or a motion
@@ -78,21 +86,34 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
     runner = runner if runner is not None else LocalRunner()
     step = functools.partial(_assess, inventory, level_text, seed, progress, oq_hazard, derive_floors_roof,
                              runner=runner, given_curve=curve_risk)
+    applied = None if calibration is None or calibration.effect == "none" else calibration
     if calibration is None:
-        return step(calibration=None, hazard_curve=hazard_curve)
-    # a calibration (assess.calibration.apply): run twice, as declared and with the effect
-    check_applies(calibration, inventory.equipment)
-    # the curve's stripes run once, in the assessment that is returned (the declared one if no effect)
-    declared_governs = calibration.effect == "none"
-    declared = step(calibration=None, hazard_curve=hazard_curve if declared_governs else None)
-    progress(f"again with the calibration {calibration.file}")
-    calibrated = step(calibration=calibration, hazard_curve=None if declared_governs else hazard_curve)
-    return with_declared(calibrated, declared, calibration)
+        result = step(calibration=None, hazard_curve=hazard_curve)
+    else:  # a calibration (assess.calibration.apply): run twice, as declared and with the effect
+        check_applies(calibration, inventory.equipment)
+        # the curve's stripes run once, in the assessment that is returned (the declared one if no effect)
+        declared = step(calibration=None, hazard_curve=hazard_curve if applied is None else None)
+        progress(f"again with the calibration {calibration.file}")
+        calibrated = step(calibration=calibration, hazard_curve=None if applied is None else hazard_curve)
+        result = with_declared(calibrated, declared, calibration)
+    if alpha_range is None:
+        return result
+    # the level again at both ends of the building's α, for the items its motions reach (no what-if, no curve)
+    ids = alpha_ranges.items_through_building(result)
+    at_ends = {}
+    for alpha in alpha_range if ids else ():
+        progress(f"again at the building's α {alpha:g} ({len(ids)} items on its floors)")
+        at_alpha = functools.partial(lambda end, message: progress(f"α {end:g}: {message}"), alpha)
+        at_ends[alpha] = _assess(alpha_ranges.at_alpha(inventory, ids, alpha), level_text, seed, at_alpha,
+                                 oq_hazard, derive_floors_roof, calibration=applied, runner=runner,
+                                 hazard_curve=None, what_if=False)
+    return alpha_ranges.with_alpha_range(result, inventory.building, alpha_range, at_ends)
 
 
 def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, calibration,
-            runner, hazard_curve, given_curve=None) -> AssessmentResult:
-    """:func:`run_assessment` with ``calibration`` applied (None: as declared)."""
+            runner, hazard_curve, given_curve=None, what_if: bool = True) -> AssessmentResult:
+    """:func:`run_assessment` with ``calibration`` applied (None: as declared); ``what_if`` False leaves out the
+    run of the items with their heavy contents low (stage 5b)."""
     workbook_name = inventory.path.name
     settings = inventory.settings
     constants = RegressionConstants.from_settings(settings)
@@ -118,7 +139,7 @@ def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof
     rows = demand_stage.item_rows(inventory.equipment, at_mu, demand, constants)
     # 5b. what if the items that rock or overturn had their heavy contents low (the engine again)
     lowered = _lowered_contents(inventory.equipment, cases.table, rows, simulated, runner, progress, calibration,
-                                constants, settings)
+                                constants, settings) if what_if else {}
     # 6. decisions
     anchorage = anchorage_site(inventory.site, inventory.building, settings)
     decided = decisions.decide(inventory.equipment, rows.row_dicts(), rows.uplift, at_mu, demand.at_mu_ends, constants,

@@ -17,9 +17,9 @@ the floors' histories from a stick of yielding storey springs instead
 structural engineer's floor motions, where given in the ``hazard`` sheet, govern.
 """
 from .floors import floors_table
-from .modes import ALPHA_BY_SYSTEM, BuildingModes, building_modes
+from .modes import ALPHA_BY_SYSTEM, ALPHA_RANGE_BY_SYSTEM, BuildingModes, building_modes
 from .period import SYSTEMS, approximate_period
 from .response import floor_accelerations, floor_records
 
-__all__ = ["ALPHA_BY_SYSTEM", "BuildingModes", "SYSTEMS", "approximate_period", "building_modes",
+__all__ = ["ALPHA_BY_SYSTEM", "ALPHA_RANGE_BY_SYSTEM", "BuildingModes", "SYSTEMS", "approximate_period", "building_modes",
            "floor_accelerations", "floor_records", "floors_table"]

@@ -68,6 +68,18 @@ ALPHA_BY_SYSTEM = {
     "shear wall": 1.0,
     "other": 4.0,
 }
+#: The range α may take for each lateral system, whose ends ``assess --alpha-range`` runs the level at where the
+#: building's own α is not known: Miranda & Taghavi's (2005) [2] ranges (moment frames 5 to 20, dual systems and,
+#: as in :data:`ALPHA_BY_SYSTEM`, braced frames 1.5 to 6, shear walls 0 to 2, whose 0 is the building sheet's
+#: least α, 0.1); "other" systems from the dual systems' least to the moment frames' most.
+ALPHA_RANGE_BY_SYSTEM = {
+    "steel moment frame": (5.0, 20.0),
+    "concrete moment frame": (5.0, 20.0),
+    "eccentrically braced frame": (1.5, 6.0),
+    "braced frame": (1.5, 6.0),
+    "shear wall": (0.1, 2.0),
+    "other": (1.5, 20.0),
+}
 #: Share of the mass ASCE 7-16 §12.9.1.1 asks the modes of a response-spectrum analysis to reach.
 #: Not the default here: that rule is for base shear and storey forces. A floor's acceleration
 #: carries the higher modes, which are not rigid under earthquake ground motion (a 12-storey shear

@@ -7,7 +7,8 @@
 - :mod:`assess.command.folders`: output folders written whole or not at all.
 - :mod:`assess.command.interrupts`: Ctrl-C and a closed pipe, and the exit codes that say what stopped a run.
 - :mod:`assess.command.site_option`: ``--oq-site`` as typed, before argparse sees it.
+- :mod:`assess.command.option_values`: what the options take (argparse types), each wrong value refused.
 
 The command line itself is :mod:`assess.cli`. This file imports nothing: :mod:`assess.cli` reads
-``site_option``, ``folders`` and ``interrupts`` before it imports the core.
+``site_option``, ``option_values``, ``folders`` and ``interrupts`` before it imports the core.
 """

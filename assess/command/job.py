@@ -21,6 +21,7 @@ import numba
 
 from assess import report
 from assess.assessment import pipeline
+from assess.assessment.alpha_range import alpha_ends
 from assess.assessment.comparison import compare_summaries, read_previous_summary
 from assess.assessment.inputs import check_inputs
 from assess.assessment.motions import check_level
@@ -30,6 +31,7 @@ from assess.calibration.apply import read_calibration
 from assess.command import output
 from assess.command.cache import CachingRunner
 from assess.command.folders import check_output_folder
+from assess.command.option_values import JOB_FORMATS
 from assess.errors import InputError, Problem
 from assess.hazard.levels import parse_level
 from assess.hazard.openquake import SITE_FORMS, parse_site_choice
@@ -42,8 +44,6 @@ from assess.report.calibration import render_calibration_html
 from assess.report.tables import declared_csv_text, restore_text, summary_text
 
 Say = Callable[[str], None]
-#: What the main job writes besides the CSV files: the report and summary.xlsx.
-JOB_FORMATS = ("html", "pdf", "xlsx")
 
 
 # ---------------------------------------------------------------- shared by every job
@@ -178,6 +178,8 @@ class AssessmentJob:
     scheduler: str | None = None
     scheduler_tls: dict = field(default_factory=dict)
     allow_records_outside: bool = False
+    #: ``--alpha-range``: None (not asked), () (the ends of the building's system's range) or (low, high).
+    alpha_range: tuple | None = None
 
 
 @dataclass
@@ -220,6 +222,7 @@ def run_job(job: AssessmentJob, say: Say = lambda message: None,
         if oq_hazard.kind != "curve":
             say(f"{job.oq_hazard.name} is a hazard map: the motions are scaled to it; annual rates need a "
                 "hazard curve")
+    alpha_range = None if job.alpha_range is None else alpha_ends_of(inventory, job.alpha_range)
     calibration = read_calibration(job.calibration) if job.calibration is not None else None
     hazard_curve = oq_hazard if oq_hazard is not None and oq_hazard.kind == "curve" else None
     results = []
@@ -237,7 +240,7 @@ def run_job(job: AssessmentJob, say: Say = lambda message: None,
                                              derive_floors_roof=job.derive_floors, calibration=calibration,
                                              runner=runner, hazard_curve=hazard_curve,
                                              allow_records_outside=job.allow_records_outside,
-                                             curve_risk=shared_curve)
+                                             curve_risk=shared_curve, alpha_range=alpha_range)
             result = advice.with_words(result)  # the advice in words, in the report's units
             if shared_curve is None and result.curve_risk is not None and result.curve_risk.intensity == "PGA":
                 shared_curve = result.curve_risk
@@ -249,6 +252,18 @@ def run_job(job: AssessmentJob, say: Say = lambda message: None,
         others = tuple(other for other in results if other is not result)
         files = output.render_outputs(result, job.formats, other_levels=others)
         yield LevelOutput(result, out_dir, files)
+
+
+def alpha_ends_of(inventory, given: tuple) -> tuple[float, float]:
+    """The two α ``--alpha-range`` runs the level again at (:func:`assess.assessment.alpha_range.alpha_ends`);
+    an :class:`~assess.errors.InputError` when the workbook has no building sheet to give α to."""
+    if inventory.building is None:
+        raise InputError([Problem(
+            file=inventory.path.name, sheet="building",
+            message="--alpha-range moves the building's lateral stiffness ratio α, and this workbook has no "
+                    "building sheet: its floors' motions come from the hazard sheet, which α does not change.",
+            fix="add a building sheet (docs/workbook.md, sheet building), or run without --alpha-range.")])
+    return alpha_ends(inventory.building, given or None)
 
 
 # ---------------------------------------------------------------- assess calibrate WORKBOOK --measured TESTS

@@ -26,6 +26,7 @@ FLAG_TITLES = {
     "im_outside_fit": "Outside the range the regression was fitted on",
     "uplift": "Uplifts and rocks: the simulation answers",
     "calibrated": "Changed by the calibration",
+    "alpha_range": "Risk class moves over the range of the building's α",
     "cg_not_mid_height": "Centre of mass not at mid-height",
     "derived_floor_motion": "Floor motion derived from the ground motion",
     "building_beyond_drift": "Floor motions from the building's model beyond the drift it is trusted to",
@@ -231,6 +232,11 @@ def suite_text(row: pd.Series) -> str:
 #: with the items it concerns (and what is each one's own, :attr:`assess.decision.flags.Flag.detail`), not once per
 #: item. ``{im_min}`` and ``{im_max}`` are the regression's fitted range.
 FLAG_CAUSES = {
+    "alpha_range": "With the building's lateral stiffness ratio α at either end of its range (--alpha-range), the "
+                   "level puts these items in another class than at the building's α, which governs (beside each: "
+                   "its class at the low end, at the building's α and at the high end; summary.csv gives their "
+                   "chances at both ends): their advice rests on α, which lateral_stiffness_ratio from the building's "
+                   "model would settle.",
     "uplift": "They uplift and rock in the simulation (their mode and peak θ/α are in the tables). The paper's "
               "sliding regression assumes no uplift: the simulation answers for them.",
     "derived_floor_motion": "Their floors have no motion in the workbook: they were assessed under the ground "
@@ -248,8 +254,8 @@ FLAG_CAUSES = {
 }
 #: The order of the flag groups: a cell to check first, then what changed an item's result, then the model's
 #: limits; codes not named here follow, in the order the result gives them.
-FLAG_ORDER = ("implausible_input", "calibrated", "uplift", "derived_floor_motion", "building_beyond_drift",
-              "cg_not_mid_height", "im_outside_fit")
+FLAG_ORDER = ("implausible_input", "calibrated", "alpha_range", "uplift", "derived_floor_motion",
+              "building_beyond_drift", "cg_not_mid_height", "im_outside_fit")
 
 
 def flag_text(text: str, flag, system: str = "si") -> str:

@@ -187,6 +187,10 @@ def test_a_second_level_the_workbook_lacks_is_refused_before_the_first_runs(tmp_
     (["--hazard", "sometimes"], "lab.xlsx, sheet 'hazard', column 'level'"),
     (["--hazard", "2in50", "--format", "docx"], "argument --format: 'docx'"),
     (["--hazard", "2in50", "--jobs", "0"], "argument --jobs: '0'"),
+    (["--hazard", "2in50", "--alpha-range", "20,5"], "argument --alpha-range: '20,5'"),
+    (["--hazard", "2in50", "--alpha-range", "5"], "argument --alpha-range: '5'"),
+    (["--hazard", "2in50", "--alpha-range", "0.01,5"], "argument --alpha-range: '0.01,5'"),
+    (["--hazard", "2in50", "--alpha-range"], "lab.xlsx, sheet 'building'"),
 ])
 def test_wrong_option_values_exit_2(tmp_path, args, place):
     """Each wrong value is refused naming where it is: the option, or the sheet column it is looked for in."""

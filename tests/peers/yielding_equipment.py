@@ -192,8 +192,10 @@ def opensees_floors(truth, suite, floor_scale=1.0):
         yielding_module.stick_history = original
 
 
-def assess(path, level):
-    result = run_assessment(read_workbook(path), level, seed=0)
+def assess(path, level, alpha_range=None):
+    """The product's result on the workbook at ``path`` (with ``alpha_range``: ``--alpha-range``'s ends), and its
+    motions table indexed by (item, ground record, direction)."""
+    result = run_assessment(read_workbook(path), level, seed=0, alpha_range=alpha_range)
     motions = result.motions.copy()
     motions["ground"] = motions["motion"].str.split(" @ ").str[0]
     return result, motions.set_index(["id", "ground", "direction"]).sort_index()

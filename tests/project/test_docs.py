@@ -16,6 +16,7 @@ import pandas as pd
 import pytest
 
 from assess import cli
+from assess.assessment.alpha_range import ALPHA_RANGE_COLUMNS
 from assess.assessment.result import MOTION_COLUMNS, SUMMARY_COLUMNS
 from assess.data import default_settings, output_columns
 from assess.fragility.stripes import CURVE_COLUMNS
@@ -148,11 +149,14 @@ def test_the_declared_columns_are_the_code_s_columns_in_its_order():
 
     declared = output_columns()
     declared = declared[declared["stage"] != "report units"]
-    for file, columns in (("summary.csv", SUMMARY_COLUMNS + CURVE_COLUMNS), ("motions.csv", MOTION_COLUMNS),
+    for file, columns in (("summary.csv", SUMMARY_COLUMNS + CURVE_COLUMNS + ALPHA_RANGE_COLUMNS),
+                          ("motions.csv", MOTION_COLUMNS),
                           ("work_orders.csv", WORK_ORDER_COLUMNS), ("comparison.csv", COMPARISON_COLUMNS)):
         assert list(declared.loc[declared["file"] == file, "column"]) == list(columns), file
     curve = declared[(declared["file"] == "summary.csv") & (declared["when"] == "hazard curve")]
     assert list(curve["column"]) == list(CURVE_COLUMNS)
+    alpha = declared[(declared["file"] == "summary.csv") & (declared["when"] == "--alpha-range")]
+    assert list(alpha["column"]) == list(ALPHA_RANGE_COLUMNS)
 
 
 def test_the_declared_columns_of_the_other_files_are_the_code_s_in_its_order():

@@ -1,0 +1,159 @@
+"""What the building's lateral stiffness ratio α moves: the level again at the ends of its range.
+
+α (Miranda & Taghavi 2005; :mod:`assess.building.modes`) sets how the building's columns or walls spread the
+storeys' drift over its height, and with it how the upper floors shake, most of all once the building yields.
+A building sheet without ``lateral_stiffness_ratio`` takes the system's typical α
+(:data:`~assess.building.modes.ALPHA_BY_SYSTEM`), and no record of a level can tell what the building's own is.
+On yielding OpenSees frames whose own α was 5 to 20, the system's α slid their upper floors' items 0.44 to
+1.78 times as far as their own did (``benchmarks/bench_yielding_equipment.py --truth-alphas 5,20``).
+
+``assess --alpha-range`` runs the level again at the two ends of the system's range
+(:data:`~assess.building.modes.ALPHA_RANGE_BY_SYSTEM`, or the ends the engineer gives), with the same ground
+motions and seed, for the items on the floors whose motions come through the building
+(:func:`items_through_building`); :func:`with_alpha_range` puts each one's risk class and chances at both
+ends beside the level's answer, flags the items whose class moves and says so in a note. The level's answer,
+at the building sheet's α, governs: the ends say how far it would move, not where the building is.
+"""
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+
+from assess.assessment.result import AssessmentResult
+from assess.assessment.summary import THROUGH_BUILDING
+from assess.building.modes import ALPHA_BY_SYSTEM, ALPHA_RANGE_BY_SYSTEM
+from assess.decision.flags import Flag, result_state
+from assess.inventory import Inventory
+from assess.inventory.site_building import BuildingSheet
+from assess.quantity_text import floor_numbering_of, floors_text, sentence_start, system_of
+
+#: The summary's columns of the two ends, in the order of ``assess/data/columns.csv``: empty for an item the
+#: building's motions do not reach (and for anchored items).
+ALPHA_RANGE_COLUMNS = ["risk_alpha_low", "risk_alpha_high", "p_beyond_clearance_alpha_low",
+                       "p_beyond_clearance_alpha_high", "p_overturn_alpha_low", "p_overturn_alpha_high"]
+#: The flag of an item whose risk class is not the same at both ends and at the sheet's α.
+FLAG_CODE = "alpha_range"
+#: The most items the note names (the flags name them all).
+MAX_NAMED = 8
+#: The summary's columns each end gives (as ``<column>_alpha_low`` and ``<column>_alpha_high``).
+_TAKEN = ("risk", "p_beyond_clearance", "p_overturn")
+
+
+def alpha_ends(sheet: BuildingSheet, given: tuple[float, float] | None = None) -> tuple[float, float]:
+    """The two α the level runs again at: ``given`` (low, high) where the engineer names them, else the ends of
+    the sheet's system's range (:data:`~assess.building.modes.ALPHA_RANGE_BY_SYSTEM`).
+
+    >>> alpha_ends(BuildingSheet(storeys=12, height_m=48.0, system="steel moment frame"))
+    (5.0, 20.0)
+    >>> alpha_ends(BuildingSheet(storeys=6, height_m=21.0, system="shear wall"), (0.5, 3.0))
+    (0.5, 3.0)
+    """
+    if given:
+        return float(given[0]), float(given[1])
+    return ALPHA_RANGE_BY_SYSTEM[sheet.system]
+
+
+def assumed_alpha(sheet: BuildingSheet) -> float:
+    """The α the level's answer is at: the sheet's ``lateral_stiffness_ratio``, else the system's typical one."""
+    if sheet.lateral_stiffness_ratio is not None:
+        return float(sheet.lateral_stiffness_ratio)
+    return ALPHA_BY_SYSTEM[sheet.system]
+
+
+def items_through_building(result: AssessmentResult) -> list[str]:
+    """The ids of the freestanding items on floors whose motions come through the building
+    (:func:`assess.assessment.summary.floor_origins`), in the summary's order: those α can move."""
+    floors = [floor for floor, origin in result.floor_origins.items()
+              if floor is not None and origin.endswith(THROUGH_BUILDING)]
+    summary = result.summary
+    reached = summary["floor"].isin(floors) & (summary["risk"] != "anchored")
+    return [str(item_id) for item_id in summary.loc[reached, "id"]]
+
+
+def at_alpha(inventory: Inventory, ids: list[str], alpha: float) -> Inventory:
+    """``inventory`` with only the items ``ids`` (and their workbook warnings) and the building's α ``alpha``."""
+    keep = inventory.equipment["id"].astype(str).isin(ids)
+    return replace(inventory, equipment=inventory.equipment[keep].reset_index(drop=True),
+                   building=replace(inventory.building, lateral_stiffness_ratio=float(alpha)),
+                   warnings=tuple(w for w in inventory.warnings if str(w.item_id) in ids))
+
+
+def with_alpha_range(result: AssessmentResult, sheet: BuildingSheet, ends: tuple[float, float],
+                     at_ends: dict[float, AssessmentResult]) -> AssessmentResult:
+    """``result`` (the level at the sheet's α) with each reached item's risk class and chances at the two ``ends``
+    of α (``at_ends``: the level's result for those items at each end, :func:`at_alpha`) in the summary
+    (:data:`ALPHA_RANGE_COLUMNS`), a :data:`FLAG_CODE` flag on each item whose class is not the same at the
+    ends and at the sheet's α, and a note saying what was run and what moved."""
+    low, high = ends
+    summary = result.summary.copy()
+    alpha = assumed_alpha(sheet)
+    whose = "given" if sheet.lateral_stiffness_ratio is not None else "the system's typical one"
+    if not at_ends:
+        for column in ALPHA_RANGE_COLUMNS:
+            summary[column] = None if column.startswith("risk") else np.nan
+        note = (f"--alpha-range: no freestanding item is on a floor whose motions come through the building, so "
+                f"the building's α ({alpha:g}, {whose}) moves no item's result and the level did not run again.")
+        return replace(result, summary=summary, hazard_notes=list(result.hazard_notes) + [note])
+    ids = summary["id"].astype(str)
+    row_of = {item_id: k for k, item_id in enumerate(ids)}
+    ends_rows = {end: at_ends[end].summary.set_index(at_ends[end].summary["id"].astype(str)) for end in ends}
+    for end, side in ((low, "low"), (high, "high")):
+        rows = ends_rows[end].reindex(ids)  # empty where the building's motions do not reach the item
+        for column in _TAKEN:
+            summary[f"{column}_alpha_{side}"] = rows[column].to_numpy()
+    system = system_of(result.settings)
+    flags = list(result.flags)
+    codes = list(summary["flags"])
+    moved, held = [], []
+    for item_id in ends_rows[low].index:
+        k = row_of[item_id]
+        classes = {summary.at[summary.index[k], "risk"], ends_rows[low].at[item_id, "risk"],
+                   ends_rows[high].at[item_id, "risk"]}
+        if len(classes) == 1:
+            held.append(item_id)
+            continue
+        moved.append(item_id)
+        flags.append(Flag(item_id, FLAG_CODE, (
+            f"at α {low:g}: {result_state(ends_rows[low].loc[item_id], system)}; at α {high:g}: "
+            f"{result_state(ends_rows[high].loc[item_id], system)}; at the building's α {alpha:g} ({whose}, which "
+            f"governs): {result_state(summary.iloc[k], system)}."), detail=(
+            f"{ends_rows[low].at[item_id, 'risk']} at α {low:g}, {summary.at[summary.index[k], 'risk']} at "
+            f"α {alpha:g}, {ends_rows[high].at[item_id, 'risk']} at α {high:g}")))
+        codes[k] = tuple(codes[k]) + (FLAG_CODE,)
+    summary["flags"] = codes
+    note = alpha_range_note(sheet, ends, alpha, whose, result, moved, held)
+    return replace(result, summary=summary, flags=flags, hazard_notes=list(result.hazard_notes) + [note])
+
+
+def alpha_range_note(sheet, ends, alpha, whose, result, moved, held) -> str:
+    """What ``--alpha-range`` ran and what it moved, in sentences for the report (from the summary's columns)."""
+    low, high = ends
+    source = ("the ends given to --alpha-range" if ends != ALPHA_RANGE_BY_SYSTEM[sheet.system]
+              else f"the ends of Miranda & Taghavi's (2005) range for {_plural(sheet.system)}")
+    summary = result.summary
+    floors = sorted(set(summary.loc[summary["id"].astype(str).isin(moved + held), "floor"].astype(int)))
+    count = len(moved) + len(held)
+    text = (f"The building's lateral stiffness ratio α: the level ran again at α {low:g} and {high:g} ({source}), "
+            f"with the same ground motions, for the {count} freestanding "
+            f"{'item' if count == 1 else 'items'} on "
+            f"{floors_text(floors, floor_numbering_of(result.settings))}. ")
+    if moved:
+        named = ", ".join(moved[:MAX_NAMED]) + (f" and {len(moved) - MAX_NAMED} more" if len(moved) > MAX_NAMED else "")
+        text += (f"{sentence_start(_count(moved))} {'is' if len(moved) == 1 else 'are'} in another risk class at "
+                 f"one end or both than at the building's α ({named}: under Flags); ")
+        text += (f"{'the other' if len(held) == 1 else 'the other ' + str(len(held))} "
+                 f"{'keeps its' if len(held) == 1 else 'keep their'} class at both ends. " if held
+                 else "no item keeps its class at both ends. ")
+    else:
+        text += "Every one is in the same class at both ends as at the building's α. "
+    return text + (f"The level's answer, at α {alpha:g} ({whose}), governs; summary.csv gives each item's class and "
+                   "chances at both ends (risk_alpha_low, risk_alpha_high, ...).")
+
+
+def _count(ids) -> str:
+    return f"{len(ids)} {'item' if len(ids) == 1 else 'items'}"
+
+
+def _plural(system: str) -> str:
+    return "other systems" if system == "other" else f"{system}s"
