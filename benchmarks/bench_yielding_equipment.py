@@ -2,7 +2,7 @@
 
 Run: python benchmarks/bench_yielding_equipment.py [--levels DE,MCE_R] [--buildings smf4,smf8,wall6,wallf6,rcf5]
      [--motions 11] [--overstrengths 1.5,2,3] [--truth-profile] [--truth-strengths 0.9,1.1]
-     [--truth-floors 0.995,1.005] [--truth-alphas 5,20] [--own-alpha] [--skip RECORD,...]
+     [--truth-floors 0.995,1.005] [--truth-alphas 5,20] [--own-alpha] [--alpha-bracket] [--skip RECORD,...]
      (needs openseespy and pyslammer; about 3 minutes a level)
 
 The truth: five yielding OpenSeesPy buildings of our own (tests/peers/opensees_buildings.py: steel
@@ -89,6 +89,18 @@ a ``building`` sheet of the building's storeys, height, system and T_1): only th
   risk class ≥ 0.83 on 4 of the 6 with the building's α (0.75 on two), down to 0.25 with the system's.
   Before, at the first storey's yield drift, at DE and MCE_R: 0.39-1.72 and 0.87-1.16.
 
+* ``--alpha-bracket``: ``given`` (and ``given, truth α a``) run with ``--alpha-range`` at the system's ends
+  (5 and 20 for the frames, 0.1 and 2 for the walls; its own answer is the same), and whether each item's truth
+  lies within what the tool gives at the ends and at the system's α (``bracket_*``; ``class_missed_flagged``: of
+  the items whose class the system's α gets wrong, the share whose class moves between the ends, so that the
+  report flags them). Measured over 11 records at DE and MCE_R on the five buildings
+  (``--levels DE,MCE_R --motions 11 --overstrengths "" --alpha-bracket``, 303 s): the strength alone missed the
+  class of 9 of 120 items, 6 of them flagged (the 3 not: one on ``smf4`` at MCE_R, two on ``wall6`` at DE, a shear
+  building outside the walls' range of α); the truth's class within the three on 117 of 120. On the frames
+  rebuilt with α 5 and 20 (``--levels DE --buildings smf4,smf8,rcf5 --truth-alphas 5,20``): 23 of 26 misses
+  flagged, the truth's class within the three on 66 of 72. On ``smf12`` over 17 records at DE and MCE_R (``--skip
+  Duzce_1999_375-090``, 177 s): 8 of 8 misses flagged (class 0.50 / 0.83 at the system's α), within on 24 of 24.
+
 Columns, each route against the truth over the (item, motion, direction) cases: PFA tool/truth at the
 mid-height floor and the roof (median over the motions), sliding: geometric mean and σ of
 ln(tool/truth) over the cases where the truth slides 1 cm or more and neither overturns (tool floored at
@@ -122,9 +134,10 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path[:0] = [str(REPO / "tests")]
 
 from assess.anchorage.equations import height_factor  # noqa: E402
+from assess.building import ALPHA_RANGE_BY_SYSTEM  # noqa: E402
 from assess.fragility.suite import binomial_interval  # noqa: E402
 from peers.opensees_buildings import BRACED, BUILDINGS, TALL  # noqa: E402
-from peers.yielding_equipment import (LEVELS, SYSTEM_R, assess, compare, given_routes,  # noqa: E402
+from peers.yielding_equipment import (LEVELS, SYSTEM_R, assess, bracket_held, compare, given_routes,  # noqa: E402
                                       given_strength, ground_suite, own_stiffness, truth_result, workbook)
 
 
@@ -217,6 +230,9 @@ def main(argv=None):
                         help="add the routes 'given + own α': yield_base_shear_g and the building's own α in "
                              "lateral_stiffness_ratio (peers.yielding_equipment.own_alpha), and 'given + own α + "
                              "own stiffness': those and its storey stiffnesses in storey_stiffness (its model's)")
+    parser.add_argument("--alpha-bracket", action="store_true",
+                        help="run 'given' (and 'given, truth α a') with --alpha-range at the system's ends, and "
+                             "add whether each item's truth lies within what the ends and the system's α give")
     parser.add_argument("--truth-profile", action="store_true",
                         help="add the route 'given + truth's stiffness': yield_base_shear_g and the OpenSees "
                              "building's storey stiffnesses in storey_stiffness")
@@ -239,7 +255,9 @@ def main(argv=None):
                     routes[f"design x {omega}"] = [["response", "yielding"], ["overstrength", float(omega)]]
                 routes["elastic"] = [["response", "elastic"]]
                 reference = truth_result(truth, suite, level, folder)
-                results = {route: assess(workbook(folder, truth, suite, level, extra), level)
+                bracket = ALPHA_RANGE_BY_SYSTEM[truth.system] if args.alpha_bracket else None
+                results = {route: assess(workbook(folder, truth, suite, level, extra), level,
+                                         bracket if route == "given" else None)
                            for route, extra in routes.items()}
                 for factor in filter(None, args.truth_strengths.split(",")):
                     results[f"truth, strength x {factor}"] = truth_result(stronger(truth, float(factor)), suite,
@@ -254,13 +272,15 @@ def main(argv=None):
                     for route, extra in ((f"given, truth α {alpha}", strength),
                                          (f"given + α, truth α {alpha}",
                                           strength + [["lateral_stiffness_ratio", float(alpha)]])):
+                        tool = assess(workbook(folder, other, suite, level, extra), level,
+                                      bracket if route.startswith("given,") else None)
                         rows.append({"building": name, "level": level, "route": route,
-                                     **compare(assess(workbook(folder, other, suite, level, extra), level),
-                                               other_reference)})
+                                     **compare(tool, other_reference), **bracket_held(tool, other_reference)})
             perturbed = [v for k, v in results.items() if k.startswith("truth, floors x ")]
             held = verdict_held(reference, perturbed) if perturbed else None
             for route, result in results.items():
                 rows.append({"building": name, "level": level, "route": route, **compare(result, reference),
+                             **bracket_held(result, reference),
                              **(held_agreement(result, reference, held)
                                 if held is not None and not route.startswith("truth, floors") else {})})
             r_factor, omega0 = SYSTEM_R[truth.system]

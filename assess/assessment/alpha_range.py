@@ -22,7 +22,7 @@ import numpy as np
 
 from assess.assessment.result import AssessmentResult
 from assess.assessment.summary import THROUGH_BUILDING
-from assess.building.modes import ALPHA_BY_SYSTEM, ALPHA_RANGE_BY_SYSTEM
+from assess.building.modes import ALPHA_BY_SYSTEM, ALPHA_RANGE_BY_SYSTEM, ALPHA_RANGE_SOURCE
 from assess.decision.flags import Flag, result_state
 from assess.inventory import Inventory
 from assess.inventory.site_building import BuildingSheet
@@ -130,7 +130,7 @@ def alpha_range_note(sheet, ends, alpha, whose, result, moved, held) -> str:
     """What ``--alpha-range`` ran and what it moved, in sentences for the report (from the summary's columns)."""
     low, high = ends
     source = ("the ends given to --alpha-range" if ends != ALPHA_RANGE_BY_SYSTEM[sheet.system]
-              else f"the ends of Miranda & Taghavi's (2005) range for {_plural(sheet.system)}")
+              else ALPHA_RANGE_SOURCE[sheet.system])
     summary = result.summary
     floors = sorted(set(summary.loc[summary["id"].astype(str).isin(moved + held), "floor"].astype(int)))
     count = len(moved) + len(held)
@@ -153,7 +153,3 @@ def alpha_range_note(sheet, ends, alpha, whose, result, moved, held) -> str:
 
 def _count(ids) -> str:
     return f"{len(ids)} {'item' if len(ids) == 1 else 'items'}"
-
-
-def _plural(system: str) -> str:
-    return "other systems" if system == "other" else f"{system}s"

@@ -103,11 +103,15 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
     at_ends = {}
     for alpha in alpha_range if ids else ():
         progress(f"again at the building's α {alpha:g} ({len(ids)} items on its floors)")
-        at_alpha = functools.partial(lambda end, message: progress(f"α {end:g}: {message}"), alpha)
-        at_ends[alpha] = _assess(alpha_ranges.at_alpha(inventory, ids, alpha), level_text, seed, at_alpha,
-                                 oq_hazard, derive_floors_roof, calibration=applied, runner=runner,
-                                 hazard_curve=None, what_if=False)
+        at_ends[alpha] = _assess(alpha_ranges.at_alpha(inventory, ids, alpha), level_text, seed,
+                                 _prefixed(progress, f"α {alpha:g}: "), oq_hazard, derive_floors_roof,
+                                 calibration=applied, runner=runner, hazard_curve=None, what_if=False)
     return alpha_ranges.with_alpha_range(result, inventory.building, alpha_range, at_ends)
+
+
+def _prefixed(progress: Progress, prefix: str) -> Progress:
+    """``progress`` with every message after ``prefix``."""
+    return lambda message: progress(prefix + message)
 
 
 def _assess(inventory, level_text, seed, progress, oq_hazard, derive_floors_roof, calibration,

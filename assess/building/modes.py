@@ -80,6 +80,15 @@ ALPHA_RANGE_BY_SYSTEM = {
     "shear wall": (0.1, 2.0),
     "other": (1.5, 20.0),
 }
+#: Where each system's range in :data:`ALPHA_RANGE_BY_SYSTEM` comes from, in words for the report.
+ALPHA_RANGE_SOURCE = {
+    "steel moment frame": "Miranda & Taghavi's (2005) range for moment frames",
+    "concrete moment frame": "Miranda & Taghavi's (2005) range for moment frames",
+    "eccentrically braced frame": "Miranda & Taghavi's (2005) range for dual systems, taken for braced frames",
+    "braced frame": "Miranda & Taghavi's (2005) range for dual systems, taken for braced frames",
+    "shear wall": "Miranda & Taghavi's (2005) range for shear-wall buildings, its 0 taken as 0.1",
+    "other": "from Miranda & Taghavi's (2005) least for dual systems to their most for moment frames",
+}
 #: Share of the mass ASCE 7-16 §12.9.1.1 asks the modes of a response-spectrum analysis to reach.
 #: Not the default here: that rule is for base shear and storey forces. A floor's acceleration
 #: carries the higher modes, which are not rigid under earthquake ground motion (a 12-storey shear

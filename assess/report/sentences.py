@@ -235,7 +235,7 @@ FLAG_CAUSES = {
     "alpha_range": "With the building's lateral stiffness ratio α at either end of its range (--alpha-range), the "
                    "level puts these items in another class than at the building's α, which governs (beside each: "
                    "its class at the low end, at the building's α and at the high end; summary.csv gives their "
-                   "chances at both ends): their advice rests on α, which lateral_stiffness_ratio from the building's "
+                   "chances at both ends): their class rests on α, which lateral_stiffness_ratio from the building's "
                    "model would settle.",
     "uplift": "They uplift and rock in the simulation (their mode and peak θ/α are in the tables). The paper's "
               "sliding regression assumes no uplift: the simulation answers for them.",

@@ -11,6 +11,7 @@ import pytest
 from assess.assessment.alpha_range import ALPHA_RANGE_COLUMNS, alpha_ends, items_through_building
 from assess.assessment.pipeline import run_assessment
 from assess.building import ALPHA_BY_SYSTEM, ALPHA_RANGE_BY_SYSTEM
+from assess.building.modes import ALPHA_RANGE_SOURCE
 from assess.inventory import read_workbook
 from tests.assessment.test_floor_motions import SITE
 
@@ -96,7 +97,7 @@ def test_an_item_whose_class_moves_is_flagged_and_the_note_counts_it(runs):
     assert moved and flagged == sorted(moved)
     assert all(("alpha_range" in summary.at[item, "flags"]) == (item in moved) for item in UPPER)
     note = next(note for note in bracketed.hazard_notes if note.startswith("The building's lateral stiffness"))
-    assert "α 5 and 20 (the ends of Miranda & Taghavi's (2005) range for steel moment frames)" in note
+    assert "α 5 and 20 (Miranda & Taghavi's (2005) range for moment frames)" in note
     assert (f"for the 7 freestanding items on floors 1 to 3. {len(moved)} items are in another risk class at one "
             "end or both than at the building's α") in note
     assert f"at α {ALPHA_BY_SYSTEM['steel moment frame']:g} (the system's typical one), governs" in note
@@ -106,7 +107,7 @@ def test_every_system_has_a_range_around_its_typical_alpha():
     """Miranda & Taghavi's ranges hold each system's typical α, and the sheet's bounds hold the ranges."""
     from assess.inventory.site_building import LATERAL_STIFFNESS_RATIO_RANGE
 
-    assert set(ALPHA_RANGE_BY_SYSTEM) == set(ALPHA_BY_SYSTEM)
+    assert set(ALPHA_RANGE_BY_SYSTEM) == set(ALPHA_BY_SYSTEM) == set(ALPHA_RANGE_SOURCE)
     for system, (low, high) in ALPHA_RANGE_BY_SYSTEM.items():
         assert LATERAL_STIFFNESS_RATIO_RANGE[0] <= low < ALPHA_BY_SYSTEM[system] < high \
             <= LATERAL_STIFFNESS_RATIO_RANGE[1], system

@@ -18,6 +18,7 @@ import numpy as np
 import pandas as pd
 
 from assess.assessment.pipeline import run_assessment
+from assess.building import ALPHA_RANGE_BY_SYSTEM
 from assess.building import yielding as yielding_module
 from assess.hazard.records import read_record
 from assess.inventory import read_workbook
@@ -209,19 +210,53 @@ def truth_result(truth, suite, level, folder: Path, floor_scale=1.0):
         return assess(workbook(folder, truth, suite, level, [["response", "yielding"]]), level)
 
 
-def compared(truth, suite, level, folder: Path, routes: dict) -> dict:
-    """Each route's :func:`compare` numbers against the truth's, ``routes`` the building sheet's rows by route."""
+def compared(truth, suite, level, folder: Path, routes: dict, bracket=None) -> dict:
+    """Each route's :func:`compare` numbers against the truth's, ``routes`` the building sheet's rows by route; with
+    ``bracket`` (low, high), the route ``given`` runs with ``--alpha-range`` there (its own answer is the same) and
+    adds :func:`bracket_held`'s."""
     reference = truth_result(truth, suite, level, folder)
-    return {route: compare(assess(workbook(folder, truth, suite, level, rows), level), reference)
-            for route, rows in routes.items()}
+    numbers = {}
+    for route, rows in routes.items():
+        tool = assess(workbook(folder, truth, suite, level, rows), level, bracket if route == "given" else None)
+        numbers[route] = {**compare(tool, reference), **bracket_held(tool, reference)}
+    return numbers
 
 
 def compared_on_its_own(truth, folder: Path, motions: int = 11) -> dict:
     """:func:`compared` at DE over the first ``motions`` records for a building checked on its own (the braced frame,
-    the 12-storey frame): the routes of what the engineer knows (:func:`given_routes`), the design data alone
-    (``design``) and the elastic modes (``elastic``)."""
+    the 12-storey frame): the routes of what the engineer knows (:func:`given_routes`; ``given`` with
+    ``--alpha-range`` at the system's ends, :func:`bracket_held`), the design data alone (``design``) and the
+    elastic modes (``elastic``)."""
     routes = {**given_routes(truth), "design": [["response", "yielding"]], "elastic": [["response", "elastic"]]}
-    return compared(truth, ground_suite(motions, truth.period_s, 1.0), "DE", folder, routes)
+    return compared(truth, ground_suite(motions, truth.period_s, 1.0), "DE", folder, routes,
+                    bracket=ALPHA_RANGE_BY_SYSTEM[truth.system])
+
+
+def bracket_held(tool, truth) -> dict:
+    """Where the tool ran with ``--alpha-range``: the share of the items whose truth lies within what the tool
+    gives at the two ends of α and at the system's α (the least to the most of the three): the risk class
+    (``bracket_class_held``), the chance of sliding past the room and of overturning (``bracket_p_held``, both);
+    the share whose class the ends left where the system's α put it (``bracket_class_fixed``), and of the items
+    whose class the system's α gets wrong (``n_class_missed``), the share the ends flag (``class_missed_flagged``:
+    their class moves between the ends). {} without."""
+    summary = tool[0].summary.set_index("id")
+    if "risk_alpha_low" not in summary:
+        return {}
+    truth_rows = truth[0].summary.set_index("id").loc[summary.index]
+    rank = {"low": 0, "moderate": 1, "high": 2}
+    classes = summary[["risk_alpha_low", "risk", "risk_alpha_high"]].apply(lambda column: column.map(rank))
+    truth_class = truth_rows["risk"].map(rank)
+    held = (classes.min(axis=1) <= truth_class) & (truth_class <= classes.max(axis=1))
+    within = []
+    for column in ("p_beyond_clearance", "p_overturn"):
+        values = summary[[f"{column}_alpha_low", column, f"{column}_alpha_high"]].astype(float)
+        within.append((values.min(axis=1) - 1e-9 <= truth_rows[column])
+                      & (truth_rows[column] <= values.max(axis=1) + 1e-9))
+    fixed = classes.min(axis=1) == classes.max(axis=1)
+    missed = classes["risk"] != truth_class
+    return {"bracket_class_held": float(held.mean()), "bracket_p_held": float((within[0] & within[1]).mean()),
+            "bracket_class_fixed": float(fixed.mean()), "n_class_missed": int(missed.sum()),
+            "class_missed_flagged": float((~fixed[missed]).mean()) if missed.any() else np.nan}
 
 
 def overturn_class(p_overturn):

@@ -93,3 +93,14 @@ def test_with_the_strength_alpha_and_storey_stiffnesses_of_its_own_model_every_t
 def test_from_the_design_data_within_a_factor_of_one_and_a_half_and_nearer_than_the_elastic_route(braced):
     gm, elastic = braced["design"]["gm"], braced["elastic"]["gm"]
     assert 1 / 1.5 <= gm <= 1.5 and abs(np.log(gm)) < abs(np.log(elastic)), (gm, elastic)
+
+
+def test_alpha_range_flags_most_items_whose_class_the_strength_alone_misses(braced):
+    """With the strength alone the class misses 3 of 12 items; run at the braced frames' α 1.5 and 6 as well
+    (``--alpha-range``), the class of 2 of those 3 moves between the ends and is flagged. The third keeps one class
+    at α 1.5, 4 and 6 where the truth's is another, yet with the bay's own α 2.4 every item's class holds at DE:
+    the ends do not bound what lies between them."""
+    n = braced["given"]
+    assert n["n_class_missed"] >= 2, n  # the strength alone misses: the check below can fail
+    assert n["class_missed_flagged"] >= 0.6, n
+    assert n["bracket_class_held"] >= 0.9, n
