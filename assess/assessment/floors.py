@@ -299,11 +299,11 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
                      "(from a pushover or an evaluation) or overstrength where known.")
         if sheet.lateral_stiffness_ratio is None and not hinged:
             text += (" The lateral stiffness ratio α, the system's typical value and not this building's, moves the "
-                     "floors' motions nearly as much as the strength does (it sets how the columns spread the storeys' "
-                     "drift over the height; on OpenSees frames of 4 to 12 storeys whose own α was 5 to 20, the "
-                     "system's α slid their upper floors' items 0.44 to 1.78 times as far as theirs did, and 0.66 times "
-                     "on the 12-storey one whose α was 10): give lateral_stiffness_ratio where the building's own is "
-                     "known; --alpha-range shows which items it moves here.")
+                     "floors' motions nearly as much as the strength does (it sets how the columns spread the "
+                     "storeys' drift over the height; on OpenSees frames of 4 to 12 storeys whose own α was 5 to 20, "
+                     "the system's α slid their upper floors' items 0.44 to 1.78 times as far as theirs did, and 0.66 "
+                     "times on the 12-storey one whose α was 10): give lateral_stiffness_ratio where the building's "
+                     "own is known; --alpha-range shows which items it moves here.")
         if sheet.storey_stiffness is None and not hinged and STRENGTH_BY_SYSTEM[sheet.system] == "stiffness":
             text += (" The storeys' stiffnesses, which set their strengths, are the system's default profile, not "
                      "this building's: give storey_stiffness from the building's model where known.")

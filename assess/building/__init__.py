@@ -21,5 +21,5 @@ from .modes import ALPHA_BY_SYSTEM, ALPHA_RANGE_BY_SYSTEM, BuildingModes, buildi
 from .period import SYSTEMS, approximate_period
 from .response import floor_accelerations, floor_records
 
-__all__ = ["ALPHA_BY_SYSTEM", "ALPHA_RANGE_BY_SYSTEM", "BuildingModes", "SYSTEMS", "approximate_period", "building_modes",
-           "floor_accelerations", "floor_records", "floors_table"]
+__all__ = ["ALPHA_BY_SYSTEM", "ALPHA_RANGE_BY_SYSTEM", "BuildingModes", "SYSTEMS", "approximate_period",
+           "building_modes", "floor_accelerations", "floor_records", "floors_table"]
