@@ -36,8 +36,6 @@ ALPHA_RANGE_COLUMNS = ["risk_alpha_low", "risk_alpha_high", "p_beyond_clearance_
 FLAG_CODE = "alpha_range"
 #: The most items the note names (the flags name them all).
 MAX_NAMED = 8
-#: The summary's columns each end gives (as ``<column>_alpha_low`` and ``<column>_alpha_high``).
-_TAKEN = ("risk", "p_beyond_clearance", "p_overturn")
 
 
 def alpha_ends(sheet: BuildingSheet, given: tuple[float, float] | None = None) -> tuple[float, float]:
@@ -98,10 +96,10 @@ def with_alpha_range(result: AssessmentResult, sheet: BuildingSheet, ends: tuple
     ids = summary["id"].astype(str)
     row_of = {item_id: k for k, item_id in enumerate(ids)}
     ends_rows = {end: at_ends[end].summary.set_index(at_ends[end].summary["id"].astype(str)) for end in ends}
-    for end, side in ((low, "low"), (high, "high")):
-        rows = ends_rows[end].reindex(ids)  # empty where the building's motions do not reach the item
-        for column in _TAKEN:
-            summary[f"{column}_alpha_{side}"] = rows[column].to_numpy()
+    reached = {side: ends_rows[end].reindex(ids) for end, side in ((low, "low"), (high, "high"))}
+    for column in ALPHA_RANGE_COLUMNS:  # empty where the building's motions do not reach the item
+        taken, side = column.rsplit("_alpha_", 1)
+        summary[column] = reached[side][taken].to_numpy()
     system = system_of(result.settings)
     flags = list(result.flags)
     codes = list(summary["flags"])
