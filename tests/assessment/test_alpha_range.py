@@ -131,3 +131,14 @@ def test_the_report_says_the_cause_once_and_each_item_s_three_classes(runs):
         assert (f"{row['risk_alpha_low']} at α 5, {row['risk']} at α 12, {row['risk_alpha_high']} at α 20"
                 in section), flag.item_id
     assert "The building&#39;s lateral stiffness ratio α: the level ran again at α 5 and 20" in html
+
+
+def test_without_items_on_the_building_s_floors_nothing_runs_again_and_the_note_says_why(make_workbook):
+    sheets = {"equipment": [dict(EQUIPMENT[0])], "site": SITE, "building": BUILDING}
+    said = []
+    result = run_assessment(read_workbook(make_workbook(sheets, name="ground.xlsx", record=False)), "DE", seed=3,
+                            alpha_range=ENDS, progress=said.append)
+    assert not any(message.startswith("again at the building's α") for message in said)
+    assert result.summary[ALPHA_RANGE_COLUMNS].isna().all().all()
+    assert result.hazard_notes[-1].startswith("--alpha-range: no freestanding item is on a floor whose motions come "
+                                              "through the building")
