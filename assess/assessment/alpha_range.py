@@ -21,7 +21,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-import numpy as np
+import pandas as pd
 
 from assess.assessment.result import AssessmentResult
 from assess.assessment.summary import THROUGH_BUILDING
@@ -88,43 +88,47 @@ def with_alpha_range(result: AssessmentResult, sheet: BuildingSheet, ends: tuple
     ends and at the sheet's α, and a note saying what was run and what moved."""
     low, high = ends
     summary = result.summary.copy()
+    ids = summary["id"].astype(str)
+    at = {side: _rows_of(at_ends.get(end), ids) for end, side in ((low, "low"), (high, "high"))}
+    for column in ALPHA_RANGE_COLUMNS:  # empty where the building's motions do not reach the item
+        taken, side = column.rsplit("_alpha_", 1)
+        summary[column] = at[side][taken].to_numpy()
     alpha = assumed_alpha(sheet)
     whose = "given" if sheet.lateral_stiffness_ratio is not None else "the system's typical one"
     if not at_ends:
-        for column in ALPHA_RANGE_COLUMNS:
-            summary[column] = None if column.startswith("risk") else np.nan
         note = (f"--alpha-range: no freestanding item is on a floor whose motions come through the building, so "
                 f"the building's α ({alpha:g}, {whose}) moves no item's result and the level did not run again.")
         return replace(result, summary=summary, hazard_notes=list(result.hazard_notes) + [note])
-    ids = summary["id"].astype(str)
-    row_of = {item_id: k for k, item_id in enumerate(ids)}
-    ends_rows = {end: at_ends[end].summary.set_index(at_ends[end].summary["id"].astype(str)) for end in ends}
-    reached = {side: ends_rows[end].reindex(ids) for end, side in ((low, "low"), (high, "high"))}
-    for column in ALPHA_RANGE_COLUMNS:  # empty where the building's motions do not reach the item
-        taken, side = column.rsplit("_alpha_", 1)
-        summary[column] = reached[side][taken].to_numpy()
     system = system_of(result.settings)
     flags = list(result.flags)
     codes = list(summary["flags"])
     moved, held = [], []
-    for item_id in ends_rows[low].index:
-        k = row_of[item_id]
-        classes = {summary.at[summary.index[k], "risk"], ends_rows[low].at[item_id, "risk"],
-                   ends_rows[high].at[item_id, "risk"]}
-        if len(classes) == 1:
+    for k, item_id in enumerate(ids):
+        row = summary.iloc[k]
+        if not isinstance(row["risk_alpha_low"], str):  # not reached
+            continue
+        if len({row["risk_alpha_low"], row["risk"], row["risk_alpha_high"]}) == 1:
             held.append(item_id)
             continue
         moved.append(item_id)
         flags.append(Flag(item_id, FLAG_CODE, (
-            f"at α {low:g}: {result_state(ends_rows[low].loc[item_id], system)}; at α {high:g}: "
-            f"{result_state(ends_rows[high].loc[item_id], system)}; at the building's α {alpha:g} ({whose}, which "
-            f"governs): {result_state(summary.iloc[k], system)}."), detail=(
-            f"{ends_rows[low].at[item_id, 'risk']} at α {low:g}, {summary.at[summary.index[k], 'risk']} at "
-            f"α {alpha:g}, {ends_rows[high].at[item_id, 'risk']} at α {high:g}")))
+            f"at α {low:g}: {result_state(at['low'].loc[item_id], system)}; at α {high:g}: "
+            f"{result_state(at['high'].loc[item_id], system)}; at the building's α {alpha:g} ({whose}, which "
+            f"governs): {result_state(row, system)}."), detail=(
+            f"{row['risk_alpha_low']} at α {low:g}, {row['risk']} at α {alpha:g}, {row['risk_alpha_high']} at "
+            f"α {high:g}")))
         codes[k] = tuple(codes[k]) + (FLAG_CODE,)
     summary["flags"] = codes
     note = alpha_range_note(sheet, ends, alpha, whose, result, moved, held)
     return replace(result, summary=summary, flags=flags, hazard_notes=list(result.hazard_notes) + [note])
+
+
+def _rows_of(end_result: AssessmentResult | None, ids):
+    """The summary rows of one end's result by item id, in the order of ``ids`` (empty rows where it has none)."""
+    if end_result is None:
+        return pd.DataFrame(index=ids, columns=["risk", "p_beyond_clearance", "p_overturn"], dtype=object)
+    rows = end_result.summary
+    return rows.set_index(rows["id"].astype(str)).reindex(ids)
 
 
 def alpha_range_note(sheet, ends, alpha, whose, result, moved, held) -> str:
