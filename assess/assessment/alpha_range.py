@@ -25,7 +25,8 @@ import pandas as pd
 
 from assess.assessment.result import AssessmentResult
 from assess.assessment.summary import THROUGH_BUILDING
-from assess.building.modes import ALPHA_BY_SYSTEM, ALPHA_RANGE_BY_SYSTEM, ALPHA_RANGE_SOURCE
+from assess.assessment.floors import alpha_of, alpha_source_of
+from assess.building.modes import ALPHA_RANGE_BY_SYSTEM, ALPHA_RANGE_SOURCE
 from assess.decision.flags import Flag, result_state
 from assess.inventory import Inventory
 from assess.inventory.site_building import BuildingSheet
@@ -55,11 +56,6 @@ def alpha_ends(sheet: BuildingSheet, given: tuple[float, float] | None = None) -
     return ALPHA_RANGE_BY_SYSTEM[sheet.system]
 
 
-def assumed_alpha(sheet: BuildingSheet) -> float:
-    """The α the level's answer is at: the sheet's ``lateral_stiffness_ratio``, else the system's typical one."""
-    if sheet.lateral_stiffness_ratio is not None:
-        return float(sheet.lateral_stiffness_ratio)
-    return ALPHA_BY_SYSTEM[sheet.system]
 
 
 def items_through_building(result: AssessmentResult) -> list[str]:
@@ -76,7 +72,8 @@ def at_alpha(inventory: Inventory, ids: list[str], alpha: float) -> Inventory:
     """``inventory`` with only the items ``ids`` (and their workbook warnings) and the building's α ``alpha``."""
     keep = inventory.equipment["id"].astype(str).isin(ids)
     return replace(inventory, equipment=inventory.equipment[keep].reset_index(drop=True),
-                   building=replace(inventory.building, lateral_stiffness_ratio=float(alpha)),
+                   building=replace(inventory.building, lateral_stiffness_ratio=float(alpha), pushover_slope_ratio=None,
+                                    alpha_source=f"an end of --alpha-range, not the building's"),
                    warnings=tuple(w for w in inventory.warnings if str(w.item_id) in ids))
 
 
@@ -93,11 +90,10 @@ def with_alpha_range(result: AssessmentResult, sheet: BuildingSheet, ends: tuple
     for column in ALPHA_RANGE_COLUMNS:  # empty where the building's motions do not reach the item
         taken, side = column.rsplit("_alpha_", 1)
         summary[column] = at[side][taken].to_numpy()
-    alpha = assumed_alpha(sheet)
-    whose = "given" if sheet.lateral_stiffness_ratio is not None else "the system's typical one"
+    alpha, whose = alpha_of(sheet), alpha_source_of(sheet, short=True)
     if not at_ends:
         note = (f"--alpha-range: no freestanding item is on a floor whose motions come through the building, so "
-                f"the building's α ({alpha:g}, {whose}) moves no item's result and the level did not run again.")
+                f"the building's α ({alpha:.3g}, {whose}) moves no item's result and the level did not run again.")
         return replace(result, summary=summary, hazard_notes=list(result.hazard_notes) + [note])
     system = system_of(result.settings)
     flags = list(result.flags)
@@ -113,9 +109,9 @@ def with_alpha_range(result: AssessmentResult, sheet: BuildingSheet, ends: tuple
         moved.append(item_id)
         flags.append(Flag(item_id, FLAG_CODE, (
             f"at α {low:g}: {result_state(at['low'].loc[item_id], system)}; at α {high:g}: "
-            f"{result_state(at['high'].loc[item_id], system)}; at the building's α {alpha:g} ({whose}, which "
+            f"{result_state(at['high'].loc[item_id], system)}; at the building's α {alpha:.3g} ({whose}, which "
             f"governs): {result_state(row, system)}."), detail=(
-            f"{row['risk_alpha_low']} at α {low:g}, {row['risk']} at α {alpha:g}, {row['risk_alpha_high']} at "
+            f"{row['risk_alpha_low']} at α {low:g}, {row['risk']} at α {alpha:.3g}, {row['risk_alpha_high']} at "
             f"α {high:g}")))
         codes[k] = tuple(codes[k]) + (FLAG_CODE,)
     summary["flags"] = codes
@@ -152,7 +148,7 @@ def alpha_range_note(sheet, ends, alpha, whose, result, moved, held) -> str:
                  else "no item keeps its class at both ends. ")
     else:
         text += "Every one is in the same class at both ends as at the building's α. "
-    return text + (f"The level's answer, at α {alpha:g} ({whose}), governs; summary.csv gives each item's class and "
+    return text + (f"The level's answer, at α {alpha:.3g} ({whose}), governs; summary.csv gives each item's class and "
                    "chances at both ends (risk_alpha_low, risk_alpha_high, ...).")
 
 

@@ -15,6 +15,7 @@ level's motions.
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -27,7 +28,9 @@ from assess.anchorage.item import system_ductility_reduction
 from assess.building.design import OVERSTRENGTH_SOURCE_BY_SYSTEM, design_storey_stiffness
 from assess.building.floors import floors_table
 from assess.building.nonlinear import STRENGTH_BY_SYSTEM
+from assess.building.modes import ALPHA_BY_SYSTEM
 from assess.building.period import approximate_period
+from assess.building.pushover import SLOPE_ROOF_DRIFT_RATIO, AlphaFromPushover, alpha_from_pushover, stick_pushover
 from assess.building.response import floor_records
 from assess.building.yielding import (BASE_HINGE, STABILITY_COEFFICIENT_MAX, YieldingBuilding, storey_table,
                                       yielding_building, yielding_histories)
@@ -81,13 +84,75 @@ def storey_stiffness_of(building: BuildingSheet) -> np.ndarray:
     return design_storey_stiffness(building.system, np.ones(building.storeys), heights, period_s)
 
 
+#: The α a pushover's slope is looked for between (:func:`pushover_alpha`): from columns so stiff that the storeys
+#: barely yield to storeys that shear as a shear building's.
+PUSHOVER_ALPHA_BOUNDS = (0.5, 30.0)
+
+
+@functools.lru_cache(maxsize=16)
+def pushover_alpha(building: BuildingSheet) -> AlphaFromPushover | None:
+    """The α whose yielding stick, pushed over under the code's lateral forces, has the sheet's
+    ``pushover_slope_ratio`` (:func:`assess.building.pushover.alpha_from_pushover`); None without it.
+
+    The stick is the one the yielding route runs (the sheet's T_1, storey stiffnesses, ``yield_base_shear_g`` and
+    ``p_delta``) at each α tried; the sheet's checks made sure the system is a frame or a braced frame and the
+    strength is given."""
+    if building.pushover_slope_ratio is None:
+        return None
+    storey_height_m = building.height_m / building.storeys
+    stiffness = storey_stiffness_of(building)
+
+    def slope_at(alpha: float) -> float:
+        modes = building_modes(building.storeys, storey_height_m, system=building.system, period_s=building.period_s,
+                               damping=building.damping, alpha=alpha, storey_stiffness=stiffness)
+        model = yielding_building(modes, building.system, damping=building.damping,
+                                  yield_base_shear_g=building.yield_base_shear_g, p_delta=building.p_delta)
+        return stick_pushover(model.stick, float(modes.periods_s[0])).slope_ratio
+
+    return alpha_from_pushover(float(building.pushover_slope_ratio), slope_at, PUSHOVER_ALPHA_BOUNDS,
+                               prefer=ALPHA_BY_SYSTEM[building.system])
+
+
+def alpha_of(building: BuildingSheet) -> float:
+    """The lateral stiffness ratio α the building is modelled with: the sheet's ``lateral_stiffness_ratio``, else the
+    one its ``pushover_slope_ratio`` gives (:func:`pushover_alpha`), else the system's typical one."""
+    if building.lateral_stiffness_ratio is not None:
+        return float(building.lateral_stiffness_ratio)
+    found = pushover_alpha(building)
+    return found.alpha if found is not None else ALPHA_BY_SYSTEM[building.system]
+
+
+def alpha_source_of(building: BuildingSheet, short: bool = False) -> str:
+    """Where :func:`alpha_of`'s α comes from, in words for the notes (``short``: in a few)."""
+    if building.alpha_source:
+        return building.alpha_source
+    if building.lateral_stiffness_ratio is not None:
+        return "given"
+    found = pushover_alpha(building)
+    if found is None:
+        return "the system's typical one"
+    if short:
+        return "from the pushover's slope after yield"
+    said, drift = f"from pushover_slope_ratio {found.slope_ratio:g}", f"{SLOPE_ROOF_DRIFT_RATIO:.0%} roof drift"
+    if not found.matched:
+        low, high = found.slope_ratio_range
+        return (f"{said}, which the yielding stick's pushover has at no α from {found.bounds[0]:g} to "
+                f"{found.bounds[1]:g} (its slope at {drift} over the initial one lies between {low:.3g} and "
+                f"{high:.3g} there): the α whose slope, {found.stick_slope_ratio:.3g}, comes nearest; check the slope "
+                f"is read at {drift} and the strength is the pushover's")
+    if len(found.roots) > 1:
+        others = ", ".join(f"{a:.3g}" for a in found.roots if a != found.alpha)
+        return (f"{said}: the yielding stick's pushover has that slope at {drift} at this α and at {others}, and "
+                "this one is nearer the system's typical α")
+    return f"{said}: the yielding stick's pushover has that slope at {drift} at this α"
+
+
 def building_modes_of(building: BuildingSheet) -> BuildingModes:
     """The building sheet's modes (:func:`assess.building.building_modes`), every mode kept, with the storeys'
-    stiffness profile of :func:`storey_stiffness_of` and the sheet's ``lateral_stiffness_ratio`` (else the
-    system's α)."""
+    stiffness profile of :func:`storey_stiffness_of` and the α of :func:`alpha_of`."""
     return building_modes(building.storeys, building.height_m / building.storeys, system=building.system,
                           period_s=building.period_s, damping=building.damping,
-                          alpha=building.lateral_stiffness_ratio, storey_stiffness=storey_stiffness_of(building))
+                          alpha=alpha_of(building), storey_stiffness=storey_stiffness_of(building))
 
 
 def building_model_of(building: BuildingSheet, site: SiteSheet | None, modes: BuildingModes | None = None,
@@ -274,8 +339,7 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
     source = "given" if sheet.period_s is not None else "ASCE 7 Table 12.8-2's estimate"
     which = sentence_start(floors_text(floors, numbering))
     stiffness = stiffness_note(modes, sheet)
-    whose = "given" if sheet.lateral_stiffness_ratio is not None else "the system's typical one"
-    ratio = f"lateral stiffness ratio α {modes.alpha:g} ({whose})"
+    ratio = f"lateral stiffness ratio α {modes.alpha:.3g} ({alpha_source_of(sheet)})"
     if isinstance(building, YieldingBuilding):
         strength = building.strength
         hinged = building.yielding_model == BASE_HINGE
@@ -297,13 +361,18 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
             text += (f" The overstrength is {said}, "
                      "not this building's, and the strength moves the floors' motions most: give yield_base_shear_g "
                      "(from a pushover or an evaluation) or overstrength where known.")
-        if sheet.lateral_stiffness_ratio is None and not hinged:
+        if sheet.lateral_stiffness_ratio is None and sheet.pushover_slope_ratio is None and not hinged:
             text += (" The lateral stiffness ratio α, the system's typical value and not this building's, moves the "
                      "floors' motions nearly as much as the strength does (it sets how the columns spread the "
                      "storeys' drift over the height; on OpenSees frames of 4 to 12 storeys whose own α was 5 to 20, "
                      "the system's α slid their upper floors' items 0.44 to 1.78 times as far as theirs did, and 0.66 "
                      "times on the 12-storey one whose α was 10): give lateral_stiffness_ratio where the building's "
                      "own is known; --alpha-range shows which items it moves here.")
+        if sheet.lateral_stiffness_ratio is None and sheet.pushover_slope_ratio is not None:
+            text += (f" The α found from the pushover rests on the storeys hardening at "
+                     f"{float(building.stick.hardening[0]):.0%} of their stiffness after they yield, as the stick's "
+                     "do: where the building's own harden less, its columns are stiffer than this α says (on OpenSees "
+                     "frames of α 10 whose storeys harden at 2%, the α found was 11.1 to 12.5).")
         if sheet.storey_stiffness is None and not hinged and STRENGTH_BY_SYSTEM[sheet.system] == "stiffness":
             text += (" The storeys' stiffnesses, which set their strengths, are the system's default profile, not "
                      "this building's: give storey_stiffness from the building's model where known.")

@@ -62,6 +62,14 @@ OVERSTRENGTH_RANGE = (1.0, 6.0)
 #: ∞ a shear building; walls 0 to 2, dual systems 1.5 to 6, moment frames 5 to 20). Below 0.1 the building
 #: bends as a cantilever, beyond 30 it shears as a shear building: nothing changes outside these.
 LATERAL_STIFFNESS_RATIO_RANGE = (0.1, 30.0)
+#: Bounds of the building sheet's ``pushover_slope_ratio`` (the pushover's slope at 2 % roof drift over its
+#: initial slope): above 0 (a pushover that falls at 2 % has no α to tell, P-Delta having taken over) and below 1
+#: (a building that has not yielded by then).
+PUSHOVER_SLOPE_RATIO_RANGE = (0.001, 0.99)
+#: The lateral systems whose α a pushover's slope after yield tells: those whose stick keeps the elastic model's
+#: column beside its storey springs (:data:`assess.building.nonlinear.FLEXURE_BY_SYSTEM`).
+PUSHOVER_ALPHA_SYSTEMS = ("steel moment frame", "concrete moment frame", "eccentrically braced frame",
+                          "braced frame")
 #: Bounds of the site sheet's T_s = S_D1/S_DS [s], the corner of its design spectrum: a mapped site's is about 0.15
 #: to 2 s (rock in a high-hazard region to soft soil in a low one, ASCE 7 Tables 11.4-1 and 11.4-2's site
 #: coefficients over the maps' S_S and S_1); outside these, one of the two values is not the site's (a
@@ -173,7 +181,10 @@ class BuildingSheet:
         (:func:`assess.building.design.design_storey_stiffness`).
     lateral_stiffness_ratio : float or None
         Miranda & Taghavi's α of the building's shear-flexural model, where the engineer gives it; None: the
-        system's (:data:`assess.building.ALPHA_BY_SYSTEM`).
+        system's (:data:`assess.building.ALPHA_BY_SYSTEM`), or the one ``pushover_slope_ratio`` gives.
+    pushover_slope_ratio : float or None
+        The slope of the engineer's pushover at 2 % roof drift over its initial slope, where given: the yielding
+        stick's α is then the one whose own pushover has that slope (:mod:`assess.building.pushover`).
     rows : dict
         The sheet row of each key given.
     sheet : str
@@ -191,6 +202,9 @@ class BuildingSheet:
     p_delta: bool = False
     storey_stiffness: tuple | None = None
     lateral_stiffness_ratio: float | None = None
+    pushover_slope_ratio: float | None = None
+    #: Where α comes from where the run sets it itself (``--alpha-range``'s ends), in words for the notes.
+    alpha_source: str = ""
     rows: dict = field(default_factory=dict, compare=False)
     sheet: str = "building"
 
@@ -256,6 +270,8 @@ _BUILDING_KEYS = {
                            positive=True),
     "p_delta": Column("p_delta", "text", max_chars=10),
     "storey_stiffness": Column("storey_stiffness", "text", max_chars=2000),
+    "pushover_slope_ratio": Column("pushover_slope_ratio", "number", low=PUSHOVER_SLOPE_RATIO_RANGE[0],
+                                   high=PUSHOVER_SLOPE_RATIO_RANGE[1], positive=True),
     "lateral_stiffness_ratio": Column("lateral_stiffness_ratio", "number", low=LATERAL_STIFFNESS_RATIO_RANGE[0],
                                       high=LATERAL_STIFFNESS_RATIO_RANGE[1], positive=True),
 }
@@ -456,7 +472,7 @@ def read_building(table, report) -> BuildingSheet | None:
                       "yes or no.", "write yes (the gravity loads' P-Delta effect on the yielding storeys) or no.")
         p_delta = word in _YES
     if response == "elastic":
-        for key in ("yield_base_shear", "overstrength", "p_delta"):
+        for key in ("yield_base_shear", "overstrength", "p_delta", "pushover_slope_ratio"):
             if key in out:
                 name = "yield_base_shear_g" if key == "yield_base_shear" else key
                 report.at(values[key][1], key_header, f"{name} is given but response is elastic: the elastic "
@@ -475,7 +491,9 @@ def read_building(table, report) -> BuildingSheet | None:
                  f"delete the yield_base_shear_g row: {deleted} have no strength."),
                 ("overstrength", "overstrength" in out, "overstrength is given",
                  f"delete the overstrength row: {deleted} have no strength."),
-                ("p_delta", p_delta, "p_delta is given", f"delete the p_delta row: {deleted} carry no P-Delta.")):
+                ("p_delta", p_delta, "p_delta is given", f"delete the p_delta row: {deleted} carry no P-Delta."),
+                ("pushover_slope_ratio", "pushover_slope_ratio" in out, "pushover_slope_ratio is given",
+                 f"delete the pushover_slope_ratio row ({deleted} take α from lateral_stiffness_ratio).")):
             if asks:
                 report.at(values[key][1], value_header if key == "response" else key_header, f"{said} but {beyond}",
                           fix)
@@ -484,6 +502,8 @@ def read_building(table, report) -> BuildingSheet | None:
                   "overstrength: the overstrength multiplies the code's design strength, which a given base "
                   "shear at yield replaces.", "keep yield_base_shear_g (from a pushover or an evaluation) or "
                   "overstrength, not both.")
+    if "pushover_slope_ratio" in out:
+        _check_pushover_slope(out, values, system, response, report, key_header)
     stiffness = None
     if "storey_stiffness" in out and "storeys" in out:
         stiffness, problem = parse_storey_stiffness(out["storey_stiffness"], int(out["storeys"]))
@@ -511,7 +531,28 @@ def read_building(table, report) -> BuildingSheet | None:
                          response=response, yield_base_shear_g=out.get("yield_base_shear"),
                          overstrength=out.get("overstrength"), p_delta=p_delta, storey_stiffness=stiffness,
                          lateral_stiffness_ratio=out.get("lateral_stiffness_ratio"),
+                         pushover_slope_ratio=out.get("pushover_slope_ratio"),
                          rows={name: row for name, (_, row) in values.items()}, sheet=table.title)
+
+
+def _check_pushover_slope(out: dict, values: dict, system: str, response, report, key_header) -> None:
+    """Report where the sheet's ``pushover_slope_ratio`` cannot give α: with α given, without the pushover's
+    strength, or for a system whose slope after yield α does not set."""
+    row = values["pushover_slope_ratio"][1]
+    if "lateral_stiffness_ratio" in out:
+        report.at(row, key_header, "the building sheet gives both lateral_stiffness_ratio and pushover_slope_ratio: "
+                  "the pushover's slope is used to find α, which lateral_stiffness_ratio gives already.",
+                  "keep lateral_stiffness_ratio (α from the building's model) or pushover_slope_ratio, not both.")
+    elif system in SYSTEMS and system not in PUSHOVER_ALPHA_SYSTEMS:
+        why = ("a wall yields at its base, where its slope after yield is its hinge's hardening, not α" if
+               system == "shear wall" else "its stick is a shear stick, whose slope after yield is its springs' own")
+        report.at(row, key_header, f"pushover_slope_ratio finds α for frames and braced frames only: for a {system} "
+                  f"{why}.", "delete the pushover_slope_ratio row, and give lateral_stiffness_ratio where the "
+                  "building's α is known.")
+    elif "yield_base_shear" not in out and response != "elastic":
+        report.at(row, key_header, "pushover_slope_ratio is given without yield_base_shear_g: α is found by pushing "
+                  "over the model at the pushover's strength.", "add yield_base_shear_g from the same pushover (its "
+                  "base shear at the first storey's yield, over the weight), or delete the pushover_slope_ratio row.")
 
 
 def parse_storey_stiffness(text, storeys: int):

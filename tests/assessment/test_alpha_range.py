@@ -38,7 +38,8 @@ def _path(make_workbook, name, alpha=None):
 
 @pytest.fixture(scope="module")
 def runs(tmp_path_factory):
-    """The level with --alpha-range 5,20, and the same workbook with α 5 and with α 20 written in its sheet."""
+    """The level with --alpha-range 5,20 (and what it said on the way), and the same workbook with α 5 and with α 20
+    written in its sheet."""
     from workbooks import write_workbook
 
     folder = tmp_path_factory.mktemp("alpha")
@@ -46,15 +47,17 @@ def runs(tmp_path_factory):
     def make(sheets, name, record=False):
         return write_workbook(folder / name, sheets)
 
-    bracketed = run_assessment(read_workbook(_path(make, "bracket.xlsx")), "DE", seed=3, alpha_range=ENDS)
+    said = []
+    bracketed = run_assessment(read_workbook(_path(make, "bracket.xlsx")), "DE", seed=3, alpha_range=ENDS,
+                               progress=said.append)
     given = {alpha: run_assessment(read_workbook(_path(make, f"alpha{alpha:g}.xlsx", alpha)), "DE", seed=3)
              for alpha in ENDS}
-    return bracketed, given
+    return bracketed, given, said
 
 
 def test_each_end_is_the_level_with_that_alpha_given(runs):
     """risk_alpha_low and the chances there are those of the workbook with α 5 given; _high those of α 20."""
-    bracketed, given = runs
+    bracketed, given, _ = runs
     summary = bracketed.summary.set_index("id")
     for alpha, side in zip(ENDS, ("low", "high")):
         other = given[alpha].summary.set_index("id")
@@ -67,7 +70,7 @@ def test_each_end_is_the_level_with_that_alpha_given(runs):
 
 def test_alpha_moves_the_upper_floors_and_not_the_ground_floor(runs):
     """The two ends differ on the upper floors (else the check above could not fail), never on the ground."""
-    _, given = runs
+    _, given, _ = runs
     low, high = (given[alpha].summary.set_index("id") for alpha in ENDS)
     assert (low.loc[UPPER, "pta_g"] != high.loc[UPPER, "pta_g"]).all()
     assert (low.loc[UPPER, "p_beyond_clearance"] != high.loc[UPPER, "p_beyond_clearance"]).any()
@@ -77,7 +80,7 @@ def test_alpha_moves_the_upper_floors_and_not_the_ground_floor(runs):
 def test_the_level_s_answer_is_unchanged_and_governs(runs, make_workbook):
     """The bracketed run's own columns are those of the run without the option; the ground floor's item has
     no ends (α cannot move it) and only the upper floors' items were run again."""
-    bracketed, _ = runs
+    bracketed, _, _ = runs
     plain = run_assessment(read_workbook(_path(make_workbook, "plain.xlsx")), "DE", seed=3).summary
     summary = bracketed.summary
     columns = [c for c in plain.columns if c != "flags"]
@@ -89,7 +92,7 @@ def test_the_level_s_answer_is_unchanged_and_governs(runs, make_workbook):
 
 
 def test_an_item_whose_class_moves_is_flagged_and_the_note_counts_it(runs):
-    bracketed, _ = runs
+    bracketed, _, _ = runs
     summary = bracketed.summary.set_index("id")
     moved = [item for item in UPPER
              if len({summary.at[item, "risk"], summary.at[item, "risk_alpha_low"],
@@ -102,6 +105,19 @@ def test_an_item_whose_class_moves_is_flagged_and_the_note_counts_it(runs):
     assert (f"for the 7 freestanding items on floors 1 to 3. {len(moved)} items are in another risk class at one "
             "end or both than at the building's α") in note
     assert f"at α {ALPHA_BY_SYSTEM['steel moment frame']:g} (the system's typical one), governs" in note
+
+
+def test_the_ends_say_their_alpha_is_an_end_not_the_building_s(runs):
+    """Each end's building note (on the console, after "α 5: ") names its α as an end of the option, not as the
+    sheet's: the workbook gives none."""
+    *_, said = runs
+    for alpha in ENDS:
+        notes = [m for m in said if m.startswith(f"α {alpha:g}: ") and "lateral stiffness ratio" in m]
+        assert notes, said
+        assert all(f"α {alpha:g} (an end of --alpha-range, not the building's)" in m for m in notes), notes
+    level = [m for m in said if not m.startswith("α ") and "lateral stiffness ratio" in m]
+    assert level and all(f"α {ALPHA_BY_SYSTEM['steel moment frame']:g} (the system's typical one)" in m
+                         for m in level), level
 
 
 def test_every_system_has_a_range_around_its_typical_alpha():
@@ -121,7 +137,7 @@ def test_the_report_says_the_cause_once_and_each_item_s_three_classes(runs):
     from assess.report import advice
     from assess.report.render import render_html
 
-    bracketed, _ = runs
+    bracketed, _, _ = runs
     html = render_html(advice.with_words(bracketed))
     section = html[html.index('<h2 id="flags">'):]
     assert section.count("(--alpha-range)") == 1
