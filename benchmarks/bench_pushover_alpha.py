@@ -31,7 +31,8 @@ import numpy as np
 
 sys.path[:0] = [str(Path(__file__).resolve().parents[1] / "tests")]
 
-from peers.opensees_buildings import BUILDINGS, TALL, pushover, pushover_yield_base_shear_g  # noqa: E402
+from peers.opensees_buildings import (BUILDINGS, TALL, pushover, pushover_slope_ratio,  # noqa: E402
+                                     pushover_yield_base_shear_g)
 
 
 def pushover_figures(truth, alpha: float) -> dict:
@@ -41,10 +42,9 @@ def pushover_figures(truth, alpha: float) -> dict:
     roof = np.cumsum(drifts, axis=1)[:, -1] / (building.storeys * building.storey_height_m)
     initial = shear[5] / roof[5]
     at = int(np.searchsorted(roof, 0.02))
-    tangent = (shear[at + 10] - shear[at - 10]) / (roof[at + 10] - roof[at - 10])
     first_yield = pushover_yield_base_shear_g(building)
     return {"alpha": alpha, "yield_base_shear_g": first_yield, "roof_drift_at_yield": first_yield / initial,
-            "base_shear_at_2pct_g": float(shear[at]), "tangent_at_2pct_over_initial": tangent / initial}
+            "base_shear_at_2pct_g": float(shear[at]), "tangent_at_2pct_over_initial": pushover_slope_ratio(building)}
 
 
 def main(argv=None):

@@ -2,7 +2,8 @@
 
 Run: python benchmarks/bench_yielding_equipment.py [--levels DE,MCE_R] [--buildings smf4,smf8,wall6,wallf6,rcf5]
      [--motions 11] [--overstrengths 1.5,2,3] [--truth-profile] [--truth-strengths 0.9,1.1]
-     [--truth-floors 0.995,1.005] [--truth-alphas 5,20] [--own-alpha] [--alpha-bracket] [--skip RECORD,...]
+     [--truth-floors 0.995,1.005] [--truth-alphas 5,20] [--own-alpha] [--alpha-bracket] [--pushover-slope]
+     [--skip RECORD,...]
      (needs openseespy and pyslammer; about 3 minutes a level)
 
 The truth: five yielding OpenSeesPy buildings of our own (tests/peers/opensees_buildings.py: steel
@@ -137,8 +138,9 @@ from assess.anchorage.equations import height_factor  # noqa: E402
 from assess.building import ALPHA_RANGE_BY_SYSTEM  # noqa: E402
 from assess.fragility.suite import binomial_interval  # noqa: E402
 from peers.opensees_buildings import BRACED, BUILDINGS, TALL  # noqa: E402
-from peers.yielding_equipment import (LEVELS, SYSTEM_R, assess, bracket_held, compare, given_routes,  # noqa: E402
-                                      given_strength, ground_suite, own_stiffness, truth_result, workbook)
+from peers.yielding_equipment import (LEVELS, SYSTEM_R, assess, bracket_held, compare, given_pushover,  # noqa: E402
+                                      given_routes, given_strength, ground_suite, own_stiffness, truth_result,
+                                      workbook)
 
 
 def markdown(frame: pd.DataFrame) -> str:
@@ -233,6 +235,10 @@ def main(argv=None):
     parser.add_argument("--alpha-bracket", action="store_true",
                         help="run 'given' (and 'given, truth α a') with --alpha-range at the system's ends, and "
                              "add whether each item's truth lies within what the ends and the system's α give")
+    parser.add_argument("--pushover-slope", action="store_true",
+                        help="add, for the frames, the route 'given + pushover slope': yield_base_shear_g and the "
+                             "same pushover's slope at 2 %% roof drift over its initial slope in pushover_slope_ratio "
+                             "(peers.yielding_equipment.given_pushover; the tool finds its α from it)")
     parser.add_argument("--truth-profile", action="store_true",
                         help="add the route 'given + truth's stiffness': yield_base_shear_g and the OpenSees "
                              "building's storey stiffnesses in storey_stiffness")
@@ -248,6 +254,8 @@ def main(argv=None):
                 folder = Path(tmp)
                 given = given_routes(truth)
                 routes = given if args.own_alpha else {"given": given["given"]}
+                if args.pushover_slope and np.isfinite(getattr(truth, "column_alpha", np.inf)):
+                    routes["given + pushover slope"] = given_pushover(truth)
                 if args.truth_profile and own_stiffness(truth) is not None:
                     routes["given + truth's stiffness"] = routes["given"] + [["storey_stiffness", own_stiffness(truth)]]
                 routes["design"] = [["response", "yielding"]]
@@ -269,9 +277,12 @@ def main(argv=None):
                     other = dataclasses.replace(truth, column_alpha=float(alpha))
                     strength = given_strength(other)
                     other_reference = truth_result(other, suite, level, folder)
-                    for route, extra in ((f"given, truth α {alpha}", strength),
-                                         (f"given + α, truth α {alpha}",
-                                          strength + [["lateral_stiffness_ratio", float(alpha)]])):
+                    other_routes = [(f"given, truth α {alpha}", strength),
+                                    (f"given + α, truth α {alpha}",
+                                     strength + [["lateral_stiffness_ratio", float(alpha)]])]
+                    if args.pushover_slope:
+                        other_routes.append((f"given + pushover slope, truth α {alpha}", given_pushover(other)))
+                    for route, extra in other_routes:
                         tool = assess(workbook(folder, other, suite, level, extra), level,
                                       bracket if route.startswith("given,") else None)
                         rows.append({"building": name, "level": level, "route": route,

@@ -25,7 +25,8 @@ from assess.inventory import read_workbook
 from assess.inventory.settings import Settings
 from assess.site.asce7 import design_spectral_acceleration_g
 from assess.site.spectrum import pseudo_acceleration_spectrum
-from peers.opensees_buildings import FlexuralWall, pushover_yield_base_shear_g, truth_response, wall_history
+from peers.opensees_buildings import (FlexuralWall, pushover_slope_ratio, pushover_yield_base_shear_g, truth_response,
+                                     wall_history)
 from workbooks import write_workbook
 
 SDS_G, SD1_G = 1.0, 0.6
@@ -59,6 +60,13 @@ def given_strength(truth) -> list:
     building's own pushover gives (:func:`peers.opensees_buildings.pushover_yield_base_shear_g`), written to six
     decimals as an engineer would copy it."""
     return [["response", "yielding"], ["yield_base_shear_g", round(pushover_yield_base_shear_g(truth), 6)]]
+
+
+def given_pushover(truth) -> list:
+    """The building sheet's rows of the route ``given + pushover slope``: :func:`given_strength` and the slope of the
+    same pushover at 2 % roof drift over its initial slope (:func:`peers.opensees_buildings.pushover_slope_ratio`),
+    to four significant figures, in ``pushover_slope_ratio``: the α the tool then finds is its own."""
+    return given_strength(truth) + [["pushover_slope_ratio", float(f"{pushover_slope_ratio(truth):.4g}")]]
 
 
 def own_alpha(truth) -> float:
