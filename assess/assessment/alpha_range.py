@@ -73,7 +73,7 @@ def at_alpha(inventory: Inventory, ids: list[str], alpha: float) -> Inventory:
     keep = inventory.equipment["id"].astype(str).isin(ids)
     return replace(inventory, equipment=inventory.equipment[keep].reset_index(drop=True),
                    building=replace(inventory.building, lateral_stiffness_ratio=float(alpha), pushover_slope_ratio=None,
-                                    alpha_source=f"an end of --alpha-range, not the building's"),
+                                    alpha_source="an end of --alpha-range, not the building's"),
                    warnings=tuple(w for w in inventory.warnings if str(w.item_id) in ids))
 
 
