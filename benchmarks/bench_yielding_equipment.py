@@ -138,9 +138,9 @@ from assess.anchorage.equations import height_factor  # noqa: E402
 from assess.building import ALPHA_RANGE_BY_SYSTEM  # noqa: E402
 from assess.fragility.suite import binomial_interval  # noqa: E402
 from peers.opensees_buildings import BRACED, BUILDINGS, TALL  # noqa: E402
-from peers.yielding_equipment import (LEVELS, SYSTEM_R, assess, bracket_held, compare, given_pushover,  # noqa: E402
-                                      given_routes, given_strength, ground_suite, own_stiffness, truth_result,
-                                      workbook)
+from peers.yielding_equipment import (LEVELS, PUSHOVER_ROUTE, SYSTEM_R, assess, bracket_held,  # noqa: E402
+                                      compare, given_pushover, given_routes, given_strength, ground_suite,
+                                      own_stiffness, truth_result, workbook)
 
 
 def markdown(frame: pd.DataFrame) -> str:
@@ -255,7 +255,7 @@ def main(argv=None):
                 given = given_routes(truth)
                 routes = given if args.own_alpha else {"given": given["given"]}
                 if args.pushover_slope and np.isfinite(getattr(truth, "column_alpha", np.inf)):
-                    routes["given + pushover slope"] = given_pushover(truth)
+                    routes[PUSHOVER_ROUTE] = given_pushover(truth)
                 if args.truth_profile and own_stiffness(truth) is not None:
                     routes["given + truth's stiffness"] = routes["given"] + [["storey_stiffness", own_stiffness(truth)]]
                 routes["design"] = [["response", "yielding"]]
@@ -281,7 +281,7 @@ def main(argv=None):
                                     (f"given + α, truth α {alpha}",
                                      strength + [["lateral_stiffness_ratio", float(alpha)]])]
                     if args.pushover_slope:
-                        other_routes.append((f"given + pushover slope, truth α {alpha}", given_pushover(other)))
+                        other_routes.append((f"{PUSHOVER_ROUTE}, truth α {alpha}", given_pushover(other)))
                     for route, extra in other_routes:
                         tool = assess(workbook(folder, other, suite, level, extra), level,
                                       bracket if route.startswith("given,") else None)

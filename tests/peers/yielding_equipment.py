@@ -62,6 +62,10 @@ def given_strength(truth) -> list:
     return [["response", "yielding"], ["yield_base_shear_g", round(pushover_yield_base_shear_g(truth), 6)]]
 
 
+#: The route of an engineer who reads the pushover's slope after yield as well as its strength (:func:`given_pushover`).
+PUSHOVER_ROUTE = "given + pushover slope"
+
+
 def given_pushover(truth) -> list:
     """The building sheet's rows of the route ``given + pushover slope``: :func:`given_strength` and the slope of the
     same pushover at 2 % roof drift over its initial slope (:func:`peers.opensees_buildings.pushover_slope_ratio`),
@@ -233,9 +237,10 @@ def compared(truth, suite, level, folder: Path, routes: dict, bracket=None) -> d
 def compared_on_its_own(truth, folder: Path, motions: int = 11) -> dict:
     """:func:`compared` at DE over the first ``motions`` records for a building checked on its own (the braced frame,
     the 12-storey frame): the routes of what the engineer knows (:func:`given_routes`; ``given`` with
-    ``--alpha-range`` at the system's ends, :func:`bracket_held`), the design data alone (``design``) and the
-    elastic modes (``elastic``)."""
-    routes = {**given_routes(truth), "design": [["response", "yielding"]], "elastic": [["response", "elastic"]]}
+    ``--alpha-range`` at the system's ends, :func:`bracket_held`), with the pushover's slope (:data:`PUSHOVER_ROUTE`,
+    :func:`given_pushover`), the design data alone (``design``) and the elastic modes (``elastic``)."""
+    routes = {**given_routes(truth), PUSHOVER_ROUTE: given_pushover(truth), "design": [["response", "yielding"]],
+              "elastic": [["response", "elastic"]]}
     return compared(truth, ground_suite(motions, truth.period_s, 1.0), "DE", folder, routes,
                     bracket=ALPHA_RANGE_BY_SYSTEM[truth.system])
 

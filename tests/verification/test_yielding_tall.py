@@ -20,6 +20,8 @@ route                           sliding gm, 11 / 17 DE / 17   σ ln             
 ==============================  ===========================  ===========================  ==================
 given strength (0.087 W)        0.66 / 0.66 / 0.70           0.73 / 0.66 / 0.46           0.58 / 0.50 / 0.83
 given strength and α 10         0.84 / 0.87 / 0.88           0.48 / 0.46 / 0.45           0.75 / 0.83 / 0.83
+and the pushover's slope, 11    0.74 / - / 0.83 (11 at       0.63 / - / 0.36              0.75 / - / 1.0
+records at DE and MCE_R)
 and its storeys' stiffnesses    0.99 / 0.98 / 0.94           0.35 / 0.38 / 0.36           0.83 / 0.92 / 1.0
 design data (Ω 2.5)             0.995 / 1.02 / 1.02          0.28 / 0.33 / 0.39           0.83 / 0.67 / 1.0
 elastic modes                   2.85 / 2.91 / 3.53           0.59 / 0.65 / 0.62           0.58 / 0.50 / 0.67
@@ -35,6 +37,12 @@ design profile, storey stiffness with the storey shear, falls to 0.21). The desi
 here because the default overstrength (2.5) is above this building's (2.0, the pushover's 0.087 over C_s 0.044):
 the two errors cancel, as ``design x 2`` (the building's own overstrength, 0.68 / 0.71) shows.
 
+With the slope of the same pushover at 2 % roof drift in ``pushover_slope_ratio`` (0.065, read off OpenSees' curve;
+``--pushover-slope``) the tool finds α 11.1: its storey springs harden at 3 % where the truth's do at 2 %, and
+one slope cannot tell the column from the springs (with the truth's springs at 3 % it finds 10.0,
+test_truth_pushover.py). That brings the sliding a third of the way from the strength alone's to the building's α
+(0.74 at DE, 0.83 at MCE_R) and the risk class to 0.75 / 1.0; the targets hold at MCE_R, not at DE.
+
 Where the building's α is not known, ``--alpha-range`` runs the level again at the moment frames' α 5 and 20:
 with the strength alone, every item whose class it misses has a class that moves between the ends, and is
 flagged (5 of 5 over these 11 records at DE; 8 of 8 over 17 at DE and MCE_R, ``--alpha-bracket``), and every
@@ -48,7 +56,8 @@ import pytest
 
 from peers.opensees_buildings import TALL
 from peers.opensees_shear import load_opensees
-from peers.yielding_equipment import OWN_MODEL, TARGET_GM, meets_class_target, meets_sliding_targets
+from peers.yielding_equipment import (OWN_MODEL, PUSHOVER_ROUTE, TARGET_GM, meets_class_target,
+                                     meets_sliding_targets)
 
 OPS, WHY = load_opensees()
 pytestmark = pytest.mark.skipif(OPS is None, reason=str(WHY))
@@ -87,6 +96,19 @@ def test_with_the_building_s_alpha_the_sliding_is_within_the_targets_gm(tall):
                                        "building's 10, between which the truth's own sliding moves by a third")
 def test_with_the_given_strength_the_sliding_targets_hold(tall):
     assert meets_sliding_targets(tall["given"]), tall["given"]
+
+
+def test_with_the_pushover_s_slope_the_sliding_and_the_class_come_nearer_than_with_the_strength_alone(tall):
+    """The α found from the pushover's slope (11.1 for the frame's 10) moves the answer towards the building's α."""
+    pushover, given, own = tall[PUSHOVER_ROUTE], tall["given"], tall["given + own α"]
+    assert given["gm"] < pushover["gm"] < own["gm"], (given, pushover, own)
+    assert pushover["class_agree"] > given["class_agree"], (given, pushover)
+
+
+@pytest.mark.xfail(strict=True, reason="sliding gm 0.74 at DE with the pushover's slope: the α it finds (11.1) rests "
+                                       "on the stick's springs hardening at 3 %, the frame's at 2 %")
+def test_with_the_pushover_s_slope_the_sliding_targets_hold(tall):
+    assert meets_sliding_targets(tall[PUSHOVER_ROUTE]), tall[PUSHOVER_ROUTE]
 
 
 def test_the_design_data_alone_are_within_the_design_range_and_the_elastic_modes_are_not(tall):
