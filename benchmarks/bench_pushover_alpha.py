@@ -16,9 +16,10 @@ stiffness at 2 % over the initial one.
 Measured (2026-11-29): on ``smf12`` the tangent ratio is 0.171 / 0.065 / 0.051 / 0.032 at α 5 / 10 / 12 / 20 and
 the base shear at 2 % 0.179 / 0.134 / 0.129 / 0.120 W, where the first yield moves 0.082-0.090 W and its roof
 drift 0.0037-0.0039; on ``smf8`` 0.154 / 0.060 / 0.049 / 0.032 and 0.298 / 0.215 / 0.204 / 0.189 W. The
-pushover's stiffness after yield separates α 10 from 12 by a quarter where the first yield does not: a sheet
-value for it (with the tool's own pushover of its stick to find the α that gives it) is what would let the
-strength-alone route stand on tall frames. Not built: nothing here is used by the product.
+pushover's stiffness after yield separates α 10 from 12 by a quarter where the first yield does not. The product
+takes it since 2026-11-30: the building sheet's ``pushover_slope_ratio`` (the tangent at 2 % over the initial one,
+``peers.opensees_buildings.pushover_slope_ratio``) and the tool's own pushover of its stick
+(assess/building/pushover.py) find the α that gives it (tests/verification/test_truth_pushover.py).
 """
 from __future__ import annotations
 
