@@ -56,8 +56,6 @@ def alpha_ends(sheet: BuildingSheet, given: tuple[float, float] | None = None) -
     return ALPHA_RANGE_BY_SYSTEM[sheet.system]
 
 
-
-
 def items_through_building(result: AssessmentResult) -> list[str]:
     """The ids of the freestanding items on floors whose motions come through the building
     (:func:`assess.assessment.summary.floor_origins`), in the summary's order: those α can move."""

@@ -472,12 +472,18 @@ def read_building(table, report) -> BuildingSheet | None:
                       "yes or no.", "write yes (the gravity loads' P-Delta effect on the yielding storeys) or no.")
         p_delta = word in _YES
     if response == "elastic":
-        for key in ("yield_base_shear", "overstrength", "p_delta", "pushover_slope_ratio"):
+        for key in ("yield_base_shear", "overstrength", "p_delta"):
             if key in out:
                 name = "yield_base_shear_g" if key == "yield_base_shear" else key
                 report.at(values[key][1], key_header, f"{name} is given but response is elastic: the elastic "
                           "modes have no strength, so it would be ignored.",
                           f"delete the {name} row, or write yielding in response (row {values['response'][1]}).")
+        if "pushover_slope_ratio" in out:
+            report.at(values["pushover_slope_ratio"][1], key_header, "pushover_slope_ratio is given but response is "
+                      "elastic: α is found from it by pushing over the yielding stick, at the pushover's strength, "
+                      "which the elastic modes do not have.", "write yielding in response (row "
+                      f"{values['response'][1]}) with yield_base_shear_g, or give α in lateral_stiffness_ratio and "
+                      "delete the pushover_slope_ratio row.")
     if "storeys" in out and too_tall_to_yield(out["storeys"]) and response != "elastic":
         beyond = (f"the building has {int(out['storeys'])} storeys: the yielding model takes at most "
                   f"{MAX_YIELDING_STOREYS} (its cost grows with the cube of the storeys: 6 to 28 s a ground motion at "
@@ -502,8 +508,8 @@ def read_building(table, report) -> BuildingSheet | None:
                   "overstrength: the overstrength multiplies the code's design strength, which a given base "
                   "shear at yield replaces.", "keep yield_base_shear_g (from a pushover or an evaluation) or "
                   "overstrength, not both.")
-    if "pushover_slope_ratio" in out:
-        _check_pushover_slope(out, values, system, response, report, key_header)
+    if "pushover_slope_ratio" in out and response != "elastic":
+        _check_pushover_slope(out, values, system, report, key_header)
     stiffness = None
     if "storey_stiffness" in out and "storeys" in out:
         stiffness, problem = parse_storey_stiffness(out["storey_stiffness"], int(out["storeys"]))
@@ -535,7 +541,7 @@ def read_building(table, report) -> BuildingSheet | None:
                          rows={name: row for name, (_, row) in values.items()}, sheet=table.title)
 
 
-def _check_pushover_slope(out: dict, values: dict, system: str, response, report, key_header) -> None:
+def _check_pushover_slope(out: dict, values: dict, system: str, report, key_header) -> None:
     """Report where the sheet's ``pushover_slope_ratio`` cannot give α: with α given, without the pushover's
     strength, or for a system whose slope after yield α does not set."""
     row = values["pushover_slope_ratio"][1]
@@ -549,7 +555,7 @@ def _check_pushover_slope(out: dict, values: dict, system: str, response, report
         report.at(row, key_header, f"pushover_slope_ratio finds α for frames and braced frames only: for a {system} "
                   f"{why}.", "delete the pushover_slope_ratio row, and give lateral_stiffness_ratio where the "
                   "building's α is known.")
-    elif "yield_base_shear" not in out and response != "elastic":
+    elif "yield_base_shear" not in out:
         report.at(row, key_header, "pushover_slope_ratio is given without yield_base_shear_g: α is found by pushing "
                   "over the model at the pushover's strength.", "add yield_base_shear_g from the same pushover (its "
                   "base shear at the first storey's yield, over the weight), or delete the pushover_slope_ratio row.")
