@@ -30,7 +30,8 @@ from assess.building.floors import floors_table
 from assess.building.nonlinear import STRENGTH_BY_SYSTEM
 from assess.building.modes import ALPHA_BY_SYSTEM
 from assess.building.period import approximate_period
-from assess.building.pushover import SLOPE_ROOF_DRIFT_RATIO, AlphaFromPushover, alpha_from_pushover, stick_pushover
+from assess.building.pushover import (SLOPE_ROOF_DRIFT_RATIO, AlphaFromPushover, alpha_from_pushover,
+                                      pushover_slope_ratio)
 from assess.building.response import floor_records
 from assess.building.yielding import (BASE_HINGE, STABILITY_COEFFICIENT_MAX, YieldingBuilding, storey_table,
                                       yielding_building, yielding_histories)
@@ -107,7 +108,7 @@ def pushover_alpha(building: BuildingSheet) -> AlphaFromPushover | None:
                                damping=building.damping, alpha=alpha, storey_stiffness=stiffness)
         model = yielding_building(modes, building.system, damping=building.damping,
                                   yield_base_shear_g=building.yield_base_shear_g, p_delta=building.p_delta)
-        return stick_pushover(model.stick, float(modes.periods_s[0])).slope_ratio
+        return pushover_slope_ratio(model.stick, float(modes.periods_s[0]))
 
     return alpha_from_pushover(float(building.pushover_slope_ratio), slope_at, PUSHOVER_ALPHA_BOUNDS,
                                prefer=ALPHA_BY_SYSTEM[building.system])

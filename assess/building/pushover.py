@@ -73,7 +73,6 @@ class Pushover:
     initial_slope_g: float
     #: The base shear over the weight at which the first storey, whichever, yields [-].
     first_yield_g: float
-
     #: The slope there at the last roof drift (a spring at its yield drift counted as yielded) [-].
     tangent_g: float
 
@@ -132,13 +131,16 @@ def stick_pushover(stick: YieldingStick, period_s: float, roof_drift_ratio: floa
     for s, target in enumerate(targets):
         for _ in range(MAX_ITERATIONS):
             resisting, stiffness = forces(u)
+            unbalanced = factor * pattern - resisting
+            short_m = target * roof_m - u[-1]  # how far the roof still is from this step's displacement
+            if np.max(np.abs(unbalanced)) < TOLERANCE * weight_n and abs(short_m) <= TOLERANCE * roof_m:
+                break
+            # Newton's step with the roof held at its target: u += δ + Δλ a, K a = F, K δ = unbalanced
             along = np.linalg.solve(stiffness, pattern)
-            correct = np.linalg.solve(stiffness, factor * pattern - resisting)
-            d_factor = (target * roof_m - u[-1] - correct[-1]) / along[-1]
+            correct = np.linalg.solve(stiffness, unbalanced)
+            d_factor = (short_m - correct[-1]) / along[-1]
             u = u + correct + d_factor * along
             factor += d_factor
-            if np.max(np.abs(forces(u)[0] - factor * pattern)) < TOLERANCE * weight_n:
-                break
         else:
             raise RuntimeError(f"the pushover did not converge at roof drift ratio {target:.4g}")
         shear[s], drifts[s] = factor, chain @ u
