@@ -39,7 +39,7 @@ the two errors cancel, as ``design x 2`` (the building's own overstrength, 0.68 
 With the slope of the same pushover at 2 % roof drift in ``pushover_slope_ratio`` (0.065, read off OpenSees' curve;
 ``--pushover-slope``) the tool finds α 11.1: its storey springs harden at 3 % where the truth's do at 2 %, and
 one slope cannot tell the column from the springs (with the truth's springs at 3 % it finds 10.0,
-test_truth_pushover.py). That brings the sliding a third of the way from the strength alone's to the building's α
+test_truth_pushover.py). That brings the sliding two fifths of the way from the strength alone's to the building's α
 (0.74 at DE; 0.83 at MCE_R over the same 11 records, where the strength alone gives 0.74) and the risk class to
 0.75 (1.0 at MCE_R); the targets hold at MCE_R, not at DE (``--pushover-slope --levels DE,MCE_R --motions 11 --skip
 Duzce_1999_375-090``).
