@@ -186,10 +186,10 @@ def alpha_from_pushover(slope_ratio: float, slope_at: Callable[[float], float], 
                         prefer: float) -> AlphaFromPushover:
     """The α within ``bounds`` whose stick's pushover slope ratio (``slope_at(α)``) is ``slope_ratio``.
 
-    ``slope_at`` is taken at :data:`SEARCH_POINTS` α spaced evenly in log α; each interval over which it passes the
+    ``slope_at`` is taken at :data:`SEARCH_POINTS` α spaced evenly in log α and at ``prefer``; each interval over which it passes the
     slope asked for holds a root, found by Brent's method on log α, unless it is a jump (:data:`ROOT_TOLERANCE`).
     Where two or more α give it (module text), the one nearest ``prefer`` (in log α: the system's typical α) is
-    taken; where none does, the grid's α whose slope comes nearest.
+    taken; where none does, the grid's α whose slope comes nearest (of several alike, the one nearest ``prefer``).
 
     >>> found = alpha_from_pushover(0.1, lambda a: 1.0 / (1.0 + a), (0.5, 30.0), prefer=12.0)
     >>> round(found.alpha, 6), found.matched
@@ -202,7 +202,7 @@ def alpha_from_pushover(slope_ratio: float, slope_at: Callable[[float], float], 
     ([2.426123, 6.594885], 6.594885)
     """
     low, high = (float(b) for b in bounds)
-    grid = np.geomspace(low, high, SEARCH_POINTS)
+    grid = np.unique(np.append(np.geomspace(low, high, SEARCH_POINTS), min(max(float(prefer), low), high)))
     slopes = np.array([slope_at(float(a)) for a in grid])
     off = slopes - slope_ratio
     roots = []
@@ -219,7 +219,9 @@ def alpha_from_pushover(slope_ratio: float, slope_at: Callable[[float], float], 
         roots.append(float(grid[-1]))
     if roots:
         alpha = min(roots, key=lambda a: abs(np.log(a / prefer)))
-    else:
-        alpha = float(grid[int(np.argmin(np.abs(off)))])
+    else:  # the grid's nearest; of a tie (a stick that has not yielded by then has one slope at every α), ``prefer``'s
+        miss = np.abs(off)
+        nearest = grid[miss <= miss.min() * (1.0 + ROOT_TOLERANCE) + 1e-12]
+        alpha = float(min(nearest, key=lambda a: abs(np.log(a / prefer))))
     return AlphaFromPushover(alpha, float(slope_ratio), float(slope_at(alpha)), (low, high),
                              (float(slopes.min()), float(slopes.max())), tuple(roots))

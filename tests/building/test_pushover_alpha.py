@@ -138,6 +138,17 @@ def test_a_slope_no_alpha_gives_takes_the_nearest_and_says_so():
     assert "at no α from 0.5 to 30" in note and "comes nearest" in note
 
 
+def test_a_building_that_has_not_yielded_by_then_keeps_the_system_s_alpha():
+    """Strong enough not to yield by 2 % roof drift, the stick has the slope before yield at every α (1): no α gives
+    a slope after yield, and of the α alike the system's typical one is kept."""
+    strong = BuildingSheet(storeys=6, height_m=24.0, system="concrete moment frame", period_s=3.0,
+                           yield_base_shear_g=3.0, pushover_slope_ratio=0.05)
+    found = pushover_alpha(strong)
+    assert not found.matched
+    assert found.slope_ratio_range[0] == pytest.approx(1.0, rel=1e-9)
+    assert found.alpha == 12.0
+
+
 def test_alpha_from_pushover_on_a_known_curve():
     found = alpha_from_pushover(0.2, lambda a: 1.0 / (1.0 + a), (0.5, 30.0), prefer=12.0)
     assert found.alpha == pytest.approx(4.0, rel=1e-6)
