@@ -42,6 +42,7 @@ References
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from typing import Callable
 
@@ -202,6 +203,7 @@ def alpha_from_pushover(slope_ratio: float, slope_at: Callable[[float], float], 
     ([2.426123, 6.594885], 6.594885)
     """
     low, high = (float(b) for b in bounds)
+    slope_at = functools.lru_cache(maxsize=None)(slope_at)  # a root is checked, then kept: one pushover each
     grid = np.unique(np.append(np.geomspace(low, high, SEARCH_POINTS), min(max(float(prefer), low), high)))
     slopes = np.array([slope_at(float(a)) for a in grid])
     off = slopes - slope_ratio
