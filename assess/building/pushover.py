@@ -187,8 +187,9 @@ def alpha_from_pushover(slope_ratio: float, slope_at: Callable[[float], float], 
                         prefer: float) -> AlphaFromPushover:
     """The α within ``bounds`` whose stick's pushover slope ratio (``slope_at(α)``) is ``slope_ratio``.
 
-    ``slope_at`` is taken at :data:`SEARCH_POINTS` α spaced evenly in log α and at ``prefer``; each interval over which it passes the
-    slope asked for holds a root, found by Brent's method on log α, unless it is a jump (:data:`ROOT_TOLERANCE`).
+    ``slope_at`` is taken at :data:`SEARCH_POINTS` α spaced evenly in log α and at ``prefer``; each interval over
+    which it passes the slope asked for holds a root, found by Brent's method on log α, unless it is a jump
+    (:data:`ROOT_TOLERANCE`).
     Where two or more α give it (module text), the one nearest ``prefer`` (in log α: the system's typical α) is
     taken; where none does, the grid's α whose slope comes nearest (of several alike, the one nearest ``prefer``).
 
