@@ -11,7 +11,8 @@ the number of pushovers and the seconds in this process.
 
 Measured (2026-11-30, each command timed as a whole process, 5 runs, medians, against ``--no-search``): 12 storeys
 of a steel moment frame, 26 pushovers (24 since the search keeps each α's slope), 3.29 s against 2.58 s wall
-(+0.7 s); 40 storeys of a braced frame, 3.78 s against 2.51 s wall (+1.3 s; +2.6 s CPU). A run of the main job on such a building takes a minute or more.
+(+0.7 s); 40 storeys of a braced frame, 3.78 s against 2.51 s wall (+1.3 s; +2.6 s CPU).
+A run of the main job on such a building takes a minute or more.
 """
 from __future__ import annotations
 
