@@ -107,7 +107,8 @@ def pushover_alpha(building: BuildingSheet) -> AlphaFromPushover | None:
         modes = building_modes(building.storeys, storey_height_m, system=building.system, period_s=building.period_s,
                                damping=building.damping, alpha=alpha, storey_stiffness=stiffness)
         model = yielding_building(modes, building.system, damping=building.damping,
-                                  yield_base_shear_g=building.yield_base_shear_g, p_delta=building.p_delta)
+                                  yield_base_shear_g=building.yield_base_shear_g, p_delta=building.p_delta,
+                                  hardening=building.storey_hardening_ratio)
         return pushover_slope_ratio(model.stick, float(modes.periods_s[0]))
 
     return alpha_from_pushover(float(building.pushover_slope_ratio), slope_at, PUSHOVER_ALPHA_BOUNDS,
@@ -174,7 +175,8 @@ def building_model_of(building: BuildingSheet, site: SiteSheet | None, modes: Bu
     if site is not None:
         design["code"] = site.code
     model = yielding_building(modes, building.system, damping=building.damping, overstrength=building.overstrength,
-                              yield_base_shear_g=building.yield_base_shear_g, p_delta=building.p_delta, **design)
+                              yield_base_shear_g=building.yield_base_shear_g, p_delta=building.p_delta,
+                              hardening=building.storey_hardening_ratio, **design)
     theta = model.stability_coefficient
     if theta > STABILITY_COEFFICIENT_MAX:
         approximate = float(approximate_period(building.height_m, building.system))
@@ -346,6 +348,9 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
         hinged = building.yielding_model == BASE_HINGE
         springs = (f"its elastic model on a {building.stick.law} plastic hinge at the base" if hinged
                    else f"{building.stick.law} storey springs")
+        hardening = float(np.ravel(building.stick.hardening)[0])  # a wall's: its base's, the hinge's assembly
+        springs += (f" hardening at {100 * hardening:.3g}% of {'its' if hinged else 'their'} stiffness after yield ("
+                    + ("storey_hardening_ratio" if sheet.storey_hardening_ratio is not None else "by default") + ")")
         text = (f"{which}: each ground motion through the building, modelled as yielding ({sheet.storeys} storeys, "
                 f"{sheet.system}, T1 {modes.periods_s[0]:.2f} s ({source}), {stiffness}, {ratio}, "
                 f"{sheet.damping:.0%} Rayleigh damping; {springs}"
@@ -369,11 +374,13 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
                      "the system's α slid their upper floors' items 0.44 to 1.78 times as far as theirs did, and 0.66 "
                      "times on the 12-storey one whose α was 10): give lateral_stiffness_ratio where the building's "
                      "own is known; --alpha-range shows which items it moves here.")
-        if sheet.lateral_stiffness_ratio is None and sheet.pushover_slope_ratio is not None:
+        if (sheet.lateral_stiffness_ratio is None and sheet.pushover_slope_ratio is not None
+                and sheet.storey_hardening_ratio is None):
             text += (f" The α found from the pushover rests on the storeys hardening at "
                      f"{float(building.stick.hardening[0]):.0%} of their stiffness after they yield, as the stick's "
                      "do: where the building's own harden less, its columns are stiffer than this α says (on OpenSees "
-                     "frames of α 10 whose storeys harden at 2%, the α found was 11.1 to 12.5).")
+                     "frames of α 10 whose storeys harden at 2%, the α found was 11.1 to 12.5, and 9.6 to 10.5 with their "
+                     "2% written): give the model's in storey_hardening_ratio.")
         if sheet.storey_stiffness is None and not hinged and STRENGTH_BY_SYSTEM[sheet.system] == "stiffness":
             text += (" The storeys' stiffnesses, which set their strengths, are the system's default profile, not "
                      "this building's: give storey_stiffness from the building's model where known.")

@@ -192,7 +192,7 @@ def _stick_key(stick) -> str:
 
 def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.05, sds_g=None, sd1_g=None,
                       tl_s=None, s1_g=None, risk_category="II", overstrength=None, yield_base_shear_g=None,
-                      p_delta: bool = False, code: str = "ASCE 7-22") -> YieldingBuilding:
+                      p_delta: bool = False, code: str = "ASCE 7-22", hardening=None) -> YieldingBuilding:
     """The yielding stick of a building whose elastic model is ``modes`` (equal floor masses, uniform storeys).
 
     The storeys' strength: ``yield_base_shear_g`` where given, else ASCE 7-22 §12.8's design from the site's
@@ -202,7 +202,9 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
     (:data:`~assess.building.nonlinear.STRENGTH_BY_SYSTEM`: ``strength.storey_yield_ratio`` is the
     result); the springs' law and the stick's flexure are the system's (:data:`~assess.building.design.LAW_BY_SYSTEM`,
     :data:`~assess.building.nonlinear.FLEXURE_BY_SYSTEM`). The strength's words name ``code``, the site's
-    edition (the provisions used read the same in ASCE 7-16 and 7-22).
+    edition (the provisions used read the same in ASCE 7-16 and 7-22). ``hardening``: the storeys' (a wall's base's)
+    stiffness after yield over their stiffness before, where the engineer gives the model's; else
+    :data:`~assess.building.nonlinear.DEFAULT_HARDENING`.
 
     Examples
     --------
@@ -222,7 +224,7 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
                                yield_base_shear_g=yield_base_shear_g, code=code,
                                spread=FLEXURE_BY_SYSTEM[system] != "base hinge")
     arguments = dict(system=system, period_s=period_s, alpha=modes.alpha, storey_stiffness=modes.storey_stiffness,
-                     damping=damping, p_delta=p_delta)
+                     damping=damping, p_delta=p_delta, hardening=hardening)
     stick = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, **arguments)
     importance = importance_factor(risk_category)
     if isinstance(stick, HingedWall):  # only the base yields: the storeys above have no yield shear

@@ -66,6 +66,10 @@ LATERAL_STIFFNESS_RATIO_RANGE = (0.1, 30.0)
 #: initial slope): above 0 (a pushover that falls at 2 % has no α to tell, P-Delta having taken over) and below 1
 #: (a building that has not yielded by then).
 PUSHOVER_SLOPE_RATIO_RANGE = (0.001, 0.99)
+#: Bounds of the building sheet's ``storey_hardening_ratio`` b (a storey's stiffness after yield over its stiffness
+#: before): 0 an elastic-perfectly-plastic storey; models of steel and concrete frames take about 0.01 to 0.05
+#: (:data:`assess.building.nonlinear.DEFAULT_HARDENING`); beyond 0.2 a storey barely yields.
+STOREY_HARDENING_RATIO_RANGE = (0.0, 0.2)
 #: The lateral systems whose α a pushover's slope after yield tells: those whose stick keeps the elastic model's
 #: column beside its storey springs (:data:`assess.building.nonlinear.FLEXURE_BY_SYSTEM`).
 PUSHOVER_ALPHA_SYSTEMS = ("steel moment frame", "concrete moment frame", "eccentrically braced frame",
@@ -185,6 +189,9 @@ class BuildingSheet:
     pushover_slope_ratio : float or None
         The slope of the engineer's pushover at 2 % roof drift over its initial slope, where given: the yielding
         stick's α is then the one whose own pushover has that slope (:mod:`assess.building.pushover`).
+    storey_hardening_ratio : float or None
+        The storeys' stiffness after yield over their stiffness before (a wall's: its base's), where the engineer
+        gives the model's; None: :data:`assess.building.nonlinear.DEFAULT_HARDENING`.
     rows : dict
         The sheet row of each key given.
     sheet : str
@@ -203,6 +210,7 @@ class BuildingSheet:
     storey_stiffness: tuple | None = None
     lateral_stiffness_ratio: float | None = None
     pushover_slope_ratio: float | None = None
+    storey_hardening_ratio: float | None = None
     #: Where α comes from where the run sets it itself (``--alpha-range``'s ends), in words for the notes.
     alpha_source: str = ""
     rows: dict = field(default_factory=dict, compare=False)
@@ -274,6 +282,8 @@ _BUILDING_KEYS = {
                                    high=PUSHOVER_SLOPE_RATIO_RANGE[1], positive=True),
     "lateral_stiffness_ratio": Column("lateral_stiffness_ratio", "number", low=LATERAL_STIFFNESS_RATIO_RANGE[0],
                                       high=LATERAL_STIFFNESS_RATIO_RANGE[1], positive=True),
+    "storey_hardening_ratio": Column("storey_hardening_ratio", "number", low=STOREY_HARDENING_RATIO_RANGE[0],
+                                     high=STOREY_HARDENING_RATIO_RANGE[1]),
 }
 
 
@@ -472,7 +482,7 @@ def read_building(table, report) -> BuildingSheet | None:
                       "yes or no.", "write yes (the gravity loads' P-Delta effect on the yielding storeys) or no.")
         p_delta = word in _YES
     if response == "elastic":
-        for key in ("yield_base_shear", "overstrength", "p_delta"):
+        for key in ("yield_base_shear", "overstrength", "p_delta", "storey_hardening_ratio"):
             if key in out:
                 name = "yield_base_shear_g" if key == "yield_base_shear" else key
                 report.at(values[key][1], key_header, f"{name} is given but response is elastic: the elastic "
@@ -498,6 +508,8 @@ def read_building(table, report) -> BuildingSheet | None:
                 ("overstrength", "overstrength" in out, "overstrength is given",
                  f"delete the overstrength row: {deleted} have no strength."),
                 ("p_delta", p_delta, "p_delta is given", f"delete the p_delta row: {deleted} carry no P-Delta."),
+                ("storey_hardening_ratio", "storey_hardening_ratio" in out, "storey_hardening_ratio is given",
+                 f"delete the storey_hardening_ratio row: {deleted} do not yield."),
                 ("pushover_slope_ratio", "pushover_slope_ratio" in out, "pushover_slope_ratio is given",
                  f"delete the pushover_slope_ratio row ({deleted} take α from lateral_stiffness_ratio).")):
             if asks:
@@ -538,6 +550,7 @@ def read_building(table, report) -> BuildingSheet | None:
                          overstrength=out.get("overstrength"), p_delta=p_delta, storey_stiffness=stiffness,
                          lateral_stiffness_ratio=out.get("lateral_stiffness_ratio"),
                          pushover_slope_ratio=out.get("pushover_slope_ratio"),
+                         storey_hardening_ratio=out.get("storey_hardening_ratio"),
                          rows={name: row for name, (_, row) in values.items()}, sheet=table.title)
 
 

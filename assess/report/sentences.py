@@ -236,7 +236,8 @@ FLAG_CAUSES = {
                    "level puts these items in another class than at the building's α, which governs (beside each: "
                    "its class at the low end, at the building's α and at the high end; summary.csv gives their "
                    "chances at both ends): their class rests on α, which lateral_stiffness_ratio from the building's "
-                   "model would settle (or, for a frame, the pushover's slope after yield in pushover_slope_ratio).",
+                   "model would settle (or, for a frame, the pushover's slope after yield in pushover_slope_ratio, "
+                   "with the model's storey_hardening_ratio).",
     "uplift": "They uplift and rock in the simulation (their mode and peak θ/α are in the tables). The paper's "
               "sliding regression assumes no uplift: the simulation answers for them.",
     "derived_floor_motion": "Their floors have no motion in the workbook: they were assessed under the ground "
