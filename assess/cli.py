@@ -105,7 +105,9 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--alpha-range", metavar="LOW,HIGH", nargs="?", const=(), type=alpha_range_value,
                         help="with a building sheet: run the level again with the building's lateral stiffness "
                              "ratio alpha at both ends of its range (its system's: 5,20 for moment frames, 1.5,6 "
-                             "for braced frames, 0.1,2 for shear walls; or LOW,HIGH), for the items on the floors "
+                             "for braced frames, 0.1,2 for shear walls; for a frame whose alpha comes from "
+                             "pushover_slope_ratio alone, the alpha it gives at 2 and 5 %% storey hardening; or "
+                             "LOW,HIGH), for the items on the floors "
                              "the building's motions reach, and show each one's risk class at both ends beside "
                              "the level's (up to three times the run's time)")
     parser.add_argument("--compare-with", metavar="SUMMARY_CSV", type=Path,

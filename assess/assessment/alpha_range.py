@@ -8,7 +8,9 @@ On yielding OpenSees frames whose own α was 5 to 20, the system's α slid their
 1.78 times as far as their own did (``benchmarks/bench_yielding_equipment.py --truth-alphas 5,20``).
 
 ``assess --alpha-range`` runs the level again at the two ends of the system's range
-(:data:`~assess.building.modes.ALPHA_RANGE_BY_SYSTEM`, or the ends the engineer gives), with the same ground
+(:data:`~assess.building.modes.ALPHA_RANGE_BY_SYSTEM`, or the ends the engineer gives; for a frame whose α comes
+from its pushover's slope without the model's storey hardening, the α that slope gives at the ends of the hardening's
+range, :func:`pushover_ends`), with the same ground
 motions and seed, for the items on the floors whose motions come through the building
 (:func:`items_through_building`); :func:`with_alpha_range` puts each one's risk class and chances at both
 ends beside the level's answer, flags the items whose class moves and says so in a note. The level's answer,
@@ -25,7 +27,7 @@ import pandas as pd
 
 from assess.assessment.result import AssessmentResult
 from assess.assessment.summary import THROUGH_BUILDING
-from assess.assessment.floors import alpha_of, alpha_source_of
+from assess.assessment.floors import alpha_of, alpha_source_of, pushover_alpha
 from assess.building.modes import ALPHA_RANGE_BY_SYSTEM, ALPHA_RANGE_SOURCE
 from assess.decision.flags import Flag, result_state
 from assess.inventory import Inventory
@@ -42,9 +44,36 @@ FLAG_CODE = "alpha_range"
 MAX_NAMED = 8
 
 
+#: The storeys' stiffness after yield over their stiffness before that bounds the α a pushover's slope gives where
+#: the sheet does not give the model's (``storey_hardening_ratio``): the 2 to 5 % of code-designed frames' storey
+#: pushover curves that :data:`~assess.building.nonlinear.DEFAULT_HARDENING` (3 %) is taken from.
+PUSHOVER_HARDENING_RANGE = (0.02, 0.05)
+
+
+def pushover_ends(sheet: BuildingSheet) -> tuple[float, float] | None:
+    """The α the sheet's ``pushover_slope_ratio`` gives with the storeys hardening at either end of
+    :data:`PUSHOVER_HARDENING_RANGE` (:func:`assess.assessment.floors.pushover_alpha`), low to high: where the
+    hardening is not the model's, the building's α lies between them as its hardening lies between those (a storey
+    that hardens more leaves less of the slope to the columns, so they are weaker: a larger α). None where the sheet
+    gives α, or the model's hardening, or no slope, and where both ends give the same α (both beyond the search)."""
+    hardening = _pushover_end_hardening(sheet)
+    return None if hardening is None else tuple(hardening)
+
+
+def _pushover_end_hardening(sheet: BuildingSheet) -> dict[float, float] | None:
+    """:func:`pushover_ends`' two α, low to high, each with the storeys' hardening that gives it."""
+    if (sheet.pushover_slope_ratio is None or sheet.storey_hardening_ratio is not None
+            or sheet.lateral_stiffness_ratio is not None):
+        return None
+    found = sorted((pushover_alpha(replace(sheet, storey_hardening_ratio=b)).alpha, b)
+                   for b in PUSHOVER_HARDENING_RANGE)
+    return dict(found) if found[1][0] > found[0][0] else None
+
+
 def alpha_ends(sheet: BuildingSheet, given: tuple[float, float] | None = None) -> tuple[float, float]:
-    """The two α the level runs again at: ``given`` (low, high) where the engineer names them, else the ends of
-    the sheet's system's range (:data:`~assess.building.modes.ALPHA_RANGE_BY_SYSTEM`).
+    """The two α the level runs again at: ``given`` (low, high) where the engineer names them, else
+    :func:`pushover_ends` where α comes from the pushover's slope alone, else the ends of the sheet's system's range
+    (:data:`~assess.building.modes.ALPHA_RANGE_BY_SYSTEM`).
 
     >>> alpha_ends(BuildingSheet(storeys=12, height_m=48.0, system="steel moment frame"))
     (5.0, 20.0)
@@ -53,7 +82,19 @@ def alpha_ends(sheet: BuildingSheet, given: tuple[float, float] | None = None) -
     """
     if given:
         return float(given[0]), float(given[1])
-    return ALPHA_RANGE_BY_SYSTEM[sheet.system]
+    return pushover_ends(sheet) or ALPHA_RANGE_BY_SYSTEM[sheet.system]
+
+
+def alpha_ends_source(sheet: BuildingSheet, ends: tuple[float, float]) -> str:
+    """Where :func:`alpha_ends`'s ``ends`` come from, in words for the note."""
+    if ends == pushover_ends(sheet):
+        low, high = PUSHOVER_HARDENING_RANGE
+        return (f"the α the pushover's slope gives with the storeys hardening at {low:.0%} and at {high:.0%} of "
+                "their stiffness after yield, the range of code-designed frames, where the building's own is not "
+                "given in storey_hardening_ratio")
+    if ends == ALPHA_RANGE_BY_SYSTEM[sheet.system]:
+        return ALPHA_RANGE_SOURCE[sheet.system]
+    return "the ends given to --alpha-range"
 
 
 def items_through_building(result: AssessmentResult) -> list[str]:
@@ -67,11 +108,19 @@ def items_through_building(result: AssessmentResult) -> list[str]:
 
 
 def at_alpha(inventory: Inventory, ids: list[str], alpha: float) -> Inventory:
-    """``inventory`` with only the items ``ids`` (and their workbook warnings) and the building's α ``alpha``."""
+    """``inventory`` with only the items ``ids`` (and their workbook warnings) and the building's α ``alpha``; at an
+    end of :func:`pushover_ends`, with the storeys hardening as that end takes them (the building that slope
+    describes if its storeys harden so)."""
     keep = inventory.equipment["id"].astype(str).isin(ids)
+    sheet, source = inventory.building, "an end of --alpha-range, not the building's"
+    hardening = sheet.storey_hardening_ratio
+    ends = _pushover_end_hardening(sheet)
+    if ends is not None and alpha in ends:
+        hardening = ends[alpha]
+        source = f"an end of --alpha-range, with the storeys hardening at {hardening:.0%}, not the building's"
     return replace(inventory, equipment=inventory.equipment[keep].reset_index(drop=True),
-                   building=replace(inventory.building, lateral_stiffness_ratio=float(alpha), pushover_slope_ratio=None,
-                                    alpha_source="an end of --alpha-range, not the building's"),
+                   building=replace(sheet, lateral_stiffness_ratio=float(alpha), pushover_slope_ratio=None,
+                                    storey_hardening_ratio=hardening, alpha_source=source),
                    warnings=tuple(w for w in inventory.warnings if str(w.item_id) in ids))
 
 
@@ -106,11 +155,11 @@ def with_alpha_range(result: AssessmentResult, sheet: BuildingSheet, ends: tuple
             continue
         moved.append(item_id)
         flags.append(Flag(item_id, FLAG_CODE, (
-            f"at α {low:g}: {result_state(at['low'].loc[item_id], system)}; at α {high:g}: "
+            f"at α {low:.3g}: {result_state(at['low'].loc[item_id], system)}; at α {high:.3g}: "
             f"{result_state(at['high'].loc[item_id], system)}; at the building's α {alpha:.3g} ({whose}, which "
             f"governs): {result_state(row, system)}."), detail=(
-            f"{row['risk_alpha_low']} at α {low:g}, {row['risk']} at α {alpha:.3g}, {row['risk_alpha_high']} at "
-            f"α {high:g}")))
+            f"{row['risk_alpha_low']} at α {low:.3g}, {row['risk']} at α {alpha:.3g}, {row['risk_alpha_high']} at "
+            f"α {high:.3g}")))
         codes[k] = tuple(codes[k]) + (FLAG_CODE,)
     summary["flags"] = codes
     note = alpha_range_note(sheet, ends, alpha, whose, result, moved, held)
@@ -128,12 +177,12 @@ def _rows_of(end_result: AssessmentResult | None, ids):
 def alpha_range_note(sheet, ends, alpha, whose, result, moved, held) -> str:
     """What ``--alpha-range`` ran and what it moved, in sentences for the report (from the summary's columns)."""
     low, high = ends
-    source = ("the ends given to --alpha-range" if ends != ALPHA_RANGE_BY_SYSTEM[sheet.system]
-              else ALPHA_RANGE_SOURCE[sheet.system])
+    source = alpha_ends_source(sheet, ends)
     summary = result.summary
     floors = sorted(set(summary.loc[summary["id"].astype(str).isin(moved + held), "floor"].astype(int)))
     count = len(moved) + len(held)
-    text = (f"The building's lateral stiffness ratio α: the level ran again at α {low:g} and {high:g} ({source}), "
+    text = (f"The building's lateral stiffness ratio α: the level ran again at α {low:.3g} and {high:.3g} "
+            f"({source}), "
             f"with the same ground motions, for the {count} freestanding "
             f"{'item' if count == 1 else 'items'} on "
             f"{floors_text(floors, floor_numbering_of(result.settings))}. ")

@@ -102,9 +102,9 @@ def run_assessment(inventory: Inventory, level_text: str, seed: int = 0,
     ids = alpha_ranges.items_through_building(result)
     at_ends = {}
     for alpha in alpha_range if ids else ():
-        progress(f"again at the building's α {alpha:g} ({len(ids)} items on its floors)")
+        progress(f"again at the building's α {alpha:.3g} ({len(ids)} items on its floors)")
         at_ends[alpha] = _assess(alpha_ranges.at_alpha(inventory, ids, alpha), level_text, seed,
-                                 _prefixed(progress, f"α {alpha:g}: "), oq_hazard, derive_floors_roof,
+                                 _prefixed(progress, f"α {alpha:.3g}: "), oq_hazard, derive_floors_roof,
                                  calibration=applied, runner=runner, hazard_curve=None, what_if=False)
     return alpha_ranges.with_alpha_range(result, inventory.building, alpha_range, at_ends)
 

@@ -158,3 +158,49 @@ def test_without_items_on_the_building_s_floors_nothing_runs_again_and_the_note_
     assert result.summary[ALPHA_RANGE_COLUMNS].isna().all().all()
     assert result.hazard_notes[-1].startswith("--alpha-range: no freestanding item is on a floor whose motions come "
                                               "through the building")
+
+
+def _pushover_building(**extra):
+    """An 8-storey steel moment frame whose α comes from its pushover's slope (0.06) alone."""
+    from assess.inventory.site_building import BuildingSheet
+    return BuildingSheet(storeys=8, height_m=32.0, system="steel moment frame", period_s=1.2, yield_base_shear_g=0.25,
+                         response="yielding", pushover_slope_ratio=0.06, **extra)
+
+
+def test_with_alpha_from_the_pushover_s_slope_alone_the_ends_are_its_alpha_at_the_hardening_s_ends():
+    """Without the model's storey hardening, the building's α is what the slope gives at its hardening, which lies
+    in the 2 to 5 % of code-designed frames: the ends are the α of those two (the run's 3 % between them); with the
+    model's hardening or α given, the system's range."""
+    from dataclasses import replace
+
+    from assess.assessment.alpha_range import alpha_ends_source
+    from assess.assessment.floors import alpha_of, pushover_alpha
+    sheet = _pushover_building()
+    low, high = alpha_ends(sheet)
+    assert low == pushover_alpha(replace(sheet, storey_hardening_ratio=0.02)).alpha
+    assert high == pushover_alpha(replace(sheet, storey_hardening_ratio=0.05)).alpha
+    assert low < alpha_of(sheet) < high
+    assert "hardening at 2% and at 5% of their stiffness" in alpha_ends_source(sheet, (low, high))
+    assert alpha_ends(_pushover_building(storey_hardening_ratio=0.02)) == ENDS
+    assert alpha_ends(replace(sheet, pushover_slope_ratio=None, lateral_stiffness_ratio=13.0)) == ENDS
+    assert alpha_ends(sheet, (6.0, 9.0)) == (6.0, 9.0)
+
+
+def test_each_pushover_end_is_a_building_with_the_pushover_s_slope(make_workbook):
+    """An end runs with its α and the storeys' hardening that gives it: its stick pushed over has the sheet's slope
+    at 2 % roof drift, as the building the engineer's pushover describes would if its storeys hardened so."""
+    from assess.assessment.alpha_range import at_alpha
+    from assess.assessment.floors import building_model_of
+    from assess.building.pushover import stick_pushover
+    building = [["key", "value"], ["storeys", 8], ["height_m", 32.0], ["period_s", 1.2],
+                ["system", "steel moment frame"], ["response", "yielding"], ["yield_base_shear_g", 0.25],
+                ["pushover_slope_ratio", 0.06]]
+    inventory = read_workbook(make_workbook({"equipment": [dict(item) for item in EQUIPMENT], "site": SITE,
+                                             "building": building}, name="pushover.xlsx", record=False))
+    for alpha, hardening in zip(alpha_ends(inventory.building), (0.02, 0.05)):
+        end = at_alpha(inventory, UPPER, alpha).building
+        assert (end.lateral_stiffness_ratio, end.storey_hardening_ratio, end.pushover_slope_ratio) == (
+            alpha, hardening, None)
+        assert f"with the storeys hardening at {hardening:.0%}, not the building's" in end.alpha_source
+        stick = building_model_of(end, None).stick
+        assert stick_pushover(stick, 1.2).slope_ratio == pytest.approx(0.06, rel=1e-5)
