@@ -460,7 +460,8 @@ def storey_table(building: YieldingBuilding, histories: Sequence[StickHistory], 
     rows = []
     for k in sorted(int(f) for f in floors):
         row = {"response": "yielding", "yielding_model": building.yielding_model,
-               "yield_base_shear_g": building.strength.yield_base_shear_g, "storey_yield_ratio": np.nan,
+               "yield_base_shear_g": building.strength.yield_base_shear_g,
+               "storey_hardening_ratio": float(np.ravel(building.stick.hardening)[0]), "storey_yield_ratio": np.nan,
                "drift_ratio_median": np.nan, "drift_ratio_min": np.nan, "drift_ratio_max": np.nan,
                "ductility_median": np.nan, "ductility_min": np.nan, "ductility_max": np.nan, "motions_yielded": yielded,
                "drift_limit": building.drift_limit, "motions_beyond_drift_limit": np.nan}

@@ -441,3 +441,15 @@ def test_the_building_page_sets_pfa_over_pga_beside_hf_and_hf_over_rmu(weak):
     assert [row["hf_over_rmu"] for row in section["rows"]] == expected
     assert "H_f/R_μ with R_μ 1.30 (eq. 13.3-6" in section["lead"]
     assert "H<sub>f</sub>/R<sub>μ</sub>" in render_html(weak)
+
+
+def test_the_method_and_floors_csv_say_the_storeys_hardening_that_ran(weak, make_workbook):
+    """floors.csv's storey_hardening_ratio and the method's (F5) give the hardening of the stick that ran: the
+    default 3 %, or the building sheet's."""
+    assert (weak.floors["storey_hardening_ratio"] == 0.03).all()
+    assert "hardening after yield at 3 % of its stiffness" in render_html(weak)
+    path = make_workbook(_sheets(("response", "yielding"), ("yield_base_shear_g", 0.05),
+                                 ("storey_hardening_ratio", 0.015)), record=False)
+    given = run_assessment(read_workbook(path), "DE", seed=3)
+    assert (given.floors["storey_hardening_ratio"] == 0.015).all()
+    assert "hardening after yield at 1.5 % of its stiffness (the building sheet" in render_html(given)
