@@ -113,14 +113,14 @@ def at_alpha(inventory: Inventory, ids: list[str], alpha: float) -> Inventory:
     describes if its storeys harden so)."""
     keep = inventory.equipment["id"].astype(str).isin(ids)
     sheet, source = inventory.building, "an end of --alpha-range, not the building's"
-    hardening = sheet.storey_hardening_ratio
+    hardening, whence = sheet.storey_hardening_ratio, sheet.hardening_source
     ends = _pushover_end_hardening(sheet)
     if ends is not None and alpha in ends:
-        hardening = ends[alpha]
+        hardening, whence = ends[alpha], "this end of --alpha-range's"
         source = f"an end of --alpha-range, with the storeys hardening at {hardening:.0%}, not the building's"
     return replace(inventory, equipment=inventory.equipment[keep].reset_index(drop=True),
                    building=replace(sheet, lateral_stiffness_ratio=float(alpha), pushover_slope_ratio=None,
-                                    storey_hardening_ratio=hardening, alpha_source=source),
+                                    storey_hardening_ratio=hardening, alpha_source=source, hardening_source=whence),
                    warnings=tuple(w for w in inventory.warnings if str(w.item_id) in ids))
 
 

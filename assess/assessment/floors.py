@@ -350,7 +350,8 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
                    else f"{building.stick.law} storey springs")
         hardening = float(np.ravel(building.stick.hardening)[0])  # a wall's: its base's, the hinge's assembly
         springs += (f" hardening at {100 * hardening:.3g}% of {'its' if hinged else 'their'} stiffness after yield ("
-                    + ("storey_hardening_ratio" if sheet.storey_hardening_ratio is not None else "by default") + ")")
+                    + ("by default" if sheet.storey_hardening_ratio is None
+                       else sheet.hardening_source or "storey_hardening_ratio") + ")")
         text = (f"{which}: each ground motion through the building, modelled as yielding ({sheet.storeys} storeys, "
                 f"{sheet.system}, T1 {modes.periods_s[0]:.2f} s ({source}), {stiffness}, {ratio}, "
                 f"{sheet.damping:.0%} Rayleigh damping; {springs}"

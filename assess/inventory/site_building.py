@@ -213,6 +213,8 @@ class BuildingSheet:
     storey_hardening_ratio: float | None = None
     #: Where α comes from where the run sets it itself (``--alpha-range``'s ends), in words for the notes.
     alpha_source: str = ""
+    #: Where ``storey_hardening_ratio`` comes from where the run sets it itself (``--alpha-range``'s ends).
+    hardening_source: str = ""
     rows: dict = field(default_factory=dict, compare=False)
     sheet: str = "building"
 

@@ -190,7 +190,7 @@ def test_each_pushover_end_is_a_building_with_the_pushover_s_slope(make_workbook
     """An end runs with its α and the storeys' hardening that gives it: its stick pushed over has the sheet's slope
     at 2 % roof drift, as the building the engineer's pushover describes would if its storeys hardened so."""
     from assess.assessment.alpha_range import at_alpha
-    from assess.assessment.floors import building_model_of
+    from assess.assessment.floors import building_model_of, building_note
     from assess.building.pushover import stick_pushover
     building = [["key", "value"], ["storeys", 8], ["height_m", 32.0], ["period_s", 1.2],
                 ["system", "steel moment frame"], ["response", "yielding"], ["yield_base_shear_g", 0.25],
@@ -202,5 +202,7 @@ def test_each_pushover_end_is_a_building_with_the_pushover_s_slope(make_workbook
         assert (end.lateral_stiffness_ratio, end.storey_hardening_ratio, end.pushover_slope_ratio) == (
             alpha, hardening, None)
         assert f"with the storeys hardening at {hardening:.0%}, not the building's" in end.alpha_source
+        note = building_note(building_model_of(end, None), end, [8], None)
+        assert f"hardening at {100 * hardening:g}% of their stiffness after yield (this end of --alpha-range's)" in note
         stick = building_model_of(end, None).stick
         assert stick_pushover(stick, 1.2).slope_ratio == pytest.approx(0.06, rel=1e-5)
