@@ -3,7 +3,7 @@
 Run: python benchmarks/bench_yielding_equipment.py [--levels DE,MCE_R] [--buildings smf4,smf8,wall6,wallf6,rcf5]
      [--motions 11] [--overstrengths 1.5,2,3] [--truth-profile] [--truth-strengths 0.9,1.1]
      [--truth-floors 0.995,1.005] [--truth-alphas 5,20] [--own-alpha] [--alpha-bracket] [--pushover-slope]
-     [--skip RECORD,...]
+     [--own-hardening] [--skip RECORD,...]
      (needs openseespy and pyslammer; about 3 minutes a level)
 
 The truth: five yielding OpenSeesPy buildings of our own (tests/peers/opensees_buildings.py: steel
@@ -101,6 +101,19 @@ a ``building`` sheet of the building's storeys, height, system and T_1): only th
   rebuilt with α 5 and 20 (``--levels DE --buildings smf4,smf8,rcf5 --truth-alphas 5,20``): 23 of 26 misses
   flagged, the truth's class within the three on 66 of 72. On ``smf12`` over 17 records at DE and MCE_R (``--skip
   Duzce_1999_375-090``, 177 s): 8 of 8 misses flagged (class 0.50 / 0.83 at the system's α), within on 24 of 24.
+* ``given + pushover slope`` (``--pushover-slope``; the frames): ``given`` and the same pushover's slope at 2 % roof
+  drift over its initial slope in ``pushover_slope_ratio`` (``peers.yielding_equipment.given_pushover``), from
+  which the tool finds α; with ``--own-hardening`` the same and ``given`` again with the OpenSees springs' 2 % in
+  ``storey_hardening_ratio`` (``peers.yielding_equipment.own_hardening``), and with ``--truth-profile`` the slope,
+  the hardening and the truth's storey stiffnesses (the whole model but α). Measured on the four frames and the
+  same rebuilt at α 5 and 20, at DE and MCE_R over 11 records (``--buildings smf4,smf8,rcf5,bf6 --levels
+  DE,MCE_R --truth-alphas 5,20 --pushover-slope --own-hardening --truth-profile --overstrengths ""``, 1075 s), 24
+  frame-and-earthquake pairs, sliding within [0.8, 1.25] with σ ln ≤ 0.45 / risk class ≥ 0.8: the strength alone
+  14 / 14 (gm 0.44-1.86); with the slope 21 / 22 (0.74-1.20: α 30, the search's end, for every α-20 frame, whose
+  slope is below what the stick's 3 % hardening gives); with the slope and the hardening 19 / 23 (0.92-1.26: α
+  found within 1-9 %; σ ln 0.47-0.65 on three α-20 pairs, as with their α given); with the stiffnesses as well
+  23 / 21 (0.88-1.22), as with α and stiffnesses given (14 / 15 of 16). On ``smf12`` (DE and MCE_R over the 11
+  records but Düzce): 1 / 1, 2 / 1 and 2 / 2. The per-case overturn share pooled: 0.69, 0.74, 0.74, 0.79.
 
 Columns, each route against the truth over the (item, motion, direction) cases: PFA tool/truth at the
 mid-height floor and the roof (median over the motions), sliding: geometric mean and σ of
@@ -138,9 +151,9 @@ from assess.anchorage.equations import height_factor  # noqa: E402
 from assess.building import ALPHA_RANGE_BY_SYSTEM  # noqa: E402
 from assess.fragility.suite import binomial_interval  # noqa: E402
 from peers.opensees_buildings import BRACED, BUILDINGS, TALL  # noqa: E402
-from peers.yielding_equipment import (LEVELS, PUSHOVER_ROUTE, SYSTEM_R, assess, bracket_held,  # noqa: E402
-                                      compare, given_pushover, given_routes, given_strength, ground_suite,
-                                      own_stiffness, truth_result, workbook)
+from peers.yielding_equipment import (LEVELS, OWN_HARDENING, PUSHOVER_ROUTE, SYSTEM_R, assess,  # noqa: E402
+                                      bracket_held, compare, given_pushover, given_routes, given_strength,
+                                      ground_suite, own_hardening, own_stiffness, truth_result, workbook)
 
 
 def markdown(frame: pd.DataFrame) -> str:
@@ -239,6 +252,11 @@ def main(argv=None):
                         help="add, for the frames, the route 'given + pushover slope': yield_base_shear_g and the "
                              "same pushover's slope at 2 %% roof drift over its initial slope in pushover_slope_ratio "
                              "(peers.yielding_equipment.given_pushover; the tool finds its α from it)")
+    parser.add_argument("--own-hardening", action="store_true",
+                        help="add to 'given' and 'given + pushover slope' (the same with --truth-alphas) a route "
+                             "that also writes the OpenSees springs' hardening in storey_hardening_ratio "
+                             "(peers.yielding_equipment.own_hardening); with --truth-profile, the latter with the "
+                             "truth's storey stiffnesses too")
     parser.add_argument("--truth-profile", action="store_true",
                         help="add the route 'given + truth's stiffness': yield_base_shear_g and the OpenSees "
                              "building's storey stiffnesses in storey_stiffness")
@@ -256,8 +274,15 @@ def main(argv=None):
                 routes = given if args.own_alpha else {"given": given["given"]}
                 if args.pushover_slope and np.isfinite(getattr(truth, "column_alpha", np.inf)):
                     routes[PUSHOVER_ROUTE] = given_pushover(truth)
+                if args.own_hardening:
+                    routes.update({route + OWN_HARDENING: rows + own_hardening(truth)
+                                   for route, rows in list(routes.items()) if route in ("given", PUSHOVER_ROUTE)})
                 if args.truth_profile and own_stiffness(truth) is not None:
-                    routes["given + truth's stiffness"] = routes["given"] + [["storey_stiffness", own_stiffness(truth)]]
+                    stiffness = [["storey_stiffness", own_stiffness(truth)]]
+                    routes["given + truth's stiffness"] = routes["given"] + stiffness
+                    if args.own_hardening and PUSHOVER_ROUTE + OWN_HARDENING in routes:
+                        routes[PUSHOVER_ROUTE + OWN_HARDENING + " + truth's stiffness"] = (
+                            routes[PUSHOVER_ROUTE + OWN_HARDENING] + stiffness)
                 routes["design"] = [["response", "yielding"]]
                 for omega in filter(None, args.overstrengths.split(",")):
                     routes[f"design x {omega}"] = [["response", "yielding"], ["overstrength", float(omega)]]
@@ -282,6 +307,18 @@ def main(argv=None):
                                      strength + [["lateral_stiffness_ratio", float(alpha)]])]
                     if args.pushover_slope:
                         other_routes.append((f"{PUSHOVER_ROUTE}, truth α {alpha}", given_pushover(other)))
+                    if args.own_hardening:
+                        other_routes += [(f"{route.split(',')[0]}{OWN_HARDENING}, truth α {alpha}",
+                                          extra + own_hardening(other)) for route, extra in list(other_routes)
+                                         if route.startswith(("given,", PUSHOVER_ROUTE))]
+                    if args.truth_profile:
+                        stiffness = [["storey_stiffness", own_stiffness(other)]]
+                        other_routes.append((f"given + α + truth's stiffness, truth α {alpha}",
+                                             strength + [["lateral_stiffness_ratio", float(alpha)]] + stiffness))
+                        if args.own_hardening and args.pushover_slope:
+                            other_routes.append((f"{PUSHOVER_ROUTE}{OWN_HARDENING} + truth's stiffness, "
+                                                 f"truth α {alpha}",
+                                                 given_pushover(other) + own_hardening(other) + stiffness))
                     for route, extra in other_routes:
                         tool = assess(workbook(folder, other, suite, level, extra), level,
                                       bracket if route.startswith("given,") else None)

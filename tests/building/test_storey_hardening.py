@@ -19,7 +19,7 @@ from assess.building.yielding import yielding_building
 from assess.errors import InputError
 from assess.inventory import read_workbook
 from assess.inventory.site_building import BuildingSheet
-from workbooks import good_sheets
+from tests.building.test_pushover_alpha import BASE, _sheets  # an 8-storey frame's sheet
 
 
 def _sheet(storeys=8, system="steel moment frame", **extra):
@@ -88,15 +88,6 @@ def test_the_note_says_which_hardening_the_storeys_take():
     note = building_note(building_model_of(default, None), default, [4, 8], None)
     assert "hardening at 3% of their stiffness after yield (by default)" in note
     assert "rests on the storeys hardening at 3%" in note
-
-
-def _sheets(building):
-    sheets = good_sheets()
-    sheets["building"] = [["key", "value"]] + [list(pair) for pair in building]
-    return sheets
-
-
-BASE = [("storeys", 8), ("height_m", 32), ("system", "steel moment frame"), ("period_s", 1.2)]
 
 
 def test_it_is_read_where_given(make_workbook):

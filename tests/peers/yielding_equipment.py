@@ -73,6 +73,27 @@ def given_pushover(truth) -> list:
     return given_strength(truth) + [["pushover_slope_ratio", float(f"{pushover_slope_ratio(truth):.4g}")]]
 
 
+#: What a route adds where the engineer also writes the model's storey hardening (:func:`own_hardening`).
+OWN_HARDENING = " + own hardening"
+
+
+def own_hardening(truth) -> list:
+    """The building sheet's row an engineer with the truth building's own model would add: its springs' (a wall's:
+    its own) stiffness after yield over their stiffness before, in ``storey_hardening_ratio``."""
+    return [["storey_hardening_ratio", float(truth.hardening)]]
+
+
+#: The route of an engineer who reads the pushover's slope after yield and writes the model's storey hardening beside
+#: it (:func:`given_pushover_hardening`), and the same with the model's storey stiffnesses: its whole model but α.
+PUSHOVER_HARDENING = PUSHOVER_ROUTE + OWN_HARDENING
+PUSHOVER_MODEL = PUSHOVER_HARDENING + " + own stiffness"
+
+
+def given_pushover_hardening(truth) -> list:
+    """The building sheet's rows of :data:`PUSHOVER_HARDENING`: :func:`given_pushover` and :func:`own_hardening`."""
+    return given_pushover(truth) + own_hardening(truth)
+
+
 def own_alpha(truth) -> float:
     """The lateral stiffness ratio α an engineer with the truth building's own model would write in the building
     sheet's ``lateral_stiffness_ratio``: the frames' column's α; the shear building (``wall6``, no column, α ∞) the
@@ -238,9 +259,14 @@ def compared_on_its_own(truth, folder: Path, motions: int = 11) -> dict:
     """:func:`compared` at DE over the first ``motions`` records for a building checked on its own (the braced frame,
     the 12-storey frame): the routes of what the engineer knows (:func:`given_routes`; ``given`` with
     ``--alpha-range`` at the system's ends, :func:`bracket_held`), with the pushover's slope (:data:`PUSHOVER_ROUTE`,
-    :func:`given_pushover`), the design data alone (``design``) and the elastic modes (``elastic``)."""
-    routes = {**given_routes(truth), PUSHOVER_ROUTE: given_pushover(truth), "design": [["response", "yielding"]],
-              "elastic": [["response", "elastic"]]}
+    :func:`given_pushover`), and with the model's hardening beside it (:data:`PUSHOVER_HARDENING`, and with the
+    model's storey stiffnesses as well, :data:`PUSHOVER_MODEL`), the design data alone (``design``) and the elastic
+    modes (``elastic``)."""
+    routes = {**given_routes(truth), PUSHOVER_ROUTE: given_pushover(truth),
+              PUSHOVER_HARDENING: given_pushover_hardening(truth)}
+    if own_stiffness(truth) is not None:
+        routes[PUSHOVER_MODEL] = routes[PUSHOVER_HARDENING] + [["storey_stiffness", own_stiffness(truth)]]
+    routes.update({"design": [["response", "yielding"]], "elastic": [["response", "elastic"]]})
     return compared(truth, ground_suite(motions, truth.period_s, 1.0), "DE", folder, routes,
                     bracket=ALPHA_RANGE_BY_SYSTEM[truth.system])
 

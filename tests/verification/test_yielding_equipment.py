@@ -120,8 +120,8 @@ import pytest
 from assess.anchorage.equations import height_factor
 from peers.opensees_buildings import BUILDINGS
 from peers.opensees_shear import load_opensees
-from peers.yielding_equipment import (OWN_MODEL, PUSHOVER_ROUTE, TARGET_OVERTURN_AGREE, meets_class_target,
-                                      meets_sliding_targets, own_stiffness)
+from peers.yielding_equipment import (OWN_MODEL, PUSHOVER_HARDENING, PUSHOVER_ROUTE, TARGET_OVERTURN_AGREE,
+                                      meets_class_target, meets_sliding_targets, own_stiffness)
 
 OPS, WHY = load_opensees()
 pytestmark = pytest.mark.skipif(OPS is None, reason=str(WHY))
@@ -134,8 +134,8 @@ FLOOR_SCALES = (0.995, 1.005)
 @pytest.fixture(scope="module")
 def measured(tmp_path_factory):
     pytest.importorskip("pyslammer")
-    from peers.yielding_equipment import (assess, compare, given_pushover, given_routes, ground_suite, truth_result,
-                                          workbook)
+    from peers.yielding_equipment import (assess, compare, given_pushover, given_pushover_hardening, given_routes,
+                                          ground_suite, truth_result, workbook)
 
     out = {}
     for name, truth in BUILDINGS.items():
@@ -145,6 +145,7 @@ def measured(tmp_path_factory):
         routes = {**given_routes(truth), "elastic": [["response", "elastic"]]}
         if name in FRAMES:
             routes[PUSHOVER_ROUTE] = given_pushover(truth)
+            routes[PUSHOVER_HARDENING] = given_pushover_hardening(truth)
         routes["design"] = [["response", "yielding"]]
         routes.update({f"design x {o:g}": [["response", "yielding"], ["overstrength", o]] for o in OVERSTRENGTHS})
         results = {route: assess(workbook(folder, truth, suite, "DE", rows), "DE") for route, rows in routes.items()}
@@ -299,6 +300,20 @@ def test_the_issue_targets_with_the_strength_and_the_pushover_s_slope(measured, 
     # 0.28-0.44, class 0.92-1.0; at MCE_R (bench_yielding_equipment.py --pushover-slope) gm 1.02-1.10, σ ln
     # 0.24-0.38, class 0.83-1.0.
     n = measured[name]["numbers"][PUSHOVER_ROUTE]
+    assert (meets_sliding_targets if target == "sliding" else meets_class_target)(n), (name, n)
+
+
+@pytest.mark.parametrize("target, name", list(_marked(("sliding", "class"), {
+    ("sliding", "rcf5"): "gm 1.26 at DE: with its springs' 2 % written the α found is the frame's own (10.4), at "
+                         "which the tool slides this concrete frame's items 1.28 times as far (the route with its own "
+                         "α, above)"}, FRAMES)))
+def test_the_issue_targets_with_the_pushover_s_slope_and_the_model_s_hardening(measured, target, name):
+    # The same and the storeys' hardening of the building's model (its springs' 2 %) in storey_hardening_ratio
+    # (peers.yielding_equipment.PUSHOVER_HARDENING): the α found is then the frame's own 10 within 5 % (10.5, 10.3,
+    # 10.4 with the design's storey stiffnesses; 10.0 with its own, test_truth_pushover.py). Measured at DE: gm
+    # 1.01-1.26, σ ln 0.27-0.39, class 0.83-1.0; at MCE_R (bench_yielding_equipment.py --pushover-slope
+    # --own-hardening) gm 1.07-1.20, σ ln 0.20-0.33, class 0.83-0.92.
+    n = measured[name]["numbers"][PUSHOVER_HARDENING]
     assert (meets_sliding_targets if target == "sliding" else meets_class_target)(n), (name, n)
 
 

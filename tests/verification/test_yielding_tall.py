@@ -20,6 +20,8 @@ route                           sliding gm, 11 / 17 DE / 17   σ ln             
 ==============================  ===========================  ===========================  ==================
 given strength (0.087 W)        0.66 / 0.66 / 0.70           0.73 / 0.66 / 0.46           0.58 / 0.50 / 0.83
 and its pushover's slope        0.74 / – / –                 0.63 / – / –                 0.75 / – / –
+and the model's hardening       0.89 / – / –                 0.43 / – / –                 0.75 / – / –
+and its storeys' stiffnesses    0.98 / – / –                 0.36 / – / –                 0.83 / – / –
 given strength and α 10         0.84 / 0.87 / 0.88           0.48 / 0.46 / 0.45           0.75 / 0.83 / 0.83
 and its storeys' stiffnesses    0.99 / 0.98 / 0.94           0.35 / 0.38 / 0.36           0.83 / 0.92 / 1.0
 design data (Ω 2.5)             0.995 / 1.02 / 1.02          0.28 / 0.33 / 0.39           0.83 / 0.67 / 1.0
@@ -42,7 +44,11 @@ one slope cannot tell the column from the springs (with the truth's springs at 3
 test_truth_pushover.py). That brings the sliding two fifths of the way from the strength alone's to the building's α
 (0.74 at DE; 0.83 at MCE_R over the same 11 records, where the strength alone gives 0.74) and the risk class to
 0.75 (1.0 at MCE_R); the targets hold at MCE_R, not at DE (``--pushover-slope --levels DE,MCE_R --motions 11 --skip
-Duzce_1999_375-090``).
+Duzce_1999_375-090``). With the springs' 2 % written in ``storey_hardening_ratio`` beside the slope
+(``--own-hardening``) it finds 9.6 (10.0 with the frame's storey stiffnesses as well): the sliding targets hold (gm
+0.89, σ ln 0.43 over the first 11 records; 0.91 / 0.45 and 0.98 / 0.35 at DE and MCE_R over the 11 without Düzce),
+the risk class stays at 0.75 at DE (0.92 at MCE_R), and with the frame's storey stiffnesses too every target holds
+(0.98, 0.36, 0.83).
 
 Where the building's α is not known, ``--alpha-range`` runs the level again at the moment frames' α 5 and 20:
 with the strength alone, every item whose class it misses has a class that moves between the ends, and is
@@ -57,8 +63,8 @@ import pytest
 
 from peers.opensees_buildings import TALL
 from peers.opensees_shear import load_opensees
-from peers.yielding_equipment import (OWN_MODEL, PUSHOVER_ROUTE, TARGET_GM, meets_class_target,
-                                     meets_sliding_targets)
+from peers.yielding_equipment import (OWN_MODEL, PUSHOVER_HARDENING, PUSHOVER_MODEL, PUSHOVER_ROUTE, TARGET_GM,
+                                     meets_class_target, meets_sliding_targets)
 
 OPS, WHY = load_opensees()
 pytestmark = pytest.mark.skipif(OPS is None, reason=str(WHY))
@@ -107,9 +113,27 @@ def test_with_the_pushover_s_slope_the_sliding_and_the_class_come_nearer_than_wi
 
 
 @pytest.mark.xfail(strict=True, reason="sliding gm 0.74 at DE with the pushover's slope: the α it finds (11.1) rests "
-                                       "on the stick's springs hardening at 3 %, the frame's at 2 %")
+                                       "on the stick's springs hardening at 3 %, the frame's at 2 % (written, below)")
 def test_with_the_pushover_s_slope_the_sliding_targets_hold(tall):
     assert meets_sliding_targets(tall[PUSHOVER_ROUTE]), tall[PUSHOVER_ROUTE]
+
+
+def test_with_the_model_s_hardening_beside_the_slope_the_sliding_targets_hold(tall):
+    """The frame's 2 % in ``storey_hardening_ratio``: α 9.6 found, gm 0.89, σ ln 0.43."""
+    assert meets_sliding_targets(tall[PUSHOVER_HARDENING]), tall[PUSHOVER_HARDENING]
+
+
+@pytest.mark.xfail(strict=True, reason="risk class 0.75 (9 of 12 items) at DE with the pushover's slope and the "
+                                       "model's hardening, with the design's storey stiffnesses")
+def test_with_the_model_s_hardening_beside_the_slope_the_risk_class_holds(tall):
+    assert meets_class_target(tall[PUSHOVER_HARDENING]), tall[PUSHOVER_HARDENING]
+
+
+def test_with_the_whole_model_but_alpha_every_target_holds(tall):
+    """The pushover's strength and slope, the model's hardening and storey stiffnesses, α found (10.0)."""
+    n = tall[PUSHOVER_MODEL]
+    assert meets_sliding_targets(n), n
+    assert meets_class_target(n), n
 
 
 def test_the_design_data_alone_are_within_the_design_range_and_the_elastic_modes_are_not(tall):
