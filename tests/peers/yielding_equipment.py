@@ -94,6 +94,12 @@ def given_pushover_hardening(truth) -> list:
     return given_pushover(truth) + own_hardening(truth)
 
 
+def given_pushover_model(truth) -> list:
+    """The building sheet's rows of :data:`PUSHOVER_MODEL`: :func:`given_pushover_hardening` and the truth's storey
+    stiffnesses (:func:`own_stiffness`)."""
+    return given_pushover_hardening(truth) + [["storey_stiffness", own_stiffness(truth)]]
+
+
 def own_alpha(truth) -> float:
     """The lateral stiffness ratio α an engineer with the truth building's own model would write in the building
     sheet's ``lateral_stiffness_ratio``: the frames' column's α; the shear building (``wall6``, no column, α ∞) the
@@ -265,7 +271,7 @@ def compared_on_its_own(truth, folder: Path, motions: int = 11) -> dict:
     routes = {**given_routes(truth), PUSHOVER_ROUTE: given_pushover(truth),
               PUSHOVER_HARDENING: given_pushover_hardening(truth)}
     if own_stiffness(truth) is not None:
-        routes[PUSHOVER_MODEL] = routes[PUSHOVER_HARDENING] + [["storey_stiffness", own_stiffness(truth)]]
+        routes[PUSHOVER_MODEL] = given_pushover_model(truth)
     routes.update({"design": [["response", "yielding"]], "elastic": [["response", "elastic"]]})
     return compared(truth, ground_suite(motions, truth.period_s, 1.0), "DE", folder, routes,
                     bracket=ALPHA_RANGE_BY_SYSTEM[truth.system])
