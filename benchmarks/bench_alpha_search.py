@@ -16,7 +16,8 @@ A run of the main job on such a building takes a minute or more.
 
 ``--alpha-range-ends`` also finds the ends ``--alpha-range`` runs at where α comes from the slope alone
 (assess/assessment/alpha_range.py ``pushover_ends``: the search again with the storeys hardening at 2 % and at
-5 %), two more searches.
+5 %), two more searches: 75 pushovers where one search takes 24, 4.79 s against 3.32 s wall (medians of 5, 12
+storeys; 2026-11-30), where ``--alpha-range`` runs the level twice more.
 """
 from __future__ import annotations
 
