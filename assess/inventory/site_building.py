@@ -624,16 +624,27 @@ def _is_number(text: str) -> bool:
 
 
 def check_building_strength(table, building: BuildingSheet, site: SiteSheet | None, report) -> None:
-    """Report ``response: yielding`` where nothing gives the storeys' strength, at the response cell.
+    """Report ``response: yielding`` where nothing gives the storeys' strength, at the response cell; and, where the
+    sheet names no ``response`` and the building is elastic for want of a strength, each key only the yielding stick
+    uses (``overstrength``, ``p_delta`` yes, ``storey_hardening_ratio``) at its key cell.
 
     The yielding stick's strength is ``yield_base_shear_g``, else the code's design from the site sheet's
     design values (S_DS, S_D1 or S_S, S_1 and the site class); a site given only by a uniform-hazard
     spectrum, or no site sheet, gives no design. ``table`` is the building sheet as read, ``report`` its
     :class:`~assess.inventory.workbook.SheetReport`.
     """
-    if building.response != "yielding" or building.yield_base_shear_g is not None:
+    if building.yield_base_shear_g is not None or (site is not None and site.has_design_values):
         return
-    if site is not None and site.has_design_values:
+    if building.response is None and not building.too_tall_to_yield:  # elastic by default: say what goes unused
+        for key, asks in (("overstrength", building.overstrength is not None), ("p_delta", building.p_delta),
+                          ("storey_hardening_ratio", building.storey_hardening_ratio is not None)):
+            if asks:
+                report.at(building.rows[key], table.headers.get("key"), f"{key} is given but nothing gives the "
+                          "storeys' strength (no yield_base_shear_g, and the site sheet no design values), so the "
+                          "building answers through its elastic modes, which do not yield: it would be ignored.",
+                          "add yield_base_shear_g (the base shear at yield over the weight, from a pushover or an "
+                          f"evaluation) or the site's design values to the site sheet, or delete the {key} row.")
+    if building.response != "yielding":
         return
     report.at(building.rows["response"], table.headers.get("value"),
               "response is yielding but nothing gives the storeys' strength: the building sheet has no "

@@ -115,3 +115,16 @@ def test_a_building_too_tall_to_yield_refuses_it(make_workbook):
         read_workbook(make_workbook(_sheets(rows)))
     (problem,) = error.value.problems
     assert problem.cell == "A5" and "storey_hardening_ratio is given but the building has 41 storeys" in problem.message
+
+
+@pytest.mark.parametrize("key, value", [("storey_hardening_ratio", 0.02), ("p_delta", "yes"), ("overstrength", 2.5)])
+def test_a_key_of_the_yielding_stick_where_nothing_gives_the_strength_is_refused(make_workbook, key, value):
+    """No response row, no yield_base_shear_g, no site sheet: the building answers through its elastic modes, and
+    a key only the yielding stick uses would be ignored without a word; it is refused at its key cell."""
+    with pytest.raises(InputError) as error:
+        read_workbook(make_workbook(_sheets(BASE + [(key, value)])))
+    (problem,) = error.value.problems
+    assert problem.cell == "A6" and f"{key} is given but nothing gives the storeys' strength" in problem.message
+    assert "yield_base_shear_g" in problem.fix
+    if key != "overstrength":  # which multiplies the code's design, not a given strength
+        assert read_workbook(make_workbook(_sheets(BASE + [("yield_base_shear_g", 0.15), (key, value)]))).building
