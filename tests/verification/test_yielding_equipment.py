@@ -359,13 +359,13 @@ def test_the_risk_class_over_the_whole_suite(whole_suite, route, name):
 
 
 @pytest.mark.parametrize("name", FRAMES)
-def test_every_target_over_the_whole_suite_with_the_whole_model_but_alpha(whole_suite, name):
+def test_the_sliding_and_class_targets_over_the_whole_suite_with_the_whole_model_but_alpha(whole_suite, name):
     # The frames' pushover strength and slope, their springs' hardening and their storey stiffnesses, α found from
     # them (peers.yielding_equipment.PUSHOVER_MODEL). Measured over all 18 records at DE: gm 1.03-1.18, σ ln
     # 0.16-0.29, class 0.92; at DE and MCE_R on the four frames and the same rebuilt at α 5 and 20
     # (bench_yielding_equipment.py --motions 18 --truth-alphas 5,20 --pushover-slope --own-hardening --truth-profile)
     # gm 0.85-1.19, σ ln ≤ 0.41 on all 24, class ≥ 0.83 on 23 (0.75 on smf8 at α 20, MCE_R), the per-case overturn
-    # share 0.79 pooled.
+    # share 0.79 pooled (0.56-1.0 per pair, as coarse as the module text says).
     n = whole_suite[name][PUSHOVER_MODEL]
     assert meets_sliding_targets(n), (name, n)
     assert meets_class_target(n), (name, n)
