@@ -348,8 +348,7 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
         hinged = building.yielding_model == BASE_HINGE
         springs = (f"its elastic model on a {building.stick.law} plastic hinge at the base" if hinged
                    else f"{building.stick.law} storey springs")
-        hardening = float(np.ravel(building.stick.hardening)[0])  # a wall's: its base's, the hinge's assembly
-        springs += (f" hardening at {100 * hardening:.3g}% of {'its' if hinged else 'their'} stiffness after yield ("
+        springs += (f" hardening at {100 * building.hardening:.3g}% of {'its' if hinged else 'their'} stiffness after yield ("
                     + ("by default" if sheet.storey_hardening_ratio is None
                        else sheet.hardening_source or "storey_hardening_ratio") + ")")
         text = (f"{which}: each ground motion through the building, modelled as yielding ({sheet.storeys} storeys, "
@@ -378,7 +377,7 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
         if (sheet.lateral_stiffness_ratio is None and sheet.pushover_slope_ratio is not None
                 and sheet.storey_hardening_ratio is None):
             text += (f" The α found from the pushover rests on the storeys hardening at "
-                     f"{float(building.stick.hardening[0]):.0%} of their stiffness after they yield, as the stick's "
+                     f"{building.hardening:.0%} of their stiffness after they yield, as the stick's "
                      "do: where the building's own harden less, its columns are stiffer than this α says (on OpenSees "
                      "frames of α 10 whose storeys harden at 2%, the α found was 11.1 to 12.5, and 9.6 to 10.5 with their "
                      "2% written): give the model's in storey_hardening_ratio.")

@@ -146,6 +146,12 @@ class YieldingBuilding:
         first = float(periods[0])
         return float(1.0 - (self.periods_s[0] / first) ** 2) if np.isfinite(first) else float("inf")
 
+    @property
+    def hardening(self) -> float:
+        """The storeys' stiffness after yield over their stiffness before (one for every storey; a wall on its base
+        hinge: the assembly's, :attr:`~assess.building.wall_hinge.HingedWall.hardening`)."""
+        return float(np.ravel(self.stick.hardening)[0])
+
     def beyond_drift_limit(self, history: "StickHistory") -> np.ndarray:
         """Which storeys' peak drift passed :attr:`drift_limit` under one ground history (what the stick is
         trusted to): the one test behind ``floors.csv``'s ``motions_beyond_drift_limit`` and the items' flag."""
@@ -461,7 +467,7 @@ def storey_table(building: YieldingBuilding, histories: Sequence[StickHistory], 
     for k in sorted(int(f) for f in floors):
         row = {"response": "yielding", "yielding_model": building.yielding_model,
                "yield_base_shear_g": building.strength.yield_base_shear_g,
-               "storey_hardening_ratio": float(np.ravel(building.stick.hardening)[0]), "storey_yield_ratio": np.nan,
+               "storey_hardening_ratio": building.hardening, "storey_yield_ratio": np.nan,
                "drift_ratio_median": np.nan, "drift_ratio_min": np.nan, "drift_ratio_max": np.nan,
                "ductility_median": np.nan, "ductility_min": np.nan, "ductility_max": np.nan, "motions_yielded": yielded,
                "drift_limit": building.drift_limit, "motions_beyond_drift_limit": np.nan}

@@ -9,6 +9,7 @@ gives the equations of every route and says which this report took, from the res
 from __future__ import annotations
 
 from assess.assessment.result import AssessmentResult
+from assess.building.nonlinear import DEFAULT_HARDENING
 
 
 def floor_motion_route(result: AssessmentResult) -> dict:
@@ -16,7 +17,7 @@ def floor_motion_route(result: AssessmentResult) -> dict:
     site sheet gives the level), ``derived`` (``--derive-floors``: floors without one derived from the
     ground's), ``site`` (a site sheet's ground suite) and ``building`` (that suite through the building's
     modes to the upper floors), ``yielding`` (through its yielding stick instead) and its storeys' ``hardening``
-    (floors.csv's ``storey_hardening_ratio``; None without one); and ``ground``, how the site
+    (floors.csv's ``storey_hardening_ratio``; None without one) beside ``default_hardening``; and ``ground``, how the site
     made its ground suite (``records``, ``matched records`` or ``synthetic``, the result's ``ground_method``; ""
     without one)."""
     site = result.ground_motions is not None
@@ -24,6 +25,7 @@ def floor_motion_route(result: AssessmentResult) -> dict:
     yielding = building and "response" in result.floors  # floors.csv of a yielding building says so
     derived = any(flag.code == "derived_floor_motion" for flag in result.flags)
     hardening = float(result.floors["storey_hardening_ratio"].iloc[0]) if yielding else None
-    return {"site": site, "building": building, "yielding": bool(yielding), "hardening": hardening, "derived": derived,
+    return {"site": site, "building": building, "yielding": bool(yielding), "hardening": hardening,
+            "default_hardening": DEFAULT_HARDENING, "derived": derived,
             "given": not (site or building),
             "ground": str(getattr(result, "ground_method", "") or "") if site else ""}
