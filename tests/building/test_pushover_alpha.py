@@ -179,6 +179,12 @@ def test_it_is_read_where_given(make_workbook):
     ([("response", "elastic"), ("pushover_slope_ratio", 0.06)], "A7", "response is elastic"),
 ])
 def test_where_it_cannot_give_alpha_it_is_refused_at_its_cell(make_workbook, rows, cell, words):
+    assert_refused_at(make_workbook, rows, cell, words)
+
+
+def assert_refused_at(make_workbook, rows, cell, words):
+    """The 8-storey frame's sheet with ``rows`` added is refused with one problem, at the building sheet's
+    ``cell``, whose message has ``words``."""
     with pytest.raises(InputError) as error:
         read_workbook(make_workbook(_sheets(BASE + rows)))
     problems = error.value.problems

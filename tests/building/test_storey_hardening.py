@@ -19,7 +19,7 @@ from assess.building.yielding import yielding_building
 from assess.errors import InputError
 from assess.inventory import read_workbook
 from assess.inventory.site_building import BuildingSheet
-from tests.building.test_pushover_alpha import BASE, _sheets  # an 8-storey frame's sheet
+from tests.building.test_pushover_alpha import BASE, _sheets, assert_refused_at  # an 8-storey frame's sheet
 
 
 def _sheet(storeys=8, system="steel moment frame", **extra):
@@ -102,11 +102,7 @@ def test_it_is_read_where_given(make_workbook):
     ([("response", "elastic"), ("storey_hardening_ratio", 0.02)], "A7", "response is elastic"),
 ])
 def test_where_it_cannot_apply_it_is_refused_at_its_cell(make_workbook, rows, cell, words):
-    with pytest.raises(InputError) as error:
-        read_workbook(make_workbook(_sheets(BASE + rows)))
-    problems = error.value.problems
-    assert [(p.sheet, p.cell) for p in problems] == [("building", cell)], [(p.cell, p.message) for p in problems]
-    assert words in problems[0].message
+    assert_refused_at(make_workbook, rows, cell, words)
 
 
 def test_a_building_too_tall_to_yield_refuses_it(make_workbook):
