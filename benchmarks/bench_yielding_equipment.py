@@ -127,7 +127,10 @@ per item, the share of the items whose overturning verdict is the same (``overtu
 moderate or high from ``p_overturn`` and the default ``risk_overturn_moderate``/``risk_overturn_high``, the
 part of ``risk`` that overturning decides: the verdict a user reads, each item counted once, where the
 per-case share rests on the 5-20 cases where either overturns, many on the edge of overturning);
-risk class: the share of items whose class is the same. Then, per route over the buildings and levels, where
+risk class: the share of items whose class is the same (``class_agree``), the items whose class differs
+(``n_class_missed``) and of those, how many one motion's verdict on one failure mode, moved, would mend
+(``class_missed_one_motion``, ``peers.yielding_equipment.one_motion_away``: a class miss at the resolution of a
+suite of that many motions, where the truth's own class moves as far for one motion). Then, per route over the buildings and levels, where
 the overturn verdicts part (the tool alone overturns, on the safe side, or the truth alone) and the pooled
 agreement with its 90 % Clopper-Pearson interval. Then each floor's PFA/PGA (median over
 the motions) beside ASCE 7-22 §13.3.1's H_f/R_μ (R_μ = max(√(1.1 R/(I_e Ω_0)), 1.3), eq. 13.3-6): a
@@ -359,7 +362,9 @@ def main(argv=None):
                            "{:.2f}-{:.2f}".format(*group.loc[group["sigma_ln"].idxmax(), ["sigma_ln_low", "sigma_ln_high"]])),
                        "overturn agree min": round(group["overturn_agree"].min(), 2),
                        "overturn class agree min": round(group["overturn_class_agree"].min(), 2),
-                       "class agree min": round(group["class_agree"].min(), 2)})
+                       "class agree min": round(group["class_agree"].min(), 2),
+                       "class misses, one motion away": (f"{int(group['n_class_missed'].sum())}, "
+                                                         f"{int(group['class_missed_one_motion'].sum())}")})
     print(markdown(pd.DataFrame(pooled)))
     print()
     print(overturn_misses(table))

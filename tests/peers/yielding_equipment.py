@@ -9,6 +9,7 @@ yielding route's stick is swapped for the OpenSees building (:func:`opensees_flo
 """
 from __future__ import annotations
 
+import dataclasses
 import hashlib
 import os
 from contextlib import contextmanager
@@ -20,6 +21,7 @@ import pandas as pd
 from assess.assessment.pipeline import run_assessment
 from assess.building import ALPHA_RANGE_BY_SYSTEM
 from assess.building import yielding as yielding_module
+from assess.decision.risk_classes import Chances, classify_risk
 from assess.hazard.records import read_record
 from assess.inventory import read_workbook
 from assess.inventory.settings import Settings
@@ -338,6 +340,21 @@ def motion_bootstrap(ratio: pd.Series, level=0.90) -> dict:
             "sigma_ln_high": float(sigma_high)}
 
 
+def one_motion_away(tool_row, truth_class: str, settings: Settings) -> bool:
+    """Whether one motion's verdict on one failure mode, moved (its chance up or down by one motion's share of the
+    suite, ``suite_motions``), gives the tool's summary row ``tool_row`` the truth's risk class: a class miss at the
+    resolution of a suite of that many motions, where the truth's own class moves as far for one motion."""
+    step = 1.0 / float(tool_row["suite_motions"])
+    chances = Chances.of(tool_row)
+    for mode in ("overturn", "beyond_clearance", "rocking_harm"):
+        for sign in (-1.0, 1.0):
+            moved = min(max(getattr(chances, mode) + sign * step, 0.0), 1.0)
+            if classify_risk(dataclasses.replace(chances, **{mode: moved}), tool_row["consequence"],
+                             settings) == truth_class:
+                return True
+    return False
+
+
 def compare(tool, truth):
     """The route's numbers against the truth's (module text)."""
     (_, t), (_, r) = tool, truth
@@ -347,6 +364,9 @@ def compare(tool, truth):
     ratio = np.log(np.maximum(t.loc[slides, "sim_sliding_max_cm"], 0.1) / r.loc[slides, "sim_sliding_max_cm"])
     either = over_t | over_r
     classes = tool[0].summary.set_index("id")["risk"].align(truth[0].summary.set_index("id")["risk"], join="inner")
+    missed = classes[0].index[classes[0] != classes[1]]
+    tool_rows, settings = tool[0].summary.set_index("id"), Settings()
+    one_motion = [one_motion_away(tool_rows.loc[item], classes[1][item], settings) for item in missed]
     overturn_classes = [overturn_class(result[0].summary.set_index("id")["p_overturn"]) for result in (tool, truth)]
     overturn_classes = overturn_classes[0].align(overturn_classes[1], join="inner")
     pfa = {}
@@ -365,4 +385,5 @@ def compare(tool, truth):
             "overturn_agree": float((over_t[either] == over_r[either]).mean()) if either.any() else np.nan,
             "overturn_agree_all": float((over_t == over_r).mean()),
             "overturn_class_agree": float((overturn_classes[0] == overturn_classes[1]).mean()),
-            "class_agree": float((classes[0] == classes[1]).mean())}
+            "class_agree": float((classes[0] == classes[1]).mean()), "n_class_missed": len(missed),
+            "class_missed_one_motion": int(sum(one_motion))}
