@@ -82,6 +82,16 @@ at 0.275, 0.125 and 0.188 W; 0.36 for both walls). What is claimed, and checked:
   ``wall6``'s 0.50 at MCE_R with 1 (a wall's) is 0.38 with a shear building's 30 (test_yielding_alpha.py
   rebuilds the frames with α 5 and 20).
 
+``wall6``'s class misses come from what the truth is: a shear building whose storeys above the first all reach
+their yield (their ductility 0.7-1.9 at DE, median 1.0, and 12.6 in storey 2 under Kobe; the first storey's
+2.9-24), which caps its floors' acceleration, where the tool's wall, capacity-designed, stays elastic above its
+base hinge (assess/building/nonlinear.py) as the bending wall ``wallf6`` does. On Landers and Düzce at DE, with
+the building's own model, the tool's roof PFA is 1.92 and 2.02 g against ``wall6``'s 1.05 and 1.07 g (``wallf6``'s
+own 2.27 and 1.54 g, the tool's 3.09 and 1.89 g with its strength), and three roof items slide past their room
+under 2 to 6 of the 11 motions where the truth's do under 1 to 4; two of the three misses are one motion's verdict
+(``class_missed_one_motion``). With the storeys yielding in the tool as well (its wall as a stick of storey
+springs, tried, not kept) the class agrees no better: 0.50-0.92 over the routes at DE.
+
 The tool's shear wall is its elastic model on a base plastic hinge (assess/building/wall_hinge.py; its
 kernel checked against OpenSees with the same model in test_wall_hinge_opensees.py). Before it, the tool's
 wall was an equivalent shear stick of storey springs, and slid ``wallf6``'s equipment 1.42/1.45 times as far
@@ -277,7 +287,7 @@ def test_the_issue_targets_with_the_buildings_strength_and_alpha(measured, targe
 
 #: The targets with the building's own model not met at DE, with the measured numbers: strict xfails.
 OWN_MODEL_SHORT = {("class", "wall6"): "risk class 75 % (9 of 12 items), as on the other routes: a shear building's "
-                                        "truth against the tool's wall on its base hinge"}
+                                        "truth against the tool's wall on its base hinge (module text)"}
 
 
 @pytest.mark.parametrize("target, name", list(_marked(("sliding", "class"), OWN_MODEL_SHORT, MODELLED)))
