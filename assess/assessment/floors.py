@@ -317,13 +317,13 @@ def with_code_check(table: pd.DataFrame, building) -> pd.DataFrame:
 def site_note(site: SiteSuite, sheet: SiteSheet) -> str:
     """Where the level's ground motions come from, in a sentence for the report."""
     suite = site.suite
-    if site.design is not None:
+    if site.design is not None and site.spectrum is not None:
         # MCE_R's target is 1.5 times the design spectrum whose S_DS and S_D1 the sentence quotes (ASCE 7 §11.4.7)
         times = f"{MCE_R_OVER_DESIGN:g} times " if site.spectrum == "MCE_R" else ""
         where = (f"{times}the {sheet.code} design spectrum (S_DS {site.design.sds_g:.3g} g, S_D1 "
                  f"{site.design.sd1_g:.3g} g" + (f", site class {sheet.site_class}" if sheet.site_class else "") + ")")
-    else:
-        where = "the site's uniform-hazard spectrum"
+    else:  # a level named by a probability: the uhs file's spectrum, whatever design values the sheet also gives
+        where = "the site's uniform-hazard spectrum" + (f" ({Path(sheet.uhs_path).name})" if sheet.uhs_path else "")
     how = {"records": "records selected from the records folder and scaled to",
            "matched records": "records selected from the records folder and each matched to"}.get(
         suite.method, "spectrum-compatible synthetic ground motions matched to")

@@ -341,3 +341,30 @@ def test_the_note_on_the_ground_motions_says_mce_r_is_one_and_a_half_times_the_d
     assert float(DE.mce_r_g(1.0)) == pytest.approx(1.5 * float(DE.design_g(1.0)))
     assert "matched to the ASCE 7-16 design spectrum (S_DS 1 g, S_D1 0.6 g) at level DE" in notes["DE"]
     assert "matched to 1.5 times the ASCE 7-16 design spectrum (S_DS 1 g, S_D1 0.6 g) at level MCE_R" in notes["MCE_R"]
+
+
+def test_the_note_on_the_ground_motions_names_the_uniform_hazard_spectrum_a_probability_level_is_matched_to():
+    """A site sheet may give design values and a ``uhs`` file; a level named by a probability takes its target from
+    the file (assess.site.target.level_target), DE and MCE_R from the design values. The note said the design
+    spectrum and its S_DS for both (a new user's 10in50 read "matched to the ASCE 7-22 design spectrum (S_DS 1.2 g,
+    …) at level 10in50" over motions matched to the UHS's 1.0 g plateau). The suite is checked against the UHS
+    here: its mean is the UHS's, not the design spectrum's, where the two part."""
+    from assess.assessment.floors import SiteSuite, site_note
+    from assess.hazard.levels import parse_level
+    from assess.inventory.site_building import SiteSheet
+    from assess.site.target import asce7_level
+
+    uhs = _uhs_target()
+    sheet = SiteSheet(code="ASCE 7-22", sds_g=1.0, sd1_g=0.6, uhs_path="oq/hazard_uhs-mean_1.csv")
+    built = suite.synthetic_suite(uhs, [0.3, 0.9], level="2in50", suite_size=2)
+    period = 1.0
+    mean = float(np.exp(np.mean(np.log([pseudo_acceleration_spectrum(m.first.accel_g, m.first.dt_s, [period], 0.05)[0]
+                                         for m in built.motions]))))
+    assert abs(np.log(float(uhs(period)) / float(DE.design_g(period)))) > 0.2  # the two targets part at 1 s
+    assert mean == pytest.approx(float(uhs(period)), rel=0.1)
+    note = site_note(SiteSuite(built, DE, None, asce7_level(parse_level("2in50"))), sheet)
+    assert "matched to the site's uniform-hazard spectrum (hazard_uhs-mean_1.csv) at level 2in50" in note
+    assert "S_DS" not in note and "design spectrum" not in note
+    de_note = site_note(SiteSuite(suite.synthetic_suite(DE.design_g, [0.3, 0.9], level="DE", suite_size=2), DE,
+                                  None, asce7_level(parse_level("DE"))), sheet)
+    assert "matched to the ASCE 7-22 design spectrum (S_DS 1 g, S_D1 0.6 g) at level DE" in de_note
