@@ -116,8 +116,9 @@ def level_motions(inventory, level_text: str, progress: Progress, oq_hazard=None
     if oq_hazard is not None:
         require_probability(level, level_label, workbook_name, "--oq-hazard")
         pga_g = pga_at_level(oq_hazard, level)
+        through = modes is not None and bool(_floors_without_motions(motions, freestanding, modes.storeys))
         motions, _, note = scale_to_pga(motions, pga_g, workbook_name, Path(oq_hazard.path).name,
-                                        oq_hazard.source)
+                                        oq_hazard.source, through_building=through)
         notes.append(note)
         progress(note)
     if calibration is not None:  # input_scale: the motions (assess.calibration.apply)

@@ -83,15 +83,18 @@ def motions_by_item(equipment: pd.DataFrame, level_motions: pd.DataFrame, level_
 
 
 def scale_to_pga(level_motions: pd.DataFrame, pga_g: float, workbook_name: str,
-                 source: str, program: str = "OpenQuake") -> tuple[pd.DataFrame, float, str]:
+                 source: str, program: str = "OpenQuake",
+                 through_building: bool = False) -> tuple[pd.DataFrame, float, str]:
     """Scale every motion of a level so that its ground motions match a hazard PGA.
 
     The factor is PGA / (geometric mean of the PTA of the level's ground-floor
     motions, floor 0 or ``all``); it multiplies every motion of the level —
     PTA, vp and the record scale — so the suite keeps its spread and each
-    floor its amplification over the ground (a linear building). Tp is kept.
+    floor the workbook gives its amplification over the ground (a linear building). Tp is kept.
     ``source`` names the hazard file, ``program`` what wrote it (``OpenQuake``,
-    ``USGS nshmp-haz``), for the note.
+    ``USGS nshmp-haz``), for the note. ``through_building``: floors without motions of their own
+    take the scaled ground motions through the building sheet's model (which may yield, so their
+    motions are not the factor times anything), as the note then says.
 
     Returns ``(scaled motions, factor, a sentence for the report)``; raises
     :class:`~assess.errors.InputError` when the level has no ground motion.
@@ -101,6 +104,9 @@ def scale_to_pga(level_motions: pd.DataFrame, pga_g: float, workbook_name: str,
     >>> scaled, factor, _ = scale_to_pga(motions, 0.3, "lab.xlsx", "oq.csv")
     >>> round(factor, 6), scaled["pta_g"].round(6).tolist()
     (0.5, [0.2, 0.45, 0.6])
+    >>> _, _, note = scale_to_pga(motions[motions["floor"] == 0], 0.3, "lab.xlsx", "oq.csv", through_building=True)
+    >>> note.split("; ")[-1]
+    'the floors without motions of their own take the scaled ground motions through the building.'
     """
     ground = level_motions[level_motions["all_floors"] | (level_motions["floor"] == 0)]
     ground_pta = pd.to_numeric(ground["pta_g"], errors="coerce").dropna()
@@ -117,10 +123,15 @@ def scale_to_pga(level_motions: pd.DataFrame, pga_g: float, workbook_name: str,
         if column in scaled:
             scaled[column] = scaled[column] * factor
     raise_if_any(_records_past_plausible(scaled, factor, pga_g, workbook_name, source))
+    floors = []
+    if ((~level_motions["all_floors"]) & (level_motions["floor"] != 0)).any():
+        floors.append("the workbook's floor motions by the same factor")
+    if through_building:
+        floors.append("the floors without motions of their own take the scaled ground motions through the building")
     note = (f"Motions scaled by {factor:.3f} so that the geometric mean PTA of the level's "
             f"{len(ground_pta)} ground motion{'s' if len(ground_pta) != 1 else ''} "
             f"({reference_g:.3f} g in the workbook) equals the PGA {pga_g:.3f} g of the {program} "
-            f"hazard in {source} at this level; floor motions by the same factor.")
+            f"hazard in {source} at this level" + "".join(f"; {clause}" for clause in floors) + ".")
     return scaled, factor, note
 
 

@@ -241,6 +241,19 @@ def test_two_levels_give_one_annual_rate_per_item(two_levels):
     assert second.curve_risk is first.curve_risk
 
 
+def test_the_note_on_the_hazards_scaling_says_the_buildings_floors_take_the_scaled_ground_through_it(two_levels):
+    """``--oq-hazard`` scales the level's ground motions to the curve's PGA before the building passes them to its
+    floors; its note said "floor motions by the same factor", true of floors the workbook gives, not of a building's,
+    whose floors a yielding storey keeps from scaling with the ground (seen on the sample hospital at 2in50)."""
+    (first, second), _ = two_levels
+    for result in (first, second):
+        scaled = [note for note in result.hazard_notes if note.startswith("Motions scaled by")]
+        assert len(scaled) == 1, result.hazard_notes
+        assert scaled[0].endswith("; the floors without motions of their own take the scaled ground motions "
+                                  "through the building."), scaled[0]
+        assert "by the same factor" not in scaled[0]
+
+
 def test_each_stripes_pass_through_a_yielding_building_says_how_far_it_has_got(de_run):
     """Through the yielding stick each stripe's pass reports its ground histories (3 here) up to all of them,
     for each of the 10 stripes (and the stripes added inside steep rises); the elastic modes' pass is instant
