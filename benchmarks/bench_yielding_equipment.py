@@ -137,8 +137,9 @@ per-case share rests on the 5-20 cases where either overturns, many on the edge 
 risk class: the share of items whose class is the same (``class_agree``), the items whose class differs
 (``n_class_missed``) and of those, how many one motion's verdict on one failure mode, moved, would mend
 (``class_missed_one_motion``, ``peers.yielding_equipment.one_motion_away``: a class miss at the resolution of a
-suite of that many motions, where the truth's own class moves as far for one motion). Then, per route over the buildings and levels, where
-the overturn verdicts part (the tool alone overturns, on the safe side, or the truth alone) and the pooled
+suite of that many motions, where the truth's own class moves as far for one motion). Then, per route over the
+buildings and levels, where the overturn verdicts part (the tool alone overturns, on the safe side, or the truth
+alone) and the pooled
 agreement with its 90 % Clopper-Pearson interval. Then each floor's PFA/PGA (median over
 the motions) beside ASCE 7-22 §13.3.1's H_f/R_μ (R_μ = max(√(1.1 R/(I_e Ω_0)), 1.3), eq. 13.3-6): a
 sanity check, not a target; with the largest storey ductility over the storeys and the motions, and the
