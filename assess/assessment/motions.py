@@ -66,6 +66,11 @@ class LevelMotions:
     building: object | None = None
     #: How floors are labelled in motion names and notes (settings ``floor_numbering``).
     numbering: str = "ground_0"
+    #: A calibration's ``input_scale`` s (1: none), by which ``table``'s motions are already multiplied: the
+    #: building takes the ground motions at the level's own amplitude and its floors' histories are then
+    #: multiplied by s, so that every item's floor shakes s times what it would (a yielding building's floors do
+    #: not scale with its ground).
+    input_scale: float = 1.0
 
 
 @dataclass
@@ -113,18 +118,21 @@ def level_motions(inventory, level_text: str, progress: Progress, oq_hazard=None
     notes += measured
     for note in notes:
         progress(note)
+    # whether the building gives floors their motions (the notes on scaling say how those scale)
+    through = modes is not None and bool(_floors_without_motions(motions, freestanding, modes.storeys))
     if oq_hazard is not None:
         require_probability(level, level_label, workbook_name, "--oq-hazard")
         pga_g = pga_at_level(oq_hazard, level)
-        through = modes is not None and bool(_floors_without_motions(motions, freestanding, modes.storeys))
         motions, _, note = scale_to_pga(motions, pga_g, workbook_name, Path(oq_hazard.path).name,
                                         oq_hazard.source, through_building=through)
         notes.append(note)
         progress(note)
+    input_scale = 1.0
     if calibration is not None:  # input_scale: the motions (assess.calibration.apply)
-        motions, note = scaled_motions(motions, calibration)
+        motions, note = scaled_motions(motions, calibration, through_building=through)
         if note:
             notes.append(note)
+            input_scale = float(calibration.motion_scale)
     if modes is not None:
         missing = _floors_without_motions(motions, freestanding, modes.storeys)
         motions = motions.reset_index(drop=True).assign(motion_key=lambda m: np.arange(len(m)))
@@ -155,7 +163,7 @@ def level_motions(inventory, level_text: str, progress: Progress, oq_hazard=None
             progress(note)
     # one key per motion row: a motion named on several floors is a different motion on each
     motions = motions.reset_index(drop=True).assign(motion_key=lambda m: np.arange(len(m)))
-    return LevelMotions(level, level_label, motions, notes, records, site, building, numbering)
+    return LevelMotions(level, level_label, motions, notes, records, site, building, numbering, input_scale)
 
 
 def check_level(inventory, level_text: str) -> None:
@@ -275,10 +283,15 @@ def _through_building(motions: LevelMotions, histories: dict, kinds: dict, pairs
     derived = table[table["from_ground"] >= 0]
     grounds = sorted(int(key) for key in derived["from_ground"].unique())
     floors = sorted(int(f) for f in derived["floor"].unique())
-    # every ground history (and each pair's second) through the building in one pass, side by side
+    # every ground history (and each pair's second) through the building in one pass, side by side; a
+    # calibration's input_scale s multiplies the floors' histories, not the ground's before the building
+    s = motions.input_scale
     widths = [record for key in grounds for record, _ in histories[key]]
     depths = [pairs[key][1] for key in grounds if key in pairs]
-    through, beyond = through_building(modes, widths + depths, floors, progress=pass_progress(progress))
+    earthquake = [record.scaled(1.0 / s) for record in widths + depths] if s != 1.0 else widths + depths
+    through, beyond = through_building(modes, earthquake, floors, progress=pass_progress(progress))
+    if s != 1.0:
+        through = {floor: [record.scaled(s) for record in records] for floor, records in through.items()}
     counts = [len(histories[key]) for key in grounds]
     first = dict(zip(grounds, np.cumsum([0] + counts[:-1]).tolist()))  # where each ground's histories start
     depth_of = {key: len(widths) + j for j, key in enumerate(key for key in grounds if key in pairs)}
@@ -297,7 +310,7 @@ def _through_building(motions: LevelMotions, histories: dict, kinds: dict, pairs
         # a floor's motion is the building's filtered response, no pulse: the paper's regression (Tp, vp)
         # does not apply to it, and the engine under the history governs
         table.loc[index, ["pta_g", "tp_s", "vp_m_s", "pulse_source"]] = [width[0].pta_g, np.nan, np.nan, NO_PULSE]
-    ground = [histories[key][0][0] for key in grounds]
+    ground = [earthquake[first[key]] for key in grounds]  # what the building took (floors.csv: what it did)
     return site_and_building.floors_csv(modes, ground, floors, motions.level_label)
 
 

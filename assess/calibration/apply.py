@@ -119,15 +119,22 @@ def theta_over_declared(theta_max_over_alpha, blocks) -> np.ndarray:
                      for t, b in zip(np.asarray(theta_max_over_alpha, dtype=float), blocks)])
 
 
-def scaled_motions(level_motions: pd.DataFrame, calibration: Optional[AppliedCalibration]):
-    """The level's motions × s for ``input_scale`` (PTA, vp and records' scale), and a note; else unchanged."""
+def scaled_motions(level_motions: pd.DataFrame, calibration: Optional[AppliedCalibration],
+                   through_building: bool = False):
+    """The level's motions × s for ``input_scale`` (PTA, vp and records' scale), and a note; else unchanged.
+    ``through_building``: a building sheet gives floors their motions, which the building takes from the ground
+    motions at the level's own amplitude and are then multiplied by s
+    (:class:`assess.assessment.motions.LevelMotions`), as the note says."""
     if calibration is None or calibration.motion_scale == 1.0:
         return level_motions, None
     s = calibration.motion_scale
     scaled = level_motions.assign(pta_g=level_motions["pta_g"] * s, vp_m_s=level_motions["vp_m_s"] * s,
                                   scale=level_motions["scale"].astype(float) * s)
+    building = (f" (the building takes the ground motions as the workbook gives them and its floors' motions are "
+                f"multiplied by {s:.3g}: a yielding building's floors do not scale with its ground)"
+                if through_building else "")
     note = (f"Calibration {calibration.file}: the floor shook {s:.3g} times what the workbook says "
-            f"(input_scale), so every motion of the level is multiplied by {s:.3g}, for every item on it.")
+            f"(input_scale), so every motion of the level is multiplied by {s:.3g}, for every item on it{building}.")
     return scaled, note
 
 
