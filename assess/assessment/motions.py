@@ -118,23 +118,22 @@ def level_motions(inventory, level_text: str, progress: Progress, oq_hazard=None
     notes += measured
     for note in notes:
         progress(note)
-    # whether the building gives floors their motions (the notes on scaling say how those scale)
-    through = modes is not None and bool(_floors_without_motions(motions, freestanding, modes.storeys))
+    # the floors the building gives their motions (the notes on scaling say how those scale)
+    missing = _floors_without_motions(motions, freestanding, modes.storeys) if modes is not None else []
     if oq_hazard is not None:
         require_probability(level, level_label, workbook_name, "--oq-hazard")
         pga_g = pga_at_level(oq_hazard, level)
         motions, _, note = scale_to_pga(motions, pga_g, workbook_name, Path(oq_hazard.path).name,
-                                        oq_hazard.source, through_building=through)
+                                        oq_hazard.source, through_building=bool(missing))
         notes.append(note)
         progress(note)
     input_scale = 1.0
     if calibration is not None:  # input_scale: the motions (assess.calibration.apply)
-        motions, note = scaled_motions(motions, calibration, through_building=through)
+        motions, note = scaled_motions(motions, calibration, through_building=bool(missing))
         if note:
             notes.append(note)
             input_scale = float(calibration.motion_scale)
     if modes is not None:
-        missing = _floors_without_motions(motions, freestanding, modes.storeys)
         motions = motions.reset_index(drop=True).assign(motion_key=lambda m: np.arange(len(m)))
         motions = _with_building_rows(motions, missing, workbook_name, numbering)
         building_notes = []

@@ -363,10 +363,10 @@ def compare(tool, truth):
     slides = (r["sim_sliding_max_cm"] >= 1.0) & ~over_t & ~over_r
     ratio = np.log(np.maximum(t.loc[slides, "sim_sliding_max_cm"], 0.1) / r.loc[slides, "sim_sliding_max_cm"])
     either = over_t | over_r
-    classes = tool[0].summary.set_index("id")["risk"].align(truth[0].summary.set_index("id")["risk"], join="inner")
+    tool_rows = tool[0].summary.set_index("id")
+    classes = tool_rows["risk"].align(truth[0].summary.set_index("id")["risk"], join="inner")
     missed = classes[0].index[classes[0] != classes[1]]
-    tool_rows, settings = tool[0].summary.set_index("id"), Settings()
-    one_motion = [one_motion_away(tool_rows.loc[item], classes[1][item], settings) for item in missed]
+    one_motion = [one_motion_away(tool_rows.loc[item], classes[1][item], Settings()) for item in missed]
     overturn_classes = [overturn_class(result[0].summary.set_index("id")["p_overturn"]) for result in (tool, truth)]
     overturn_classes = overturn_classes[0].align(overturn_classes[1], join="inner")
     pfa = {}
