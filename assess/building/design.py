@@ -58,7 +58,9 @@ commentary §C12.1.1 [7]_). This Ω lies between the two.
 *What is taken.* A steel moment frame stands in a building with its gravity framing and slabs, so
 Elkady & Lignos' Ω_s with them, above 3.0 [8]_, is the one that applies, not the bare frames'; its least,
 3.0, as this Ω (the corner of a spring hardening 3 %, which carries 1.18 times its yield force at the
-ductility of about 7 the frames reach at the design earthquake) is 3.0/1.18 = 2.54, taken as **2.5**. No archetype Ω of
+ductility of about 7 the frames reach at the design earthquake) is 3.0/1.18 = 2.54, taken as **2.5**; storeys that
+harden at another b (the sheet's ``storey_hardening_ratio``) reach the same peak from 2.5 × 1.18/(1 + 6b)
+(:func:`assumed_overstrength`: 2.63 at 2 %, 2.27 at 5 %). No archetype Ω of
 concrete frames, braced frames or walls could be read, so no value is sourced for them: 2.0
 (:data:`DEFAULT_OVERSTRENGTH`), at the top of the first-yield range and at the low end the bare steel
 frames' Ω implies, a judgement stated as such in docs/workbook.md. A building whose gravity framing and
@@ -165,6 +167,38 @@ OVERSTRENGTH_BY_SYSTEM = {
 OVERSTRENGTH_SOURCE_BY_SYSTEM = {
     "steel moment frame": "Elkady & Lignos' (2015) for steel moment frames with their gravity framing and slabs",
 }
+#: The hardening at which :data:`OVERSTRENGTH_BY_SYSTEM`'s sourced values are this Ω's corner (the stick's default,
+#: :data:`assess.building.nonlinear.DEFAULT_HARDENING`), and the first-storey ductility at which the pushover's
+#: peak is taken to be carried (the module's text): a storey that hardens at another b carries the same peak from
+#: a corner of 1.18/(1 + 6b) times the value (:func:`assumed_overstrength`).
+REFERENCE_HARDENING = 0.03
+PEAK_DUCTILITY = 7.0
+
+
+def assumed_overstrength(system, hardening=None) -> float:
+    """The Ω taken where the engineer gives neither ``overstrength`` nor ``yield_base_shear_g`` [-].
+
+    The system's :data:`OVERSTRENGTH_BY_SYSTEM`. The steel moment frames' value is a pushover's peak (Elkady &
+    Lignos' Ω_s 3.0 [8]_) taken to the corner of a storey spring hardening at :data:`REFERENCE_HARDENING`, which
+    carries 1 + b (μ - 1) times its yield force at the ductility μ = :data:`PEAK_DUCTILITY`. Where the storeys
+    harden at another b (the sheet's ``storey_hardening_ratio``), the same peak lies at another corner:
+
+    .. math::  \\Omega(b) = \\Omega_{0.03}\\,\\frac{1 + 0.03\\,(\\mu - 1)}{1 + b\\,(\\mu - 1)}
+
+    The other systems' value is a judgement, not a peak taken to a corner, and does not move with b.
+
+    Examples
+    --------
+    >>> assumed_overstrength("steel moment frame"), round(assumed_overstrength("steel moment frame", 0.02), 4)
+    (2.5, 2.6339)
+    >>> assumed_overstrength("shear wall", 0.05)
+    2.0
+    """
+    value = OVERSTRENGTH_BY_SYSTEM[system]
+    if hardening is None or system not in OVERSTRENGTH_SOURCE_BY_SYSTEM:
+        return value
+    reference = 1.0 + REFERENCE_HARDENING * (PEAK_DUCTILITY - 1.0)
+    return value * reference / (1.0 + float(hardening) * (PEAK_DUCTILITY - 1.0))
 #: C_u of ASCE 7-22 Table 12.8-1 against S_D1 [g] (interpolated, constant beyond the ends).
 UPPER_LIMIT_TABLE = ((0.1, 1.7), (0.15, 1.6), (0.2, 1.5), (0.3, 1.4), (0.4, 1.4))
 
@@ -335,7 +369,7 @@ class DesignStrength:
 
 def design_strength(system, floor_weights, floor_heights_m, period_s, *, sds_g=None, sd1_g=None, tl_s=None,
                     s1_g=None, risk_category="II", overstrength=None, yield_base_shear_g=None,
-                    code="ASCE 7-22", spread=True) -> DesignStrength:
+                    code="ASCE 7-22", spread=True, hardening=None) -> DesignStrength:
     """Each storey's yield shear over the weight, from the ELF design or from a given yield base shear.
 
     Parameters
@@ -363,6 +397,9 @@ def design_strength(system, floor_weights, floor_heights_m, period_s, *, sds_g=N
     spread : bool
         Whether ``source`` says that a given yield base shear is spread over the storeys by §12.8.3 (not for a
         wall that yields at its base only, whose words say what its hinge carries).
+    hardening : float, optional
+        The storeys' post-yield stiffness ratio where the engineer gives it: an assumed Ω is taken to it
+        (:func:`assumed_overstrength`).
 
     Examples
     --------
@@ -389,7 +426,7 @@ def design_strength(system, floor_weights, floor_heights_m, period_s, *, sds_g=N
         raise ValueError("the design strength needs S_DS and S_D1 (or give yield_base_shear_g)")
     importance = importance_factor(risk_category)
     assumed = overstrength is None
-    overstrength = OVERSTRENGTH_BY_SYSTEM[system] if assumed else float(overstrength)
+    overstrength = assumed_overstrength(system, hardening) if assumed else float(overstrength)
     if not overstrength >= 1.0:
         raise ValueError("overstrength must be at least 1")
     approximate = float(approximate_period(heights[-1], system))
@@ -399,4 +436,14 @@ def design_strength(system, floor_weights, floor_heights_m, period_s, *, sds_g=N
     return DesignStrength(value, value * ratios, cs, r_factor, omega0, importance, overstrength, design_period,
                           f"{code} §12.8 design ({row}: R {r_factor:g}; I_e {importance:g}; "
                           f"C_s {cs:.3g} at T {design_period:.3g} s) times {'an assumed' if assumed else 'the given'} "
-                          f"overstrength {overstrength:g}", assumed)
+                          f"overstrength {f'{overstrength:.3g}' if assumed else f'{overstrength:g}'}"
+                          + (_taken_to(system, hardening) if assumed else ""), assumed)
+
+
+def _taken_to(system, hardening) -> str:
+    """The clause saying an assumed Ω was taken to the engineer's hardening (empty where it was not)."""
+    if hardening is None or system not in OVERSTRENGTH_SOURCE_BY_SYSTEM:
+        return ""
+    return (f" (the system's {OVERSTRENGTH_BY_SYSTEM[system]:g} is taken at storeys hardening at "
+            f"{REFERENCE_HARDENING:.0%}; at the given {float(hardening):.3g} the same pushover peak is reached from "
+            f"this corner)")

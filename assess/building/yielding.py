@@ -228,7 +228,7 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
     strength = design_strength(system, np.ones(modes.storeys), heights, period_s, sds_g=sds_g, sd1_g=sd1_g,
                                tl_s=tl_s, s1_g=s1_g, risk_category=risk_category, overstrength=overstrength,
                                yield_base_shear_g=yield_base_shear_g, code=code,
-                               spread=FLEXURE_BY_SYSTEM[system] != "base hinge")
+                               spread=FLEXURE_BY_SYSTEM[system] != "base hinge", hardening=hardening)
     arguments = dict(system=system, period_s=period_s, alpha=modes.alpha, storey_stiffness=modes.storey_stiffness,
                      damping=damping, p_delta=p_delta, hardening=hardening)
     stick = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, **arguments)

@@ -5,7 +5,8 @@ base shear against ASCE 7-22 §12.8's C_s worked by hand; each system's default,
 Elkady & Lignos' pushover peak Ω_s 3.0 taken to the corner of a spring hardening 3 % at ductility 7 (3.0/1.18,
 rounded to 2.5), the others 2 (no value for them could be sourced); the hardening that separates this Ω (the
 corner of a hardening spring) from FEMA P-695's (the peak of its pushover), from the spring's own law against
-the bilinear closed form; and the users' pages stating the code's defaults.
+the bilinear closed form; the same pushover peak at the hardening the engineer gives; and the users' pages stating
+the code's defaults.
 """
 from __future__ import annotations
 
@@ -15,7 +16,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from assess.building.design import DEFAULT_OVERSTRENGTH, OVERSTRENGTH_BY_SYSTEM, SYSTEM_FACTORS, design_strength
+from assess.building.design import (DEFAULT_OVERSTRENGTH, OVERSTRENGTH_BY_SYSTEM, SYSTEM_FACTORS, assumed_overstrength,
+                                    design_strength)
 from assess.building.hysteresis import spring_forces
 from assess.building.nonlinear import DEFAULT_HARDENING
 from tests.project.test_docs import section, table_rows
@@ -80,3 +82,46 @@ def test_the_users_pages_state_the_code_s_defaults():
     assert f"an assumed overstrength of {steel} for a steel moment frame and {default} for the other systems," in readme
     guide = " ".join((REPO / "docs" / "guide.md").read_text().split())
     assert f"times an overstrength of {steel} for steel moment frames and {default} for the others." in guide
+
+
+@pytest.mark.parametrize("hardening", [0.0, 0.01, 0.02, 0.05, 0.1])
+def test_a_steel_frame_s_assumed_overstrength_keeps_its_pushover_peak_at_the_hardening_the_engineer_gives(hardening):
+    """The steel frames' 2.5 is a pushover peak, 2.5 × 1.18 (Elkady & Lignos' 3.0 as rounded), carried at ductility 7
+    by a spring hardening 3 %. With the sheet's ``storey_hardening_ratio`` b the stick's first storey carries that
+    peak at ductility 7 from its own corner: the spring's law (not this module) pushed to μ 7 gives the same force
+    whatever b, and the yield base shear is that force over 1 + 6b."""
+    design = dict(sds_g=1.0, sd1_g=0.6)
+    strength = design_strength("steel moment frame", [1.0] * 4, [4.0, 8.0, 12.0, 16.0], 0.6, hardening=hardening,
+                               **design)
+    cs = strength.seismic_response_coefficient
+    assert cs == pytest.approx(0.125, rel=1e-12)
+    stiffness = 1000.0
+    yield_force = strength.yield_base_shear_g * stiffness   # a spring whose yield drift is the base shear at yield
+    peak = spring_forces(np.array([7.0 * strength.yield_base_shear_g]), "bilinear", stiffness, yield_force,
+                         hardening=hardening)[0] / stiffness
+    assert peak == pytest.approx(2.5 * 1.18 * cs, rel=1e-9)
+    assert strength.overstrength_assumed
+    assert f"at the given {hardening:.3g} the same pushover peak" in strength.source
+
+
+def test_the_assumed_overstrength_of_the_other_systems_and_a_given_one_do_not_move_with_the_hardening():
+    """Only the steel frames' value is a peak taken to a corner; the others' 2 is a judgement, and an engineer's
+    overstrength is theirs. The default hardening gives the documented 2.5 and no clause."""
+    heights = [4.0, 8.0, 12.0, 16.0]
+    for system in sorted(set(SYSTEM_FACTORS) - {"steel moment frame"}):
+        strength = design_strength(system, [1.0] * 4, heights, 0.6, sds_g=1.0, sd1_g=0.6, hardening=0.05)
+        assert strength.overstrength == DEFAULT_OVERSTRENGTH and "pushover peak" not in strength.source
+    given = design_strength("steel moment frame", [1.0] * 4, heights, 0.6, sds_g=1.0, sd1_g=0.6, hardening=0.05,
+                            overstrength=2.5)
+    assert given.overstrength == 2.5 and not given.overstrength_assumed
+    default = design_strength("steel moment frame", [1.0] * 4, heights, 0.6, sds_g=1.0, sd1_g=0.6)
+    assert default.overstrength == 2.5 and default.source.endswith("times an assumed overstrength 2.5")
+
+
+def test_the_users_page_gives_the_overstrength_at_the_hardening_the_code_takes():
+    rows = {row["key"].strip("`"): row for row in table_rows(section("workbook.md", "Sheet `building` (optional)"))
+            if "key" in row}
+    text = rows["overstrength"]["meaning"]
+    for hardening in (0.02, 0.05):
+        value = assumed_overstrength("steel moment frame", hardening)
+        assert f"{value:.3g} at {100 * hardening:g} %" in text
