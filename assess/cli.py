@@ -348,7 +348,8 @@ def _batch(args: argparse.Namespace, say) -> int:
 
     staged, runner, out_dir = batch.run_batch(batch.BatchJob(
         args.portfolio, out=args.out, hazard=args.hazard, oq_hazard=args.oq_hazard, scheduler=args.scheduler,
-        scheduler_tls=_tls(args), formats=args.format, seed=args.seed, jobs=args.jobs, allow_files_outside=args.allow_files_outside), say)
+        scheduler_tls=_tls(args), formats=args.format, seed=args.seed, jobs=args.jobs,
+        allow_files_outside=args.allow_files_outside), say)
     try:
         with held_back(out_dir):
             staged.commit()

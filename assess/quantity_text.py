@@ -214,7 +214,8 @@ def runs_text(numbers, noun: str, label=str) -> str:
     """Numbers after their noun (its plural with an "s" for two or more), each as ``label`` writes it, runs of
     three or more written as a range.
 
-    >>> runs_text([4], "storey"), runs_text(range(4, 41), "storey"), runs_text([0, 2, 3, 4, 7], "floor", lambda f: str(f + 1))
+    >>> runs_text([4], "storey"), runs_text(range(4, 41), "storey"), runs_text([0, 2, 3, 4, 7], "floor",
+    ...                                                                        lambda f: str(f + 1))
     ('storey 4', 'storeys 4 to 40', 'floors 1, 3 to 5 and 8')
     """
     ordered = sorted({int(n) for n in numbers})

@@ -193,7 +193,8 @@ def in_us_units(forces: AnchorageForces) -> dict:
         stem = name[:-2]
         out[f"{stem}_lbf"] = values[name] * lbf
         out[f"{stem}_kip"] = values[name] * kip
-    out["overturning_moment_lbf_ft"] = values["overturning_moment_nm"] * conversion_factor("newton * meter", "lbf * foot")
+    out["overturning_moment_lbf_ft"] = (values["overturning_moment_nm"]
+                                        * conversion_factor("newton * meter", "lbf * foot"))
     return out
 
 

@@ -91,7 +91,8 @@ def _moved(before, after, label, fmt) -> str | None:
     if b is not None or a is not None:
         if b is not None and a is not None and abs(a - b) <= max(0.005, 0.005 * abs(b)):
             return None
-        text = [("–" if v is None else fmt(v) if callable(fmt) else percent_text(v) if fmt == "{:.0%}" else fmt.format(v))
+        text = [("–" if v is None else fmt(v) if callable(fmt)
+                 else percent_text(v) if fmt == "{:.0%}" else fmt.format(v))
                 for v in (b, a)]
         return f"{label} {text[0]} -> {text[1]}"
     sb, sa = ("" if pd.isna(v) else str(v) for v in (before, after))

@@ -182,7 +182,8 @@ def building_model_of(building: BuildingSheet, site: SiteSheet | None, modes: Bu
         approximate = float(approximate_period(building.height_m, building.system))
         raise InputError([Problem(
             workbook_name, f"with p_delta the gravity loads make this building unstable or nearly so: its first "
-            f"mode's stability coefficient θ is {theta:.2g} (1 − (T1/T1 with P-Delta)², T1 {modes.periods_s[0]:.3g} s), "
+            f"mode's stability coefficient θ is {theta:.2g} (1 − (T1/T1 with P-Delta)², "
+            f"T1 {modes.periods_s[0]:.3g} s), "
             f"above the {STABILITY_COEFFICIENT_MAX:g} that ASCE 7-22 §12.8.7 allows a building; a building that "
             "flexible under its own weight would collapse in the model, not shake its floors.",
             f"check period_s (T1 {modes.periods_s[0]:.3g} s is {modes.periods_s[0] / approximate:.2g} times ASCE 7's "
@@ -348,7 +349,8 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
         hinged = building.yielding_model == BASE_HINGE
         springs = (f"its elastic model on a {building.stick.law} plastic hinge at the base" if hinged
                    else f"{building.stick.law} storey springs")
-        springs += (f" hardening at {100 * building.hardening:.3g}% of {'its' if hinged else 'their'} stiffness after yield ("
+        springs += (f" hardening at {100 * building.hardening:.3g}% of {'its' if hinged else 'their'} "
+                    "stiffness after yield ("
                     + ("by default" if sheet.storey_hardening_ratio is None
                        else sheet.hardening_source or "storey_hardening_ratio") + ")")
         text = (f"{which}: each ground motion through the building, modelled as yielding ({sheet.storeys} storeys, "
@@ -379,8 +381,8 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
             text += (f" The α found from the pushover rests on the storeys hardening at "
                      f"{building.hardening:.0%} of their stiffness after they yield, as the stick's "
                      "do: where the building's own harden less, its columns are stiffer than this α says (on OpenSees "
-                     "frames of α 10 whose storeys harden at 2%, the α found was 11.1 to 12.5, and 9.6 to 10.5 with their "
-                     "2% written): give the model's in storey_hardening_ratio.")
+                     "frames of α 10 whose storeys harden at 2%, the α found was 11.1 to 12.5, and 9.6 to 10.5 "
+                     "with their 2% written): give the model's in storey_hardening_ratio.")
         if sheet.storey_stiffness is None and not hinged and STRENGTH_BY_SYSTEM[sheet.system] == "stiffness":
             text += (" The storeys' stiffnesses, which set their strengths, are the system's default profile, not "
                      "this building's: give storey_stiffness from the building's model where known.")
@@ -428,8 +430,9 @@ def roof_note(freestanding: pd.DataFrame, building: BuildingSheet, numbering: st
 
     >>> from assess.inventory.site_building import BuildingSheet
     >>> items = pd.DataFrame({"id": ["P-1", "G-1"], "floor": [5, 0]})
-    >>> roof_note(items, BuildingSheet(storeys=5, height_m=20.0), "ground_1")
-    "Floor 6 is the building's roof (5 storeys above the ground floor; the workbook's floor 5): P-1 stands on it, under the roof's motion."
+    >>> roof_note(items, BuildingSheet(storeys=5, height_m=20.0), "ground_1")  # doctest: +NORMALIZE_WHITESPACE
+    "Floor 6 is the building's roof (5 storeys above the ground floor; the workbook's floor 5): P-1 stands on it, under
+    the roof's motion."
     """
     on_roof = freestanding.loc[freestanding["floor"] == building.storeys, "id"]
     if on_roof.empty:

@@ -346,7 +346,8 @@ def _measure_pulse_parameters(level_motions: pd.DataFrame, workbook_name: str,
     motions = level_motions.assign(pulse_source="workbook")
     notes = []
     for index, row in motions.iterrows():
-        if row.get("no_pulse") == True:  # noqa: E712 (NaN where the row has none)  a synthetic motion: stationary filtered noise, no pulse to fit
+        # a synthetic motion: stationary filtered noise, no pulse to fit
+        if row.get("no_pulse") == True:  # noqa: E712 (NaN where the row has none)
             motions.at[index, "pulse_source"] = NO_PULSE
             continue
         missing = [c for c in ("pta_g", "tp_s", "vp_m_s") if not np.isfinite(row[c])]

@@ -95,8 +95,8 @@ class AssessmentResult:
         engine (``sim_motion`` says what was simulated, ``sim_solver`` which
         solver answered); a motion simulated under ``sim_realizations``
         synthetic histories gives the medians of its runs and the share that
-        overturn (``sim_overturn_share``; ``sim_overturned`` if at least half); ``mode`` is the simulated mode, ``mode_from_rest``
-        the mode entered first by Shenton's criteria.
+        overturn (``sim_overturn_share``; ``sim_overturned`` if at least half); ``mode`` is the simulated mode,
+        ``mode_from_rest`` the mode entered first by Shenton's criteria.
     flags : list[Flag]
     regression : RegressionRecord
         ``zeta``, ``eta``, ``sigma``, ``im_min``, ``im_max`` as used, and ``source`` (the paper, or the
@@ -178,7 +178,8 @@ class AssessmentResult:
     floor_origins: dict = field(default_factory=dict)
 
     def work_orders(self) -> pd.DataFrame:
-        """The actions grouped by floor, room and action (work_orders.csv, :func:`assess.decision.actions.work_orders`)."""
+        """The actions grouped by floor, room and action (work_orders.csv,
+        :func:`assess.decision.actions.work_orders`)."""
         from assess.decision.actions import work_orders
         from assess.quantity_text import floor_numbering_of
         return work_orders(self.summary, floor_numbering_of(self.settings))

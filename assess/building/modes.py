@@ -158,7 +158,9 @@ def continuum_eigenvalues(alpha, n_modes):
 def continuum_period_ratios(alpha, n_modes):
     """Period ratios T_i/T_1 of the shear-flexural cantilever (Miranda & Taghavi 2005 [2]_).
 
-    .. math::  \\frac{T_i}{T_1} = \\frac{\\gamma_1}{\\gamma_i}\\sqrt{\\frac{\\gamma_1^2 + \\alpha^2}{\\gamma_i^2 + \\alpha^2}}
+    .. math::
+
+        \\frac{T_i}{T_1} = \\frac{\\gamma_1}{\\gamma_i}\\sqrt{\\frac{\\gamma_1^2 + \\alpha^2}{\\gamma_i^2 + \\alpha^2}}
 
     Examples
     --------

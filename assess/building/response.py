@@ -65,7 +65,8 @@ def _relative_accelerations(ground, coefficients, omega, zeta):  # pragma: no co
 
 @njit(cache=True)
 def _floor_sum(ground, relative, contributions):  # pragma: no cover - compiled
-    """ü_g(t) + Σ_j c[k, j] D̈_j(t) for every floor k (a plain loop: faster here than a BLAS call on a busy machine)."""
+    """ü_g(t) + Σ_j c[k, j] D̈_j(t) for every floor k (a plain loop: faster here than a BLAS call on a busy
+    machine)."""
     n_floors, n_modes = contributions.shape
     n = ground.size
     out = np.empty((n_floors, n))

@@ -63,7 +63,8 @@ from assess.hazard.records import Record
 
 from .design import DesignStrength, design_strength, importance_factor
 from .modes import BuildingModes
-from .nonlinear import FLEXURE_BY_SYSTEM, STRENGTH_BY_SYSTEM, YieldingStick, elastic_periods, yielding_response, yielding_stick
+from .nonlinear import (FLEXURE_BY_SYSTEM, STRENGTH_BY_SYSTEM, YieldingStick, elastic_periods, yielding_response,
+                        yielding_stick)
 from .response import floor_records
 from .wall_hinge import HingedWall, hinged_periods, hinged_wall_response
 
@@ -236,9 +237,9 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
     if isinstance(stick, HingedWall):  # only the base yields: the storeys above have no yield shear
         strength = replace(strength, storey_yield_ratio=np.concatenate([strength.storey_yield_ratio[:1],
                                                                         np.full(modes.storeys - 1, np.nan)]),
-                           source=f"{strength.source}; the wall yields in flexure at its base only, its plastic hinge "
-                                  f"carrying the moment of {code} §12.8.3's lateral forces at that base shear, and stays "
-                                  "elastic above")
+                           source=f"{strength.source}; the wall yields in flexure at its base only, its plastic "
+                                  f"hinge carrying the moment of {code} §12.8.3's lateral forces at that base shear, "
+                                  "and stays elastic above")
         return YieldingBuilding(modes, stick, strength, system, DRIFT_LIMIT_BY_SYSTEM[system], bool(p_delta),
                                 _stick_key(stick), importance)
     code = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, strength_profile="code",

@@ -118,7 +118,8 @@ def build_cases(inventory, measured: pd.DataFrame) -> list[Case]:
         if test.motion not in records:
             records[test.motion] = test_motion(inventory, test.motion)
         item = equipment.loc[test.specimen].to_dict()
-        observed = test.overturned is not None and not (isinstance(test.overturned, float) and np.isnan(test.overturned))
+        observed = test.overturned is not None and not (isinstance(test.overturned, float)
+                                                        and np.isnan(test.overturned))
         rocking = bool(np.isfinite(float(test.theta_max_over_alpha)) or observed)
         cases.append(Case(str(test.specimen), str(test.motion), int(test.direction), item,
                           half_width_of(item, test.direction), records[test.motion], rocking))

@@ -181,7 +181,8 @@ class Predicted:
                 object.__setattr__(self, name, np.array(default))
 
     @classmethod
-    def from_predictions(cls, predictions: Sequence[Prediction], bands: Sequence[Sequence[Prediction]] = ()) -> "Predicted":
+    def from_predictions(cls, predictions: Sequence[Prediction],
+                         bands: Sequence[Sequence[Prediction]] = ()) -> "Predicted":
         """The nominal ``predictions``; ``bands`` (one list per test: the predictions at every amplitude
         of its band, the nominal one included, or empty) make the ranges."""
         nominal = cls(np.array([p.sliding_max_m for p in predictions], float),

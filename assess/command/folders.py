@@ -109,8 +109,11 @@ def machine_refusal(error: BaseException, folder) -> InputError | None:
     Names the folder and says the previous output is left as it was (every
     writer here writes beside it and swaps it in only when complete).
 
-    >>> print(machine_refusal(OSError(errno.ENOSPC, "No space left on device"), "reports/lab").problems[0])
-    reports/lab: the output could not be written: the disk is full (no space left on the device). The previous output in this folder, if any, is left as it was. Fix: free space on that disk (or give --out a folder on another disk), then run again.
+    >>> print(machine_refusal(OSError(errno.ENOSPC, "No space left on device"),
+    ...                       "reports/lab").problems[0])  # doctest: +NORMALIZE_WHITESPACE
+    reports/lab: the output could not be written: the disk is full (no space left on the device). The previous output in
+    this folder, if any, is left as it was. Fix: free space on that disk (or give --out a folder on another disk), then
+    run again.
     """
     if not isinstance(error, OSError) or error.errno not in MACHINE_ERRORS:
         return None

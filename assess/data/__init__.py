@@ -25,11 +25,11 @@ def output_columns() -> pd.DataFrame:
     """Every column of the tables a run writes (``columns.csv``), one row each, in the order the files show them.
 
     Columns (all text): ``file`` (``summary.csv``, ``motions.csv``, ...), ``column`` (its name; ``<T>`` stands for
-    a number, as in ``sa_<T>s_g``, and ``<unit>`` for the report's force unit, ``kN`` or ``kip``), ``unit`` (SI, ``–`` for a pure number, ``text``, ```True`/`False```;
-    "(per report units)" where the column is converted when the file is written), ``dtype`` (``str``,
-    ``float64``, ``int64`` or ``bool``: the kind of its values, empty cells aside), ``stage`` (the stage whose
-    output it is: ``inventory``, ``demand``, ``decision``, ``anchorage``, ``costs``, ``curve``, ``report``
-    (the advice's words and kips, :mod:`assess.report.advice`), ...), ``when``
+    a number, as in ``sa_<T>s_g``, and ``<unit>`` for the report's force unit, ``kN`` or ``kip``), ``unit`` (SI, ``–``
+    for a pure number, ``text``, ```True`/`False```; "(per report units)" where the column is converted when the file is
+    written), ``dtype`` (``str``, ``float64``, ``int64`` or ``bool``: the kind of its values, empty cells aside),
+    ``stage`` (the stage whose output it is: ``inventory``, ``demand``, ``decision``, ``anchorage``, ``costs``,
+    ``curve``, ``report`` (the advice's words and kips, :mod:`assess.report.advice`), ...), ``when``
     (empty: always written; else when: ``us units``, ``hazard curve``, ``a site sheet``, ...) and ``meaning``
     (as ``docs/outputs.md`` gives it; tests/project/test_docs.py checks that page against this table).
     """

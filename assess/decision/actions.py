@@ -316,15 +316,16 @@ def work_orders(summary: pd.DataFrame, numbering: str = "ground_0") -> pd.DataFr
     ``items`` the ids and ``names`` their names (in id order), ``count`` the units (``quantity`` summed),
     ``detail`` and ``reference`` what a code prescribes (``action_detail``, ``action_reference``; empty where
     the analysis chose the action), ``connection_detail`` and ``connection_reference`` the flexible
-    connections of their gas or fluid lines (empty without), ``force_kn`` the largest design force F_p per unit among them (the
-    force the anchor, tether, strap, chain or restraint resists; ``anchor_force_kn``), ``total_cost`` Σ
+    connections of their gas or fluid lines (empty without), ``force_kn`` the largest design force F_p per unit among
+    them (the force the anchor, tether, strap, chain or restraint resists; ``anchor_force_kn``), ``total_cost`` Σ
     ``mitigation_cost`` × ``quantity`` (empty where an item has no cost) and ``unit_cost`` that over
     ``count``. Items that need no action and anchored items are left out unless their gas or fluid lines need
     flexible connections (their order's ``action`` is then ``none`` or ``anchored``: the connections are the
     work), and so is a row without a known action kind. Ordered by floor, room, then :data:`ACTION_KINDS`."""
     kinds = summary["action_kind"] if "action_kind" in summary else pd.Series("", index=summary.index)
     lines = (summary["connection_detail"] if "connection_detail" in summary
-             else pd.Series("", index=summary.index)).map(lambda value: bool(value) if isinstance(value, str) else False)
+             else pd.Series("", index=summary.index)).map(
+        lambda value: bool(value) if isinstance(value, str) else False)
     acts = summary[kinds.isin([k for k in ACTION_KINDS if k not in ("none", "anchored")])
                    | (kinds.isin(["none", "anchored"]) & lines)]  # their lines' flexible connections, at least
     if not len(acts):
@@ -341,8 +342,8 @@ def work_orders(summary: pd.DataFrame, numbering: str = "ground_0") -> pd.DataFr
                        _lines_reference=text("connection_reference"), _cost=cost,
                        _force=pd.to_numeric(column("anchor_force_kn", np.nan), errors="coerce"),
                        _name=text("name"))
-    grouped = acts.sort_values("id", kind="stable").groupby(["floor", "room", "_order", "action_kind", "_detail", "_lines"],
-                                                            sort=True)
+    grouped = acts.sort_values("id", kind="stable").groupby(
+        ["floor", "room", "_order", "action_kind", "_detail", "_lines"], sort=True)
     table = grouped.agg(items=("id", lambda ids: ", ".join(ids)),
                         names=("_name", lambda names: "; ".join(name for name in names if name)),
                         count=("quantity", "sum"), reference=("_reference", _joined),

@@ -254,8 +254,8 @@ def item_flags(item, item_cases: pd.DataFrame, constants: RegressionConstants,
             f"IM {ims_range(outside['im'])}"))
     if "derived" in item_cases and item_cases["derived"].any():
         flags.append(Flag(item.id, "derived_floor_motion", (
-            f"floor {floor_text(item.floor, numbering)} has no motion in the workbook: it was assessed under the ground motions "
-            f"amplified by ASCE 7-16 eq. 13.3-1 (--derive-floors), an envelope rule, not a floor "
+            f"floor {floor_text(item.floor, numbering)} has no motion in the workbook: it was assessed under the "
+            f"ground motions amplified by ASCE 7-16 eq. 13.3-1 (--derive-floors), an envelope rule, not a floor "
             f"response analysis.")))
     if "beyond_drift" in item_cases and item_cases["beyond_drift"].astype(bool).any():
         beyond = item_cases.loc[item_cases["beyond_drift"].astype(bool), "motion_key"].nunique()

@@ -152,7 +152,8 @@ def deciding_chance(chances: Chances, consequence: str, settings: Settings) -> s
 
     >>> s = Settings(risk_overturn_high=0.1, risk_overturn_moderate=0.025, risk_pf_high=0.5,
     ...              risk_pf_moderate=0.1, risk_rocking_moderate=0.1)
-    >>> deciding_chance(Chances(0.0, 0.69, 0.0), "critical", s), deciding_chance(Chances(0.0, 0.004, 0.0), "critical", s)
+    >>> deciding_chance(Chances(0.0, 0.69, 0.0), "critical", s), deciding_chance(Chances(0.0, 0.004, 0.0),
+    ...                                                                         "critical", s)
     ('69% chance of sliding past its room', '<1% chance of sliding past its room')
     """
     mode = deciding_mode(chances, consequence, settings)

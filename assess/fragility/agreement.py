@@ -90,8 +90,9 @@ def level_comparison_sentence(row, why: bool = True) -> str:
     >>> text = level_comparison_sentence({"id": "REF-6-01", "demand_source": ("regression",),
     ...     "p_beyond_clearance": 0.84, "p_overturn": 0.0, "p_beyond_clearance_fragility": 0.64,
     ...     "p_overturn_fragility": float("nan")})
-    >>> print(text.split(". ")[0])
-    REF-6-01, sliding past its room at this level: 84% from the level's answer, 64% from its fragility at the same accelerations
+    >>> print(text.split(". ")[0])  # doctest: +NORMALIZE_WHITESPACE
+    REF-6-01, sliding past its room at this level: 84% from the level's answer, 64% from its fragility at the same
+    accelerations
     >>> print(text.split(": ", 2)[2][:60])
     it takes the paper's regression, fitted on experiments, wher
     """

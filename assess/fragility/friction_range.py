@@ -183,9 +183,11 @@ def mu_dependence_sentence(item_id: str, mu_low: float, mu_high: float, risk: st
     """Whether the item's advice depends on where μ lies in its range, in one sentence from its numbers
     (``why_low``, ``why_high``: why it is in its class at each end, :func:`assess.decision.risk_classes.risk_reason`).
 
-    >>> mu_dependence_sentence("INC-G-01", 0.13, 0.23, "high", "high", "low", "60% chance of sliding past its room",
+    >>> mu_dependence_sentence("INC-G-01", 0.13, 0.23, "high", "high", "low",
+    ...                        "60% chance of sliding past its room",  # doctest: +NORMALIZE_WHITESPACE
     ...                        "0% chance of overturning, 0% of sliding past its room")
-    'Its risk class depends on where mu lies in 0.13-0.23: high at mu = 0.13 (60% chance of sliding past its room), low at mu = 0.23 (0% chance of overturning, 0% of sliding past its room); over the range, weighted, high.'
+    'Its risk class depends on where mu lies in 0.13-0.23: high at mu = 0.13 (60% chance of sliding past its room), low
+    at mu = 0.23 (0% chance of overturning, 0% of sliding past its room); over the range, weighted, high.'
     >>> mu_dependence_sentence("X", 0.2, 0.3, "low", "low", "low", "", "")
     'Its risk class is low wherever mu lies in 0.20-0.30.'
     """

@@ -147,7 +147,8 @@ def suite_runs(cases: pd.DataFrame, runs: pd.DataFrame, planar: pd.DataFrame | N
     table = table.assign(_severity=(table["mode"].map(MODE_SEVERITY) if "mode" in table else 0))
     table = table.assign(id=cases["id"].to_numpy()[case], motion_key=cases["motion_key"].to_numpy()[case],
                         motion=cases["motion"].to_numpy()[case], mu_node=cases["mu_node"].to_numpy()[case],
-                        mu=(cases["mu"].to_numpy()[case] if "mu" in cases else np.nan), mu_weight=cases["mu_weight"].to_numpy()[case])
+                        mu=(cases["mu"].to_numpy()[case] if "mu" in cases else np.nan),
+                        mu_weight=cases["mu_weight"].to_numpy()[case])
     keys = ["id", "motion_key", "mu_node", "realization"]
     out = table.groupby(keys, sort=False).agg(
         motion=("motion", "first"), sliding_cm=("sliding_max_cm", "max"), overturned=("overturned", "any"),
@@ -169,7 +170,8 @@ def _per_history(cases: pd.DataFrame, runs: pd.DataFrame, planar: pd.DataFrame |
 
 
 def _regression_by_motion(cases: pd.DataFrame, constants: RegressionConstants) -> dict:
-    """Per item and motion: the regression's median sliding [cm] (larger of the directions that slide) and P(> clearance)."""
+    """Per item and motion: the regression's median sliding [cm] (larger of the directions that slide) and
+    P(> clearance)."""
     slides = cases["mode"].isin(("slide", "slide-rock"))
     im = np.where(slides, cases["im"], 0.0)
     median_cm = np.asarray(sliding_quantile(im, cases["pta_g"], cases["tp_s"], constants, 0.5)) * CM_PER_M
@@ -270,7 +272,8 @@ def _item_demand(item_cases: pd.DataFrame, histories: pd.DataFrame | None, regre
     sampled_weights, sampled_beyond, sampled_overturn, sampled_harm = [], [], [], []
     if history_parts:
         per_history = pd.DataFrame({column: np.concatenate([part[column] for part in history_parts])
-                                    for column in history_parts[0]}).groupby(["motion_key", "realization"], sort=False).agg(
+                                    for column in history_parts[0]}).groupby(["motion_key", "realization"],
+                                                                             sort=False).agg(
             share=("share", "first"), mass=("mass", "sum"), beyond=("beyond", "sum"), overturn=("overturn", "sum"),
             harm=("harm", "sum"))
         sampled_weights = (per_history["share"] * per_history["mass"]).tolist()

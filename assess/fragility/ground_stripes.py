@@ -240,8 +240,11 @@ def beyond_drift_note(beyond: dict, drift_limit: float | None) -> str:
     (``beyond``: ``{pga_g: [flag per ground history]}`` as :func:`ground_stripe_runs` gathers it); empty where
     none did.
 
-    >>> beyond_drift_note({0.5: [False, False], 2.0: [True, False], 1.0: [False, True]}, 0.02)
-    "the yielding building's storey drift passed its limit (2 %) at the stripes of 1 and 2 g (under 1 of 2 ground histories at 2 g): its floors' motions there come from a model past what it is trusted to, and those stripes' outcomes still count in the fragilities and rates"
+    >>> beyond_drift_note({0.5: [False, False], 2.0: [True, False], 1.0: [False, True]},
+    ...                   0.02)  # doctest: +NORMALIZE_WHITESPACE
+    "the yielding building's storey drift passed its limit (2 %) at the stripes of 1 and 2 g (under 1 of 2 ground
+    histories at 2 g): its floors' motions there come from a model past what it is trusted to, and those stripes'
+    outcomes still count in the fragilities and rates"
     """
     passed = {pga: flags for pga, flags in sorted(beyond.items()) if any(flags)}
     if not passed or drift_limit is None:

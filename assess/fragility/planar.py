@@ -74,8 +74,9 @@ def planar_runs(cases: pd.DataFrame, pairs: dict[int, tuple[Record, Record]], ru
 def planar_note(motions: int, total: int) -> str:
     """The demand note's sentence for an item that slid in the plane under ``motions`` of its ``total``.
 
-    >>> planar_note(2, 3)
-    'Under 2 of its 3 motions (both horizontal components given) it cannot uplift and slides in the plane: its sliding there is the peak distance from rest under both components at once, not the larger of the one-way answers.'
+    >>> planar_note(2, 3)  # doctest: +NORMALIZE_WHITESPACE
+    'Under 2 of its 3 motions (both horizontal components given) it cannot uplift and slides in the plane: its sliding
+    there is the peak distance from rest under both components at once, not the larger of the one-way answers.'
     """
     which = f"all {total} motions" if motions == total and total > 1 else (
         "its one motion" if total == 1 else f"{motions} of its {total} motions")

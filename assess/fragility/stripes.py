@@ -211,8 +211,8 @@ def stripe_runs(cases: pd.DataFrame, motions: dict, plan, runner,
     A motion of ``record_pairs`` (``motion_key`` -> its components along the
     items' width and depth) runs direction 1 under the first and direction 2
     under the second, both scaled by one factor that brings the larger peak
-    to the stripe. ``runner`` runs them (:mod:`assess.mechanics.gateway`). Returns ``id``, ``direction``, ``pfa_g``, ``history`` (per
-    floor), ``sliding_max_cm``, ``overturned``.
+    to the stripe. ``runner`` runs them (:mod:`assess.mechanics.gateway`). Returns ``id``, ``direction``, ``pfa_g``,
+    ``history`` (per floor), ``sliding_max_cm``, ``overturned``.
     """
     record_pairs = record_pairs or {}
     batch = StripeBatch()
@@ -478,7 +478,8 @@ def item_rates(fit: FragilityFit, mode: str, hazard: OpenQuakeHazard, levels_g, 
     elif fit.status == "no_failures":
         top_g = float(np.max(stripes_g))
         high = rate_at(top_g) if math.isfinite(top_g) else math.nan
-        note = f"{mode}: never {words} in {fit.n_trials} simulations up to the top stripe; rate below about that stripe's"
+        note = (f"{mode}: never {words} in {fit.n_trials} simulations up to the top stripe; "
+                "rate below about that stripe's")
     elif fit.status == "all_failed":
         bottom_g = float(np.min(stripes_g))
         low = rate_at(bottom_g) if math.isfinite(bottom_g) else math.nan
@@ -520,7 +521,8 @@ def checked_curve(hazard: OpenQuakeHazard) -> tuple[np.ndarray, np.ndarray]:
 
 
 def curve_risk(cases: pd.DataFrame, motions: dict, level_motions: pd.DataFrame, hazard: OpenQuakeHazard,
-               settings: Settings, runner, progress=lambda message: None, record_pairs: dict | None = None) -> CurveRisk:
+               settings: Settings, runner, progress=lambda message: None,
+               record_pairs: dict | None = None) -> CurveRisk:
     """Fragility per item and failure mode over stripes, integrated over ``hazard`` (module docstring)."""
     levels_g, rates_per_yr = checked_curve(hazard)
     suite_pta_g = {int(f): group["pta_g"].to_numpy(dtype=float)
@@ -644,7 +646,8 @@ def export_items(curve: CurveRisk, summary: pd.DataFrame) -> list:
                     "integrates the outcomes themselves for the annual rate (its summary.csv, curve_note)."))
             states.append(state)
         items.append(ItemFragilities(component_id=pelicun_component_id(row.id),
-                                     description=f"{row.name} ({row.id}), floor {row.floor}", beyond_clearance=states[0],
+                                     description=f"{row.name} ({row.id}), floor {row.floor}",
+                                     beyond_clearance=states[0],
                                      overturn=states[1], floor=int(row.floor), quantity=int(row.quantity),
                                      comment=_level_comment(row._asdict(), level_comparison_sentence)))
     return items

@@ -310,7 +310,8 @@ def type_b_reading(gamma, nu):
     return float(np.interp(nu, extended, values[:, 0])), float(np.interp(nu, extended, values[:, 1]))
 
 
-if __name__ == "__main__":  # writes READING_TABLE_FILE again, for its γ (floats as Python writes them: read back exactly)
+# writes READING_TABLE_FILE again, for its γ (floats as Python writes them: read back exactly)
+if __name__ == "__main__":
     path = Path(__file__).resolve().parents[1] / "data" / READING_TABLE_FILE
     gamma = float(json.loads(path.read_text())["gamma"])
     phases, readings = type_b_reading_table(gamma)

@@ -192,8 +192,8 @@ def segment_failure_rate(level_lo_g, level_hi_g, anchor_level_g, anchor_rate, sl
     """∫ Φ(ln(a/θ)/β) |dλ| over one power-law segment of a hazard curve [1/yr].
 
     On the segment, :math:`\\lambda(a) = c\\,a^{-k}`, the power law through
-    (``anchor_level_g``, ``anchor_rate``): :math:`c = \\lambda_0 a_0^{k}`. With :math:`y = \\ln a`, :math:`m = \\ln\\theta`,
-    :math:`z = (y - m)/\\beta`, integration by parts and the Gaussian integral
+    (``anchor_level_g``, ``anchor_rate``): :math:`c = \\lambda_0 a_0^{k}`. With :math:`y = \\ln a`,
+    :math:`m = \\ln\\theta`, :math:`z = (y - m)/\\beta`, integration by parts and the Gaussian integral
     :math:`\\int e^{-ky}\\varphi(z)\\,dy/\\beta = e^{-km + k^2\\beta^2/2}\\Phi(z + k\\beta)` give
 
     .. math::

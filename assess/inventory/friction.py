@@ -1,8 +1,8 @@
 """A default range of the friction coefficient μ for an item whose row leaves ``mu`` empty.
 
 μ is the least certain input of a freestanding item (Konstantinidis & Makris 2010 [1] measured
-0.23–0.31 by slow pull on their three prototypes, laboratory equipment on its feet, and needed 0.13–0.20 to match the
-shake table). A row without ``mu`` therefore gets a *range*, never a single guessed value: the
+0.23–0.31 by slow pull on their three prototypes, laboratory equipment on its feet, and needed 0.13–0.20 to match
+the shake table). A row without ``mu`` therefore gets a *range*, never a single guessed value: the
 range the item's ``base`` on its ``floor_finish`` is known to take where the workbook says both (or
 the base alone), else :data:`WIDE_RANGE`. The range goes through the μ-range machinery as a
 workbook's ``mu_low`` / ``mu_high`` would (:mod:`assess.fragility.friction_range`: a triangular
@@ -93,8 +93,9 @@ def finish_kind(text: str) -> str | None:
 def default_range(base: str = "", finish: str = "", casters: bool = False) -> DefaultRange:
     """The default μ range of an item with no ``mu``, from its ``base`` and ``floor_finish`` (either may be "").
 
-    >>> default_range("steel feet", "vinyl/VCT")
-    DefaultRange(mu_low=0.13, mu_high=0.31, why='default for steel feet on vinyl/VCT (metal feet on a hard floor: Konstantinidis & Makris 2010 Table 3, laboratory equipment on its feet, best fit 0.13-0.20 to slow pull 0.23-0.31)')
+    >>> default_range("steel feet", "vinyl/VCT")  # doctest: +NORMALIZE_WHITESPACE
+    DefaultRange(mu_low=0.13, mu_high=0.31, why='default for steel feet on vinyl/VCT (metal feet on a hard floor:
+    Konstantinidis & Makris 2010 Table 3, laboratory equipment on its feet, best fit 0.13-0.20 to slow pull 0.23-0.31)')
     >>> default_range().mu_low, default_range().mu_high, default_range().mu
     (0.2, 0.6, 0.4)
     >>> default_range("casters", "epoxy").why

@@ -170,7 +170,8 @@ def default_contents(contents, component_type, kind_contents: str = "") -> str:
     table's, e.g. ``none`` for gas cylinders), else ``movable`` for shelving and cabinets
     (:data:`MOVABLE_CONTENTS_TYPES`) and ``none`` otherwise.
 
-    >>> default_contents("", "storage shelving"), default_contents(None, ""), default_contents("fixed", "storage shelving")
+    >>> default_contents("", "storage shelving"), default_contents(None, ""), default_contents("fixed",
+    ...                                                                                        "storage shelving")
     ('movable', 'none', 'fixed')
     >>> default_contents("", "storage shelving", "none")
     'none'

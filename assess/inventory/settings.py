@@ -18,7 +18,8 @@ from assess.data import default_settings
 #: The packaged defaults, read once (the fields' defaults below).
 _DEFAULTS = default_settings()
 #: The kinds of action a per-unit mitigation cost may be set for (``mitigation_cost_<kind>``).
-MITIGATION_KINDS = ("anchor", "tether", "strap", "chain", "lock_casters", "restrain", "room", "lower_contents", "relocate")
+MITIGATION_KINDS = ("anchor", "tether", "strap", "chain", "lock_casters", "restrain", "room", "lower_contents",
+                    "relocate")
 
 
 @dataclass(frozen=True)

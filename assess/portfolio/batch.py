@@ -307,8 +307,8 @@ def prepare_buildings(buildings: list[Building], *, level: str | None = None, oq
     with a site sheet and none, needs one of the other two). A workbook with a
     ``site`` sheet (and a ``building`` sheet) has its ground suite and floor
     motions made as ``assess WORKBOOK`` makes them (:mod:`assess.assessment.floors`);
-    a level its site sheet gives no target spectrum for is refused here. A building's curve is its row's ``oq_hazard``, else
-    ``oq_hazard`` (``--oq-hazard``: a path, read once for all). What the main command
+    a level its site sheet gives no target spectrum for is refused here. A building's curve is its row's ``oq_hazard``,
+    else ``oq_hazard`` (``--oq-hazard``: a path, read once for all). What the main command
     refuses in a hazard sheet is refused here too (:func:`assess.assessment.inputs.hazard_problems`:
     records outside the workbook's folder unless ``allow_records_outside``, a vp of 0). Every problem of
     every building is raised together.

@@ -253,8 +253,10 @@ def brief_action(action: str, type_source: str = "") -> str:
     column many lines deep), its kind read from the name said; any other action whole.
 
     >>> brief_action("Chain it (gas cylinders: required whatever the analysis says): each cylinder chained. "
-    ...              "Reference: NFPA 99 (2021) ch. 11. Its kind (gas cylinders) was read ...", "name")
-    'Chain it (gas cylinders: required whatever the analysis says): the detail and its reference are in the work orders and Appendix A; its kind was read from its name: confirm it.'
+    ...              "Reference: NFPA 99 (2021) ch. 11. Its kind (gas cylinders) was read ...",
+    ...              "name")  # doctest: +NORMALIZE_WHITESPACE
+    'Chain it (gas cylinders: required whatever the analysis says): the detail and its reference are in the work orders
+    and Appendix A; its kind was read from its name: confirm it.'
     >>> brief_action("Give it room: it needs 18 cm.")
     'Give it room: it needs 18 cm.'
     """
@@ -337,8 +339,9 @@ def risk_reason(chances: Chances, consequence: str, settings: Settings) -> str:
     ...              risk_pf_moderate=0.1, risk_rocking_moderate=0.1)
     >>> risk_reason(Chances(0.39, 0.0, 0.2), "hazardous", s)
     'high: 39% chance of overturning (high from 10%)'
-    >>> risk_reason(Chances(0.0, 0.03, 0.6), "ordinary", s)
-    'low: 0% chance of overturning, 3% of sliding past its room, each below its threshold (moderate from 2.5% and 10%); rocking that harms it (60%) does not count for an ordinary item'
+    >>> risk_reason(Chances(0.0, 0.03, 0.6), "ordinary", s)  # doctest: +NORMALIZE_WHITESPACE
+    'low: 0% chance of overturning, 3% of sliding past its room, each below its threshold (moderate from 2.5% and 10%);
+    rocking that harms it (60%) does not count for an ordinary item'
     """
     classes = mode_classes(chances, consequence, settings)
     risk = max(classes.values(), key=CLASS_ORDER.index)
@@ -366,8 +369,10 @@ def anchorage_sentence(row, system="si") -> str:
     :data:`COLUMNS`), forces in SI or US units (:mod:`assess.quantity_text`); "" without a force.
 
     >>> anchorage_sentence({"anchor_force_kn": 4.0, "anchor_moment_knm": 4.8, "anchor_tension_kn": 1.2,
-    ...                     "anchor_omega0": 2.0, "anchor_shear_omega_kn": 8.0, "anchor_tension_omega_kn": 5.2})
-    'design force F_p 4 kN per unit at its centre of mass; overturning moment 4.8 kN·m and uplift (tension) 1.2 kN on the far edge of its narrower base; anchors in concrete, with Omega_0 2: shear 8 kN, tension 5.2 kN'
+    ...                     "anchor_omega0": 2.0, "anchor_shear_omega_kn": 8.0,
+    ...                     "anchor_tension_omega_kn": 5.2})  # doctest: +NORMALIZE_WHITESPACE
+    'design force F_p 4 kN per unit at its centre of mass; overturning moment 4.8 kN·m and uplift (tension) 1.2 kN on
+    the far edge of its narrower base; anchors in concrete, with Omega_0 2: shear 8 kN, tension 5.2 kN'
     """
     force = row.get("anchor_force_kn")
     if force is None or not math.isfinite(float(force)):

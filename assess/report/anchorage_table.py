@@ -32,8 +32,8 @@ def anchorage_rows(result) -> pd.DataFrame:
     summary's order, forces in the units of its settings (kN or kip per unit of the item).
 
     Columns (``assess/data/columns.csv``, file ``summary.xlsx anchorage``): ``id``, ``name``, ``floor``,
-    ``action``, ``connections`` (its lines: ``gas, fluid``, ``none``), ``component type``, ``edition``, ``W_p``, ``z/h``,
-    ``H_f``, ``R_mu``, ``C_AR``, ``R_po`` (ASCE 7-22; ``a_p``, ``R_p`` under 7-16), ``I_p``, ``F_p``,
+    ``action``, ``connections`` (its lines: ``gas, fluid``, ``none``), ``component type``, ``edition``, ``W_p``,
+    ``z/h``, ``H_f``, ``R_mu``, ``C_AR``, ``R_po`` (ASCE 7-22; ``a_p``, ``R_p`` under 7-16), ``I_p``, ``F_p``,
     ``F_p/W_p``, ``governs`` (eq. 13.3-1, or its minimum or maximum), ``V`` (the shear at the base, F_p),
     ``T`` (the tension of the anchor line on the far edge of its narrower base, 0.9D − 1.0E), ``Omega_0``,
     ``V with Omega_0``, ``T with Omega_0``, ``table row`` and ``confirmed`` (whether the coefficients were

@@ -102,8 +102,8 @@ def building_context(result) -> dict | None:
             "hf": f"{row['hf_asce7_22']:.2f}",
             "hf_over_rmu": f"{row['hf_over_rmu_asce7_22']:.2f}",
         })
-    shear = f"a base shear of {float(table['yield_base_shear_g'].iloc[0]):.3f} times its weight (the notes at the top say where " \
-            "that comes from)"
+    shear = f"a base shear of {float(table['yield_base_shear_g'].iloc[0]):.3f} times its weight (the notes at the " \
+            "top say where that comes from)"
     what_yields, yielded_what, measures = (
         (f"a wall that yields in bending at its base only, at {shear}, and stays elastic above", "yielded it",
          "Each storey's peak drift (over its height) is the median over the motions, with their range; the "

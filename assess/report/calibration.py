@@ -38,7 +38,8 @@ def residual_figure(result) -> str:
             ax.axhline(0.0, color="black", linewidth=0.7)
             ax.scatter(x, before["sliding_log_ratio"], s=14, facecolors="none", edgecolors="#c0392b",
                        linewidths=0.8, label="declared model")
-            ax.scatter(x, after["sliding_log_ratio"], s=10, color="#1f4e79", label=figures.plain_text(f"with {result.selected}"))
+            ax.scatter(x, after["sliding_log_ratio"], s=10, color="#1f4e79",
+                       label=figures.plain_text(f"with {result.selected}"))
             if log and np.all(x[np.isfinite(x)] > 0):
                 ax.set_xscale("log")
                 figures.plain_log_ticks(ax.xaxis)

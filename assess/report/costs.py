@@ -169,14 +169,17 @@ def lead_sentence(summary: pd.DataFrame, settings: Settings, has_curve: bool) ->
 
     >>> table = pd.DataFrame({"quantity": [1, 2], "expected_loss": [100.0, 50.0], "expected_loss_after": [0.0, 50.0],
     ...                       "mitigation_cost": [40.0, float("nan")], "benefit_cost_ratio": [float("nan")] * 2,
-    ...                       "expected_annual_loss": [float("nan")] * 2, "expected_annual_loss_after": [float("nan")] * 2,
+    ...                       "expected_annual_loss": [float("nan")] * 2,
+    ...                       "expected_annual_loss_after": [float("nan")] * 2,
     ...                       "value": [1000.0, 500.0], "action_kind": ["anchor", "none"]})
     >>> lead_sentence(table, Settings(currency="USD"), False)  # doctest: +NORMALIZE_WHITESPACE
     'If this earthquake happens, the 3 freestanding units with a value are expected to lose USD 200 (USD 100 after the
     recommended actions, which cost USD 40 where a cost is given). No benefit-cost ratio: this level is one
     earthquake, not how often it happens; give a hazard curve (--oq-hazard: an OpenQuake or USGS curve) for one.'
-    >>> lead_sentence(table.assign(mitigation_cost=float("nan")), Settings(currency="USD"), False)[:201]
-    'If this earthquake happens, the 3 freestanding units with a value are expected to lose USD 200 (USD 100 after the recommended actions, whose costs the workbook does not give: the column mitigation_cost'
+    >>> lead_sentence(table.assign(mitigation_cost=float("nan")), Settings(currency="USD"),
+    ...               False)[:201]  # doctest: +NORMALIZE_WHITESPACE
+    'If this earthquake happens, the 3 freestanding units with a value are expected to lose USD 200 (USD 100 after the
+    recommended actions, whose costs the workbook does not give: the column mitigation_cost'
     """
     currency = settings.currency
     valued = pd.to_numeric(summary["expected_loss"], errors="coerce").notna()  # a value, and analysed

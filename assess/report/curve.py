@@ -116,10 +116,12 @@ def _at_least(free: pd.DataFrame, mode: str) -> pd.Series:
 def lead_sentence(notable: dict, n_items: int) -> str:
     """Page 1's sentence on the whole curve, from the items named in ``notable`` (mode -> ids).
 
-    >>> lead_sentence({"beyond_clearance": ["A", "B"], "overturn": []}, 9)
-    'Over 50 years (the whole hazard curve, not only this level): 2 of the 9 freestanding items have a 10% chance or more of sliding past their room (A, B); none has one of overturning.'
-    >>> lead_sentence({"beyond_clearance": [], "overturn": ["C"]}, 9)
-    'Over 50 years (the whole hazard curve, not only this level): none of the 9 freestanding items has a 10% chance or more of sliding past its room; 1 has one of overturning (C).'
+    >>> lead_sentence({"beyond_clearance": ["A", "B"], "overturn": []}, 9)  # doctest: +NORMALIZE_WHITESPACE
+    'Over 50 years (the whole hazard curve, not only this level): 2 of the 9 freestanding items have a 10% chance or
+    more of sliding past their room (A, B); none has one of overturning.'
+    >>> lead_sentence({"beyond_clearance": [], "overturn": ["C"]}, 9)  # doctest: +NORMALIZE_WHITESPACE
+    'Over 50 years (the whole hazard curve, not only this level): none of the 9 freestanding items has a 10% chance or
+    more of sliding past its room; 1 has one of overturning (C).'
     """
     chance = f"a {NOTABLE_P50YR:.0%} chance or more"
     parts = []

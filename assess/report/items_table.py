@@ -62,10 +62,12 @@ def demand_from(summary: pd.DataFrame, numbering: str = "ground_0") -> dict:
     >>> demand_from(one)
     {'sentence': 'Where it comes from, for every item: records (7 motions).', 'column': None}
     >>> by_floor = one.assign(demand_source=[("records",), ("records through the building",), ()])
-    >>> demand_from(by_floor)["sentence"]
-    'Where it comes from, by floor: records (7 motions) on floor 1; records through the building (7 motions) on floor 2.'
-    >>> demand_from(one.assign(floor=[2, 2, 2], suite_motions=[7, 5, None]))
-    {'sentence': 'Where it comes from, for every item: records; “Demand from” gives its motions and histories.', 'column': 'suite'}
+    >>> demand_from(by_floor)["sentence"]  # doctest: +NORMALIZE_WHITESPACE
+    'Where it comes from, by floor: records (7 motions) on floor 1; records through the building (7 motions)
+    on floor 2.'
+    >>> demand_from(one.assign(floor=[2, 2, 2], suite_motions=[7, 5, None]))  # doctest: +NORMALIZE_WHITESPACE
+    {'sentence': 'Where it comes from, for every item: records; “Demand from” gives its motions and histories.',
+    'column': 'suite'}
     >>> demand_from(one.assign(floor=[2, 2, 2], demand_source=[("records",), ("regression",), ()]))["column"]
     'full'
     """
@@ -104,8 +106,8 @@ def _reasons(note) -> list[str]:
 
 def regression_words(summary: pd.DataFrame, im_range: tuple) -> dict:
     """Why the paper's regression does not apply, in short words: ``reasons`` per item (in the summary's
-    order; a reason that every item it does not apply to shares, where there are two or more, left out) and ``note``, the sentence of the
-    column's note that explains the words and says the shared reasons once.
+    order; a reason that every item it does not apply to shares, where there are two or more, left out) and ``note``,
+    the sentence of the column's note that explains the words and says the shared reasons once.
 
     >>> table = pd.DataFrame({"risk": ["high", "low", "anchored"], "regression_note": [
     ...     "not applicable: pulse share 0.02 < 0.38 (no clear pulse), IM 9 outside 1.71-6.4, the item uplifts",
@@ -113,8 +115,10 @@ def regression_words(summary: pd.DataFrame, im_range: tuple) -> dict:
     >>> words = regression_words(table, (1.71, 6.4))
     >>> words["reasons"]
     ['IM, uplift', '', '']
-    >>> words["note"]
-    Markup('“n/a” where it does not: for every freestanding item here its governing motion has no clear pulse, none carrying at least 38 % of PTA; <i>IM</i>: its IM is outside the range the regression was fitted on, 1.71–6.4; <i>uplift</i>: it uplifts.')
+    >>> words["note"]  # doctest: +NORMALIZE_WHITESPACE
+    Markup('“n/a” where it does not: for every freestanding item here its governing motion has no clear pulse, none
+    carrying at least 38 % of PTA; <i>IM</i>: its IM is outside the range the regression was fitted on, 1.71–6.4;
+    <i>uplift</i>: it uplifts.')
     """
     free = _analysed(summary)
     reasons = [_reasons(note) for note in summary.get("regression_note", pd.Series([""] * len(summary)))]
@@ -165,10 +169,12 @@ def action_note(actions: list[dict]) -> str:
     work orders and Appendix A (where one is, :data:`SHORT_ACTIONS`), and the tags they carry ("" where
     neither).
 
-    >>> action_note([{"tags": "code", "short": False}, {"tags": "", "short": False}])
-    Markup('Action, under it: <i>code</i>: a code requires the action whatever the analysis says; its detail and reference are in the work orders and Appendix A.')
-    >>> action_note([{"tags": "", "short": True}])
-    Markup('Action: what to do, with the room the item needs where sliding decided it; why, with its numbers, is in the work orders and Appendix A.')
+    >>> action_note([{"tags": "code", "short": False}, {"tags": "", "short": False}])  # doctest: +NORMALIZE_WHITESPACE
+    Markup('Action, under it: <i>code</i>: a code requires the action whatever the analysis says; its detail and
+    reference are in the work orders and Appendix A.')
+    >>> action_note([{"tags": "", "short": True}])  # doctest: +NORMALIZE_WHITESPACE
+    Markup('Action: what to do, with the room the item needs where sliding decided it; why, with its numbers, is in the
+    work orders and Appendix A.')
     """
     used = {tag for action in actions for tag in action["tags"].split(", ") if tag}
     said = [_term(tag, meaning) for tag, meaning in ACTION_TAGS.items() if tag in used]

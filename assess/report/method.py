@@ -17,8 +17,8 @@ def floor_motion_route(result: AssessmentResult) -> dict:
     site sheet gives the level), ``derived`` (``--derive-floors``: floors without one derived from the
     ground's), ``site`` (a site sheet's ground suite) and ``building`` (that suite through the building's
     modes to the upper floors), ``yielding`` (through its yielding stick instead) and its storeys' ``hardening``
-    (floors.csv's ``storey_hardening_ratio``; None without one) beside ``default_hardening``; and ``ground``, how the site
-    made its ground suite (``records``, ``matched records`` or ``synthetic``, the result's ``ground_method``; ""
+    (floors.csv's ``storey_hardening_ratio``; None without one) beside ``default_hardening``; and ``ground``, how the
+    site made its ground suite (``records``, ``matched records`` or ``synthetic``, the result's ``ground_method``; ""
     without one)."""
     site = result.ground_motions is not None
     building = result.floors is not None

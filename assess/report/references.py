@@ -1,9 +1,9 @@
 """The sources the report's text cites, in one list (the report's *References*).
 
 Every author, standard and method the report, its flags and its notes name is
-here, and nothing that none of them names (as plain text: the report links to nothing outside itself): tests/report/test_report_references.py reads
-the templates and every message of the package for citations and checks both
-directions. Each entry is as the module that implements it cites it (its
+here, and nothing that none of them names (as plain text: the report links to nothing outside itself):
+tests/report/test_report_references.py reads the templates and every message of the package for citations and checks
+both directions. Each entry is as the module that implements it cites it (its
 docstring's References); the DOI where the source has one.
 """
 from __future__ import annotations

@@ -34,7 +34,8 @@ from assess.report.costs import costs_context
 from assess.report.curve import curve_context
 from assess.report.items_table import action_note, demand_from, regression_words, table_action
 from assess.report.method import floor_motion_route
-from assess.report.pdf import RefusedURLError, data_only_url_fetcher, decode_data_uri, render_pdf, report_pdf  # noqa: F401
+from assess.report.pdf import (  # noqa: F401
+    RefusedURLError, data_only_url_fetcher, decode_data_uri, render_pdf, report_pdf)
 from assess.report.references import reference_rows
 from assess.report.sentences import (
     DASH, action_groups, after_text, case_outcomes, changes, class_rule_paragraph, cm_interval_text, finite,
@@ -119,7 +120,8 @@ ORDER_SENTENCE = {
 
 
 def _ordering(summary: pd.DataFrame) -> str:
-    """How :func:`_sorted_summary` orders ``summary``'s items: ``priority`` where the pipeline gave one, else ``risk``."""
+    """How :func:`_sorted_summary` orders ``summary``'s items: ``priority`` where the pipeline gave one, else
+    ``risk``."""
     return "priority" if "priority" in summary else "risk"
 
 

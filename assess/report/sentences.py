@@ -152,8 +152,9 @@ def rest_sentence(rows: list[dict], counts: dict) -> str:
     page 1's "No action" counts.
 
     >>> rest_sentence([{"id": "R", "risk": "low", "action_reference": "NFPA 99"}, {"id": "F", "risk": "low"}],
-    ...               {"low": 2, "anchored": 0})
-    '1 item at low risk and 0 anchored items need no action from this assessment; 1 more at low risk, R, is to be restrained as the codes require (page 1 and the work orders).'
+    ...               {"low": 2, "anchored": 0})  # doctest: +NORMALIZE_WHITESPACE
+    '1 item at low risk and 0 anchored items need no action from this assessment; 1 more at low risk, R, is to be
+    restrained as the codes require (page 1 and the work orders).'
     """
     coded = [r["id"] for r in rows if r.get("risk") == "low" and r.get("action_reference")]
     free = counts.get("low", 0) - len(coded)
@@ -318,9 +319,12 @@ def default_mu_text(summary: pd.DataFrame) -> str:
     paragraph; "" when every freestanding item has its own μ.
 
     >>> rows = pd.DataFrame({"id": ["A", "B", "C"], "mu_source": ["workbook", "default, no base given (0.2-0.6)",
-    ...                      "default, no base given (0.2-0.6)"], "mu_low": [None, 0.2, 0.2], "mu_high": [None, 0.6, 0.6]})
-    >>> default_mu_text(rows)
-    'No μ in the workbook for 2 items: each was assessed over a range of μ instead (a triangular distribution with its mode, the μ shown, at the middle; the risk at either end is in the table). B, C: 0.2–0.6, default, no base given (0.2-0.6). Measured values for the item on its floor narrow it (mu in the equipment sheet).'
+    ...                      "default, no base given (0.2-0.6)"], "mu_low": [None, 0.2, 0.2],
+    ...                      "mu_high": [None, 0.6, 0.6]})
+    >>> default_mu_text(rows)  # doctest: +NORMALIZE_WHITESPACE
+    'No μ in the workbook for 2 items: each was assessed over a range of μ instead (a triangular distribution with its
+    mode, the μ shown, at the middle; the risk at either end is in the table). B, C: 0.2–0.6, default, no base given
+    (0.2-0.6). Measured values for the item on its floor narrow it (mu in the equipment sheet).'
     """
     if "mu_source" not in summary:
         return ""

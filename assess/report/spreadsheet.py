@@ -149,7 +149,8 @@ def deterministic_bytes(workbook, creator: str, date: datetime.datetime = FIXED_
             data = zin.read(info.filename)
             if info.filename == "docProps/core.xml":
                 data = tostring(workbook.properties.to_tree())
-            zout.writestr(zipfile.ZipInfo(info.filename, date.timetuple()[:6]), data, compress_type=zipfile.ZIP_DEFLATED)
+            zout.writestr(zipfile.ZipInfo(info.filename, date.timetuple()[:6]), data,
+                          compress_type=zipfile.ZIP_DEFLATED)
     return out.getvalue()
 
 

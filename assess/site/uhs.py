@@ -55,7 +55,8 @@ _IMT = r"(?:PGA|SA\((?P<period>" + _NUMBER + r")\))"
 _UHS_COLUMN = re.compile(rf"^(?P<poe>{_NUMBER})[~-](?P<imt>PGA|SA\((?P<period>{_NUMBER})\))$")
 _MAP_COLUMN = re.compile(rf"^(?P<imt>PGA|SA\((?P<period>{_NUMBER})\))-(?P<poe>{_NUMBER})$")
 _CURVE_COLUMN = re.compile(rf"^poe-(?P<iml>{_NUMBER})$")
-_CURVE_NAME = re.compile(r"^hazard_curve-(?P<kind>[^-_]+(?:-[\d.]+)?)[-_](?P<imt>PGA|SA\([\d.]+\))(?P<tail>_\d+)?\.csv$")
+_CURVE_NAME = re.compile(r"^hazard_curve-(?P<kind>[^-_]+(?:-[\d.]+)?)[-_]"
+                         r"(?P<imt>PGA|SA\([\d.]+\))(?P<tail>_\d+)?\.csv$")
 _LOCATION_COLUMNS = ("custom_site_id", "lon", "lat", "depth")
 #: Largest share by which the file's values may fall along increasing poe before it is refused
 #: (7 significant digits are written).
@@ -352,7 +353,8 @@ def _from_curves(path, level, site) -> UniformHazardSpectrum:
             raise _fail(file, "a hazard curve needs two or more poe-<level> columns.", line=header_line)
         sites, values = _sites_and_values(file, header, rows, [i for i, _ in columns])
         index = _choose_site(file, sites, site)
-        if chosen is not None and (abs(sites[index].lon - chosen.lon) > 1e-6 or abs(sites[index].lat - chosen.lat) > 1e-6):
+        if chosen is not None and (abs(sites[index].lon - chosen.lon) > 1e-6
+                                   or abs(sites[index].lat - chosen.lat) > 1e-6):
             raise _fail(file, "the chosen site is not at the same place in every curve file of the export.",
                         line=sites[index].line)
         chosen = sites[index]
