@@ -444,6 +444,6 @@ def _taken_to(system, hardening) -> str:
     """The clause saying an assumed Ω was taken to the engineer's hardening (empty where it was not)."""
     if hardening is None or system not in OVERSTRENGTH_SOURCE_BY_SYSTEM:
         return ""
-    return (f" (the system's {OVERSTRENGTH_BY_SYSTEM[system]:g} is taken at storeys hardening at "
-            f"{REFERENCE_HARDENING:.0%}; at the given {float(hardening):.3g} the same pushover peak is reached from "
-            f"this corner)")
+    return (f" (the system's {OVERSTRENGTH_BY_SYSTEM[system]:g} holds for storeys hardening at "
+            f"{REFERENCE_HARDENING:.0%} of their stiffness after yield, taken to the given "
+            f"{100 * float(hardening):.3g}% so that the pushover's peak stays the same)")

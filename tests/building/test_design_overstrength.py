@@ -101,7 +101,9 @@ def test_a_steel_frame_s_assumed_overstrength_keeps_its_pushover_peak_at_the_har
                          hardening=hardening)[0] / stiffness
     assert peak == pytest.approx(2.5 * 1.18 * cs, rel=1e-9)
     assert strength.overstrength_assumed
-    assert f"at the given {hardening:.3g} the same pushover peak" in strength.source
+    assert strength.source.endswith(f"overstrength {strength.overstrength:.3g} (the system's 2.5 holds for storeys "
+                                    f"hardening at 3% of their stiffness after yield, taken to the given "
+                                    f"{100 * hardening:.3g}% so that the pushover's peak stays the same)")
 
 
 def test_the_assumed_overstrength_of_the_other_systems_and_a_given_one_do_not_move_with_the_hardening():
