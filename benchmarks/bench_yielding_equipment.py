@@ -52,7 +52,8 @@ a ``building`` sheet of the building's storeys, height, system and T_1): only th
   level), on the risk class of 0.83 of the items at worst, σ ln ≤ 0.16; 10 % off, on 0.69 (90 % interval
   0.60-0.77) and 0.80 of those cases (0.46 at worst), the risk class on 0.75 at worst, σ ln ≤ 0.27, sliding
   gm 0.77-0.93 and 1.10-1.17 (with ``rcf5`` as well, 10 % off: 0.67 and 0.82 pooled). The per-case overturn
-  share and the risk class per building and level are as coarse as that: a perfect model of a building whose strength is known within 10 % scores no better on
+  share and the risk class per building and level are as coarse as that: a perfect model of a building whose
+  strength is known within 10 % scores no better on
   them than ``given`` does (0.67 pooled, 0.75 at worst); σ ln and gm resolve far finer.
 * ``truth, floors x f`` (``--truth-floors``, e.g. ``0.995,1.005``): the OpenSees floor histories themselves times f,
   against the truth: no building model at all, only the items' input f off. With 11 motions at DE and MCE_R on the
@@ -135,7 +136,8 @@ Columns, each route against the truth over the (item, motion, direction) cases: 
 mid-height floor and the roof (median over the motions), sliding: geometric mean and σ of
 ln(tool/truth) over the cases where the truth slides 1 cm or more and neither overturns (tool floored at
 0.1 cm), each with its 90 % interval over the motions (``gm_low``..``sigma_ln_high``: the motions resampled,
-``peers.yielding_equipment.motion_bootstrap``); overturn verdicts, two ways: per case, the share of the (item, motion, direction) cases where
+``peers.yielding_equipment.motion_bootstrap``); overturn verdicts, two ways: per case, the share of the (item,
+motion, direction) cases where
 either overturns on which both agree (``overturn_agree``; and over all cases, ``overturn_agree_all``), and
 per item, the share of the items whose overturning verdict is the same (``overturn_class_agree``: low,
 moderate or high from ``p_overturn`` and the default ``risk_overturn_moderate``/``risk_overturn_high``, the
@@ -245,7 +247,8 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--levels", default="DE")
     parser.add_argument("--buildings", default=",".join(BUILDINGS),
-                        help=f"comma-separated, of {', '.join({**BUILDINGS, **BRACED, **TALL})} (peers.opensees_buildings; "
+                        help=f"comma-separated, of {', '.join({**BUILDINGS, **BRACED, **TALL})} "
+                             "(peers.opensees_buildings; "
                              "bf6, the braced frame, and smf12, the 12-storey frame, are checked on their own)")
     parser.add_argument("--motions", type=int, default=11)
     parser.add_argument("--skip", default="",
@@ -377,7 +380,8 @@ def main(argv=None):
         pooled.append({"route": route, "gm (range over buildings)": f"{group['gm'].min():.2f}-{group['gm'].max():.2f}",
                        "sigma_ln max": round(group["sigma_ln"].max(), 2),
                        "sigma_ln max, its 90 % interval over the motions": (
-                           "{:.2f}-{:.2f}".format(*group.loc[group["sigma_ln"].idxmax(), ["sigma_ln_low", "sigma_ln_high"]])),
+                           "{:.2f}-{:.2f}".format(*group.loc[group["sigma_ln"].idxmax(),
+                                                             ["sigma_ln_low", "sigma_ln_high"]])),
                        "overturn agree min": round(group["overturn_agree"].min(), 2),
                        "overturn class agree min": round(group["overturn_class_agree"].min(), 2),
                        "class agree min": round(group["class_agree"].min(), 2),
