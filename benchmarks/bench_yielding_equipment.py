@@ -172,7 +172,7 @@ sys.path[:0] = [str(REPO / "tests")]
 from assess.anchorage.equations import height_factor  # noqa: E402
 from assess.building import ALPHA_RANGE_BY_SYSTEM  # noqa: E402
 from assess.fragility.suite import binomial_interval  # noqa: E402
-from peers.opensees_buildings import BRACED, BUILDINGS, TALL  # noqa: E402
+from peers.opensees_buildings import BRACED, BUCKLING, BUILDINGS, TALL  # noqa: E402
 from peers.yielding_equipment import (LEVELS, OWN_HARDENING, PUSHOVER_ROUTE, SYSTEM_R, assess,  # noqa: E402
                                       bracket_held, compare, given_pushover, given_pushover_model, given_routes,
                                       given_strength,
@@ -247,9 +247,10 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--levels", default="DE")
     parser.add_argument("--buildings", default=",".join(BUILDINGS),
-                        help=f"comma-separated, of {', '.join({**BUILDINGS, **BRACED, **TALL})} "
+                        help=f"comma-separated, of {', '.join({**BUILDINGS, **BRACED, **BUCKLING, **TALL})} "
                              "(peers.opensees_buildings; "
-                             "bf6, the braced frame, and smf12, the 12-storey frame, are checked on their own)")
+                             "bf6, the braced frame, bf6b, the same with braces that buckle, and smf12, the 12-storey "
+                             "frame, are checked on their own)")
     parser.add_argument("--motions", type=int, default=11)
     parser.add_argument("--skip", default="",
                         help="records of peers.yielding_equipment.RECORDS to leave out (comma-separated), e.g. one "
@@ -289,7 +290,7 @@ def main(argv=None):
     rows, ratios = [], []
     start = time.perf_counter()
     for name in args.buildings.split(","):
-        truth = {**BUILDINGS, **BRACED, **TALL}[name]
+        truth = {**BUILDINGS, **BRACED, **BUCKLING, **TALL}[name]
         for level in args.levels.split(","):
             skip = tuple(filter(None, args.skip.split(",")))
             suite = ground_suite(args.motions, truth.period_s, LEVELS[level], skip)

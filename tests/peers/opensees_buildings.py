@@ -75,6 +75,20 @@ Beside these five, a sixth system checked on its own (:data:`BRACED`, tests/veri
   braces (A 8.7e-3 m², 6.0 m long, cos θ 0.75) and W14×82 columns (A 1.55e-2 m²), GA = 2 E A cos²θ h/L_br =
   1.29e9 N and EI = E · 2 A_c (L/2)² = 1.25e11 N m², α = H √(GA/EI) = 24 · 0.102 = **2.4** (heavier columns,
   W14×132, give 1.9; the tool takes 4 for braced frames where no α is given).
+* ``bf6b`` (:data:`BUCKLING`): ``bf6`` whose braces buckle. An SCBF dissipates "primarily through brace buckling and
+  yielding of the brace in tension" (AISC 341-16 §F2.1 as ideCAD's help page on §F2 paraphrases it,
+  help.idecad.com/ideCAD/f2-special-concentrically-braced-frames-scbf). Each storey is its two braces, one pulled
+  and one pushed (:func:`peers.opensees_yielding.buckling_brace_pair`: two mirrored ``Hysteretic`` braces in
+  ``Parallel``), on ``bf6``'s stiffnesses and strengths: a brace's compression strength half its tension yield
+  (AISC 360-16 eq. E3-2, F_cr = 0.658^(F_y/F_e) F_y, at KL/r 90 and F_y 345 MPa: F_e = π² 200,000/90² = 244 MPa,
+  F_cr = 0.658^1.42 F_y = 0.55 F_y), so the pushed brace buckles at the storey's yield drift F_y/k_0 with the
+  storey at F_y, and the pulled one yields at twice that; after buckling the brace keeps 0.3 of its compression
+  strength (AISC 341-16 §F2.3's post-buckling strength for the analysis of SCBF, as recalled: not read here),
+  reached at five times its buckling drift; loops pinched (pinchX 0.4, pinchY 0.2, a judgement: a buckled brace
+  carries little until pulled straight), no cyclic damage. Pushed one way the storey carries F_y at F_y/k_0,
+  1.41 F_y at twice that, then less as the pushed brace weakens: past their yield drift the truth's storeys gain
+  strength until the pulled brace yields and then lose it, where ``bf6``'s harden at 2 %; neither the tool's
+  bilinear springs nor ``bf6`` do this.
 
 And a taller one checked on its own (:data:`TALL`), where the higher modes carry more of the floors' motion:
 
@@ -136,6 +150,7 @@ References
 """
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -158,7 +173,7 @@ class TruthBuilding:
     exponent_k: float    # ASCE 7-22 §12.8.3's k at T_1
     stiffness_profile: tuple
     overstrength_profile: tuple
-    law: str             # "steel01" or "hysteretic"
+    law: str             # "steel01", "hysteretic" or "buckling" (peers.opensees_yielding.buckling_brace_pair)
     column_alpha: float = np.inf  # α = H √(GA/EI) of the continuous elastic column (∞: none)
     hardening: float = 0.02
     pinch_x: float = 0.7
@@ -248,6 +263,9 @@ BRACED = {
                          (1.6, 1.67, 1.59, 1.9, 1.65, 3.02), "steel01", 2.4),
 }
 
+#: The braced frame with braces that buckle, checked on its own beside ``bf6`` (module text).
+BUCKLING = {"bf6b": dataclasses.replace(BRACED["bf6"], name="bf6b", law="buckling")}
+
 #: The taller frame, checked on its own (module text).
 TALL = {
     "smf12": TruthBuilding("smf12", "steel moment frame", 12, 4.0, 2.0, 0.044, 1.75,
@@ -267,7 +285,8 @@ def _build(ops, building: TruthBuilding):
                          building.bending_rigidity_n_m2() if np.isfinite(building.column_alpha) else None)
     for i in range(1, n + 1):
         storey_spring(ops, i, FLOOR_MASS_KG, float(k0[i - 1]), float(fy[i - 1]), building.hardening,
-                      building.law == "steel01", (building.pinch_x, building.pinch_y, building.beta), column)
+                      building.law == "steel01", (building.pinch_x, building.pinch_y, building.beta), column,
+                      buckling=building.law == "buckling")
     return column, k0, fy
 
 

@@ -40,10 +40,49 @@ def shear_chain(ops, storeys, storey_height_m, bending_rigidity_n_m2=None):
     return column
 
 
-def storey_spring(ops, i, mass_kg, k0, fy, hardening, bilinear, pinch=(0.0, 0.0, 0.0), column=False):
-    """Floor i's mass and the spring of storey i: ``Steel01`` (bilinear) or ``Hysteretic`` with a bilinear
-    backbone to 100 yield drifts and ``pinch`` = (pinchX, pinchY, β)."""
+#: A buckling brace (:func:`buckling_brace_pair`): its compression strength over its tension yield, the share of it
+#: left after buckling, the brace's deformation at which that share is reached over its buckling deformation, and
+#: the Hysteretic pinching (pinchX, pinchY) of a buckled brace pulled straight again.
+BRACE_BUCKLING_RATIO = 0.5
+BRACE_POST_BUCKLING_RATIO = 0.3
+BRACE_POST_BUCKLING_DEFORMATION_RATIO = 5.0
+BRACE_PINCH = (0.4, 0.2)
+
+
+def buckling_brace_pair(ops, tag, k0, fy, hardening):
+    """A storey's two braces, one pulled while the other is pushed, as the material ``tag`` (``Parallel`` of two
+    mirrored ``Hysteretic`` braces, ``tag + 1`` and ``tag + 2``): each brace of stiffness k0/2 yields in tension at
+    F_y (its drift 2 F_y/k0) and hardens at ``hardening`` of its stiffness; it buckles in compression at
+    :data:`BRACE_BUCKLING_RATIO` F_y (drift F_y/k0, where the storey's force is F_y: the storey's first
+    nonlinearity at the storey's yield drift and strength), its strength then falling to
+    :data:`BRACE_POST_BUCKLING_RATIO` of that at :data:`BRACE_POST_BUCKLING_DEFORMATION_RATIO` times its buckling
+    drift and staying there; pinched loops (:data:`BRACE_PINCH`), no cyclic damage. The storey's backbone, pushed one
+    way: F_y at F_y/k0, 1.41 F_y at 2 F_y/k0 (the pulled brace yielding, the pushed one at 0.41 F_y), then falling
+    as the pushed brace loses its strength."""
+    kb, dy = k0 / 2.0, fy / k0
+    tension = [(fy, 2.0 * dy), (None, 51.0 * dy), (None, 100.0 * dy)]
+    tension = [(f if f is not None else fy + hardening * kb * (d - 2.0 * dy), d) for f, d in tension]
+    buckling = BRACE_BUCKLING_RATIO * fy
+    after = BRACE_POST_BUCKLING_RATIO * buckling
+    compression = [(buckling, dy), (after, BRACE_POST_BUCKLING_DEFORMATION_RATIO * dy), (after, 100.0 * dy)]
+    pinch_x, pinch_y = BRACE_PINCH
+    pulled = [v for f, d in tension for v in (f, d)] + [-v for f, d in compression for v in (f, d)]
+    pushed = [v for f, d in compression for v in (f, d)] + [-v for f, d in tension for v in (f, d)]
+    ops.uniaxialMaterial("Hysteretic", tag + 1, *pulled, pinch_x, pinch_y, 0.0, 0.0, 0.0)
+    ops.uniaxialMaterial("Hysteretic", tag + 2, *pushed, pinch_x, pinch_y, 0.0, 0.0, 0.0)
+    ops.uniaxialMaterial("Parallel", tag, tag + 1, tag + 2)
+
+
+def storey_spring(ops, i, mass_kg, k0, fy, hardening, bilinear, pinch=(0.0, 0.0, 0.0), column=False,
+                  buckling=False):
+    """Floor i's mass and the spring of storey i: ``Steel01`` (bilinear), ``Hysteretic`` with a bilinear
+    backbone to 100 yield drifts and ``pinch`` = (pinchX, pinchY, β), or (``buckling``) a pair of buckling braces
+    (:func:`buckling_brace_pair`)."""
     ops.mass(i, *([mass_kg] + ([0.0, 0.0] if column else [])))
+    if buckling:
+        buckling_brace_pair(ops, 100 * i, k0, fy, hardening)
+        ops.element("zeroLength", i, 1000 + i if column else i - 1, i, "-mat", 100 * i, "-dir", 1, "-doRayleigh", 1)
+        return
     if bilinear:
         ops.uniaxialMaterial("Steel01", i, fy, k0, hardening)
     else:

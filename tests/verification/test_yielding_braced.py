@@ -40,7 +40,7 @@ on the moment frames. Neither model has the braces' buckling (the truth's spring
 bilinear). An exploratory truth with pinched loops in their place (OpenSees ``Hysteretic``, pinch 0.7/0.3, β 0.3;
 not in the repository) gave, DE / MCE_R: gm 1.10 / 0.95 with the strength, 0.97 / 0.93 with α 2.4, and a risk
 class with α of 0.92 / 0.75: the bilinear springs the tool gives braced frames hold for sliding there too, less
-so for the class.
+so for the class. test_yielding_buckling.py has a truth whose braces buckle and lose strength (``bf6b``).
 
 Skipped, with the reason, where openseespy or pyslammer is not importable.
 """
