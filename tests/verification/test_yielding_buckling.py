@@ -27,8 +27,15 @@ storeys, once the pulled brace yields, carry up to 1.41 F_y where ``bf6``'s carr
 the frame yields little (storey ductility 2-3) with its bay, bending as a truss (α 2.4), carrying a large share of
 the storeys' shear elastically. The tool's
 bilinear springs meet the sliding and class targets on it with the strength given, as on ``bf6`` (1.23 / 1.06,
-0.35 / 0.25, 0.75 / 0.83). A taller or weaker braced frame, yielding more, would lean on the buckling more; that is
-not measured here.
+0.35 / 0.25, 0.75 / 0.83).
+
+A frame that yields more leans on the buckling more. With every storey 0.6 times as strong (first yield 0.263 W
+where ``bf6b``'s is 0.439), the strength alone gives gm 0.94 / 0.78, σ ln 0.41 / 0.41, class 0.83 / 0.75: at
+MCE_R the truth's storeys, gaining strength until the pulled brace yields, shake the floors harder than bilinear
+springs that harden at 3 % past first yield (on ``bf6`` as weak, without buckling, 0.98 / 0.85, 0.40 / 0.37, class
+1.0 / 0.92). The pushover's slope at 2 % roof drift, which the buckling frame's pushover shows rising, brings the
+sliding back (0.98 / 0.90, σ ln 0.26 / 0.24) but not the class at MCE_R (0.75: 3 misses, 1 of them one motion
+away). A braced-frame law with the braces' buckling in the tool is not built.
 
 Skipped, with the reason, where openseespy or pyslammer is not importable.
 """
@@ -119,3 +126,39 @@ def test_with_the_given_strength_the_bilinear_springs_meet_the_sliding_and_class
 def test_from_the_design_data_within_a_factor_of_one_and_a_half_and_nearer_than_the_elastic_route(buckled, level):
     gm, elastic = buckled[level]["design"]["gm"], buckled[level]["elastic"]["gm"]
     assert 1 / 1.5 <= gm <= 1.5 and abs(np.log(gm)) < abs(np.log(elastic)), (gm, elastic)
+
+
+#: The weaker braced frame (module text): every storey's strength times this.
+WEAKER = 0.6
+
+
+@pytest.fixture(scope="module")
+def weaker(tmp_path_factory):
+    """compare()'s numbers at MCE_R against ``bf6b`` with every storey :data:`WEAKER` times as strong: the strength
+    alone, and with the pushover's slope."""
+    pytest.importorskip("pyslammer")
+    import dataclasses
+    from peers.yielding_equipment import (assess, compare, given_pushover, given_strength, ground_suite,
+                                          truth_result, workbook)
+    base = BUCKLING["bf6b"]
+    truth = dataclasses.replace(base, name="bf6b-weaker",
+                                overstrength_profile=tuple(WEAKER * o for o in base.overstrength_profile))
+    folder = tmp_path_factory.mktemp("bf6b-weaker")
+    suite = ground_suite(11, truth.period_s, LEVELS["MCE_R"])
+    reference = truth_result(truth, suite, "MCE_R", folder)
+    routes = {"given": given_strength(truth), "given + pushover slope": given_pushover(truth)}
+    return {route: compare(assess(workbook(folder, truth, suite, "MCE_R", rows), "MCE_R"), reference)
+            for route, rows in routes.items()}
+
+
+@pytest.mark.xfail(strict=True, reason="a braced frame that yields more, its braces buckling: with the strength "
+                                       "alone the items slide 0.78 times as far as on the truth at MCE_R")
+def test_on_a_weaker_frame_whose_braces_buckle_the_strength_alone_meets_the_sliding_targets(weaker):
+    assert meets_sliding_targets(weaker["given"]), weaker["given"]
+
+
+def test_on_a_weaker_frame_whose_braces_buckle_the_pushover_s_slope_brings_the_sliding_back(weaker):
+    """gm 0.90 and σ ln 0.24 with the slope, where the strength alone gives 0.78 and 0.41."""
+    n, alone = weaker["given + pushover slope"], weaker["given"]
+    assert meets_sliding_targets(n), n
+    assert abs(np.log(n["gm"])) < abs(np.log(alone["gm"])), (n, alone)
