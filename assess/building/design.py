@@ -195,7 +195,7 @@ def assumed_overstrength(system, hardening=None) -> float:
     2.0
     """
     value = OVERSTRENGTH_BY_SYSTEM[system]
-    if hardening is None or system not in OVERSTRENGTH_SOURCE_BY_SYSTEM:
+    if not _follows_hardening(system, hardening):
         return value
     reference = 1.0 + REFERENCE_HARDENING * (PEAK_DUCTILITY - 1.0)
     return value * reference / (1.0 + float(hardening) * (PEAK_DUCTILITY - 1.0))
@@ -440,9 +440,15 @@ def design_strength(system, floor_weights, floor_heights_m, period_s, *, sds_g=N
                           + (_taken_to(system, hardening) if assumed else ""), assumed)
 
 
+def _follows_hardening(system, hardening) -> bool:
+    """Whether the system's assumed Ω is a pushover's peak taken to a corner (a sourced value) and the engineer gives
+    the storeys' hardening it is taken to."""
+    return hardening is not None and system in OVERSTRENGTH_SOURCE_BY_SYSTEM
+
+
 def _taken_to(system, hardening) -> str:
     """The clause saying an assumed Ω was taken to the engineer's hardening (empty where it was not)."""
-    if hardening is None or system not in OVERSTRENGTH_SOURCE_BY_SYSTEM:
+    if not _follows_hardening(system, hardening):
         return ""
     return (f" (the system's {OVERSTRENGTH_BY_SYSTEM[system]:g} holds for storeys hardening at "
             f"{REFERENCE_HARDENING:.0%} of their stiffness after yield, taken to the given "

@@ -60,8 +60,7 @@ def buckling_brace_pair(ops, tag, k0, fy, hardening):
     way: F_y at F_y/k0, 1.41 F_y at 2 F_y/k0 (the pulled brace yielding, the pushed one at 0.41 F_y), then falling
     as the pushed brace loses its strength."""
     kb, dy = k0 / 2.0, fy / k0
-    tension = [(fy, 2.0 * dy), (None, 51.0 * dy), (None, 100.0 * dy)]
-    tension = [(f if f is not None else fy + hardening * kb * (d - 2.0 * dy), d) for f, d in tension]
+    tension = [(fy, 2.0 * dy)] + [(fy + hardening * kb * (d - 2.0 * dy), d) for d in (51.0 * dy, 100.0 * dy)]
     buckling = BRACE_BUCKLING_RATIO * fy
     after = BRACE_POST_BUCKLING_RATIO * buckling
     compression = [(buckling, dy), (after, BRACE_POST_BUCKLING_DEFORMATION_RATIO * dy), (after, 100.0 * dy)]
