@@ -173,10 +173,13 @@ from assess.anchorage.equations import height_factor  # noqa: E402
 from assess.building import ALPHA_RANGE_BY_SYSTEM  # noqa: E402
 from assess.fragility.suite import binomial_interval  # noqa: E402
 from peers.opensees_buildings import BRACED, BUCKLING, BUILDINGS, TALL  # noqa: E402
+
+#: Every truth building by name: the five, and those checked on their own.
+TRUTHS = {**BUILDINGS, **BRACED, **BUCKLING, **TALL}
 from peers.yielding_equipment import (LEVELS, OWN_HARDENING, PUSHOVER_ROUTE, SYSTEM_R, assess,  # noqa: E402
                                       bracket_held, compare, given_pushover, given_pushover_model, given_routes,
                                       given_strength,
-                                      ground_suite, own_hardening, own_stiffness, truth_result, workbook)
+                                      ground_suite, own_hardening, own_stiffness, stronger, truth_result, workbook)
 
 
 def markdown(frame: pd.DataFrame) -> str:
@@ -186,13 +189,6 @@ def markdown(frame: pd.DataFrame) -> str:
     lines = ["| " + " | ".join(frame.columns) + " |", "|" + "---|" * len(frame.columns)]
     lines += ["| " + " | ".join(cell(v) for v in row) + " |" for row in frame.itertuples(index=False)]
     return "\n".join(lines)
-
-
-def stronger(truth, factor: float):
-    """The OpenSees building ``truth`` with every storey's strength (a wall's hinge's) times ``factor``."""
-    if hasattr(truth, "overstrength_profile"):
-        return dataclasses.replace(truth, overstrength_profile=tuple(factor * np.asarray(truth.overstrength_profile)))
-    return dataclasses.replace(truth, yield_base_shear_g=factor * truth.yield_base_shear_g)
 
 
 def overturn_misses(table: pd.DataFrame) -> str:
@@ -247,7 +243,7 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--levels", default="DE")
     parser.add_argument("--buildings", default=",".join(BUILDINGS),
-                        help=f"comma-separated, of {', '.join({**BUILDINGS, **BRACED, **BUCKLING, **TALL})} "
+                        help=f"comma-separated, of {', '.join(TRUTHS)} "
                              "(peers.opensees_buildings; "
                              "bf6, the braced frame, bf6b, the same with braces that buckle, and smf12, the 12-storey "
                              "frame, are checked on their own)")
@@ -290,7 +286,7 @@ def main(argv=None):
     rows, ratios = [], []
     start = time.perf_counter()
     for name in args.buildings.split(","):
-        truth = {**BUILDINGS, **BRACED, **BUCKLING, **TALL}[name]
+        truth = TRUTHS[name]
         for level in args.levels.split(","):
             skip = tuple(filter(None, args.skip.split(",")))
             suite = ground_suite(args.motions, truth.period_s, LEVELS[level], skip)

@@ -167,11 +167,14 @@ OVERSTRENGTH_BY_SYSTEM = {
 OVERSTRENGTH_SOURCE_BY_SYSTEM = {
     "steel moment frame": "Elkady & Lignos' (2015) for steel moment frames with their gravity framing and slabs",
 }
-#: The hardening at which :data:`OVERSTRENGTH_BY_SYSTEM`'s sourced values are this Ω's corner (the stick's default,
-#: :data:`assess.building.nonlinear.DEFAULT_HARDENING`), and the first-storey ductility at which the pushover's
-#: peak is taken to be carried (the module's text): a storey that hardens at another b carries the same peak from
-#: a corner of 1.18/(1 + 6b) times the value (:func:`assumed_overstrength`).
-REFERENCE_HARDENING = 0.03
+#: Post-yield stiffness ratio b of the yielding stick's storey springs by default (:mod:`assess.building.nonlinear`
+#: takes it from here): 3 %, within the 2-5 % of the storey pushover curves of code-designed frames (e.g. FEMA P-695
+#: archetypes) and the usual Steel01 choice; P-Delta, where asked, lowers the storeys' net post-yield stiffness
+#: further. :data:`OVERSTRENGTH_BY_SYSTEM`'s sourced values are this Ω's corner of a spring hardening so.
+DEFAULT_HARDENING = 0.03
+#: The first-storey ductility at which the pushover's peak is taken to be carried (the module's text): a storey
+#: that hardens at another b carries the same peak from a corner of 1.18/(1 + 6b) times the value
+#: (:func:`assumed_overstrength`).
 PEAK_DUCTILITY = 7.0
 
 
@@ -179,7 +182,7 @@ def assumed_overstrength(system, hardening=None) -> float:
     """The Ω taken where the engineer gives neither ``overstrength`` nor ``yield_base_shear_g`` [-].
 
     The system's :data:`OVERSTRENGTH_BY_SYSTEM`. The steel moment frames' value is a pushover's peak (Elkady &
-    Lignos' Ω_s 3.0 [8]_) taken to the corner of a storey spring hardening at :data:`REFERENCE_HARDENING`, which
+    Lignos' Ω_s 3.0 [8]_) taken to the corner of a storey spring hardening at :data:`DEFAULT_HARDENING`, which
     carries 1 + b (μ - 1) times its yield force at the ductility μ = :data:`PEAK_DUCTILITY`. Where the storeys
     harden at another b (the sheet's ``storey_hardening_ratio``), the same peak lies at another corner:
 
@@ -197,7 +200,7 @@ def assumed_overstrength(system, hardening=None) -> float:
     value = OVERSTRENGTH_BY_SYSTEM[system]
     if not _follows_hardening(system, hardening):
         return value
-    reference = 1.0 + REFERENCE_HARDENING * (PEAK_DUCTILITY - 1.0)
+    reference = 1.0 + DEFAULT_HARDENING * (PEAK_DUCTILITY - 1.0)
     return value * reference / (1.0 + float(hardening) * (PEAK_DUCTILITY - 1.0))
 #: C_u of ASCE 7-22 Table 12.8-1 against S_D1 [g] (interpolated, constant beyond the ends).
 UPPER_LIMIT_TABLE = ((0.1, 1.7), (0.15, 1.6), (0.2, 1.5), (0.3, 1.4), (0.4, 1.4))
@@ -433,11 +436,11 @@ def design_strength(system, floor_weights, floor_heights_m, period_s, *, sds_g=N
     design_period = min(float(period_s), upper_limit_coefficient(sd1_g) * approximate)
     cs = seismic_response_coefficient(sds_g, sd1_g, design_period, r_factor, importance, tl_s, s1_g)
     value = cs * overstrength
+    whose = (f"an assumed overstrength {overstrength:.3g}{_taken_to(system, hardening)}" if assumed
+             else f"the given overstrength {overstrength:g}")
     return DesignStrength(value, value * ratios, cs, r_factor, omega0, importance, overstrength, design_period,
                           f"{code} §12.8 design ({row}: R {r_factor:g}; I_e {importance:g}; "
-                          f"C_s {cs:.3g} at T {design_period:.3g} s) times {'an assumed' if assumed else 'the given'} "
-                          f"overstrength {f'{overstrength:.3g}' if assumed else f'{overstrength:g}'}"
-                          + (_taken_to(system, hardening) if assumed else ""), assumed)
+                          f"C_s {cs:.3g} at T {design_period:.3g} s) times {whose}", assumed)
 
 
 def _follows_hardening(system, hardening) -> bool:
@@ -451,5 +454,5 @@ def _taken_to(system, hardening) -> str:
     if not _follows_hardening(system, hardening):
         return ""
     return (f" (the system's {OVERSTRENGTH_BY_SYSTEM[system]:g} holds for storeys hardening at "
-            f"{REFERENCE_HARDENING:.0%} of their stiffness after yield, taken to the given "
+            f"{DEFAULT_HARDENING:.0%} of their stiffness after yield, taken to the given "
             f"{100 * float(hardening):.3g}% so that the pushover's peak stays the same)")

@@ -63,7 +63,7 @@ from scipy.linalg import eigh
 
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
 
-from .design import LAW_BY_SYSTEM, vertical_distribution
+from .design import DEFAULT_HARDENING, LAW_BY_SYSTEM, vertical_distribution
 from .hysteresis import BILINEAR, LAWS, bilinear_trial, pinching_trial
 from .modes import ALPHA_BY_SYSTEM, stiffness_matrix
 from .newmark import (DEFAULT_SUBSTEP_S, MAX_ITERATIONS, STEPS_PER_SHORTEST_PERIOD, TOLERANCE_M,  # noqa: F401
@@ -73,10 +73,6 @@ from .wall_hinge import hinged_wall
 
 #: Standard gravity [m/s²], the engine's (:data:`assess.mechanics.geometry.STANDARD_GRAVITY_M_S2`).
 GRAVITY_M_S2 = STANDARD_GRAVITY_M_S2
-#: Post-yield stiffness ratio b of the storey springs by default: 3 %, within the 2-5 % of the
-#: storey pushover curves of code-designed frames (e.g. FEMA P-695 archetypes) and the usual
-#: Steel01 choice; P-Delta, where asked, lowers the storeys' net post-yield stiffness further.
-DEFAULT_HARDENING = 0.03
 #: How the stick carries the elastic model's flexure, per system (:func:`yielding_stick`): frames and
 #: braced frames yield in a storey mechanism while their overall flexure (the columns' axial
 #: strains) stays elastic, so their column is kept elastic beside the yielding springs; a

@@ -57,6 +57,13 @@ def narrow_box(name: str) -> dict:
     return {"half_width_m": depth / 2, "height_m": height, "mu": mu}
 
 
+def stronger(truth, factor: float):
+    """The OpenSees building ``truth`` with every storey's strength (a wall's hinge's) times ``factor``."""
+    if hasattr(truth, "overstrength_profile"):
+        return dataclasses.replace(truth, overstrength_profile=tuple(factor * np.asarray(truth.overstrength_profile)))
+    return dataclasses.replace(truth, yield_base_shear_g=factor * truth.yield_base_shear_g)
+
+
 def given_strength(truth) -> list:
     """The building sheet's rows of the route ``given``: ``response`` yielding and ``yield_base_shear_g`` the truth
     building's own pushover gives (:func:`peers.opensees_buildings.pushover_yield_base_shear_g`), written to six

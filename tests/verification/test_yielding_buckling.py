@@ -137,18 +137,11 @@ def weaker(tmp_path_factory):
     """compare()'s numbers at MCE_R against ``bf6b`` with every storey :data:`WEAKER` times as strong: the strength
     alone, and with the pushover's slope."""
     pytest.importorskip("pyslammer")
-    import dataclasses
-    from peers.yielding_equipment import (assess, compare, given_pushover, given_strength, ground_suite,
-                                          truth_result, workbook)
-    base = BUCKLING["bf6b"]
-    truth = dataclasses.replace(base, name="bf6b-weaker",
-                                overstrength_profile=tuple(WEAKER * o for o in base.overstrength_profile))
-    folder = tmp_path_factory.mktemp("bf6b-weaker")
+    from peers.yielding_equipment import compared, given_pushover, given_strength, ground_suite, stronger
+    truth = stronger(BUCKLING["bf6b"], WEAKER)
     suite = ground_suite(11, truth.period_s, LEVELS["MCE_R"])
-    reference = truth_result(truth, suite, "MCE_R", folder)
     routes = {"given": given_strength(truth), "given + pushover slope": given_pushover(truth)}
-    return {route: compare(assess(workbook(folder, truth, suite, "MCE_R", rows), "MCE_R"), reference)
-            for route, rows in routes.items()}
+    return compared(truth, suite, "MCE_R", tmp_path_factory.mktemp("bf6b-weaker"), routes)
 
 
 @pytest.mark.xfail(strict=True, reason="a braced frame that yields more, its braces buckling: with the strength "
