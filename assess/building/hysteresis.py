@@ -1,6 +1,6 @@
 """Storey springs with hysteresis: the force-drift laws of the yielding stick (:mod:`assess.building.nonlinear`).
 
-Two laws, each a pure function of the spring's committed state and a trial drift
+Three laws, each a pure function of the spring's committed state and a trial drift
 (path-dependent through that state only, as a finite-element material is):
 
 * **Bilinear with kinematic hardening** (:func:`bilinear_trial`), for steel frames and
@@ -19,8 +19,20 @@ Two laws, each a pure function of the spring's committed state and a trial drift
   (pinch_x of the way, pinch_y of the force) — the rules of OpenSees' ``Hysteretic``
   material (a modified Clough/Takeda law after Park, Reinhorn & Kunnath [4]_) with a
   bilinear hardening backbone and no strength-damage terms (damage1 = damage2 = 0),
-  re-written here from its published rules. Its degrading, pinched loops dissipate
+  re-written here from its published rules and its source (:func:`hysteretic_trial`, on
+  any trilinear backbone, each side its own). Its degrading, pinched loops dissipate
   less energy per cycle than the bilinear ones at the same ductility.
+
+* **Buckling braces** (``buckling``, :func:`brace_backbones`), for a special
+  concentrically braced frame, which yields by "brace buckling and yielding of the brace in
+  tension" (AISC 341-16 §F2.1 [5]_): the storey is its two braces, one pulled and one pushed,
+  each the Hysteretic law on its own backbone (mirrored: the pulled brace's tension side is
+  the pushed one's), as OpenSees builds them with two ``Hysteretic`` materials in
+  ``Parallel``. The pushed brace buckles at :data:`BRACE_BUCKLING_RATIO` of its tension
+  yield (AISC 360-16 eq. E3-2 [6]_) and falls to :data:`BRACE_POST_BUCKLING_RATIO` of that
+  (AISC 341-16 §F2.3's expected post-buckling strength); pinched loops (a buckled brace
+  carries little until pulled straight), no unloading degradation. Pushed one way the
+  storey's force rises past its first yield until the pulled brace yields, then falls.
 
 References
 ----------
@@ -34,6 +46,10 @@ References
 .. [4] Park, Y. J., Reinhorn, A. M., Kunnath, S. K. (1987). IDARC: Inelastic damage
    analysis of reinforced concrete frame-shear-wall structures. Report NCEER-87-0008.
    OpenSees ``Hysteretic`` material: https://opensees.berkeley.edu/wiki/index.php/Hysteretic_Material
+   (SRC/material/uniaxial/HystereticMaterial.cpp).
+.. [5] ANSI/AISC 341-16 (2016). Seismic Provisions for Structural Steel Buildings. §F2 (special
+   concentrically braced frames), as help.idecad.com's page on §F2 and an eng-tips thread on §F2.3 give it.
+.. [6] ANSI/AISC 360-16 (2016). Specification for Structural Steel Buildings. §E3 (flexural buckling).
 """
 from __future__ import annotations
 
@@ -43,12 +59,37 @@ from numba import njit
 #: Law codes the compiled kernel dispatches on.
 BILINEAR = 0
 PINCHING = 1
-LAWS = {"bilinear": BILINEAR, "pinching": PINCHING}
+BUCKLING = 2
+LAWS = {"bilinear": BILINEAR, "pinching": PINCHING, "buckling": BUCKLING}
 
-#: Slots of a pinching spring's state vector (committed or trial).
+#: Slots of a hysteretic spring's state vector (committed or trial); a storey of buckling braces holds two.
 _STRAIN, _STRESS, _TANGENT, _ROT_MAX, _ROT_MIN, _ROT_PU, _ROT_NU, _LOAD = range(8)
-STATE_SIZE = 8
+HYSTERETIC_SIZE = 8
+#: A storey spring's state: the pulled brace's hysteretic state, then the pushed one's (the first alone otherwise).
+STATE_SIZE = 2 * HYSTERETIC_SIZE
 _BIG = 1.0e16  # OpenSees' POS_INF_STRAIN
+
+#: Slots of a hysteretic spring's parameters: its backbone's three points on each side (drift, force), the
+#: negative side's negative, then pinch_x, pinch_y and the unloading exponent β.
+_R1P, _M1P, _R2P, _M2P, _R3P, _M3P, _R1N, _M1N, _R2N, _M2N, _R3N, _M3N, _PINCH_X, _PINCH_Y, _BETA = range(15)
+PARAMETERS = 15
+
+#: A brace's buckling strength over its tension yield strength, F_cr/F_y: AISC 360-16 eq. E3-2,
+#: F_cr = 0.658^(F_y/F_e) F_y with F_e = π² E/(KL/r)², is 0.55 F_y at KL/r 90 and F_y 345 MPa (0.77 at 60, 0.32
+#: at 120); 0.5 taken. The storey's pushed brace buckles at the storey's yield drift, where the storey carries
+#: its F_y, and the pulled one yields in tension at 1/0.5 = 2 times that drift.
+BRACE_BUCKLING_RATIO = 0.5
+#: What a buckled brace keeps of its buckling strength: AISC 341-16 §F2.3(b)'s expected post-buckling strength,
+#: 0.3 times the expected compressive strength (as an eng-tips thread on SCBF beams quotes it,
+#: eng-tips.com/threads/design-of-beams-in-special-concentric-braced-frames.562823).
+BRACE_POST_BUCKLING_RATIO = 0.3
+#: The drift, over the buckling drift, at which the buckled brace is down to that strength (a judgement).
+BRACE_POST_BUCKLING_DRIFT_RATIO = 5.0
+#: The braces' loops' pinching (pinch_x, pinch_y): a buckled brace carries little until it is pulled straight
+#: again (a judgement); no unloading degradation (β 0).
+BRACE_PINCH = (0.4, 0.2)
+#: Drift, over the yield drift, of the backbones' last points (the hardening goes on beyond).
+_LAST_POINT = 100.0
 
 
 @njit(cache=True)
@@ -65,27 +106,67 @@ def bilinear_trial(drift, committed_drift, committed_force, stiffness, yield_for
 
 
 @njit(cache=True)
-def _envelope(strain, k0, fy, hardening):  # pragma: no cover - compiled
-    """Backbone force and tangent (symmetric bilinear, positive hardening)."""
-    dy = fy / k0
-    if strain >= 0.0:
-        if strain <= dy:
-            return k0 * strain, k0
-        return fy + hardening * k0 * (strain - dy), hardening * k0
-    if strain >= -dy:
-        return k0 * strain, k0
-    return -fy + hardening * k0 * (strain + dy), hardening * k0
+def _positive_envelope(strain, p):  # pragma: no cover - compiled
+    """Backbone (force, tangent) on the positive side; ``p`` the spring's :data:`PARAMETERS` row."""
+    e1, e2 = p[_M1P] / p[_R1P], (p[_M2P] - p[_M1P]) / (p[_R2P] - p[_R1P])
+    e3 = (p[_M3P] - p[_M2P]) / (p[_R3P] - p[_R2P])
+    if strain <= 0.0:
+        return 0.0, e1 * 1.0e-9
+    if strain <= p[_R1P]:
+        return e1 * strain, e1
+    if strain <= p[_R2P]:
+        return p[_M1P] + e2 * (strain - p[_R1P]), e2
+    if strain <= p[_R3P] or e3 > 0.0:
+        return p[_M2P] + e3 * (strain - p[_R2P]), e3
+    return p[_M3P], e1 * 1.0e-9
 
 
 @njit(cache=True)
-def pinching_trial(committed, trial, strain, k0, fy, hardening, pinch_x, pinch_y, beta):  # pragma: no cover
-    """Trial state (written into ``trial``) of the pinching, stiffness-degrading spring at drift ``strain``.
+def _negative_envelope(strain, p):  # pragma: no cover - compiled
+    """Backbone (force, tangent) on the negative side (its points negative)."""
+    e1, e2 = p[_M1N] / p[_R1N], (p[_M2N] - p[_M1N]) / (p[_R2N] - p[_R1N])
+    e3 = (p[_M3N] - p[_M2N]) / (p[_R3N] - p[_R2N])
+    if strain >= 0.0:
+        return 0.0, e1 * 1.0e-9
+    if strain >= p[_R1N]:
+        return e1 * strain, e1
+    if strain >= p[_R2N]:
+        return p[_M1N] + e2 * (strain - p[_R1N]), e2
+    if strain >= p[_R3N] or e3 > 0.0:
+        return p[_M2N] + e3 * (strain - p[_R2N]), e3
+    return p[_M3N], e1 * 1.0e-9
 
-    ``committed`` and ``trial`` are state vectors of :data:`STATE_SIZE`; the rules are
-    those of OpenSees' Hysteretic material with a bilinear backbone (rot1 = F_y/k_0,
-    E_2 = E_3 = b k_0 > 0) and no damage terms.
+
+@njit(cache=True)
+def _release_limit(strain, p, sign):  # pragma: no cover - compiled
+    """Where a softening branch of the envelope reached at ``strain`` (on the ``sign`` side) would cross zero
+    force: reloading towards the other side starts there at the latest (OpenSees' ``posEnvlpRotlim`` and
+    ``negEnvlpRotlim``); ±:data:`_BIG` where it has no softening branch."""
+    o = 0 if sign > 0.0 else 6  # offset of that side's points
+    r1, m1, r2, m2, r3, m3 = p[o], p[o + 1], p[o + 2], p[o + 3], p[o + 4], p[o + 5]
+    e2, e3 = (m2 - m1) / (r2 - r1), (m3 - m2) / (r3 - r2)
+    limit = sign * _BIG
+    if sign * strain <= sign * r1:
+        return limit
+    if sign * strain <= sign * r2 and e2 < 0.0:
+        limit = r1 - m1 / e2
+    if sign * strain > sign * r2 and e3 < 0.0:
+        limit = r2 - m2 / e3
+    if limit == sign * _BIG:
+        return limit
+    force = _positive_envelope(limit, p)[0] if sign > 0.0 else _negative_envelope(limit, p)[0]
+    return sign * _BIG if sign * force > 0.0 else limit
+
+
+@njit(cache=True)
+def hysteretic_trial(committed, trial, strain, p):  # pragma: no cover - compiled
+    """Trial state (written into ``trial``) of a pinching, stiffness-degrading spring at drift ``strain``.
+
+    ``committed`` and ``trial`` are state vectors of :data:`HYSTERETIC_SIZE`, ``p`` the spring's
+    :data:`PARAMETERS` row: the rules of OpenSees' Hysteretic material on its trilinear backbone, each side
+    its own, with no damage terms (damage1 = damage2 = 0).
     """
-    for s in range(STATE_SIZE):
+    for s in range(HYSTERETIC_SIZE):
         trial[s] = committed[s]
     load = committed[_LOAD]
     if load == 0.0 and strain == 0.0:
@@ -94,116 +175,162 @@ def pinching_trial(committed, trial, strain, k0, fy, hardening, pinch_x, pinch_y
     if abs(d_strain) < 2.220446049250313e-16:
         return
     trial[_STRAIN] = strain
-    if load == 0.0:
-        load = 2.0 if d_strain < 0.0 else 1.0
-    rot1 = fy / k0
     if strain >= committed[_ROT_MAX]:
         trial[_ROT_MAX] = strain
-        trial[_STRESS], trial[_TANGENT] = _envelope(strain, k0, fy, hardening)
-        if strain < 0.0:  # the envelope's tangent for a negative strain on the positive side
-            trial[_TANGENT] = k0 * 1.0e-9
+        trial[_STRESS], trial[_TANGENT] = _positive_envelope(strain, p)
         trial[_LOAD] = 1.0
         return
     if strain <= committed[_ROT_MIN]:
         trial[_ROT_MIN] = strain
-        trial[_STRESS], trial[_TANGENT] = _envelope(strain, k0, fy, hardening)
-        if strain > 0.0:
-            trial[_TANGENT] = k0 * 1.0e-9
+        trial[_STRESS], trial[_TANGENT] = _negative_envelope(strain, p)
         trial[_LOAD] = 2.0
         return
-    kn = (committed[_ROT_MIN] / -rot1) ** beta
+    beta = p[_BETA]
+    rot1p, rot1n = p[_R1P], p[_R1N]
+    kp_unload = max(p[_M1P] / rot1p, (p[_M2P] - p[_M1P]) / (p[_R2P] - rot1p),
+                    (p[_M3P] - p[_M2P]) / (p[_R3P] - p[_R2P]))  # the steepest of the backbone's slopes
+    kn_unload = max(p[_M1N] / rot1n, (p[_M2N] - p[_M1N]) / (p[_R2N] - rot1n),
+                    (p[_M3N] - p[_M2N]) / (p[_R3N] - p[_R2N]))
+    kn = (committed[_ROT_MIN] / rot1n) ** beta
     kn = 1.0 if kn < 1.0 else 1.0 / kn
-    kp = (committed[_ROT_MAX] / rot1) ** beta
+    kp = (committed[_ROT_MAX] / rot1p) ** beta
     kp = 1.0 if kp < 1.0 else 1.0 / kp
     c_stress = committed[_STRESS]
     c_strain = committed[_STRAIN]
+    pinch_x, pinch_y = p[_PINCH_X], p[_PINCH_Y]
     if d_strain > 0.0:
         if load == 2.0 and c_stress <= 0.0:
-            trial[_ROT_NU] = c_strain - c_stress / (k0 * kn)
+            trial[_ROT_NU] = c_strain - c_stress / (kn_unload * kn)
         trial[_LOAD] = 1.0
-        rot_max = min(max(trial[_ROT_MAX], rot1), _BIG)
+        rot_max = max(min(trial[_ROT_MAX], _BIG), rot1p)
         trial[_ROT_MAX] = rot_max
-        max_force = _envelope(rot_max, k0, fy, hardening)[0]
-        rot_rel = trial[_ROT_NU]
-        rot_mp2 = rot_max - (1.0 - pinch_y) * max_force / (k0 * kp)
+        max_force = _positive_envelope(rot_max, p)[0]
+        rot_rel = max(_release_limit(committed[_ROT_MIN], p, -1.0), trial[_ROT_NU])
+        rot_mp2 = rot_max - (1.0 - pinch_y) * max_force / (kp_unload * kp)
         rot_ch = rot_rel + (rot_mp2 - rot_rel) * pinch_x
         if strain < trial[_ROT_NU]:
-            tangent = k0 * kn
+            tangent = kn_unload * kn
             stress = c_stress + tangent * d_strain
             if stress >= 0.0:
-                stress, tangent = 0.0, k0 * 1.0e-9
+                stress, tangent = 0.0, kn_unload * 1.0e-9
         elif strain < rot_ch:
             if strain <= rot_rel:
-                stress, tangent = 0.0, k0 * 1.0e-9
+                stress, tangent = 0.0, kp_unload * 1.0e-9
             else:
                 tangent = max_force * pinch_y / (rot_ch - rot_rel)
-                unloading = c_stress + k0 * kp * d_strain
+                unloading = c_stress + kp_unload * kp * d_strain
                 stress = (strain - rot_rel) * tangent
                 if unloading < stress:
-                    stress, tangent = unloading, k0 * kp
+                    stress, tangent = unloading, kp_unload * kp
         else:
             tangent = (1.0 - pinch_y) * max_force / (rot_max - rot_ch)
-            unloading = c_stress + k0 * kp * d_strain
+            unloading = c_stress + kp_unload * kp * d_strain
             stress = pinch_y * max_force + (strain - rot_ch) * tangent
             if unloading < stress:
-                stress, tangent = unloading, k0 * kp
+                stress, tangent = unloading, kp_unload * kp
     else:
         if load == 1.0 and c_stress >= 0.0:
-            trial[_ROT_PU] = c_strain - c_stress / (k0 * kp)
+            trial[_ROT_PU] = c_strain - c_stress / (kp_unload * kp)
         trial[_LOAD] = 2.0
-        rot_min = max(min(trial[_ROT_MIN], -rot1), -_BIG)
+        rot_min = min(max(trial[_ROT_MIN], -_BIG), rot1n)
         trial[_ROT_MIN] = rot_min
-        min_force = _envelope(rot_min, k0, fy, hardening)[0]
-        rot_rel = trial[_ROT_PU]
-        rot_mp2 = rot_min - (1.0 - pinch_y) * min_force / (k0 * kn)
+        min_force = _negative_envelope(rot_min, p)[0]
+        rot_rel = min(_release_limit(committed[_ROT_MAX], p, 1.0), trial[_ROT_PU])
+        rot_mp2 = rot_min - (1.0 - pinch_y) * min_force / (kn_unload * kn)
         rot_ch = rot_rel + (rot_mp2 - rot_rel) * pinch_x
         if strain > trial[_ROT_PU]:
-            tangent = k0 * kp
+            tangent = kp_unload * kp
             stress = c_stress + tangent * d_strain
             if stress <= 0.0:
-                stress, tangent = 0.0, k0 * 1.0e-9
+                stress, tangent = 0.0, kp_unload * 1.0e-9
         elif strain > rot_ch:
             if strain >= rot_rel:
-                stress, tangent = 0.0, k0 * 1.0e-9
+                stress, tangent = 0.0, kn_unload * 1.0e-9
             else:
                 tangent = min_force * pinch_y / (rot_ch - rot_rel)
-                unloading = c_stress + k0 * kn * d_strain
+                unloading = c_stress + kn_unload * kn * d_strain
                 stress = (strain - rot_rel) * tangent
                 if unloading > stress:
-                    stress, tangent = unloading, k0 * kn
+                    stress, tangent = unloading, kn_unload * kn
         else:
             tangent = (1.0 - pinch_y) * min_force / (rot_min - rot_ch)
-            unloading = c_stress + k0 * kn * d_strain
+            unloading = c_stress + kn_unload * kn * d_strain
             stress = pinch_y * min_force + (strain - rot_ch) * tangent
             if unloading > stress:
-                stress, tangent = unloading, k0 * kn
+                stress, tangent = unloading, kn_unload * kn
     trial[_STRESS] = stress
     trial[_TANGENT] = tangent
 
 
-def initial_state(stiffness):
-    """Committed state vector of springs at rest, shape (n, :data:`STATE_SIZE`)."""
-    k0 = np.asarray(stiffness, dtype=float)
-    state = np.zeros((k0.size, STATE_SIZE))
-    state[:, _TANGENT] = k0
-    return state
+@njit(cache=True)
+def spring_trial(law, committed, trial, strain, k0, fy, hardening, p):  # pragma: no cover - compiled
+    """(force, tangent) of one storey spring of law ``law`` at a trial drift, its trial state written into
+    ``trial``; ``committed`` and ``trial`` of :data:`STATE_SIZE`, ``p`` its :func:`spring_parameters` (2 rows)."""
+    if law == BILINEAR:
+        force, tangent = bilinear_trial(strain, committed[_STRAIN], committed[_STRESS], k0, fy, hardening)
+        trial[_STRAIN], trial[_STRESS], trial[_TANGENT] = strain, force, tangent
+        return force, tangent
+    hysteretic_trial(committed[:HYSTERETIC_SIZE], trial[:HYSTERETIC_SIZE], strain, p[0])
+    force, tangent = trial[_STRESS], trial[_TANGENT]
+    if law == BUCKLING:
+        hysteretic_trial(committed[HYSTERETIC_SIZE:], trial[HYSTERETIC_SIZE:], strain, p[1])
+        force += trial[HYSTERETIC_SIZE + _STRESS]
+        tangent += trial[HYSTERETIC_SIZE + _TANGENT]
+    return force, tangent
+
+
+def bilinear_backbone(k0, fy, hardening, pinch_x, pinch_y, beta) -> np.ndarray:
+    """The :data:`PARAMETERS` row of a pinching spring on a symmetric bilinear backbone: k_0 to F_y, then b k_0
+    (OpenSees' Hysteretic with rot1 = F_y/k_0 and E_2 = E_3 = b k_0)."""
+    dy = fy / k0
+    points = [(dy, fy), *((r * dy, fy + hardening * k0 * (r - 1.0) * dy) for r in (_LAST_POINT / 2, _LAST_POINT))]
+    return np.array([v for d, f in points for v in (d, f)] + [-v for d, f in points for v in (d, f)]
+                    + [pinch_x, pinch_y, beta])
+
+
+def brace_backbones(k0, fy, hardening) -> np.ndarray:
+    """The two :data:`PARAMETERS` rows of a storey of buckling braces, k_0 and F_y the storey's (its first
+    nonlinearity, the pushed brace buckling): the pulled brace, then the pushed one, its mirror.
+
+    Each brace has half the storey's stiffness; it buckles at :data:`BRACE_BUCKLING_RATIO` of its tension yield
+    force F_t, at the storey's yield drift d_y = F_y/k_0 (so F_t = F_y/(2 × that ratio)), falls to
+    :data:`BRACE_POST_BUCKLING_RATIO` of its buckling force at :data:`BRACE_POST_BUCKLING_DRIFT_RATIO` d_y and keeps
+    it; pulled, it yields at F_t and hardens at ``hardening`` of its stiffness. Pushed one way the storey
+    carries F_y at d_y, then more until the pulled brace yields, then less as the pushed one loses its strength.
+    """
+    kb = k0 / 2.0
+    dy = fy / k0
+    tension = fy / (2.0 * BRACE_BUCKLING_RATIO)
+    dt = tension / kb
+    pulled = [(dt, tension), *((r * dt, tension + hardening * kb * (r - 1.0) * dt) for r in (_LAST_POINT / 2,
+                                                                                              _LAST_POINT))]
+    buckling = BRACE_BUCKLING_RATIO * tension
+    after = BRACE_POST_BUCKLING_RATIO * buckling
+    pushed = [(dy, buckling), (BRACE_POST_BUCKLING_DRIFT_RATIO * dy, after), (_LAST_POINT * dy, after)]
+    pinch = [*BRACE_PINCH, 0.0]
+    return np.array([[v for d, f in pulled for v in (d, f)] + [-v for d, f in pushed for v in (d, f)] + pinch,
+                     [v for d, f in pushed for v in (d, f)] + [-v for d, f in pulled for v in (d, f)] + pinch])
+
+
+def spring_parameters(law, k0, fy, hardening, pinch_x=0.8, pinch_y=0.4, beta=0.4) -> np.ndarray:
+    """The (2, :data:`PARAMETERS`) parameters of one spring of law ``law`` (a name of :data:`LAWS`) as
+    :func:`spring_trial` takes them: the bilinear law's are unused, the pinching law's second row too."""
+    if law == "buckling":
+        return brace_backbones(k0, fy, hardening)
+    row = bilinear_backbone(k0, fy, hardening, pinch_x, pinch_y, beta)
+    return np.array([row, row])
 
 
 @njit(cache=True)
-def _cycle(drifts, law, k0, fy, hardening, pinch_x, pinch_y, beta):  # pragma: no cover - compiled
+def _cycle(drifts, law, k0, fy, hardening, parameters):  # pragma: no cover - compiled
     """Forces of one spring along a drift path (every point committed)."""
     committed = np.zeros(STATE_SIZE)
     committed[_TANGENT] = k0
-    trial = np.zeros(STATE_SIZE)
+    trial = committed.copy()
     out = np.empty(drifts.size)
     for i in range(drifts.size):
-        if law == BILINEAR:
-            force, tangent = bilinear_trial(drifts[i], committed[_STRAIN], committed[_STRESS], k0, fy, hardening)
-            committed[_STRAIN], committed[_STRESS], committed[_TANGENT] = drifts[i], force, tangent
-        else:
-            pinching_trial(committed, trial, drifts[i], k0, fy, hardening, pinch_x, pinch_y, beta)
-            committed[:] = trial
-        out[i] = committed[_STRESS]
+        out[i] = spring_trial(law, committed, trial, drifts[i], k0, fy, hardening, parameters)[0]
+        committed[:] = trial
     return out
 
 
@@ -218,7 +345,14 @@ def spring_forces(drift_path_m, law, stiffness_n_m, yield_force_n, hardening=0.0
 
     >>> spring_forces([0.1, 0.3, 0.1], "bilinear", 100.0, 10.0, hardening=0.1).round(6).tolist()
     [10.0, 12.0, -8.0]
+
+    A storey of buckling braces, k_0 = 100 N/m, F_y = 10 N, b = 0: at d_y = 0.1 m both braces carry 5 N, the
+    pushed one buckling; at 0.2 m the pulled one yields (10 N) and the pushed one has fallen a quarter of the way
+    to 1.5 N (4.125 N):
+
+    >>> spring_forces([0.1, 0.2], "buckling", 100.0, 10.0, hardening=0.0).round(6).tolist()
+    [10.0, 14.125]
     """
     path = np.ascontiguousarray(drift_path_m, dtype=float)
-    return _cycle(path, LAWS[law], float(stiffness_n_m), float(yield_force_n), float(hardening),
-                  float(pinch_x), float(pinch_y), float(beta))
+    k0, fy, b = float(stiffness_n_m), float(yield_force_n), float(hardening)
+    return _cycle(path, LAWS[law], k0, fy, b, spring_parameters(law, k0, fy, b, pinch_x, pinch_y, beta))

@@ -3,7 +3,8 @@
 The masses are lumped at the floors, one horizontal degree of freedom each; storey i
 is a spring between floors i-1 and i whose force follows a hysteresis law
 (:mod:`assess.building.hysteresis`: bilinear for steel, pinching and
-stiffness-degrading for concrete); beside the springs an elastic part K_lin (the
+stiffness-degrading for concrete, a pulled and a pushed brace for braces that
+buckle); beside the springs an elastic part K_lin (the
 flexural column of the shear-flexural model of :mod:`assess.building.modes`, and,
 where asked, the P-Delta geometric stiffness, -P_i/h_i per storey) stays linear.
 Each spring's yield force is its share of the code's distribution of the strength,
@@ -64,7 +65,7 @@ from scipy.linalg import eigh
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
 
 from .design import DEFAULT_HARDENING, LAW_BY_SYSTEM, vertical_distribution
-from .hysteresis import BILINEAR, LAWS, bilinear_trial, pinching_trial
+from .hysteresis import LAWS, STATE_SIZE, spring_parameters, spring_trial
 from .modes import ALPHA_BY_SYSTEM, stiffness_matrix
 from .newmark import (DEFAULT_SUBSTEP_S, MAX_ITERATIONS, STEPS_PER_SHORTEST_PERIOD, TOLERANCE_M,  # noqa: F401
                       YieldingResponse, _gains, _rates, _record, _solve, rayleigh_coefficients, substeps_for)
@@ -118,7 +119,7 @@ class YieldingStick:
     hardening : ndarray, (n,)
         Post-yield stiffness ratio b of each spring [-].
     law : str
-        ``"bilinear"`` or ``"pinching"`` (:mod:`assess.building.hysteresis`).
+        ``"bilinear"``, ``"pinching"`` or ``"buckling"`` (:mod:`assess.building.hysteresis`).
     linear_stiffness_n_m : ndarray, (n, n)
         K_lin, the part that stays elastic (zeros for a shear building).
     rayleigh : (float, float)
@@ -219,30 +220,25 @@ def p_delta_stiffness(floor_masses_kg, storey_heights_m):
 
 
 @njit(cache=True)
-def _spring_states(u, law, committed, trial, k0, fy, hardening, pinch_x, pinch_y, beta, force,
+def _spring_states(u, law, committed, trial, k0, fy, hardening, parameters, force,
                    tangent):  # pragma: no cover - compiled
     """Trial force and tangent of every storey spring at floor displacements u."""
     n = u.size
     for i in range(n):
         drift = u[i] - (u[i - 1] if i > 0 else 0.0)
-        if law == BILINEAR:
-            f, kt = bilinear_trial(drift, committed[i, 0], committed[i, 1], k0[i], fy[i], hardening[i])
-            trial[i, 0], trial[i, 1], trial[i, 2] = drift, f, kt
-        else:
-            pinching_trial(committed[i], trial[i], drift, k0[i], fy[i], hardening[i], pinch_x, pinch_y, beta)
-        force[i] = trial[i, 1]
-        tangent[i] = trial[i, 2]
+        force[i], tangent[i] = spring_trial(law, committed[i], trial[i], drift, k0[i], fy[i], hardening[i],
+                                            parameters[i])
 
 
 @njit(cache=True, nogil=True)  # released so that a suite's motions run on threads (assess.building.yielding)
-def _history(ground_g, dt_s, substeps, masses, k0, fy, hardening, law, pinch_x, pinch_y, beta,
+def _history(ground_g, dt_s, substeps, masses, k0, fy, hardening, law, parameters,
              k_lin, c_extra, a0, a1, damping_on_initial, tolerance, max_iterations):  # pragma: no cover - compiled
     n = masses.size
     n_samples = ground_g.size
     g = GRAVITY_M_S2
     h = dt_s / substeps
     c_mass, c_vel = _gains(h)
-    committed = np.zeros((n, 8))
+    committed = np.zeros((n, STATE_SIZE))
     for i in range(n):
         committed[i, 2] = k0[i]
     trial = committed.copy()
@@ -288,8 +284,7 @@ def _history(ground_g, dt_s, substeps, masses, k0, fy, hardening, law, pinch_x, 
             converged = False
             for iteration in range(max_iterations):
                 _rates(u_new, u, v, a, a_new, v_new, h, n)
-                _spring_states(u_new, law, committed, trial, k0, fy, hardening, pinch_x, pinch_y, beta,
-                               force, tangent)
+                _spring_states(u_new, law, committed, trial, k0, fy, hardening, parameters, force, tangent)
                 for r in range(n):
                     total = -masses[r] * ground - masses[r] * a_new[r]
                     total -= force[r] - (force[r + 1] if r + 1 < n else 0.0)
@@ -319,9 +314,9 @@ def _history(ground_g, dt_s, substeps, masses, k0, fy, hardening, law, pinch_x, 
                 unconverged += 1
             # the state at the converged displacements, then commit
             _rates(u_new, u, v, a, a_new, v_new, h, n)
-            _spring_states(u_new, law, committed, trial, k0, fy, hardening, pinch_x, pinch_y, beta, force, tangent)
+            _spring_states(u_new, law, committed, trial, k0, fy, hardening, parameters, force, tangent)
             for r in range(n):
-                for s in range(8):
+                for s in range(STATE_SIZE):
                     committed[r, s] = trial[r, s]
                 damping_tangent[r] = tangent[r]
                 u[r] = u_new[r]
@@ -359,11 +354,14 @@ def yielding_response(stick: YieldingStick, ground_accel_g, dt_s, *, substep_s=D
     if stick.damping_stiffness not in ("tangent", "initial"):
         raise ValueError("damping_stiffness must be 'tangent' or 'initial'")
     n = stick.storeys
+    k0 = np.ascontiguousarray(stick.stiffness_n_m, dtype=float)
+    fy = np.ascontiguousarray(stick.yield_force_n, dtype=float)
+    hardening = np.array(np.broadcast_to(stick.hardening, (n,)), dtype=float)
+    parameters = np.array([spring_parameters(stick.law, k0[i], fy[i], hardening[i], stick.pinch_x, stick.pinch_y,
+                                             stick.unloading_beta) for i in range(n)])
     accel, drift, unconverged = _history(
-        ground, float(dt_s), int(substeps), np.ascontiguousarray(stick.floor_masses_kg, dtype=float),
-        np.ascontiguousarray(stick.stiffness_n_m, dtype=float), np.ascontiguousarray(stick.yield_force_n, dtype=float),
-        np.array(np.broadcast_to(stick.hardening, (n,)), dtype=float), LAWS[stick.law],
-        float(stick.pinch_x), float(stick.pinch_y), float(stick.unloading_beta),
+        ground, float(dt_s), int(substeps), np.ascontiguousarray(stick.floor_masses_kg, dtype=float), k0, fy,
+        hardening, LAWS[stick.law], parameters,
         np.ascontiguousarray(stick.linear_stiffness_n_m, dtype=float),
         np.zeros((n, n)) if stick.modal_damping_n_s_m is None
         else np.ascontiguousarray(stick.modal_damping_n_s_m, dtype=float), float(stick.rayleigh[0]),
@@ -471,7 +469,7 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
     floor_masses_kg : array-like, optional
         Floor masses (equal, 10⁵ kg, by default; accelerations and drifts do not depend on the scale).
     law : str, optional
-        ``"bilinear"`` or ``"pinching"``; by default the system's
+        ``"bilinear"``, ``"pinching"`` or ``"buckling"`` (braces); by default the system's
         (:data:`~assess.building.design.LAW_BY_SYSTEM`).
     hardening : float, optional
         Post-yield stiffness ratio b; :data:`DEFAULT_HARDENING`.

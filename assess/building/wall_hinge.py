@@ -65,7 +65,7 @@ from scipy.linalg import eigh
 
 from assess.mechanics.geometry import STANDARD_GRAVITY_M_S2
 
-from .hysteresis import BILINEAR, LAWS, STATE_SIZE, bilinear_trial, pinching_trial
+from .hysteresis import LAWS, STATE_SIZE, spring_parameters, spring_trial
 from .newmark import (DEFAULT_SUBSTEP_S, MAX_ITERATIONS, STEPS_PER_SHORTEST_PERIOD, TOLERANCE_M,
                       YieldingResponse, _gains, _rates, _record, _solve, rayleigh_coefficients, substeps_for)
 
@@ -232,20 +232,9 @@ def hinged_wall(stiffness, storey_heights_m, floor_masses_kg, period_s, yield_ba
                       else np.asarray(geometric_stiffness_n_m, dtype=float))
 
 
-@njit(cache=True)
-def _hinge_state(theta, law, committed, trial, k_theta, m_y, hardening, pinch_x, pinch_y, beta):  # pragma: no cover
-    """(moment, tangent) of the hinge at a trial rotation, its trial state written into ``trial``."""
-    if law == BILINEAR:
-        m, kt = bilinear_trial(theta, committed[0], committed[1], k_theta, m_y, hardening)
-        trial[0], trial[1], trial[2] = theta, m, kt
-    else:
-        pinching_trial(committed, trial, theta, k_theta, m_y, hardening, pinch_x, pinch_y, beta)
-    return trial[1], trial[2]
-
-
 @njit(cache=True, nogil=True)  # released so that a suite's motions run on threads (assess.building.yielding)
-def _hinge_history(ground_g, dt_s, substeps, masses, k_full, damping, k_theta, m_y, hardening, law, pinch_x,
-                   pinch_y, beta, tolerance, max_iterations):  # pragma: no cover - compiled
+def _hinge_history(ground_g, dt_s, substeps, masses, k_full, damping, k_theta, m_y, hardening, law, parameters,
+                   tolerance, max_iterations):  # pragma: no cover - compiled
     """Floors' absolute accelerations [g] (n + 1, samples), storey drifts [m] (n, samples), peak |θ| at the
     samples [rad], unconverged substeps. ``k_full``, ``damping``: the linear part's (n + 1)² stiffness (the
     hinge left out) and the damping matrix on (u, θ)."""
@@ -303,8 +292,7 @@ def _hinge_history(ground_g, dt_s, substeps, masses, k_full, damping, k_theta, m
             converged = False
             for iteration in range(max_iterations):
                 _rates(u_new, u, v, a, a_new, v_new, h, m)
-                moment, tangent = _hinge_state(u_new[n], law, committed, trial, k_theta, m_y, hardening,
-                                               pinch_x, pinch_y, beta)
+                moment, tangent = spring_trial(law, committed, trial, u_new[n], k_theta, m_y, hardening, parameters)
                 for r in range(m):
                     total = -mass[r] * (ground + a_new[r]) if r < n else -moment
                     for c in range(m):
@@ -328,7 +316,7 @@ def _hinge_history(ground_g, dt_s, substeps, masses, k_full, damping, k_theta, m
             if not converged:
                 unconverged += 1
             _rates(u_new, u, v, a, a_new, v_new, h, m)
-            _hinge_state(u_new[n], law, committed, trial, k_theta, m_y, hardening, pinch_x, pinch_y, beta)
+            spring_trial(law, committed, trial, u_new[n], k_theta, m_y, hardening, parameters)
             for s in range(STATE_SIZE):
                 committed[s] = trial[s]
             for r in range(m):
@@ -380,8 +368,9 @@ def hinged_wall_response(wall: HingedWall, ground_accel_g, dt_s, *, substep_s=DE
         ground, float(dt_s), int(substeps), np.ascontiguousarray(wall.floor_masses_kg, dtype=float),
         np.ascontiguousarray(wall.assembled_stiffness(0.0)), damping_matrix(wall),
         float(wall.hinge_stiffness_n_m_rad), float(wall.yield_moment_n_m), float(wall.hinge_hardening),
-        LAWS[wall.law], float(wall.pinch_x), float(wall.pinch_y), float(wall.unloading_beta), TOLERANCE_M,
-        MAX_ITERATIONS)
+        LAWS[wall.law], spring_parameters(wall.law, float(wall.hinge_stiffness_n_m_rad), float(wall.yield_moment_n_m),
+                                          float(wall.hinge_hardening), wall.pinch_x, wall.pinch_y,
+                                          wall.unloading_beta), TOLERANCE_M, MAX_ITERATIONS)
     ductility = np.full(n, np.nan)
     ductility[0] = rotation_ductility(wall, peak_theta)
     peak = np.abs(drift).max(axis=1)

@@ -139,7 +139,8 @@ def yielding_floor_accelerations(stick, ground_accel_g, dt_s, substeps):
         storey_spring(ops, i, float(stick.floor_masses_kg[i - 1]), float(stick.stiffness_n_m[i - 1]),
                       float(stick.yield_force_n[i - 1]), float(np.broadcast_to(stick.hardening, (n,))[i - 1]),
                       stick.law == "bilinear",
-                      (float(stick.pinch_x), float(stick.pinch_y), float(stick.unloading_beta)), column)
+                      (float(stick.pinch_x), float(stick.pinch_y), float(stick.unloading_beta)), column,
+                      buckling=stick.law == "buckling")
     a0, a1 = stick.rayleigh
     if stick.damping_stiffness == "initial":
         ops.rayleigh(float(a0), 0.0, float(a1), 0.0)

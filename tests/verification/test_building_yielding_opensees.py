@@ -6,7 +6,9 @@ OpenSees ``elasticBeamColumn`` beside the springs) and as an equivalent shear st
 strengths from ASCE 7-22 §12.8 at S_DS 1.0 g, S_D1 0.6 g, Risk Category II, overstrength 2
 (:func:`~assess.building.design.design_strength`): steel special moment frames with the
 bilinear law (OpenSees ``Steel01``) and concrete special moment frames with the pinching,
-degrading law (OpenSees ``Hysteretic``, pinchX 0.8, pinchY 0.4, β 0.4, no damage); Rayleigh
+degrading law (OpenSees ``Hysteretic``, pinchX 0.8, pinchY 0.4, β 0.4, no damage), and special concentrically
+braced frames with the buckling braces' law (two mirrored OpenSees ``Hysteretic`` braces in ``Parallel``,
+:func:`peers.opensees_yielding.buckling_brace_pair`); Rayleigh
 5 % at modes 1 and 3 on the committed tangent stiffness. Records: pyslammer's Northridge
 Pacoima Dam (PAC-175, 20 s) and Kobe Takatori (TAK-090, first 20 s), scaled so that their
 5 %-damped S_a(T_1) is the design spectrum's (DE) and 1.5 times it (MCE_R): every building
@@ -37,7 +39,7 @@ pytestmark = pytest.mark.skipif(OPS is None, reason=str(WHY))
 BUILDINGS = [(3, 0.35), (6, 0.70), (12, 1.40)]
 RECORDS = [("Northridge_1994_PAC-175", None), ("Kobe_1995_TAK-090", 20.0)]
 LEVELS = {"DE": 1.0, "MCE_R": 1.5}
-SYSTEMS = {"bilinear": "steel moment frame", "pinching": "concrete moment frame"}
+SYSTEMS = {"bilinear": "steel moment frame", "pinching": "concrete moment frame", "buckling": "braced frame"}
 SDS_G, SD1_G = 1.0, 0.6
 
 
@@ -62,11 +64,11 @@ def building(storeys, period_s, law, flexure):
     strength = design_strength(system, np.ones(storeys), heights, period_s, sds_g=SDS_G, sd1_g=SD1_G,
                                risk_category="II")
     return yielding_stick(storeys, 3.5, strength.storey_yield_ratio, system=system, period_s=period_s,
-                          flexure=flexure)
+                          flexure=flexure, law=law)
 
 
 @pytest.mark.parametrize("flexure", ["elastic column", "equivalent shear"])
-@pytest.mark.parametrize("law", ["bilinear", "pinching"])
+@pytest.mark.parametrize("law", list(SYSTEMS))
 @pytest.mark.parametrize("storeys, period_s", BUILDINGS)
 @pytest.mark.parametrize("level", list(LEVELS))
 def test_yielding_floor_histories_against_opensees(storeys, period_s, law, level, flexure):
