@@ -27,6 +27,7 @@ from assess.anchorage.equations import height_factor
 from assess.anchorage.item import system_ductility_reduction
 from assess.building.design import OVERSTRENGTH_SOURCE_BY_SYSTEM, design_storey_stiffness
 from assess.building.floors import floors_table
+from assess.building.hysteresis import BRACE_BUCKLING_RATIO, BRACE_POST_BUCKLING_RATIO
 from assess.building.nonlinear import STRENGTH_BY_SYSTEM
 from assess.building.modes import ALPHA_BY_SYSTEM
 from assess.building.period import approximate_period
@@ -176,7 +177,8 @@ def building_model_of(building: BuildingSheet, site: SiteSheet | None, modes: Bu
         design["code"] = site.code
     model = yielding_building(modes, building.system, damping=building.damping, overstrength=building.overstrength,
                               yield_base_shear_g=building.yield_base_shear_g, p_delta=building.p_delta,
-                              hardening=building.storey_hardening_ratio, **design)
+                              hardening=building.storey_hardening_ratio,
+                              law="buckling" if building.brace_buckling else None, **design)
     theta = model.stability_coefficient
     if theta > STABILITY_COEFFICIENT_MAX:
         approximate = float(approximate_period(building.height_m, building.system))
@@ -336,6 +338,12 @@ def site_note(site: SiteSuite, sheet: SiteSheet) -> str:
             f"{suite.lower_s:.3g} to {suite.upper_s:.3g} s ({mean}ground_motions.csv and spectrum.csv).{cautions}")
 
 
+#: A storey of buckling braces in the building's note (:func:`assess.building.hysteresis.brace_backbones`).
+BRACES = (f"storeys of two braces each, one pulled and one pushed (brace_buckling): the pushed one buckles at the "
+          f"storey's first yield, at {BRACE_BUCKLING_RATIO:g} of the pulled one's tension strength, and keeps "
+          f"{BRACE_POST_BUCKLING_RATIO:g} of that once buckled; the pulled one yields,")
+
+
 def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, numbering: str = "ground_0") -> str:
     """Where the upper floors' motions come from, in a sentence for the report (floors labelled by
     ``numbering``: :func:`assess.quantity_text.floor_text`); ``building`` as :func:`building_model_of` gives it."""
@@ -348,8 +356,9 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
         strength = building.strength
         hinged = building.yielding_model == BASE_HINGE
         springs = (f"its elastic model on a {building.stick.law} plastic hinge at the base" if hinged
-                   else f"{building.stick.law} storey springs")
-        springs += (f" hardening at {100 * building.hardening:.3g}% of {'its' if hinged else 'their'} "
+                   else BRACES if building.stick.law == "buckling" else f"{building.stick.law} storey springs")
+        one = hinged or building.stick.law == "buckling"
+        springs += (f" hardening at {100 * building.hardening:.3g}% of {'its' if one else 'their'} "
                     "stiffness after yield ("
                     + ("by default" if sheet.storey_hardening_ratio is None
                        else sheet.hardening_source or "storey_hardening_ratio") + ")")
@@ -383,6 +392,10 @@ def building_note(building, sheet: BuildingSheet, floors, derive_floors_roof, nu
                      "do: where the building's own harden less, its columns are stiffer than this α says (on OpenSees "
                      "frames of α 10 whose storeys harden at 2%, the α found was 11.1 to 12.5, and 9.6 to 10.5 "
                      "with their 2% written): give the model's in storey_hardening_ratio.")
+        if sheet.system == "braced frame" and building.stick.law != "buckling":
+            text += (" Its storeys yield without the braces' buckling (bilinear springs, as a buckling-restrained "
+                     "brace's): where the braces buckle, as a special concentrically braced frame's do, write yes "
+                     "in brace_buckling.")
         if sheet.storey_stiffness is None and not hinged and STRENGTH_BY_SYSTEM[sheet.system] == "stiffness":
             text += (" The storeys' stiffnesses, which set their strengths, are the system's default profile, not "
                      "this building's: give storey_stiffness from the building's model where known.")

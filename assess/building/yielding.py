@@ -199,7 +199,8 @@ def _stick_key(stick) -> str:
 
 def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.05, sds_g=None, sd1_g=None,
                       tl_s=None, s1_g=None, risk_category="II", overstrength=None, yield_base_shear_g=None,
-                      p_delta: bool = False, code: str = "ASCE 7-22", hardening=None) -> YieldingBuilding:
+                      p_delta: bool = False, code: str = "ASCE 7-22", hardening=None,
+                      law: str | None = None) -> YieldingBuilding:
     """The yielding stick of a building whose elastic model is ``modes`` (equal floor masses, uniform storeys).
 
     The storeys' strength: ``yield_base_shear_g`` where given, else ASCE 7-22 §12.8's design from the site's
@@ -211,7 +212,8 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
     :data:`~assess.building.nonlinear.FLEXURE_BY_SYSTEM`). The strength's words name ``code``, the site's
     edition (the provisions used read the same in ASCE 7-16 and 7-22). ``hardening``: the storeys' (a wall's base's)
     stiffness after yield over their stiffness before, where the engineer gives the model's; else
-    :data:`~assess.building.nonlinear.DEFAULT_HARDENING`.
+    :data:`~assess.building.nonlinear.DEFAULT_HARDENING`. ``law``: the springs' law where not the system's (a braced
+    frame's ``buckling`` braces, :func:`~assess.building.hysteresis.brace_backbones`).
 
     Examples
     --------
@@ -231,7 +233,7 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
                                yield_base_shear_g=yield_base_shear_g, code=code,
                                spread=FLEXURE_BY_SYSTEM[system] != "base hinge", hardening=hardening)
     arguments = dict(system=system, period_s=period_s, alpha=modes.alpha, storey_stiffness=modes.storey_stiffness,
-                     damping=damping, p_delta=p_delta, hardening=hardening)
+                     damping=damping, p_delta=p_delta, hardening=hardening, law=law)
     stick = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, **arguments)
     importance = importance_factor(risk_category)
     if isinstance(stick, HingedWall):  # only the base yields: the storeys above have no yield shear

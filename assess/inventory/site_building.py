@@ -192,6 +192,9 @@ class BuildingSheet:
     storey_hardening_ratio : float or None
         The storeys' stiffness after yield over their stiffness before (a wall's: its base's), where the engineer
         gives the model's; None: :data:`assess.building.nonlinear.DEFAULT_HARDENING`.
+    brace_buckling : bool
+        Whether a braced frame's storeys are its braces, the pushed one buckling (the ``buckling`` law of
+        :mod:`assess.building.hysteresis`), where the bilinear springs are the default.
     rows : dict
         The sheet row of each key given.
     sheet : str
@@ -211,6 +214,7 @@ class BuildingSheet:
     lateral_stiffness_ratio: float | None = None
     pushover_slope_ratio: float | None = None
     storey_hardening_ratio: float | None = None
+    brace_buckling: bool = False
     #: Where α comes from where the run sets it itself (``--alpha-range``'s ends), in words for the notes.
     alpha_source: str = ""
     #: Where ``storey_hardening_ratio`` comes from where the run sets it itself (``--alpha-range``'s ends).
@@ -286,6 +290,7 @@ _BUILDING_KEYS = {
                                       high=LATERAL_STIFFNESS_RATIO_RANGE[1], positive=True),
     "storey_hardening_ratio": Column("storey_hardening_ratio", "number", low=STOREY_HARDENING_RATIO_RANGE[0],
                                      high=STOREY_HARDENING_RATIO_RANGE[1]),
+    "brace_buckling": Column("brace_buckling", "text", max_chars=10),
 }
 
 
@@ -483,8 +488,24 @@ def read_building(table, report) -> BuildingSheet | None:
             report.at(values["p_delta"][1], value_header, f"p_delta {schema.quote(out['p_delta'])} is not "
                       "yes or no.", "write yes (the gravity loads' P-Delta effect on the yielding storeys) or no.")
         p_delta = word in _YES
+    buckling = False
+    if "brace_buckling" in out:
+        word = str(out["brace_buckling"]).strip().lower()
+        row = values["brace_buckling"][1]
+        if word not in _YES + _NO:
+            report.at(row, value_header, f"brace_buckling {schema.quote(out['brace_buckling'])} is not yes or no.",
+                      "write yes (the braces buckle: each storey its two braces, one pulled and one pushed) or no.")
+        buckling = word in _YES
+        if system in SYSTEMS and system != "braced frame":
+            report.at(row, key_header, f"brace_buckling is given but the system is {system}: only a braced frame's "
+                      "storeys are braces.", "delete the brace_buckling row, or write braced frame in system.")
+        elif buckling and "pushover_slope_ratio" in out:
+            report.at(row, key_header, "brace_buckling is yes and pushover_slope_ratio is given: α is found by "
+                      "pushing over storeys that harden after yield, and buckling braces' storeys lose strength.",
+                      "delete the pushover_slope_ratio row (give α in lateral_stiffness_ratio where known), or "
+                      "write no in brace_buckling.")
     if response == "elastic":
-        for key in ("yield_base_shear", "overstrength", "p_delta", "storey_hardening_ratio"):
+        for key in ("yield_base_shear", "overstrength", "p_delta", "storey_hardening_ratio", "brace_buckling"):
             if key in out:
                 name = "yield_base_shear_g" if key == "yield_base_shear" else key
                 report.at(values[key][1], key_header, f"{name} is given but response is elastic: the elastic "
@@ -512,6 +533,8 @@ def read_building(table, report) -> BuildingSheet | None:
                 ("p_delta", p_delta, "p_delta is given", f"delete the p_delta row: {deleted} carry no P-Delta."),
                 ("storey_hardening_ratio", "storey_hardening_ratio" in out, "storey_hardening_ratio is given",
                  f"delete the storey_hardening_ratio row: {deleted} do not yield."),
+                ("brace_buckling", buckling, "brace_buckling is yes", f"delete the brace_buckling row: {deleted} do "
+                 "not buckle."),
                 ("pushover_slope_ratio", "pushover_slope_ratio" in out, "pushover_slope_ratio is given",
                  f"delete the pushover_slope_ratio row ({deleted} take α from lateral_stiffness_ratio).")):
             if asks:
@@ -552,7 +575,7 @@ def read_building(table, report) -> BuildingSheet | None:
                          overstrength=out.get("overstrength"), p_delta=p_delta, storey_stiffness=stiffness,
                          lateral_stiffness_ratio=out.get("lateral_stiffness_ratio"),
                          pushover_slope_ratio=out.get("pushover_slope_ratio"),
-                         storey_hardening_ratio=out.get("storey_hardening_ratio"),
+                         storey_hardening_ratio=out.get("storey_hardening_ratio"), brace_buckling=buckling,
                          rows={name: row for name, (_, row) in values.items()}, sheet=table.title)
 
 
@@ -626,7 +649,7 @@ def _is_number(text: str) -> bool:
 def check_building_strength(table, building: BuildingSheet, site: SiteSheet | None, report) -> None:
     """Report ``response: yielding`` where nothing gives the storeys' strength, at the response cell; and, where the
     sheet names no ``response`` and the building is elastic for want of a strength, each key only the yielding stick
-    uses (``overstrength``, ``p_delta`` yes, ``storey_hardening_ratio``) at its key cell.
+    uses (``overstrength``, ``p_delta`` yes, ``storey_hardening_ratio``, ``brace_buckling`` yes) at its key cell.
 
     The yielding stick's strength is ``yield_base_shear_g``, else the code's design from the site sheet's
     design values (S_DS, S_D1 or S_S, S_1 and the site class); a site given only by a uniform-hazard
@@ -637,7 +660,8 @@ def check_building_strength(table, building: BuildingSheet, site: SiteSheet | No
         return
     if building.response is None and not building.too_tall_to_yield:  # elastic by default: say what goes unused
         for key, asks in (("overstrength", building.overstrength is not None), ("p_delta", building.p_delta),
-                          ("storey_hardening_ratio", building.storey_hardening_ratio is not None)):
+                          ("storey_hardening_ratio", building.storey_hardening_ratio is not None),
+                          ("brace_buckling", building.brace_buckling)):
             if asks:
                 report.at(building.rows[key], table.headers.get("key"), f"{key} is given but nothing gives the "
                           "storeys' strength (no yield_base_shear_g, and the site sheet no design values), so the "
