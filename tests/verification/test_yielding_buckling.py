@@ -151,17 +151,23 @@ def test_the_braces_buckling_raises_the_truth_s_roof_motion(buckled, level):
     assert n["gm"] < 0.98, n
 
 
+@pytest.mark.parametrize("route", ["given", "given + brace buckling"])
 @pytest.mark.parametrize("level", list(LEVELS))
-def test_with_the_given_strength_the_bilinear_springs_meet_the_sliding_and_class_targets_on_braces_that_buckle(
-        buckled, level):
-    n = buckled[level]["given"]
+def test_with_the_given_strength_the_sliding_and_class_targets_are_met_on_braces_that_buckle(buckled, level, route):
+    """The bilinear springs: gm 1.16 / 1.01, σ ln 0.34 / 0.29, class 0.92 / 0.92 (DE / MCE_R); the tool's buckling
+    braces (``brace_buckling`` yes): 1.21 / 1.07, 0.36 / 0.28, 0.92 / 0.83. On this frame, which yields little, the
+    law moves little."""
+    n = buckled[level][route]
     assert n["n_sliding"] >= 100
     assert meets_sliding_targets(n) and meets_class_target(n), n
 
 
+@pytest.mark.parametrize("route", ["design", "design + brace buckling"])
 @pytest.mark.parametrize("level", list(LEVELS))
-def test_from_the_design_data_within_a_factor_of_one_and_a_half_and_nearer_than_the_elastic_route(buckled, level):
-    gm, elastic = buckled[level]["design"]["gm"], buckled[level]["elastic"]["gm"]
+def test_from_the_design_data_within_a_factor_of_one_and_a_half_and_nearer_than_the_elastic_route(buckled, level,
+                                                                                                 route):
+    """gm 0.98 / 0.87 with the bilinear springs, 1.04 / 1.01 with the buckling braces (DE / MCE_R)."""
+    gm, elastic = buckled[level][route]["gm"], buckled[level]["elastic"]["gm"]
     assert 1 / 1.5 <= gm <= 1.5 and abs(np.log(gm)) < abs(np.log(elastic)), (gm, elastic)
 
 
@@ -193,22 +199,6 @@ def test_on_a_weaker_frame_whose_braces_buckle_the_pushover_s_slope_brings_the_s
     n, alone = weaker["given + pushover slope"], weaker["given"]
     assert meets_sliding_targets(n), n
     assert abs(np.log(n["gm"])) < abs(np.log(alone["gm"])), (n, alone)
-
-
-@pytest.mark.parametrize("level", list(LEVELS))
-def test_with_the_braces_buckling_and_the_given_strength_the_sliding_and_class_targets_are_met(buckled, level):
-    """``brace_buckling`` yes: gm 1.21 / 1.07, σ ln 0.36 / 0.28, class 0.92 / 0.83 (DE / MCE_R), where the bilinear
-    springs give 1.16 / 1.01, 0.34 / 0.29, 0.92 / 0.92: on this frame, which yields little, the law moves little."""
-    n = buckled[level]["given + brace buckling"]
-    assert n["n_sliding"] >= 100
-    assert meets_sliding_targets(n) and meets_class_target(n), n
-
-
-@pytest.mark.parametrize("level", list(LEVELS))
-def test_with_the_braces_buckling_from_the_design_data_within_a_factor_of_one_and_a_half(buckled, level):
-    """gm 1.04 / 1.01 (DE / MCE_R), the bilinear springs' 0.98 / 0.87."""
-    gm, elastic = buckled[level]["design + brace buckling"]["gm"], buckled[level]["elastic"]["gm"]
-    assert 1 / 1.5 <= gm <= 1.5 and abs(np.log(gm)) < abs(np.log(elastic)), (gm, elastic)
 
 
 def test_on_a_weaker_frame_whose_braces_buckle_the_braces_law_meets_the_targets_with_the_strength_alone(weaker):
