@@ -3,7 +3,7 @@
 Run: python benchmarks/bench_yielding_equipment.py [--levels DE,MCE_R] [--buildings smf4,smf8,wall6,wallf6,rcf5]
      [--motions 11] [--overstrengths 1.5,2,3] [--truth-profile] [--truth-strengths 0.9,1.1]
      [--truth-floors 0.995,1.005] [--truth-alphas 5,20] [--own-alpha] [--alpha-bracket] [--pushover-slope]
-     [--own-hardening] [--skip RECORD,...]
+     [--own-hardening] [--brace-buckling] [--strength-factor F] [--skip RECORD,...]
      (needs openseespy and pyslammer; about 3 minutes a level)
 
 The truth: five yielding OpenSeesPy buildings of our own (tests/peers/opensees_buildings.py: steel
@@ -38,6 +38,14 @@ a ``building`` sheet of the building's storeys, height, system and T_1): only th
   sliding gm on the steel frames 1.01, 1.05, 1.10, 1.17 by design alone and 1.07, 1.08, 1.24, 1.20 with their
   hardening (smf4 DE, MCE_R, smf8 DE, MCE_R); over all six 0.92-1.24, σ ln ≤ 0.49 (``rcf5`` DE), risk class
   0.67-0.92 (``bf6`` MCE_R 0.67 both ways), the per-case overturn share pooled 0.68 (0.64 by design alone);
+* ``given + brace buckling`` and ``design + brace buckling`` (``--brace-buckling``, braced frames only): ``given``
+  and ``design`` with the building sheet's ``brace_buckling`` yes, the tool's storeys of buckling braces. Measured
+  (``--buildings bf6b,bf6 --levels DE,MCE_R --overstrengths "" --brace-buckling``, 172 s, then with
+  ``--strength-factor 0.6``, every truth storey 0.6 times as strong), sliding gm given / with brace buckling, DE and
+  MCE_R: on ``bf6b`` (its braces buckle) 1.16 / 1.21 and 1.01 / 1.07, class 0.92 / 0.92 and 0.92 / 0.83; on ``bf6``
+  (they do not) 1.23 / 1.29 and 1.06 / 1.13; 0.6 times as strong, ``bf6b`` 0.94 / 1.03 and 0.78 / 0.91 (class 0.75 /
+  0.83 at MCE_R), ``bf6`` 0.98 / 1.07 and 0.85 / 1.00: the law raises a weaker frame's answer by about a sixth at
+  MCE_R whether the truth's braces buckle or not;
 * ``design x Ω``: the same with ``overstrength`` Ω;
 * ``elastic``: ``response: elastic``, today's modal route;
 * ``given + truth's stiffness`` (``--truth-profile``): ``given`` with the OpenSees building's storey
@@ -279,6 +287,12 @@ def main(argv=None):
                              "that also writes the OpenSees springs' hardening in storey_hardening_ratio "
                              "(peers.yielding_equipment.own_hardening); with --truth-profile, the latter with the "
                              "truth's storey stiffnesses too")
+    parser.add_argument("--brace-buckling", action="store_true",
+                        help="for braced frames, add the routes 'given + brace buckling' and 'design + brace "
+                             "buckling': the building sheet's brace_buckling yes (the tool's buckling braces)")
+    parser.add_argument("--strength-factor", type=float, default=1.0,
+                        help="every truth building's storeys (or hinge) this many times as strong (and its pushover "
+                             "strength with them), e.g. 0.6 for a frame that yields more")
     parser.add_argument("--truth-profile", action="store_true",
                         help="add the route 'given + truth's stiffness': yield_base_shear_g and the OpenSees "
                              "building's storey stiffnesses in storey_stiffness")
@@ -286,7 +300,7 @@ def main(argv=None):
     rows, ratios = [], []
     start = time.perf_counter()
     for name in args.buildings.split(","):
-        truth = TRUTHS[name]
+        truth = TRUTHS[name] if args.strength_factor == 1.0 else stronger(TRUTHS[name], args.strength_factor)
         for level in args.levels.split(","):
             skip = tuple(filter(None, args.skip.split(",")))
             suite = ground_suite(args.motions, truth.period_s, LEVELS[level], skip)
@@ -309,6 +323,10 @@ def main(argv=None):
                     routes["design" + OWN_HARDENING] = routes["design"] + own_hardening(truth)
                 for omega in filter(None, args.overstrengths.split(",")):
                     routes[f"design x {omega}"] = [["response", "yielding"], ["overstrength", float(omega)]]
+                if args.brace_buckling and truth.system == "braced frame":
+                    buckling = [["brace_buckling", "yes"]]
+                    routes.update({"given + brace buckling": routes["given"] + buckling,
+                                   "design + brace buckling": routes["design"] + buckling})
                 routes["elastic"] = [["response", "elastic"]]
                 reference = truth_result(truth, suite, level, folder)
                 bracket = ALPHA_RANGE_BY_SYSTEM[truth.system] if args.alpha_bracket else None
