@@ -106,35 +106,27 @@ def bilinear_trial(drift, committed_drift, committed_force, stiffness, yield_for
 
 
 @njit(cache=True)
-def _positive_envelope(strain, p):  # pragma: no cover - compiled
-    """Backbone (force, tangent) on the positive side; ``p`` the spring's :data:`PARAMETERS` row."""
-    e1, e2 = p[_M1P] / p[_R1P], (p[_M2P] - p[_M1P]) / (p[_R2P] - p[_R1P])
-    e3 = (p[_M3P] - p[_M2P]) / (p[_R3P] - p[_R2P])
-    if strain <= 0.0:
-        return 0.0, e1 * 1.0e-9
-    if strain <= p[_R1P]:
-        return e1 * strain, e1
-    if strain <= p[_R2P]:
-        return p[_M1P] + e2 * (strain - p[_R1P]), e2
-    if strain <= p[_R3P] or e3 > 0.0:
-        return p[_M2P] + e3 * (strain - p[_R2P]), e3
-    return p[_M3P], e1 * 1.0e-9
+def _side(p, sign):  # pragma: no cover - compiled
+    """One side of the backbone of ``p`` (a :data:`PARAMETERS` row), ``sign`` +1 the positive side and -1 the
+    negative one (its points negative): its points r_1, m_1, r_2, m_2, r_3, m_3 and slopes e_1, e_2, e_3."""
+    o = _R1P if sign > 0.0 else _R1N
+    r1, m1, r2, m2, r3, m3 = p[o], p[o + 1], p[o + 2], p[o + 3], p[o + 4], p[o + 5]
+    return r1, m1, r2, m2, r3, m3, m1 / r1, (m2 - m1) / (r2 - r1), (m3 - m2) / (r3 - r2)
 
 
 @njit(cache=True)
-def _negative_envelope(strain, p):  # pragma: no cover - compiled
-    """Backbone (force, tangent) on the negative side (its points negative)."""
-    e1, e2 = p[_M1N] / p[_R1N], (p[_M2N] - p[_M1N]) / (p[_R2N] - p[_R1N])
-    e3 = (p[_M3N] - p[_M2N]) / (p[_R3N] - p[_R2N])
-    if strain >= 0.0:
+def _envelope(strain, p, sign):  # pragma: no cover - compiled
+    """Backbone (force, tangent) on the ``sign`` side (OpenSees' ``posEnvlpStress`` and ``negEnvlpStress``)."""
+    r1, m1, r2, m2, r3, m3, e1, e2, e3 = _side(p, sign)
+    if sign * strain <= 0.0:
         return 0.0, e1 * 1.0e-9
-    if strain >= p[_R1N]:
+    if sign * strain <= sign * r1:
         return e1 * strain, e1
-    if strain >= p[_R2N]:
-        return p[_M1N] + e2 * (strain - p[_R1N]), e2
-    if strain >= p[_R3N] or e3 > 0.0:
-        return p[_M2N] + e3 * (strain - p[_R2N]), e3
-    return p[_M3N], e1 * 1.0e-9
+    if sign * strain <= sign * r2:
+        return m1 + e2 * (strain - r1), e2
+    if sign * strain <= sign * r3 or e3 > 0.0:
+        return m2 + e3 * (strain - r2), e3
+    return m3, e1 * 1.0e-9
 
 
 @njit(cache=True)
@@ -142,9 +134,7 @@ def _release_limit(strain, p, sign):  # pragma: no cover - compiled
     """Where a softening branch of the envelope reached at ``strain`` (on the ``sign`` side) would cross zero
     force: reloading towards the other side starts there at the latest (OpenSees' ``posEnvlpRotlim`` and
     ``negEnvlpRotlim``); ±:data:`_BIG` where it has no softening branch."""
-    o = 0 if sign > 0.0 else 6  # offset of that side's points
-    r1, m1, r2, m2, r3, m3 = p[o], p[o + 1], p[o + 2], p[o + 3], p[o + 4], p[o + 5]
-    e2, e3 = (m2 - m1) / (r2 - r1), (m3 - m2) / (r3 - r2)
+    r1, m1, r2, m2, _, _, _, e2, e3 = _side(p, sign)
     limit = sign * _BIG
     if sign * strain <= sign * r1:
         return limit
@@ -154,8 +144,17 @@ def _release_limit(strain, p, sign):  # pragma: no cover - compiled
         limit = r2 - m2 / e3
     if limit == sign * _BIG:
         return limit
-    force = _positive_envelope(limit, p)[0] if sign > 0.0 else _negative_envelope(limit, p)[0]
-    return sign * _BIG if sign * force > 0.0 else limit
+    return sign * _BIG if sign * _envelope(limit, p, sign)[0] > 0.0 else limit
+
+
+@njit(cache=True)
+def _unloading(committed, p, sign):  # pragma: no cover - compiled
+    """(the stiffness unloading from the ``sign`` side at its committed peak, that side's undegraded one): the
+    steepest of its backbone's slopes, times (peak/r_1)^-β once the peak is past r_1 (Takeda's rule)."""
+    r1, _, _, _, _, _, e1, e2, e3 = _side(p, sign)
+    steepest = max(e1, e2, e3)
+    factor = (committed[_ROT_MAX if sign > 0.0 else _ROT_MIN] / r1) ** p[_BETA]
+    return steepest * (1.0 if factor < 1.0 else 1.0 / factor), steepest
 
 
 @njit(cache=True)
@@ -164,7 +163,9 @@ def hysteretic_trial(committed, trial, strain, p):  # pragma: no cover - compile
 
     ``committed`` and ``trial`` are state vectors of :data:`HYSTERETIC_SIZE`, ``p`` the spring's
     :data:`PARAMETERS` row: the rules of OpenSees' Hysteretic material on its trilinear backbone, each side
-    its own, with no damage terms (damage1 = damage2 = 0).
+    its own, with no damage terms (damage1 = damage2 = 0). Moving towards side ``sign`` (OpenSees'
+    ``positiveIncrement`` for +1, ``negativeIncrement`` its mirror for -1), the spring unloads from the other
+    side, then reloads through the pinching point towards the largest drift reached on this one.
     """
     for s in range(HYSTERETIC_SIZE):
         trial[s] = committed[s]
@@ -177,87 +178,50 @@ def hysteretic_trial(committed, trial, strain, p):  # pragma: no cover - compile
     trial[_STRAIN] = strain
     if strain >= committed[_ROT_MAX]:
         trial[_ROT_MAX] = strain
-        trial[_STRESS], trial[_TANGENT] = _positive_envelope(strain, p)
+        trial[_STRESS], trial[_TANGENT] = _envelope(strain, p, 1.0)
         trial[_LOAD] = 1.0
         return
     if strain <= committed[_ROT_MIN]:
         trial[_ROT_MIN] = strain
-        trial[_STRESS], trial[_TANGENT] = _negative_envelope(strain, p)
+        trial[_STRESS], trial[_TANGENT] = _envelope(strain, p, -1.0)
         trial[_LOAD] = 2.0
         return
-    beta = p[_BETA]
-    rot1p, rot1n = p[_R1P], p[_R1N]
-    kp_unload = max(p[_M1P] / rot1p, (p[_M2P] - p[_M1P]) / (p[_R2P] - rot1p),
-                    (p[_M3P] - p[_M2P]) / (p[_R3P] - p[_R2P]))  # the steepest of the backbone's slopes
-    kn_unload = max(p[_M1N] / rot1n, (p[_M2N] - p[_M1N]) / (p[_R2N] - rot1n),
-                    (p[_M3N] - p[_M2N]) / (p[_R3N] - p[_R2N]))
-    kn = (committed[_ROT_MIN] / rot1n) ** beta
-    kn = 1.0 if kn < 1.0 else 1.0 / kn
-    kp = (committed[_ROT_MAX] / rot1p) ** beta
-    kp = 1.0 if kp < 1.0 else 1.0 / kp
+    sign = 1.0 if d_strain > 0.0 else -1.0
+    peak, away = (_ROT_MAX, _ROT_MIN) if sign > 0.0 else (_ROT_MIN, _ROT_MAX)
+    release = _ROT_NU if sign > 0.0 else _ROT_PU  # where the force from the other side reached zero
+    towards, towards_elastic = _unloading(committed, p, sign)
+    back, back_elastic = _unloading(committed, p, -sign)
     c_stress = committed[_STRESS]
-    c_strain = committed[_STRAIN]
     pinch_x, pinch_y = p[_PINCH_X], p[_PINCH_Y]
-    if d_strain > 0.0:
-        if load == 2.0 and c_stress <= 0.0:
-            trial[_ROT_NU] = c_strain - c_stress / (kn_unload * kn)
-        trial[_LOAD] = 1.0
-        rot_max = max(min(trial[_ROT_MAX], _BIG), rot1p)
-        trial[_ROT_MAX] = rot_max
-        max_force = _positive_envelope(rot_max, p)[0]
-        rot_rel = max(_release_limit(committed[_ROT_MIN], p, -1.0), trial[_ROT_NU])
-        rot_mp2 = rot_max - (1.0 - pinch_y) * max_force / (kp_unload * kp)
-        rot_ch = rot_rel + (rot_mp2 - rot_rel) * pinch_x
-        if strain < trial[_ROT_NU]:
-            tangent = kn_unload * kn
-            stress = c_stress + tangent * d_strain
-            if stress >= 0.0:
-                stress, tangent = 0.0, kn_unload * 1.0e-9
-        elif strain < rot_ch:
-            if strain <= rot_rel:
-                stress, tangent = 0.0, kp_unload * 1.0e-9
-            else:
-                tangent = max_force * pinch_y / (rot_ch - rot_rel)
-                unloading = c_stress + kp_unload * kp * d_strain
-                stress = (strain - rot_rel) * tangent
-                if unloading < stress:
-                    stress, tangent = unloading, kp_unload * kp
+    if load == (2.0 if sign > 0.0 else 1.0) and sign * c_stress <= 0.0:
+        trial[release] = committed[_STRAIN] - c_stress / back
+    trial[_LOAD] = 1.0 if sign > 0.0 else 2.0
+    rot_peak = sign * max(min(sign * trial[peak], _BIG), sign * p[_R1P if sign > 0.0 else _R1N])
+    trial[peak] = rot_peak
+    peak_force = _envelope(rot_peak, p, sign)[0]
+    rot_rel = sign * max(sign * _release_limit(committed[away], p, -sign), sign * trial[release])
+    rot_mp2 = rot_peak - (1.0 - pinch_y) * peak_force / towards
+    rot_ch = rot_rel + (rot_mp2 - rot_rel) * pinch_x
+    if sign * strain < sign * trial[release]:  # still unloading from the other side
+        tangent = back
+        stress = c_stress + tangent * d_strain
+        if sign * stress >= 0.0:
+            stress, tangent = 0.0, back_elastic * 1.0e-9
+    elif sign * strain < sign * rot_ch:  # towards the pinching point
+        if sign * strain <= sign * rot_rel:
+            stress, tangent = 0.0, towards_elastic * 1.0e-9
         else:
-            tangent = (1.0 - pinch_y) * max_force / (rot_max - rot_ch)
-            unloading = c_stress + kp_unload * kp * d_strain
-            stress = pinch_y * max_force + (strain - rot_ch) * tangent
-            if unloading < stress:
-                stress, tangent = unloading, kp_unload * kp
-    else:
-        if load == 1.0 and c_stress >= 0.0:
-            trial[_ROT_PU] = c_strain - c_stress / (kp_unload * kp)
-        trial[_LOAD] = 2.0
-        rot_min = min(max(trial[_ROT_MIN], -_BIG), rot1n)
-        trial[_ROT_MIN] = rot_min
-        min_force = _negative_envelope(rot_min, p)[0]
-        rot_rel = min(_release_limit(committed[_ROT_MAX], p, 1.0), trial[_ROT_PU])
-        rot_mp2 = rot_min - (1.0 - pinch_y) * min_force / (kn_unload * kn)
-        rot_ch = rot_rel + (rot_mp2 - rot_rel) * pinch_x
-        if strain > trial[_ROT_PU]:
-            tangent = kp_unload * kp
-            stress = c_stress + tangent * d_strain
-            if stress <= 0.0:
-                stress, tangent = 0.0, kp_unload * 1.0e-9
-        elif strain > rot_ch:
-            if strain >= rot_rel:
-                stress, tangent = 0.0, kn_unload * 1.0e-9
-            else:
-                tangent = min_force * pinch_y / (rot_ch - rot_rel)
-                unloading = c_stress + kn_unload * kn * d_strain
-                stress = (strain - rot_rel) * tangent
-                if unloading > stress:
-                    stress, tangent = unloading, kn_unload * kn
-        else:
-            tangent = (1.0 - pinch_y) * min_force / (rot_min - rot_ch)
-            unloading = c_stress + kn_unload * kn * d_strain
-            stress = pinch_y * min_force + (strain - rot_ch) * tangent
-            if unloading > stress:
-                stress, tangent = unloading, kn_unload * kn
+            tangent = peak_force * pinch_y / (rot_ch - rot_rel)
+            unloading = c_stress + towards * d_strain
+            stress = (strain - rot_rel) * tangent
+            if sign * unloading < sign * stress:
+                stress, tangent = unloading, towards
+    else:  # from the pinching point towards the peak
+        tangent = (1.0 - pinch_y) * peak_force / (rot_peak - rot_ch)
+        unloading = c_stress + towards * d_strain
+        stress = pinch_y * peak_force + (strain - rot_ch) * tangent
+        if sign * unloading < sign * stress:
+            stress, tangent = unloading, towards
     trial[_STRESS] = stress
     trial[_TANGENT] = tangent
 

@@ -14,10 +14,9 @@ from assess.assessment.floors import building_model_of, building_note
 from assess.building.hysteresis import (BRACE_BUCKLING_RATIO, BRACE_POST_BUCKLING_DRIFT_RATIO,
                                         BRACE_POST_BUCKLING_RATIO, spring_forces)
 from assess.building.nonlinear import yielding_response
-from assess.errors import InputError
 from assess.inventory import read_workbook
 from assess.inventory.site_building import BuildingSheet
-from tests.building.test_pushover_alpha import _sheets
+from tests.building.test_pushover_alpha import _sheets, assert_refused_at
 
 K0, FY, B = 1000.0, 10.0, 0.02
 DY = FY / K0
@@ -109,16 +108,10 @@ def test_it_is_read_where_given(make_workbook):
 
 @pytest.mark.parametrize("rows,cell,words", [
     ([("system", "steel moment frame"), ("brace_buckling", "yes")], "A6", "but the system is steel moment frame"),
-    ([("brace_buckling", "sometimes")], "B6", "is not yes or no"),
+    ([("system", "braced frame"), ("brace_buckling", "sometimes")], "B6", "is not yes or no"),
 ])
 def test_where_it_cannot_apply_it_is_refused_at_its_cell(make_workbook, rows, cell, words):
-    base = [("storeys", 8), ("height_m", 32), ("period_s", 1.2)]
-    rows = rows if rows[0][0] == "system" else [("system", "braced frame")] + rows
-    with pytest.raises(InputError) as error:
-        read_workbook(make_workbook(_sheets(base + rows)))
-    problems = error.value.problems
-    assert [(p.sheet, p.cell) for p in problems] == [("building", cell)], [(p.cell, p.message) for p in problems]
-    assert words in problems[0].message
+    assert_refused_at(make_workbook, rows, cell, words, base=[("storeys", 8), ("height_m", 32), ("period_s", 1.2)])
 
 
 @pytest.mark.parametrize("rows,cell,words", [
@@ -127,8 +120,4 @@ def test_where_it_cannot_apply_it_is_refused_at_its_cell(make_workbook, rows, ce
     ([("response", "elastic"), ("brace_buckling", "yes")], "A7", "brace_buckling is given but response is elastic"),
 ])
 def test_with_what_it_cannot_go_with_it_is_refused(make_workbook, rows, cell, words):
-    with pytest.raises(InputError) as error:
-        read_workbook(make_workbook(_sheets(BRACED + rows)))
-    problems = error.value.problems
-    assert [(p.sheet, p.cell) for p in problems] == [("building", cell)], [(p.cell, p.message) for p in problems]
-    assert words in problems[0].message
+    assert_refused_at(make_workbook, rows, cell, words, base=BRACED)

@@ -182,11 +182,11 @@ def test_where_it_cannot_give_alpha_it_is_refused_at_its_cell(make_workbook, row
     assert_refused_at(make_workbook, rows, cell, words)
 
 
-def assert_refused_at(make_workbook, rows, cell, words):
-    """The 8-storey frame's sheet with ``rows`` added is refused with one problem, at the building sheet's
-    ``cell``, whose message has ``words``."""
+def assert_refused_at(make_workbook, rows, cell, words, base=BASE):
+    """The 8-storey frame's sheet (or ``base``) with ``rows`` added is refused with one problem, at the building
+    sheet's ``cell``, whose message has ``words``."""
     with pytest.raises(InputError) as error:
-        read_workbook(make_workbook(_sheets(BASE + rows)))
+        read_workbook(make_workbook(_sheets(base + rows)))
     problems = error.value.problems
     assert [(p.sheet, p.cell) for p in problems] == [("building", cell)], [(p.cell, p.message) for p in problems]
     assert words in problems[0].message
