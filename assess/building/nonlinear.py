@@ -412,9 +412,40 @@ def stiffness_strength(code_force_n, storey_stiffness_n_m, storey_heights_m):
     >>> stiffness_strength([4.0, 7.0, 4.0], [1.0, 1.0, 1.0], [3.0, 3.0, 3.0]).tolist()
     [7.0, 7.0, 7.0]
     """
+    return given_strength(code_force_n, np.asarray(storey_stiffness_n_m, dtype=float)
+                          * np.asarray(storey_heights_m, dtype=float))
+
+
+def given_strength(code_force_n, relative_strength):
+    """Each storey spring's yield force [N]: the storeys' strengths as given, relative, the first to yield at its share.
+
+    .. math::  F_{y,i} = r_i\\,\\max_j \\frac{F^{code}_{y,j}}{r_j}
+
+    ``relative_strength`` r gives the storeys' strengths against each other only (a model's storey
+    springs, or its storeys' shears at yield, in any one unit). The scale is the least that keeps every
+    storey at least as strong as the code's share of the strength asks: under the code's forces the
+    storey whose share asks most of its strength yields first, exactly at the given strength
+    (``yield_base_shear_g``), and every other storey later, as :func:`stiffness_strength` does with
+    r_i = k_i h_i.
+
+    Examples
+    --------
+    Code shares 10, 7, 4 and storeys as strong as 1, 0.5, 0.5: the second's share asks most of it
+    (7/0.5 = 14 against 10 and 8), so it yields first at its share and the others are stronger:
+
+    >>> given_strength([10.0, 7.0, 4.0], [1.0, 0.5, 0.5]).tolist()
+    [14.0, 7.0, 7.0]
+
+    Strengths in proportion to the shares give the shares themselves (every storey yields at once):
+
+    >>> given_strength([8.0, 4.0, 2.0], [4.0, 2.0, 1.0]).tolist()
+    [8.0, 4.0, 2.0]
+    """
     code = np.asarray(code_force_n, dtype=float)
-    stiffness_height = np.asarray(storey_stiffness_n_m, dtype=float) * np.asarray(storey_heights_m, dtype=float)
-    return stiffness_height * float(np.max(code / stiffness_height))
+    relative = np.asarray(relative_strength, dtype=float)
+    if relative.shape != code.shape or np.any(~(relative > 0.0)):
+        raise ValueError("relative_strength must give one positive strength per storey")
+    return relative * float(np.max(code / relative))
 
 
 def capacity_design_strength(code_force_n, floor_forces, floor_heights_m):
@@ -497,11 +528,12 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
         limit has the elastic model's T_1 and its roof displacement under a load at the roof.
     p_delta : bool
         Add the gravity loads' geometric stiffness (:func:`p_delta_stiffness`); T_1 stays that without it.
-    strength_profile : str, optional
+    strength_profile : str or array-like, optional
         How the springs' strength rises above their share of ``storey_yield_ratio`` (under the code's
         forces the first spring to yield does so at its share): by default the system's
         (:data:`STRENGTH_BY_SYSTEM`); ``"stiffness"`` (:func:`stiffness_strength`), ``"capacity design"``
-        (:func:`capacity_design_strength`) or ``"code"`` (the shares as given).
+        (:func:`capacity_design_strength`), ``"code"`` (the shares as given), or the storeys' strengths
+        against each other, one positive number per storey (:func:`given_strength`: a model's).
     """
     n = int(storeys)
     flexure = FLEXURE_BY_SYSTEM[system] if flexure is None else flexure
@@ -555,7 +587,9 @@ def yielding_stick(storeys, storey_height_m, storey_yield_ratio, *, system="othe
     if yield_force.shape != (n,) or np.any(~(yield_force > 0.0)):
         raise ValueError("storey_yield_ratio must give one positive ratio per storey")
     strength_profile = STRENGTH_BY_SYSTEM[system] if strength_profile is None else strength_profile
-    if strength_profile == "stiffness":
+    if not isinstance(strength_profile, str):
+        yield_force = given_strength(yield_force, strength_profile)
+    elif strength_profile == "stiffness":
         yield_force = stiffness_strength(yield_force, springs, heights)
     elif strength_profile == "capacity design":
         yield_force = capacity_design_strength(yield_force, forces, floor_heights)

@@ -80,6 +80,15 @@ DRIFT_LIMIT_BY_SYSTEM = {
 }
 #: The largest stability coefficient θ ASCE 7-22 §12.8.7 lets a building have (0.5/(β C_d), at most 0.25).
 STABILITY_COEFFICIENT_MAX = 0.25
+#: How the storeys' strengths rise above the code's shares, in the words of the strength's source, by rule
+#: (:data:`~assess.building.nonlinear.STRENGTH_BY_SYSTEM`'s, or ``"given"``: the sheet's ``storey_strength``).
+STRENGTH_WORDS = {
+    "stiffness": "each storey at least as strong as its stiffness makes it at one yield drift ratio, the first to "
+                 "yield doing so at that base shear",
+    "capacity design": "each storey at least as strong as a capacity-designed wall's linear moment envelope makes it",
+    "given": "the storeys as strong against each other as storey_strength gives, the first to yield doing so at that "
+             "base shear",
+}
 #: Bytes of stick answers (every floor's history per ground history) a run keeps, most recent first.
 MEMORY_BYTES = 256 * 2 ** 20
 #: Which yielding model a building's stick is (:attr:`YieldingBuilding.yielding_model`, ``floors.csv``'s
@@ -200,7 +209,7 @@ def _stick_key(stick) -> str:
 def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.05, sds_g=None, sd1_g=None,
                       tl_s=None, s1_g=None, risk_category="II", overstrength=None, yield_base_shear_g=None,
                       p_delta: bool = False, code: str = "ASCE 7-22", hardening=None,
-                      law: str | None = None) -> YieldingBuilding:
+                      law: str | None = None, storey_strength=None) -> YieldingBuilding:
     """The yielding stick of a building whose elastic model is ``modes`` (equal floor masses, uniform storeys).
 
     The storeys' strength: ``yield_base_shear_g`` where given, else ASCE 7-22 §12.8's design from the site's
@@ -213,7 +222,11 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
     edition (the provisions used read the same in ASCE 7-16 and 7-22). ``hardening``: the storeys' (a wall's base's)
     stiffness after yield over their stiffness before, where the engineer gives the model's; else
     :data:`~assess.building.nonlinear.DEFAULT_HARDENING`. ``law``: the springs' law where not the system's (a braced
-    frame's ``buckling`` braces, :func:`~assess.building.hysteresis.brace_backbones`).
+    frame's ``buckling`` braces, :func:`~assess.building.hysteresis.brace_backbones`). ``storey_strength``: the
+    storeys' strengths against each other where the engineer gives the model's (one positive number per storey,
+    :func:`~assess.building.nonlinear.given_strength`), in place of the system's rule; a shear wall whose storeys'
+    strengths are given yields storey by storey (a stick of storey springs,
+    :func:`~assess.building.nonlinear.yielding_stick`'s ``"equivalent shear"``), not at a base hinge.
 
     Examples
     --------
@@ -228,13 +241,18 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
     heights = modes.floor_heights_m[1:]
     storey_heights = np.diff(modes.floor_heights_m)
     period_s = float(modes.periods_s[0])
+    flexure = FLEXURE_BY_SYSTEM[system]
+    if storey_strength is not None and flexure == "base hinge":
+        flexure = "equivalent shear"
     strength = design_strength(system, np.ones(modes.storeys), heights, period_s, sds_g=sds_g, sd1_g=sd1_g,
                                tl_s=tl_s, s1_g=s1_g, risk_category=risk_category, overstrength=overstrength,
                                yield_base_shear_g=yield_base_shear_g, code=code,
-                               spread=FLEXURE_BY_SYSTEM[system] != "base hinge", hardening=hardening)
+                               spread=flexure != "base hinge", hardening=hardening)
     arguments = dict(system=system, period_s=period_s, alpha=modes.alpha, storey_stiffness=modes.storey_stiffness,
-                     damping=damping, p_delta=p_delta, hardening=hardening, law=law)
-    stick = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, **arguments)
+                     damping=damping, p_delta=p_delta, hardening=hardening, law=law, flexure=flexure)
+    profile = None if storey_strength is None else np.asarray(storey_strength, dtype=float)
+    stick = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, strength_profile=profile,
+                           **arguments)
     importance = importance_factor(risk_category)
     if isinstance(stick, HingedWall):  # only the base yields: the storeys above have no yield shear
         strength = replace(strength, storey_yield_ratio=np.concatenate([strength.storey_yield_ratio[:1],
@@ -246,13 +264,10 @@ def yielding_building(modes: BuildingModes, system: str, *, damping: float = 0.0
                                 _stick_key(stick), importance)
     code = yielding_stick(modes.storeys, storey_heights, strength.storey_yield_ratio, strength_profile="code",
                           **arguments)
-    profile = STRENGTH_BY_SYSTEM[system]
+    rule = STRENGTH_BY_SYSTEM[system] if profile is None else "given"
     strength = replace(strength, storey_yield_ratio=strength.storey_yield_ratio * stick.yield_force_n
                        / code.yield_force_n,
-                       source=f"{strength.source}; each storey at least as strong as "
-                              + ("its stiffness makes it at one yield drift ratio, the first to yield doing so at "
-                                 "that base shear" if profile == "stiffness"
-                                 else "a capacity-designed wall's linear moment envelope makes it"))
+                       source=f"{strength.source}; " + STRENGTH_WORDS[rule])
     return YieldingBuilding(modes, stick, strength, system, DRIFT_LIMIT_BY_SYSTEM[system], bool(p_delta),
                             _stick_key(stick), importance)
 

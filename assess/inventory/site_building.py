@@ -79,7 +79,8 @@ PUSHOVER_ALPHA_SYSTEMS = ("steel moment frame", "concrete moment frame", "eccent
 #: coefficients over the maps' S_S and S_1); outside these, one of the two values is not the site's (a
 #: factor slipped, or the two come from different lookups).
 CORNER_PERIOD_RANGE_S = (0.05, 5.0)
-#: The largest ratio of one storey's stiffness to another's that the building sheet's ``storey_stiffness`` may give.
+#: The largest ratio of one storey's stiffness (strength) to another's that the building sheet's ``storey_stiffness``
+#: (``storey_strength``) may give.
 STOREY_STIFFNESS_SPREAD = 20.0
 _YES, _NO = ("yes", "y", "true", "1"), ("no", "n", "false", "0")
 
@@ -195,6 +196,10 @@ class BuildingSheet:
     brace_buckling : bool
         Whether a braced frame's storeys are its braces, the pushed one buckling (the ``buckling`` law of
         :mod:`assess.building.hysteresis`), where the bilinear springs are the default.
+    storey_strength : tuple of float or None
+        The storeys' relative strengths, the first storey to the roof, where the engineer gives the model's
+        (:func:`assess.building.nonlinear.given_strength`); None: the system's rule
+        (:data:`assess.building.nonlinear.STRENGTH_BY_SYSTEM`).
     rows : dict
         The sheet row of each key given.
     sheet : str
@@ -215,6 +220,7 @@ class BuildingSheet:
     pushover_slope_ratio: float | None = None
     storey_hardening_ratio: float | None = None
     brace_buckling: bool = False
+    storey_strength: tuple | None = None
     #: Where α comes from where the run sets it itself (``--alpha-range``'s ends), in words for the notes.
     alpha_source: str = ""
     #: Where ``storey_hardening_ratio`` comes from where the run sets it itself (``--alpha-range``'s ends).
@@ -291,6 +297,7 @@ _BUILDING_KEYS = {
     "storey_hardening_ratio": Column("storey_hardening_ratio", "number", low=STOREY_HARDENING_RATIO_RANGE[0],
                                      high=STOREY_HARDENING_RATIO_RANGE[1]),
     "brace_buckling": Column("brace_buckling", "text", max_chars=10),
+    "storey_strength": Column("storey_strength", "text", max_chars=2000),
 }
 
 
@@ -505,7 +512,8 @@ def read_building(table, report) -> BuildingSheet | None:
                       "delete the pushover_slope_ratio row (give α in lateral_stiffness_ratio where known), or "
                       "write no in brace_buckling.")
     if response == "elastic":
-        for key in ("yield_base_shear", "overstrength", "p_delta", "storey_hardening_ratio", "brace_buckling"):
+        for key in ("yield_base_shear", "overstrength", "p_delta", "storey_hardening_ratio", "brace_buckling",
+                    "storey_strength"):
             if key in out:
                 name = "yield_base_shear_g" if key == "yield_base_shear" else key
                 report.at(values[key][1], key_header, f"{name} is given but response is elastic: the elastic "
@@ -535,6 +543,8 @@ def read_building(table, report) -> BuildingSheet | None:
                  f"delete the storey_hardening_ratio row: {deleted} do not yield."),
                 ("brace_buckling", buckling, "brace_buckling is yes", f"delete the brace_buckling row: {deleted} do "
                  "not buckle."),
+                ("storey_strength", "storey_strength" in out, "storey_strength is given",
+                 f"delete the storey_strength row: {deleted} have no strength."),
                 ("pushover_slope_ratio", "pushover_slope_ratio" in out, "pushover_slope_ratio is given",
                  f"delete the pushover_slope_ratio row ({deleted} take α from lateral_stiffness_ratio).")):
             if asks:
@@ -547,11 +557,12 @@ def read_building(table, report) -> BuildingSheet | None:
                   "overstrength, not both.")
     if "pushover_slope_ratio" in out and response != "elastic":
         _check_pushover_slope(out, values, system, report, key_header)
-    stiffness = None
-    if "storey_stiffness" in out and "storeys" in out:
-        stiffness, problem = parse_storey_stiffness(out["storey_stiffness"], int(out["storeys"]))
-        if problem is not None:
-            report.at(values["storey_stiffness"][1], value_header, *problem)
+    profiles = {}
+    for key in ("storey_stiffness", "storey_strength"):
+        if key in out and "storeys" in out:
+            profiles[key], problem = parse_storey_profile(out[key], int(out["storeys"]), key)
+            if problem is not None:
+                report.at(values[key][1], value_header, *problem)
     if len(report.problems) > before:
         return None
     storeys = int(out["storeys"])
@@ -572,7 +583,9 @@ def read_building(table, report) -> BuildingSheet | None:
     return BuildingSheet(storeys=storeys, height_m=float(height_m), system=system,
                          period_s=out.get("period"), damping=float(out.get("damping", DEFAULT_DAMPING)),
                          response=response, yield_base_shear_g=out.get("yield_base_shear"),
-                         overstrength=out.get("overstrength"), p_delta=p_delta, storey_stiffness=stiffness,
+                         overstrength=out.get("overstrength"), p_delta=p_delta,
+                         storey_stiffness=profiles.get("storey_stiffness"),
+                         storey_strength=profiles.get("storey_strength"),
                          lateral_stiffness_ratio=out.get("lateral_stiffness_ratio"),
                          pushover_slope_ratio=out.get("pushover_slope_ratio"),
                          storey_hardening_ratio=out.get("storey_hardening_ratio"), brace_buckling=buckling,
@@ -599,23 +612,35 @@ def _check_pushover_slope(out: dict, values: dict, system: str, report, key_head
                   "base shear at the first storey's yield, over the weight), or delete the pushover_slope_ratio row.")
 
 
-def parse_storey_stiffness(text, storeys: int):
-    """``(stiffnesses, None)`` from the building sheet's ``storey_stiffness``, or ``(None, (message, fix))``.
+#: What each storey profile of the building sheet gives, in words: (the values, the most, the least, the storey the
+#: model does not assess (a soft or weak one), where it comes from in a model).
+_PROFILE_WORDS = {
+    "storey_stiffness": ("stiffnesses", "stiffest", "softest", "soft", "a model's storey stiffness table"),
+    "storey_strength": ("strengths", "strongest", "weakest", "weak",
+                        "a model's storey springs' yield shears, or its storeys' shears at yield"),
+}
+
+
+def parse_storey_profile(text, storeys: int, key: str = "storey_stiffness"):
+    """``(values, None)`` from the building sheet's ``storey_stiffness`` or ``storey_strength`` (``key``), or
+    ``(None, (message, fix))``.
 
     The value is ``uniform`` or one positive number per storey, the first storey to the roof, separated by
-    commas or semicolons: the storeys' stiffnesses in any unit (a model's storey stiffness table), only
-    their ratios count (the building's T_1 sets the scale).
+    commas or semicolons: the storeys' stiffnesses (strengths) in any unit (a model's storey stiffness table),
+    only their ratios count (the building's T_1, its strength at yield, sets the scale).
 
-    >>> parse_storey_stiffness("1, 0.9; 0.78", 3)
+    >>> parse_storey_profile("1, 0.9; 0.78", 3)
     ((1.0, 0.9, 0.78), None)
-    >>> parse_storey_stiffness("uniform", 2)
+    >>> parse_storey_profile("uniform", 2)
     ((1.0, 1.0), None)
-    >>> parse_storey_stiffness("1, 0.9", 3)[1][0]
-    'storey_stiffness gives 2 values for 3 storeys.'
+    >>> parse_storey_profile("1, 0.9", 3, "storey_strength")[1][0]
+    'storey_strength gives 2 values for 3 storeys.'
     """
-    how = (f"write {storeys} positive number{'s' if storeys > 1 else ''}, the storeys' stiffnesses from the "
-           "first storey to the roof separated by commas (e.g. 1, 0.9, 0.8 from a model's storey stiffness "
-           "table; only their ratios count), or uniform, or delete the row for the system's design profile.")
+    what, most, least, weak, source = _PROFILE_WORDS[key]
+    how = (f"write {storeys} positive number{'s' if storeys > 1 else ''}, the storeys' {what} from the "
+           f"first storey to the roof separated by commas (e.g. 1, 0.9, 0.8 from {source}; only their ratios "
+           "count), or uniform, or delete the row for the system's "
+           + ("design profile." if key == "storey_stiffness" else "rule."))
     word = str(text).strip().lower()
     if word == "uniform":
         return (1.0,) * storeys, None
@@ -624,17 +649,17 @@ def parse_storey_stiffness(text, storeys: int):
         values = tuple(float(part) for part in parts)
     except ValueError:
         bad = next(part for part in parts if not _is_number(part))
-        return None, (f"storey_stiffness {schema.quote(text)}: {schema.quote(bad)} is not a number.", how)
+        return None, (f"{key} {schema.quote(text)}: {schema.quote(bad)} is not a number.", how)
     if len(values) != storeys:
-        return None, (f"storey_stiffness gives {len(values)} value{'s' if len(values) != 1 else ''} for "
+        return None, (f"{key} gives {len(values)} value{'s' if len(values) != 1 else ''} for "
                       f"{storeys} storey{'s' if storeys != 1 else ''}.", how)
     if not all(v > 0.0 and v < float("inf") for v in values):
-        return None, (f"storey_stiffness {schema.quote(text)} has a value that is not greater than 0.", how)
+        return None, (f"{key} {schema.quote(text)} has a value that is not greater than 0.", how)
     if max(values) > STOREY_STIFFNESS_SPREAD * min(values):
-        return None, (f"storey_stiffness {schema.quote(text)}: the stiffest storey is {max(values) / min(values):.3g} "
-                      f"times the softest; the stick takes at most {STOREY_STIFFNESS_SPREAD:g} times.",
-                      "check the values (one per storey, the same unit for all); a storey that soft is a "
-                      "soft storey, which this model of the building does not assess.")
+        return None, (f"{key} {schema.quote(text)}: the {most} storey is {max(values) / min(values):.3g} "
+                      f"times the {least}; the stick takes at most {STOREY_STIFFNESS_SPREAD:g} times.",
+                      f"check the values (one per storey, the same unit for all); a storey that {weak} is a {weak} "
+                      "storey, which this model of the building does not assess.")
     return values, None
 
 
@@ -649,7 +674,8 @@ def _is_number(text: str) -> bool:
 def check_building_strength(table, building: BuildingSheet, site: SiteSheet | None, report) -> None:
     """Report ``response: yielding`` where nothing gives the storeys' strength, at the response cell; and, where the
     sheet names no ``response`` and the building is elastic for want of a strength, each key only the yielding stick
-    uses (``overstrength``, ``p_delta`` yes, ``storey_hardening_ratio``, ``brace_buckling`` yes) at its key cell.
+    uses (``overstrength``, ``p_delta`` yes, ``storey_hardening_ratio``, ``brace_buckling`` yes,
+    ``storey_strength``) at its key cell.
 
     The yielding stick's strength is ``yield_base_shear_g``, else the code's design from the site sheet's
     design values (S_DS, S_D1 or S_S, S_1 and the site class); a site given only by a uniform-hazard
@@ -661,7 +687,8 @@ def check_building_strength(table, building: BuildingSheet, site: SiteSheet | No
     if building.response is None and not building.too_tall_to_yield:  # elastic by default: say what goes unused
         for key, asks in (("overstrength", building.overstrength is not None), ("p_delta", building.p_delta),
                           ("storey_hardening_ratio", building.storey_hardening_ratio is not None),
-                          ("brace_buckling", building.brace_buckling)):
+                          ("brace_buckling", building.brace_buckling),
+                          ("storey_strength", building.storey_strength is not None)):
             if asks:
                 report.at(building.rows[key], table.headers.get("key"), f"{key} is given but nothing gives the "
                           "storeys' strength (no yield_base_shear_g, and the site sheet no design values), so the "

@@ -5,7 +5,7 @@ import pytest
 
 from assess.errors import InputError
 from assess.inventory import read_workbook
-from assess.inventory.site_building import parse_storey_stiffness
+from assess.inventory.site_building import parse_storey_profile
 from workbooks import good_sheets
 
 
@@ -274,7 +274,7 @@ def test_storey_stiffness_is_read_as_one_number_per_storey(make_workbook):
     uniform = read_workbook(make_workbook(_sheets(building=[
         ("storeys", 3), ("height_m", 12), ("storey_stiffness", " Uniform")]))).building
     assert uniform.storey_stiffness == (1.0, 1.0, 1.0)
-    assert parse_storey_stiffness(2.5, 1) == ((2.5,), None)   # a one-storey building's number cell
+    assert parse_storey_profile(2.5, 1) == ((2.5,), None)   # a one-storey building's number cell
     assert read_workbook(make_workbook(_sheets(building=[("storeys", 3), ("height_m", 12)]))) \
         .building.storey_stiffness is None
 
