@@ -128,8 +128,31 @@ def own_stiffness(truth) -> str | None:
     return None if profile is None else ", ".join(f"{k:g}" for k in profile)
 
 
+def own_strength(truth) -> str | None:
+    """The relative storey strengths an engineer with the truth building's own model would write in the building
+    sheet's ``storey_strength``: its storey springs' yield shears (first storey 1, four significant figures); None
+    for the flexural wall, which yields at its base hinge only."""
+    if not hasattr(truth, "yield_ratios"):
+        return None
+    ratios = truth.yield_ratios() / truth.yield_ratios()[0]
+    return ", ".join(f"{r:.4g}" for r in ratios)
+
+
 #: The route of an engineer with the building's own model: its pushover strength, α and storey stiffnesses.
 OWN_MODEL = "given + own α + own stiffness"
+#: The same with the model's storey strengths and hardening as well: the whole model (:func:`whole_model`).
+WHOLE_MODEL = OWN_MODEL + " + own strength" + OWN_HARDENING
+
+
+def whole_model(truth, alpha=None) -> list:
+    """The building sheet's rows of :data:`WHOLE_MODEL`: the pushover's strength (:func:`given_strength`), α (the
+    building's own, or ``alpha``), the storeys' stiffnesses (:func:`own_stiffness`) and strengths
+    (:func:`own_strength`) and the springs' hardening (:func:`own_hardening`); None for the flexural wall."""
+    if own_strength(truth) is None:
+        return None
+    return (given_strength(truth) + [["lateral_stiffness_ratio", own_alpha(truth) if alpha is None else alpha],
+                                     ["storey_stiffness", own_stiffness(truth)],
+                                     ["storey_strength", own_strength(truth)]] + own_hardening(truth))
 
 
 def given_routes(truth) -> dict:
