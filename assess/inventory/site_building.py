@@ -617,7 +617,8 @@ def _check_pushover_slope(out: dict, values: dict, system: str, report, key_head
 _PROFILE_WORDS = {
     "storey_stiffness": ("stiffnesses", "stiffest", "softest", "soft", "a model's storey stiffness table"),
     "storey_strength": ("strengths", "strongest", "weakest", "weak",
-                        "a model's storey springs' yield shears, or its storeys' shears at yield"),
+                        "a stick model's storey springs' yield shears, or each storey's design shear over its "
+                        "demand-capacity ratio"),
 }
 
 
