@@ -378,7 +378,7 @@ def main(argv=None):
                                                  f"truth α {alpha}", given_pushover_model(other)))
                     if args.own_strength:
                         other_routes.append((f"given + α + own model + own strength, truth α {alpha}",
-                                             whole_model(other, float(alpha))))
+                                             whole_model(other)))
                     for route, extra in other_routes:
                         tool = assess(workbook(folder, other, suite, level, extra), level,
                                       bracket if route.startswith("given,") else None)

@@ -144,13 +144,13 @@ OWN_MODEL = "given + own α + own stiffness"
 WHOLE_MODEL = OWN_MODEL + " + own strength" + OWN_HARDENING
 
 
-def whole_model(truth, alpha=None) -> list:
-    """The building sheet's rows of :data:`WHOLE_MODEL`: the pushover's strength (:func:`given_strength`), α (the
-    building's own, or ``alpha``), the storeys' stiffnesses (:func:`own_stiffness`) and strengths
-    (:func:`own_strength`) and the springs' hardening (:func:`own_hardening`); None for the flexural wall."""
+def whole_model(truth) -> list:
+    """The building sheet's rows of :data:`WHOLE_MODEL`: the pushover's strength (:func:`given_strength`), α
+    (:func:`own_alpha`), the storeys' stiffnesses (:func:`own_stiffness`) and strengths (:func:`own_strength`) and
+    the springs' hardening (:func:`own_hardening`); None for the flexural wall."""
     if own_strength(truth) is None:
         return None
-    return (given_strength(truth) + [["lateral_stiffness_ratio", own_alpha(truth) if alpha is None else alpha],
+    return (given_strength(truth) + [["lateral_stiffness_ratio", own_alpha(truth)],
                                      ["storey_stiffness", own_stiffness(truth)],
                                      ["storey_strength", own_strength(truth)]] + own_hardening(truth))
 

@@ -74,7 +74,7 @@ def measured(tmp_path_factory):
     for pair in PAIRS:
         name, alpha, level = pair
         truth = BUILDINGS[name] if alpha is None else dataclasses.replace(BUILDINGS[name], column_alpha=alpha)
-        rows = whole_model(truth, alpha)
+        rows = whole_model(truth)
         without = [row for row in rows if row[0] != "storey_strength"]
         suite = ground_suite(11, truth.period_s, LEVELS[level])
         out[pair] = compared(truth, suite, level, tmp_path_factory.mktemp(_id(pair)),
