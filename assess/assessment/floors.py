@@ -101,16 +101,10 @@ def pushover_alpha(building: BuildingSheet) -> AlphaFromPushover | None:
     strength is given."""
     if building.pushover_slope_ratio is None:
         return None
-    storey_height_m = building.height_m / building.storeys
-    stiffness = storey_stiffness_of(building)
 
     def slope_at(alpha: float) -> float:
-        modes = building_modes(building.storeys, storey_height_m, system=building.system, period_s=building.period_s,
-                               damping=building.damping, alpha=alpha, storey_stiffness=stiffness)
-        model = yielding_building(modes, building.system, damping=building.damping,
-                                  yield_base_shear_g=building.yield_base_shear_g, p_delta=building.p_delta,
-                                  hardening=building.storey_hardening_ratio,
-                                  storey_strength=building.storey_strength)
+        modes = building_modes_of(building, alpha)
+        model = yielding_building(modes, building.system, **_stick_arguments(building))
         return pushover_slope_ratio(model.stick, float(modes.periods_s[0]))
 
     return alpha_from_pushover(float(building.pushover_slope_ratio), slope_at, PUSHOVER_ALPHA_BOUNDS,
@@ -151,12 +145,22 @@ def alpha_source_of(building: BuildingSheet, short: bool = False) -> str:
     return f"{said}: the yielding stick's pushover has that slope at {drift} at this α"
 
 
-def building_modes_of(building: BuildingSheet) -> BuildingModes:
+def building_modes_of(building: BuildingSheet, alpha: float | None = None) -> BuildingModes:
     """The building sheet's modes (:func:`assess.building.building_modes`), every mode kept, with the storeys'
-    stiffness profile of :func:`storey_stiffness_of` and the α of :func:`alpha_of`."""
+    stiffness profile of :func:`storey_stiffness_of` and the α of :func:`alpha_of` (or ``alpha``)."""
     return building_modes(building.storeys, building.height_m / building.storeys, system=building.system,
                           period_s=building.period_s, damping=building.damping,
-                          alpha=alpha_of(building), storey_stiffness=storey_stiffness_of(building))
+                          alpha=alpha_of(building) if alpha is None else alpha,
+                          storey_stiffness=storey_stiffness_of(building))
+
+
+def _stick_arguments(building: BuildingSheet) -> dict:
+    """What the building sheet gives :func:`assess.building.yielding.yielding_building` beside the modes, the
+    system and the site's design values: the yielding route's stick and :func:`pushover_alpha`'s are the same."""
+    return dict(damping=building.damping, overstrength=building.overstrength,
+                yield_base_shear_g=building.yield_base_shear_g, p_delta=building.p_delta,
+                hardening=building.storey_hardening_ratio, law="buckling" if building.brace_buckling else None,
+                storey_strength=building.storey_strength)
 
 
 def building_model_of(building: BuildingSheet, site: SiteSheet | None, modes: BuildingModes | None = None,
@@ -176,11 +180,7 @@ def building_model_of(building: BuildingSheet, site: SiteSheet | None, modes: Bu
         design = dict(risk_category=site.risk_category)
     if site is not None:
         design["code"] = site.code
-    model = yielding_building(modes, building.system, damping=building.damping, overstrength=building.overstrength,
-                              yield_base_shear_g=building.yield_base_shear_g, p_delta=building.p_delta,
-                              hardening=building.storey_hardening_ratio,
-                              law="buckling" if building.brace_buckling else None,
-                              storey_strength=building.storey_strength, **design)
+    model = yielding_building(modes, building.system, **_stick_arguments(building), **design)
     theta = model.stability_coefficient
     if theta > STABILITY_COEFFICIENT_MAX:
         approximate = float(approximate_period(building.height_m, building.system))
