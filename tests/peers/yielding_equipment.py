@@ -138,6 +138,19 @@ def own_strength(truth) -> str | None:
     return ", ".join(f"{r:.4g}" for r in ratios)
 
 
+#: The route of an engineer who knows the building's strength whole: the pushover's base shear and each storey's
+#: share of it (an evaluation's storey capacities), nothing of its stiffness (:func:`given_strengths`).
+GIVEN_STRENGTHS = "given + own strength"
+
+
+def given_strengths(truth) -> list | None:
+    """The building sheet's rows of :data:`GIVEN_STRENGTHS`: :func:`given_strength` and the storeys' strengths
+    (:func:`own_strength`) in ``storey_strength``; None for the flexural wall, which yields at its base only."""
+    if own_strength(truth) is None:
+        return None
+    return given_strength(truth) + [["storey_strength", own_strength(truth)]]
+
+
 #: The route of an engineer with the building's own model: its pushover strength, α and storey stiffnesses.
 OWN_MODEL = "given + own α + own stiffness"
 #: The same with the model's storey strengths and hardening as well: the whole model (:func:`whole_model`).
@@ -298,12 +311,15 @@ def compared_on_its_own(truth, folder: Path, motions: int = 11) -> dict:
     the 12-storey frame): the routes of what the engineer knows (:func:`given_routes`; ``given`` with
     ``--alpha-range`` at the system's ends, :func:`bracket_held`), with the pushover's slope (:data:`PUSHOVER_ROUTE`,
     :func:`given_pushover`), and with the model's hardening beside it (:data:`PUSHOVER_HARDENING`, and with the
-    model's storey stiffnesses as well, :data:`PUSHOVER_MODEL`), the design data alone (``design``) and the elastic
+    model's storey stiffnesses as well, :data:`PUSHOVER_MODEL`), the whole model (:data:`WHOLE_MODEL`, where the
+    building has storeys of its own), the design data alone (``design``) and the elastic
     modes (``elastic``)."""
     routes = {**given_routes(truth), PUSHOVER_ROUTE: given_pushover(truth),
               PUSHOVER_HARDENING: given_pushover_hardening(truth)}
     if own_stiffness(truth) is not None:
         routes[PUSHOVER_MODEL] = given_pushover_model(truth)
+    if whole_model(truth) is not None:
+        routes[WHOLE_MODEL] = whole_model(truth)
     routes.update({"design": [["response", "yielding"]], "elastic": [["response", "elastic"]]})
     return compared(truth, ground_suite(motions, truth.period_s, 1.0), "DE", folder, routes,
                     bracket=ALPHA_RANGE_BY_SYSTEM[truth.system])
@@ -415,5 +431,6 @@ def compare(tool, truth):
             "overturn_agree": float((over_t[either] == over_r[either]).mean()) if either.any() else np.nan,
             "overturn_agree_all": float((over_t == over_r).mean()),
             "overturn_class_agree": float((overturn_classes[0] == overturn_classes[1]).mean()),
-            "class_agree": float((classes[0] == classes[1]).mean()), "n_class_missed": len(missed),
+            "class_agree": float((classes[0] == classes[1]).mean()), "n_items": len(classes[0]),
+            "n_class_missed": len(missed),
             "class_missed_one_motion": int(sum(one_motion))}

@@ -15,6 +15,7 @@ route                           sliding gm   σ ln         risk class
 given strength (0.439 W)        1.23 / 1.06  0.35 / 0.25  0.75 / 0.83
 given strength and α 2.4        1.07 / 1.02  0.21 / 0.19  1.0 / 0.75
 and its storeys' stiffnesses    1.04 / 1.00  0.20 / 0.11  0.92 / 1.0
+and strengths, hardening        1.04 / 1.00  0.20 / 0.11  0.92 / 1.0
 strength, pushover's slope      1.05 / 1.00  0.15 / 0.11  1.0 / 0.92
 and the model's hardening       1.05 / 1.00  0.15 / 0.09  1.0 / 1.0
 and its storeys' stiffnesses    1.04 / 1.00  0.20 / 0.11  0.92 / 1.0
@@ -51,8 +52,8 @@ import pytest
 
 from peers.opensees_buildings import BRACED
 from peers.opensees_shear import load_opensees
-from peers.yielding_equipment import (OWN_MODEL, PUSHOVER_HARDENING, PUSHOVER_MODEL, PUSHOVER_ROUTE, meets_class_target,
-                                     meets_sliding_targets)
+from peers.yielding_equipment import (OWN_MODEL, PUSHOVER_HARDENING, PUSHOVER_MODEL, PUSHOVER_ROUTE, WHOLE_MODEL,
+                                     meets_class_target, meets_sliding_targets)
 
 OPS, WHY = load_opensees()
 pytestmark = pytest.mark.skipif(OPS is None, reason=str(WHY))
@@ -97,6 +98,14 @@ def test_with_the_strength_alpha_and_storey_stiffnesses_of_its_own_model_every_t
     """What an engineer with the braced frame's model writes (peers.yielding_equipment.OWN_MODEL): gm 1.04,
     σ ln 0.20, risk class 0.92 at DE."""
     n = braced[OWN_MODEL]
+    assert meets_sliding_targets(n) and meets_class_target(n), n
+
+
+def test_with_the_whole_model_every_target_but_the_per_case_overturn_holds(braced):
+    """The same and the storeys' strengths (``storey_strength``) and hardening (peers.yielding_equipment.WHOLE_MODEL):
+    the braced frame's storeys are already as strong as they are stiff, so the strengths add little; what is left
+    of σ ln is the Rayleigh damping's modes (the tool's 1 and 3, the truth's 1 and 2)."""
+    n = braced[WHOLE_MODEL]
     assert meets_sliding_targets(n) and meets_class_target(n), n
 
 

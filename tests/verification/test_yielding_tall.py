@@ -24,6 +24,7 @@ and the model's hardening       0.89 / – / –                 0.43 / – / �
 and its storeys' stiffnesses    0.98 / – / –                 0.36 / – / –                 0.83 / – / –
 given strength and α 10         0.84 / 0.87 / 0.88           0.48 / 0.46 / 0.45           0.75 / 0.83 / 0.83
 and its storeys' stiffnesses    0.99 / 0.98 / 0.94           0.35 / 0.38 / 0.36           0.83 / 0.92 / 1.0
+and strengths, hardening        1.12 / – / –                 0.15 / – / –                 0.92 / – / –
 design data (Ω 2.5)             0.995 / 1.02 / 1.02          0.28 / 0.33 / 0.39           0.83 / 0.67 / 1.0
 elastic modes                   2.85 / 2.91 / 3.53           0.59 / 0.65 / 0.62           0.58 / 0.50 / 0.67
 ==============================  ===========================  ===========================  ==================
@@ -34,7 +35,10 @@ between those two the truth's own sliding moves by a third (the same routes agai
 ``--truth-alphas 12,14``: the tool with its α 12 gives 0.89 against the truth of α 12 and 1.00 against the one
 of α 14; with α 14 given, 0.90). Given α, 0.84-0.90 on every one of those truths; given the storeys'
 stiffnesses as well, every target of the issue holds (the roof pair at 0.36 of the base where the system's
-design profile, storey stiffness with the storey shear, falls to 0.21). The design data alone come out near 1
+design profile, storey stiffness with the storey shear, falls to 0.21). With the storeys' strengths
+(``storey_strength``) and the springs' hardening beside them, the whole model, σ ln falls from 0.35 to 0.15 (over the
+11 records but Düzce, DE / MCE_R, ``--own-alpha --own-strength``: gm 1.13 / 1.11, σ ln 0.14 / 0.14, class 0.92 /
+1.0). The design data alone come out near 1
 here because the default overstrength (2.5) is above this building's (2.0, the pushover's 0.087 over C_s 0.044):
 the two errors cancel, as ``design x 2`` (the building's own overstrength, 0.68 / 0.71) shows.
 
@@ -64,7 +68,7 @@ import pytest
 from peers.opensees_buildings import TALL
 from peers.opensees_shear import load_opensees
 from peers.yielding_equipment import (OWN_MODEL, PUSHOVER_HARDENING, PUSHOVER_MODEL, PUSHOVER_ROUTE, TARGET_GM,
-                                     meets_class_target, meets_sliding_targets)
+                                     WHOLE_MODEL, meets_class_target, meets_sliding_targets)
 
 OPS, WHY = load_opensees()
 pytestmark = pytest.mark.skipif(OPS is None, reason=str(WHY))
@@ -134,6 +138,16 @@ def test_with_the_whole_model_but_alpha_every_target_holds(tall):
     n = tall[PUSHOVER_MODEL]
     assert meets_sliding_targets(n), n
     assert meets_class_target(n), n
+
+
+def test_with_the_whole_model_every_target_holds(tall):
+    """The pushover's strength, α, the model's storey stiffnesses and strengths (``storey_strength``) and hardening:
+    σ ln well under the issue's 0.45, where the same without the strengths is at 0.36."""
+    n = tall[WHOLE_MODEL]
+    assert n["n_sliding"] >= 150
+    assert meets_sliding_targets(n), n
+    assert meets_class_target(n), n
+    assert n["sigma_ln"] < tall[OWN_MODEL]["sigma_ln"], (n, tall[OWN_MODEL])
 
 
 def test_the_design_data_alone_are_within_the_design_range_and_the_elastic_modes_are_not(tall):
