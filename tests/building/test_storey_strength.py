@@ -79,6 +79,18 @@ def test_a_frame_s_note_no_longer_asks_for_the_stiffnesses_to_set_the_strengths(
     assert asks not in building_note(building_model_of(given, None), given, [2, 4], None)
 
 
+def test_the_note_cautions_strengths_given_without_the_stiffnesses_that_go_with_them():
+    """Measured on the OpenSees buildings (benchmarks/bench_yielding_equipment.py's ``given + own strength``): the
+    storeys' strengths over the system's stiffness profile did no better than the strength alone."""
+    frame = dict(storeys=4, height_m=16.0, system="steel moment frame", period_s=0.6, yield_base_shear_g=0.3,
+                 response="yielding", storey_strength=(1.0, 0.9, 0.8, 0.6))
+    caution = "give storey_stiffness and lateral_stiffness_ratio from the same model"
+    apart = BuildingSheet(**frame)
+    assert caution in building_note(building_model_of(apart, None), apart, [2, 4], None)
+    both = BuildingSheet(**frame, storey_stiffness=(1.0, 0.9, 0.75, 0.6))
+    assert caution not in building_note(building_model_of(both, None), both, [2, 4], None)
+
+
 def test_from_the_design_data_the_design_s_strength_sets_the_scale():
     """No yield_base_shear_g: the code's design × overstrength is the base shear at first yield, as without."""
     frame = dict(storeys=4, height_m=16.0, system="steel moment frame", period_s=0.6, response="yielding")
