@@ -63,8 +63,8 @@ from assess.hazard.records import Record
 
 from .design import DesignStrength, design_strength, importance_factor
 from .modes import BuildingModes
-from .nonlinear import (FLEXURE_BY_SYSTEM, STRENGTH_BY_SYSTEM, YieldingStick, elastic_periods, yielding_response,
-                        yielding_stick)
+from .nonlinear import (FLEXURE_BY_SYSTEM, GRAVITY_M_S2, STRENGTH_BY_SYSTEM, YieldingStick, elastic_periods,
+                        yielding_response, yielding_stick)
 from .response import floor_records
 from .wall_hinge import HingedWall, hinged_periods, hinged_wall_response
 
@@ -471,27 +471,35 @@ def storey_table(building: YieldingBuilding, histories: Sequence[StickHistory], 
 
     Columns: ``response`` (``yielding``), ``yielding_model`` (:attr:`YieldingBuilding.yielding_model`:
     ``storey springs`` or ``base hinge``), ``yield_base_shear_g``, ``storey_yield_ratio`` (the storey's
-    yield shear over the weight), ``drift_ratio_median``, ``drift_ratio_min``, ``drift_ratio_max`` (peak
-    storey drift over its height), ``ductility_median``, ``ductility_min``, ``ductility_max`` (peak drift
-    over the yield drift; a wall on its base hinge: the wall's rotation ductility at its base in storey 1, NaN
-    above, as ``storey_yield_ratio``), ``motions_yielded`` (motions under which any storey yielded), ``drift_limit``
-    and ``motions_beyond_drift_limit`` (motions whose storey drift passed it).
+    shear, its columns' share included, when its spring yields under the code's lateral forces, over the weight),
+    ``storey_spring_yield_ratio`` (the spring's own yield shear over the weight: what ``storey_strength`` gives, the
+    same where no column stands apart from the springs; NaN for a wall on its base hinge), ``drift_ratio_median``,
+    ``drift_ratio_min``, ``drift_ratio_max`` (peak storey drift over its height), ``ductility_median``,
+    ``ductility_min``, ``ductility_max`` (peak drift over the yield drift; a wall on its base hinge: the wall's
+    rotation ductility at its base in storey 1, NaN above, as ``storey_yield_ratio``), ``motions_yielded`` (motions
+    under which any storey yielded), ``drift_limit`` and ``motions_beyond_drift_limit`` (motions whose storey drift
+    passed it).
     """
     drift = np.array([h.peak_drift_ratio for h in histories])
     beyond = np.array([building.beyond_drift_limit(h) for h in histories])
     ductility = np.array([h.ductility for h in histories])
     yielded = int(sum(not h.elastic for h in histories))
+    stick = building.stick
+    springs = (np.full(building.modes.storeys, np.nan) if isinstance(stick, HingedWall)
+               else stick.yield_force_n / (stick.floor_masses_kg.sum() * GRAVITY_M_S2))
     rows = []
     for k in sorted(int(f) for f in floors):
         row = {"response": "yielding", "yielding_model": building.yielding_model,
                "yield_base_shear_g": building.strength.yield_base_shear_g,
                "storey_hardening_ratio": building.hardening, "storey_yield_ratio": np.nan,
+               "storey_spring_yield_ratio": np.nan,
                "drift_ratio_median": np.nan, "drift_ratio_min": np.nan, "drift_ratio_max": np.nan,
                "ductility_median": np.nan, "ductility_min": np.nan, "ductility_max": np.nan, "motions_yielded": yielded,
                "drift_limit": building.drift_limit, "motions_beyond_drift_limit": np.nan}
         if k > 0:
             d, mu = drift[:, k - 1], ductility[:, k - 1]
             row.update(storey_yield_ratio=float(building.strength.storey_yield_ratio[k - 1]),
+                       storey_spring_yield_ratio=float(springs[k - 1]),
                        drift_ratio_median=float(np.median(d)), drift_ratio_min=float(d.min()),
                        drift_ratio_max=float(d.max()), ductility_median=float(np.median(mu)),
                        ductility_min=float(mu.min()), ductility_max=float(mu.max()),

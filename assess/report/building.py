@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from assess.building.yielding import BASE_HINGE
 from assess.quantity_text import floor_numbering_of, floor_text, runs_text
 
@@ -18,6 +20,18 @@ from assess.quantity_text import floor_numbering_of, floor_text, runs_text
 COLLAPSE_NOT_ASSESSED = ("The building's own collapse is not assessed: this report is about its contents, under "
                          "the floor motions of a building that stays standing.")
 
+
+def _columns_share(table) -> str:
+    """The clause saying that the yield shear includes the columns' share, where it differs from the springs' own
+    (``storey_spring_yield_ratio``, what ``storey_strength`` gives): a frame whose continuous columns stand apart
+    from its storey springs. Empty where the two agree (no columns apart) or the table has no springs' column."""
+    if "storey_spring_yield_ratio" not in table:
+        return ""
+    storeys = table.dropna(subset=["storey_yield_ratio", "storey_spring_yield_ratio"])
+    if storeys.empty or np.allclose(storeys["storey_spring_yield_ratio"], storeys["storey_yield_ratio"], rtol=1e-6):
+        return ""
+    return ("; what its columns carry beside its spring included: the springs' own are floors.csv's "
+            "storey_spring_yield_ratio, in the ratios storey_strength gives where it is given")
 
 def _percent(value: float) -> str:
     """A drift ratio in per cent, two significant digits.
@@ -110,7 +124,8 @@ def building_context(result) -> dict | None:
          "ductility, in storey 1's row, is the wall's at its base (its peak rotation there over the rotation at "
          "which it yields)") if hinged else
         (f"the first of its storeys to yield does so at {shear}, the others later (the yield shear: each storey's "
-         "shear when it yields under the code's lateral forces)", "yielded at least one storey",
+         "shear when it yields under the code's lateral forces" + _columns_share(table) + ")",
+         "yielded at least one storey",
          "Each storey's peak drift (over its height) and ductility (peak drift over the drift at which it yields) "
          "are the median over the motions, with their range"))
     lead = (f"The upper floors' motions come from a model of the building that yields: {what_yields}. {yielded} of "

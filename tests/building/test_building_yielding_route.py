@@ -280,6 +280,21 @@ def test_the_reports_wording_follows_the_model_that_ran_not_the_empty_cells(weak
     assert "at its base only" in building_context(dataclasses.replace(weak, floors=one_storey))["lead"]
 
 
+def test_the_lead_says_the_yield_shear_holds_the_columns_share_where_the_springs_own_differ(weak):
+    """Where a frame's columns stand apart from its springs, the table's yield shear (the storey's, columns
+    included) does not keep the springs' ratios, which ``storey_strength`` gives: the lead names the column that
+    does (``storey_spring_yield_ratio``); where the two agree it says nothing of it."""
+    import dataclasses
+
+    from assess.report.building import building_context
+
+    clause = "the springs' own are floors.csv's storey_spring_yield_ratio"
+    same = weak.floors.assign(storey_spring_yield_ratio=weak.floors["storey_yield_ratio"])
+    assert clause not in building_context(dataclasses.replace(weak, floors=same))["lead"]
+    apart = weak.floors.assign(storey_spring_yield_ratio=0.8 * weak.floors["storey_yield_ratio"])
+    assert clause in building_context(dataclasses.replace(weak, floors=apart))["lead"]
+
+
 @pytest.mark.parametrize("system, rows, said", [
     ("steel moment frame", [], "The overstrength is the literature's typical one, Elkady & Lignos' (2015) for steel "
                                "moment frames with their gravity framing and slabs, not this building's"),

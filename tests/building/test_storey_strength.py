@@ -15,7 +15,8 @@ import pytest
 from assess.assessment.floors import building_model_of, building_note
 from assess.building.nonlinear import GRAVITY_M_S2, YieldingStick
 from assess.building.pushover import stick_pushover
-from assess.building.yielding import BASE_HINGE, STOREY_SPRINGS
+from assess.building.yielding import BASE_HINGE, STOREY_SPRINGS, storey_table, yielding_histories
+from assess.hazard.records import Record
 from assess.inventory import read_workbook
 from assess.inventory.site_building import BuildingSheet, SiteSheet
 from tests.building.test_pushover_alpha import _sheets, assert_refused_at
@@ -89,6 +90,29 @@ def test_the_note_cautions_strengths_given_without_the_stiffnesses_that_go_with_
     assert caution in building_note(building_model_of(apart, None), apart, [2, 4], None)
     both = BuildingSheet(**frame, storey_stiffness=(1.0, 0.9, 0.75, 0.6))
     assert caution not in building_note(building_model_of(both, None), both, [2, 4], None)
+
+
+@pytest.mark.parametrize("system, alpha, apart", [("steel moment frame", 8.0, True), ("shear wall", 30.0, False)])
+def test_floors_csv_gives_the_springs_strengths_back_in_the_ratios_given(system, alpha, apart):
+    """``storey_spring_yield_ratio`` is the springs' own yield shears over the weight, in ``storey_strength``'s
+    ratios; ``storey_yield_ratio`` is the storey's shear when its spring yields under the code's forces, the
+    columns' share included: the two part where a frame's continuous column stands apart from its springs (most in
+    storey 1, on the column's fixed base), and agree for a wall on storey springs, which has none."""
+    given = (1.0, 0.97, 0.93, 0.88, 0.8, 0.7)
+    sheet = BuildingSheet(storeys=6, height_m=21.0, system=system, period_s=0.8, yield_base_shear_g=0.25,
+                          response="yielding", lateral_stiffness_ratio=alpha, storey_strength=given)
+    model = building_model_of(sheet, None)
+    time_s = np.arange(0.0, 4.0, 0.005)
+    ground = Record(0.4 * np.sin(2.0 * np.pi * time_s / 0.8) * np.minimum(time_s, 1.0), 0.005, "pulse")
+    _, histories = yielding_histories(model, [ground])
+    table = storey_table(model, histories, range(7)).iloc[1:]
+    springs, storeys = table["storey_spring_yield_ratio"].to_numpy(), table["storey_yield_ratio"].to_numpy()
+    assert springs / springs[0] == pytest.approx(np.array(given), rel=1e-12)
+    assert springs == pytest.approx(model.stick.yield_force_n / _weight_n(model.stick), rel=1e-12)
+    if apart:
+        assert storeys[0] / springs[0] > 1.05 * (storeys[1:] / springs[1:]).max(), (storeys, springs)
+    else:
+        assert storeys == pytest.approx(springs, rel=1e-9)
 
 
 def test_from_the_design_data_the_design_s_strength_sets_the_scale():
