@@ -33,6 +33,7 @@ def _columns_share(table) -> str:
     return ("; what its columns carry beside its spring included: the springs' own are floors.csv's "
             "storey_spring_yield_ratio, in the ratios storey_strength gives where it is given")
 
+
 def _percent(value: float) -> str:
     """A drift ratio in per cent, two significant digits.
 
