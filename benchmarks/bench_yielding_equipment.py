@@ -227,6 +227,17 @@ def markdown(frame: pd.DataFrame) -> str:
     return "\n".join(lines)
 
 
+def pooled_overturn(group: pd.DataFrame) -> tuple:
+    """(cases where both agree, their share, its 90 % Clopper-Pearson interval) over the cases of ``group``'s rows
+    where either overturns (:func:`assess.fragility.suite.binomial_interval`); NaN where none does."""
+    either = int(group["n_overturn"].sum())
+    both = either - int(group["overturn_tool_only"].sum() + group["overturn_truth_only"].sum())
+    if not either:
+        return both, float("nan"), float("nan"), float("nan")
+    share = both / either
+    return (both, share, *binomial_interval(share, either, 0.90))
+
+
 def overturn_misses(table: pd.DataFrame) -> str:
     """Where the overturn verdicts part, pooled per route over the buildings and levels: the cases where the tool
     alone overturns (on the safe side) and where the truth alone does, and the share of agreement where either
@@ -234,10 +245,7 @@ def overturn_misses(table: pd.DataFrame) -> str:
     (:func:`assess.fragility.suite.binomial_interval`; the per-case share rests on few cases)."""
     lines = ["| route | both | tool only | truth only | agreement (90 % interval) |", "|---|---|---|---|---|"]
     for route, group in table.groupby("route", sort=False):
-        either = int(group["n_overturn"].sum())
-        both = int(round(float((group["overturn_agree"].fillna(0.0) * group["n_overturn"]).sum())))
-        share = both / either if either else float("nan")
-        low, high = binomial_interval(share, either, 0.90) if either else (float("nan"), float("nan"))
+        both, share, low, high = pooled_overturn(group)
         lines.append(f"| {route} | {both} | {int(group['overturn_tool_only'].sum())} | "
                      f"{int(group['overturn_truth_only'].sum())} | {share:.2f} ({low:.2f}-{high:.2f}) |")
     return "\n".join(lines)
@@ -255,10 +263,7 @@ def pooled_targets(table: pd.DataFrame) -> str:
         n, mean_ln = group["n_sliding"], np.log(group["gm"])
         grand = (n * mean_ln).sum() / n.sum()
         variance = (((n - 1) * group["sigma_ln"] ** 2).sum() + (n * (mean_ln - grand) ** 2).sum()) / (n.sum() - 1)
-        either = int(group["n_overturn"].sum())
-        parted = group["overturn_tool_only"].sum() + group["overturn_truth_only"].sum()
-        agree_overturn = 1.0 - parted / either if either else float("nan")
-        low, high = binomial_interval(agree_overturn, either, 0.90) if either else (float("nan"), float("nan"))
+        _, agree_overturn, low, high = pooled_overturn(group)
         agree = (group["class_agree"] * group["n_items"]).sum() / group["n_items"].sum()
         rows = group.to_dict("records")
         lines.append(f"| {route} | {level} | {len(group)} | {np.exp(grand):.2f} | {np.sqrt(variance):.2f} | "
@@ -374,9 +379,10 @@ def main(argv=None):
                     routes["given + truth's stiffness"] = routes["given"] + stiffness
                     if args.own_hardening and PUSHOVER_ROUTE + OWN_HARDENING in routes:
                         routes[PUSHOVER_ROUTE + OWN_HARDENING + " + truth's stiffness"] = given_pushover_model(truth)
-                if args.own_strength and whole_model(truth) is not None:
+                whole = whole_model(truth) if args.own_strength else None
+                if whole is not None:
                     routes[GIVEN_STRENGTHS] = given_strengths(truth)
-                    routes[WHOLE_MODEL] = whole_model(truth)
+                    routes[WHOLE_MODEL] = whole
                 routes["design"] = [["response", "yielding"]]
                 if args.own_hardening:
                     routes["design" + OWN_HARDENING] = routes["design"] + own_hardening(truth)

@@ -318,8 +318,9 @@ def compared_on_its_own(truth, folder: Path, motions: int = 11) -> dict:
               PUSHOVER_HARDENING: given_pushover_hardening(truth)}
     if own_stiffness(truth) is not None:
         routes[PUSHOVER_MODEL] = given_pushover_model(truth)
-    if whole_model(truth) is not None:
-        routes[WHOLE_MODEL] = whole_model(truth)
+    whole = whole_model(truth)
+    if whole is not None:
+        routes[WHOLE_MODEL] = whole
     routes.update({"design": [["response", "yielding"]], "elastic": [["response", "elastic"]]})
     return compared(truth, ground_suite(motions, truth.period_s, 1.0), "DE", folder, routes,
                     bracket=ALPHA_RANGE_BY_SYSTEM[truth.system])
